@@ -1,0 +1,44 @@
+//! Stage `creep`: the creep (retardation) spectrum that the contact solver consumes, and the
+//! conversion relaxation → creep (exact, from the roots of s·Ē(s), MATH.md §4; and Park & Schapery,
+//! thesis eq. 2.18–2.23).
+//!
+//! Input: [`crate::RelaxationSpectrum`]; output: [`CreepSpectrum`].
+
+use crate::ModulusKind;
+use serde::{Deserialize, Serialize};
+
+/// One retardation term of a creep spectrum: Jⱼ(1 − e^(−t/τⱼ)).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RetardationTerm {
+    /// Retardation strength Jⱼ in 1/Pa (> 0).
+    pub compliance_per_pa: f64,
+    /// Retardation time τⱼ in s (> 0).
+    pub tau_s: f64,
+}
+
+/// A creep spectrum (thesis eq. 2.12): J(t) = J_g + Σⱼ Jⱼ (1 − e^(−t/τⱼ)), a viscoelastic solid.
+///
+/// The relaxed (long-time) compliance is J∞ = J_g + Σⱼ Jⱼ.
+///
+/// JSON (units in the field names):
+/// ```json
+/// { "kind": "tensile", "poisson": 0.5, "compliance_glassy_per_pa": 1e-9,
+///   "terms": [ { "compliance_per_pa": 9e-9, "tau_s": 1e-3 } ] }
+/// ```
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CreepSpectrum {
+    /// Whether the compliances are tensile (1/E) or shear (1/G).
+    #[serde(default)]
+    pub kind: ModulusKind,
+    /// Poisson's ratio ν used to convert between tensile and shear (rubber: 0.5).
+    #[serde(default = "default_poisson")]
+    pub poisson: f64,
+    /// Glassy (instantaneous) compliance J_g = J(0) in 1/Pa.
+    pub compliance_glassy_per_pa: f64,
+    /// Retardation terms.
+    pub terms: Vec<RetardationTerm>,
+}
+
+pub(crate) fn default_poisson() -> f64 {
+    0.5
+}

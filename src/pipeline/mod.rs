@@ -1,0 +1,1 @@
+//! Stage `pipeline`: the main job, from a folder of DMA exports to fits and reports.

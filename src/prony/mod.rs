@@ -1,0 +1,37 @@
+//! Stage `prony`: the relaxation spectrum (Prony series, thesis eq. 2.9) and its non-negative QP fit
+//! to a master curve (MATH.md §5).
+//!
+//! Input: a master curve; output: [`RelaxationSpectrum`].
+
+use crate::ModulusKind;
+use serde::{Deserialize, Serialize};
+
+/// One relaxation term of a Prony series: Eᵢ e^(−t/ρᵢ).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RelaxationTerm {
+    /// Relaxation strength Eᵢ in Pa (≥ 0).
+    pub modulus_pa: f64,
+    /// Relaxation time ρᵢ in s (> 0).
+    pub tau_s: f64,
+}
+
+/// A relaxation spectrum (thesis eq. 2.9): E(t) = E∞ + Σᵢ Eᵢ e^(−t/ρᵢ).
+///
+/// JSON (units in the field names):
+/// ```json
+/// { "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": 1e6,
+///   "terms": [ { "modulus_pa": 1e9, "tau_s": 1e-3 } ] }
+/// ```
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RelaxationSpectrum {
+    /// Whether the moduli are tensile E or shear G.
+    #[serde(default)]
+    pub kind: ModulusKind,
+    /// Poisson's ratio ν used to convert between tensile and shear (rubber: 0.5).
+    #[serde(default = "crate::creep::default_poisson")]
+    pub poisson: f64,
+    /// Equilibrium (relaxed, long-time) modulus E∞ in Pa.
+    pub modulus_inf_pa: f64,
+    /// Relaxation terms.
+    pub terms: Vec<RelaxationTerm>,
+}

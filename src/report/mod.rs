@@ -1,0 +1,1 @@
+//! Stage `report`: plots, datasheets, friction maps, rankings and FEA export cards.
