@@ -4,6 +4,7 @@
 
 mod expint;
 mod kernel_bracket;
+mod kernel_taylor;
 
 pub use expint::{e1, ei, exp_e1, expm_ei, EULER_GAMMA};
 pub use kernel_bracket::{kernel_bracket, kernel_bracket_int1, kernel_bracket_int2};
