@@ -23,9 +23,11 @@
 //!   This branch serves 0 < x < 1.5.
 //! - Ei(x), 1.5 ≤ x < 45: the standard series (every piece positive) with its terms xᵏ/k! carried in
 //!   double-double and a compensated sum (≈ 130 terms at 45); see `ei_series_standard`.
-//! - e⁻ˣEi(x), x ≥ 45: the asymptotic series (1/x)·Σ_{k≥0} k!/xᵏ (A&S 5.1.51), stopped when a term no
-//!   longer changes the sum; its best truncation error (≈ √(2πx)·e⁻ˣ relative) is below 1e-18
-//!   from x = 45 on (see `ASYMPTOTIC_EI_FROM`).
+//! - e⁻ˣEi(x), x ≥ 45: the asymptotic series (1/x)·Σ_{k≥0} k!/xᵏ (A&S 5.1.51), summed (compensated)
+//!   while its terms shrink and exceed 1e-18; its best truncation error (≈ √(2πx)·e⁻ˣ relative) is
+//!   below 1e-18 from x = 45 on (see `ASYMPTOTIC_EI_FROM`).
+//! - Unscaled values multiply by e^{∓x}; past |x| = 700 that factor is taken as a square of e^{∓x/2}
+//!   so that E1 fades gracefully through the subnormals and Ei reaches the largest double.
 //! - For x < 0, Ei(x) = −E1(−x) and e⁻ˣEi(x) = −e^{|x|}E1(|x|), so the E1 branches serve.
 
 /// Euler–Mascheroni constant γ_E = 0.5772156649015328606… (nearest double).
@@ -64,9 +66,7 @@ pub fn e1(x: f64) -> f64 {
     if x <= E1_SERIES_UP_TO {
         e1_series(x)
     } else {
-        // e^{-x} may be subnormal or zero: split it so the product keeps what precision there is.
-        let half = (-0.5 * x).exp();
-        half * (half * exp_e1_cf(x))
+        exp_times(-x, exp_e1_cf(x))
     }
 }
 
@@ -101,8 +101,7 @@ pub fn ei(x: f64) -> f64 {
     if x < ASYMPTOTIC_EI_FROM {
         ei_positive(x)
     } else {
-        let half = (0.5 * x).exp();
-        half * (half * expm_ei_asymptotic(x))
+        exp_times(x, expm_ei_asymptotic(x))
     }
 }
 
@@ -123,6 +122,17 @@ pub fn expm_ei(x: f64) -> f64 {
         (-x).exp() * ei_positive(x)
     } else {
         expm_ei_asymptotic(x)
+    }
+}
+
+/// eᵃ·v without spurious overflow or underflow of eᵃ alone (|a| > 700: eᵃ = (e^{a/2})², applied
+/// one factor at a time; below, one exp, one rounding fewer).
+fn exp_times(a: f64, v: f64) -> f64 {
+    if a.abs() < 700.0 {
+        a.exp() * v
+    } else {
+        let half = (0.5 * a).exp();
+        half * (half * v)
     }
 }
 
