@@ -1,9 +1,11 @@
 //! The bracket of the contact kernel (MATH.md §2) and its first two antiderivatives, for every real x.
 //!
 //! Input: one `f64`; output: one `f64`. Owns: h, H₁ = ∫₀ˣh, H₂ = ∫₀ˣH₁, their series and closed forms
-//! and the switch points between them. The kernel of thesis eq. 3.19 for γ(ζ) = Σ fᵢe^{−bᵢζ} is
-//! K(ξ) = ln|ξ| + Σ (fᵢ/bᵢ)·h(bᵢξ), because
-//! ∫₀^∞ e^{−bζ} ln|ξ+ζ| dζ = (ln|ξ| − ln b + g(bξ))/b (MATH.md §2), i.e.
+//! and the switch points between them. The kernel of thesis eq. 3.19,
+//! K(ξ) = ln|ξ| + ∫₀^∞ γ(ζ) ln|ξ+ζ| dζ, for γ(ζ) = Σ fᵢe^{−bᵢζ} is, up to an additive constant that
+//! cancels in eq. 3.25, K(ξ) = ln|ξ| + Σ (fᵢ/bᵢ)·h(bᵢξ), because (substituting u = bζ and integrating
+//! by parts) ∫₀^∞ e^{−bζ} ln|ξ+ζ| dζ = (ln|bξ| − ln b + g(bξ))/b = (h(bξ) − γ − ln b)/b (MATH.md §2
+//! prints ln|ξ| where ln|bξ| belongs; the constant is immaterial there), with
 //!
 //! ```text
 //! h(x) = ln|x| + γ + g(x) = ∫₀^∞ e^{−ζ} ln|1 + x/ζ| dζ,
