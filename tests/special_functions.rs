@@ -223,13 +223,39 @@ fn special_functions_extreme_arguments() {
         ] {
             assert!(v.is_finite(), "non-finite value at |x| = {x:e}");
         }
-        for v in [
-            kernel_bracket_int1(x),
-            kernel_bracket_int1(-x),
-            kernel_bracket_int2(x),
-        ] {
+        let (h1p, h1m) = (kernel_bracket_int1(x), kernel_bracket_int1(-x));
+        let (h2p, h2m) = (kernel_bracket_int2(x), kernel_bracket_int2(-x));
+        // Signs of the leading terms x·ln|x| and (x²/2)·ln|x| for |x| ≥ 1e30.
+        if x >= 1e30 {
+            assert!(
+                h1p > 0.0 && h1m < 0.0 && h2p > 0.0 && h2m > 0.0,
+                "wrong sign at |x| = {x:e}"
+            );
+        }
+        for v in [h1p, h1m, h2p, h2m] {
             assert!(!v.is_nan(), "NaN at |x| = {x:e}");
         }
+    }
+    // Infinite arguments give the limits.
+    assert_eq!(e1(f64::INFINITY), 0.0);
+    assert_eq!(exp_e1(f64::INFINITY), 0.0);
+    assert_eq!(ei(f64::INFINITY), f64::INFINITY);
+    assert_eq!(ei(f64::NEG_INFINITY), 0.0);
+    assert_eq!(expm_ei(f64::INFINITY), 0.0);
+    assert_eq!(expm_ei(f64::NEG_INFINITY), 0.0);
+    assert_eq!(kernel_bracket(f64::NEG_INFINITY), f64::INFINITY);
+    assert_eq!(kernel_bracket_int1(f64::NEG_INFINITY), f64::NEG_INFINITY);
+    assert_eq!(kernel_bracket_int2(f64::NEG_INFINITY), f64::INFINITY);
+    for f in [
+        e1,
+        exp_e1,
+        ei,
+        expm_ei,
+        kernel_bracket,
+        kernel_bracket_int1,
+        kernel_bracket_int2,
+    ] {
+        assert!(f(f64::NAN).is_nan());
     }
     // eˣE1(x) = (1/x)(1 − 1/x + …) and e⁻ˣEi(x) = (1/x)(1 + 1/x + …): relative next term 1e-300.
     assert_eq!(exp_e1(1e300), 1e-300);

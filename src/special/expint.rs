@@ -98,6 +98,9 @@ pub fn ei(x: f64) -> f64 {
     if x < 0.0 {
         return -e1(-x);
     }
+    if x == f64::INFINITY {
+        return f64::INFINITY;
+    }
     if x < ASYMPTOTIC_EI_FROM {
         ei_positive(x)
     } else {

@@ -116,7 +116,8 @@ fn bracket(x: f64, m: usize) -> f64 {
     match m {
         0 => l + g,
         1 => x * (l - 1.0) + (l + g),
-        _ => 0.5 * x * x * (l - 1.5) + x * (l - 1.0) + (l + g),
+        // Nested so that x = −f64::MAX gives +∞, not ∞ − ∞.
+        _ => x * (0.5 * x * (l - 1.5) + (l - 1.0)) + (l + g),
     }
 }
 
