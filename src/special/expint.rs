@@ -259,13 +259,13 @@ fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
 
 /// Neumaier's compensated summation (error ≈ 1 ulp of the result, independent of the term count).
 #[derive(Default)]
-struct Neumaier {
+pub(crate) struct Neumaier {
     sum: f64,
     comp: f64,
 }
 
 impl Neumaier {
-    fn add(&mut self, v: f64) {
+    pub(crate) fn add(&mut self, v: f64) {
         let t = self.sum + v;
         if self.sum.abs() >= v.abs() {
             self.comp += (self.sum - t) + v;
@@ -275,7 +275,7 @@ impl Neumaier {
         self.sum = t;
     }
 
-    fn value(&self) -> f64 {
+    pub(crate) fn value(&self) -> f64 {
         self.sum + self.comp
     }
 }

@@ -49,7 +49,7 @@
 //! - beyond: the closed forms with g = −e^{−y}Ei(y) (scaled, no overflow for any y); there the
 //!   leading piece dominates (L > 1.5 + …) and the cancellation is at most a factor ≈ 2.
 
-use super::expint::{exp_e1, expm_ei, EULER_GAMMA};
+use super::expint::{exp_e1, expm_ei, Neumaier, EULER_GAMMA};
 use super::kernel_taylor::TAYLOR_PIECES;
 
 /// Series for x > 0 is used below these points (h, H₁, H₂); see the module doc.
@@ -126,21 +126,20 @@ fn series(x: f64, m: usize) -> f64 {
     let l = EULER_GAMMA + x.abs().ln();
     let mut pow_fact = 1.0_f64; // xⁿ/n!
     let mut harmonic = 0.0_f64; // Hₙ
-    let mut sum = 0.0_f64;
+    let mut sum = Neumaier::default();
     for n in 1..400 {
         let fnn = n as f64;
-        pow_fact *= x / fnn;
+        pow_fact = pow_fact * x / fnn;
         harmonic += 1.0 / fnn;
         if n <= m {
             continue;
         }
         let term = pow_fact * (harmonic - l);
-        let new = sum + term;
         // Stop once the terms are below the last bit of the sum and shrinking (|x| ≤ 3 < n).
-        if new == sum && fnn > x.abs() {
+        if fnn > x.abs() && term.abs() < 1e-18 * sum.value().abs() {
             break;
         }
-        sum = new;
+        sum.add(term);
     }
-    sum
+    sum.value()
 }
