@@ -29,6 +29,10 @@
 //! - Unscaled values multiply by e^{∓x}; past |x| = 700 that factor is taken as a square of e^{∓x/2}
 //!   so that E1 fades gracefully through the subnormals and Ei reaches the largest double.
 //! - For x < 0, Ei(x) = −E1(−x) and e⁻ˣEi(x) = −e^{|x|}E1(|x|), so the E1 branches serve.
+//!
+//! Why not a crate (MATH.md §2): statrs 0.18 `integral(x, 1)` gives E1 only (no scaled form, no Ei)
+//! and, against the same mpmath table, errs up to 5.3e-15 relative at x = 1.9 (forward Lentz
+//! evaluation of the same continued fraction), where the backward evaluation here stays ≤ 2.4e-16.
 
 /// Euler–Mascheroni constant γ_E = 0.5772156649015328606… (nearest double).
 pub const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
