@@ -116,6 +116,25 @@ fn special_accuracy_table() {
             e.1 = row.x;
         }
         e.2 += 1;
+        // Extra rows: within 1 % of Ei's zero x₀ and of the negative zeros of h, H₁, H₂ (where an
+        // absolute-error method would show no relative accuracy at all).
+        let zero = match row.func.as_str() {
+            "ei" | "expm_ei" => 0.372_507_410_781_366_6,
+            "h" => -1.167_302_919_145_299_4,
+            "h1" => -2.093_739_234_861_443,
+            "h2" => -3.062_271_788_227_728,
+            _ => f64::NAN,
+        };
+        if (row.x / zero - 1.0).abs() < 1e-2 {
+            let e = acc
+                .entry((row.func.clone(), "near its zero"))
+                .or_insert((0.0, 0.0, 0));
+            if err > e.0 {
+                e.0 = err;
+                e.1 = row.x;
+            }
+            e.2 += 1;
+        }
     }
     println!(
         "{:<8} {:<16} {:>6} {:>10} {:>12}",
