@@ -11,8 +11,12 @@
 //!   determined to that absolute accuracy, see the note in `creep::exact`), and E(t) to 1e-12 relative
 //!   on t = 1e-16…1e16 s.
 //!
-//! 1e-12 is the target; the measured maxima (see `examples/park_schapery_table.rs`) are a few
-//! hundred times smaller.
+//! 1e-12 is the target. The forward conversion meets it with margin (measured max |E*J* − 1|
+//! 1.35e-13 over 1000 spectra, `cargo run --release --example park_schapery_table`). The round trip
+//! meets it on these fixed-seed cases, but not always: when two relaxation times lie within a relative
+//! gap g of each other (1e-4 in the worst of the 1000 spectra), the retardation time between them is
+//! stored to 1 ulp, i.e. to ε/g of the gap, and the recovered pair of strengths moves by ~ε/g relative
+//! (measured 9.3e-12 there). See the report in `creep::exact`.
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};

@@ -60,14 +60,15 @@ pub fn relaxation_to_creep(
     }
     let mut info = ExactInfo::default();
     let poles = clean_terms(
-        relax.terms.iter().map(|t| (1.0 / t.tau_s, t.modulus_pa)),
+        relax.terms.iter().map(|t| (t.tau_s, t.modulus_pa)),
         &mut info,
     );
-    let e0 = e_inf + poles.iter().map(|p| p.1).sum::<f64>();
+    let e0 = e_inf + poles.iter().map(|p| p.2).sum::<f64>();
     let series = PoleSeries {
         c: e_inf,
         p: poles.iter().map(|p| p.0).collect(),
-        w: poles.iter().map(|p| p.1).collect(),
+        p_lo: poles.iter().map(|p| p.1).collect(),
+        w: poles.iter().map(|p| p.2).collect(),
         num_is_x: true,
         positive_above: true,
     };
@@ -112,18 +113,16 @@ pub fn creep_to_relaxation(
     creep.validate()?;
     let mut info = ExactInfo::default();
     let poles = clean_terms(
-        creep
-            .terms
-            .iter()
-            .map(|t| (1.0 / t.tau_s, t.compliance_per_pa)),
+        creep.terms.iter().map(|t| (t.tau_s, t.compliance_per_pa)),
         &mut info,
     );
     let jg = creep.compliance_glassy_per_pa;
-    let j_inf = jg + poles.iter().map(|p| p.1).sum::<f64>();
+    let j_inf = jg + poles.iter().map(|p| p.2).sum::<f64>();
     let series = PoleSeries {
         c: jg,
         p: poles.iter().map(|p| p.0).collect(),
-        w: poles.iter().map(|p| p.1).collect(),
+        p_lo: poles.iter().map(|p| p.1).collect(),
+        w: poles.iter().map(|p| p.2).collect(),
         num_is_x: false,
         positive_above: false,
     };
@@ -183,29 +182,36 @@ pub fn max_product_error(
         .fold(0.0, f64::max)
 }
 
-/// (rate, strength) pairs: drop zero strengths, sort by rate, merge nearly equal rates.
-fn clean_terms(terms: impl Iterator<Item = (f64, f64)>, info: &mut ExactInfo) -> Vec<(f64, f64)> {
-    let mut v: Vec<(f64, f64)> = Vec::new();
-    for (rate, w) in terms {
+/// (time, strength) pairs → (rate as a double-double hi + lo, strength): drop zero strengths, sort by
+/// rate, merge nearly equal rates (the first time of a merged group is kept, strengths summed).
+///
+/// The rate 1/τ is carried as hi + lo with lo = (1 − hi·τ)/τ from a fused multiply-add, so a root that
+/// lies a few ulp from its pole is located relative to the exact pole 1/τ, not to its rounding.
+fn clean_terms(
+    terms: impl Iterator<Item = (f64, f64)>,
+    info: &mut ExactInfo,
+) -> Vec<(f64, f64, f64)> {
+    let mut v: Vec<(f64, f64, f64)> = Vec::new();
+    for (tau, w) in terms {
         if w == 0.0 {
             info.zero_terms_removed += 1;
         } else {
-            v.push((rate, w));
+            let hi = 1.0 / tau;
+            let lo = (-hi).mul_add(tau, 1.0) / tau;
+            v.push((hi, lo, w));
         }
     }
     v.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut out: Vec<(f64, f64)> = Vec::with_capacity(v.len());
-    for (rate, w) in v {
+    let mut out: Vec<(f64, f64, f64)> = Vec::with_capacity(v.len());
+    for (hi, lo, w) in v {
         if let Some(last) = out.last_mut() {
-            if rate - last.0 <= 8.0 * f64::EPSILON * rate {
-                // Strength-weighted mean rate; both within 8 ε of each other.
-                last.0 = (last.0 * last.1 + rate * w) / (last.1 + w);
-                last.1 += w;
+            if hi - last.0 <= 8.0 * f64::EPSILON * hi {
+                last.2 += w;
                 info.terms_merged += 1;
                 continue;
             }
         }
-        out.push((rate, w));
+        out.push((hi, lo, w));
     }
     out
 }
@@ -218,14 +224,17 @@ fn clean_terms(terms: impl Iterator<Item = (f64, f64)>, info: &mut ExactInfo) ->
 struct PoleSeries {
     c: f64,
     p: Vec<f64>,
+    /// Low parts of the poles: the exact pole is p + p_lo.
+    p_lo: Vec<f64>,
     w: Vec<f64>,
     num_is_x: bool,
     positive_above: bool,
 }
 
-/// x = anchor + d, with anchor − pᵢ known exactly for the anchor pole.
+/// x = anchor + anchor_lo + d, with x − pᵢ = d exactly for the anchor pole.
 struct Point {
     anchor: f64,
+    anchor_lo: f64,
     anchor_idx: Option<usize>,
     d: f64,
     x: f64,
@@ -233,11 +242,13 @@ struct Point {
 
 impl PoleSeries {
     fn point(&self, anchor: f64, anchor_idx: Option<usize>, d: f64) -> Point {
+        let anchor_lo = anchor_idx.map_or(0.0, |i| self.p_lo[i]);
         Point {
             anchor,
+            anchor_lo,
             anchor_idx,
             d,
-            x: anchor + d,
+            x: anchor + (anchor_lo + d),
         }
     }
 
@@ -247,7 +258,7 @@ impl PoleSeries {
         if pt.anchor_idx == Some(i) {
             pt.d
         } else {
-            (pt.anchor - self.p[i]) + pt.d
+            (pt.anchor - self.p[i]) + ((pt.anchor_lo - self.p_lo[i]) + pt.d)
         }
     }
 

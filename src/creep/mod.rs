@@ -50,4 +50,7 @@ pub mod spectrum;
 
 pub use error::CreepError;
 pub use exact::{creep_to_relaxation, relaxation_to_creep, ExactInfo};
+pub use park_schapery::{
+    park_schapery, ParkSchaperyInfo, ParkSchaperySettings, ParkSchaperyVariant,
+};
 pub use spectrum::AtTemperature;
