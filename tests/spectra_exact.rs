@@ -6,17 +6,17 @@
 //! - J(0)·E₀ = 1 to 1e-14 (J_g = 1/E₀ is one division: ≤ 1 ulp, plus E₀'s summation);
 //! - J∞·E∞ = 1 to 1e-12 (J∞ comes from the residues: independent of E∞);
 //! - every Jⱼ > 0, every τⱼ > 0 and finite, as many creep terms as relaxation terms;
-//! - relaxation → creep → relaxation: E∞ and every ρᵢ to 1e-12 relative, every Eᵢ to 1e-12 of
-//!   E(ρᵢ) (the relaxation modulus at the term's own time: a weak term under a large modulus is only
-//!   determined to that absolute accuracy, see the note in `creep::exact`), and E(t) to 1e-12 relative
-//!   on t = 1e-16…1e16 s.
+//! - relaxation → creep → relaxation, compared as functions and as parameters: E(t) to 1e-12 relative
+//!   on t = 1e-16…1e16 s, E*(ω) to 1e-12 relative on ω = 1e-20…1e20 rad/s, E∞ and every ρᵢ to 1e-12
+//!   relative, and every Eᵢ to 1e-12 of E(ρᵢ) (the relaxation modulus at the term's own time: the
+//!   natural scale, since a weak term under a large modulus is only determined to that absolute
+//!   accuracy) for terms at least 1 % (in τ) from their neighbours. The split of strength between two
+//!   nearly coincident times is ill-conditioned (the retardation time between them is stored to 1 ulp,
+//!   i.e. to ε/g of their relative gap g), while their sum and the functions are not: such pairs are
+//!   checked through E(t) and E*(ω) only.
 //!
-//! 1e-12 is the target. The forward conversion meets it with margin (measured max |E*J* − 1|
-//! 1.35e-13 over 1000 spectra, `cargo run --release --example park_schapery_table`). The round trip
-//! meets it on these fixed-seed cases, but not always: when two relaxation times lie within a relative
-//! gap g of each other (1e-4 in the worst of the 1000 spectra), the retardation time between them is
-//! stored to 1 ulp, i.e. to ε/g of the gap, and the recovered pair of strengths moves by ~ε/g relative
-//! (measured 9.3e-12 there). See the report in `creep::exact`.
+//! 1e-12 is the target; the measured maxima over 1000 such spectra are ~1e-15 for all the
+//! function checks (`cargo run --release --example park_schapery_table`).
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
@@ -93,11 +93,23 @@ proptest! {
         a.sort_by(|x, y| x.tau_s.total_cmp(&y.tau_s));
         b.sort_by(|x, y| x.tau_s.total_cmp(&y.tau_s));
         prop_assert_eq!(a.len(), b.len());
-        for (x, y) in a.iter().zip(&b) {
+        for (i, (x, y)) in a.iter().zip(&b).enumerate() {
             prop_assert!((y.tau_s / x.tau_s - 1.0).abs() <= 1e-12, "ρ {} vs {}", x.tau_s, y.tau_s);
-            let scale = relax.relaxation_modulus(x.tau_s);
-            prop_assert!((y.modulus_pa - x.modulus_pa).abs() <= 1e-12 * scale,
-                "E {} vs {} (E(ρ) = {})", x.modulus_pa, y.modulus_pa, scale);
+            let gap = [i.checked_sub(1), (i + 1 < a.len()).then_some(i + 1)]
+                .into_iter()
+                .flatten()
+                .map(|j| (a[j].tau_s / x.tau_s).ln().abs())
+                .fold(f64::INFINITY, f64::min);
+            if gap >= 0.01 {
+                let scale = relax.relaxation_modulus(x.tau_s);
+                prop_assert!((y.modulus_pa - x.modulus_pa).abs() <= 1e-12 * scale,
+                    "E {} vs {} (E(ρ) = {})", x.modulus_pa, y.modulus_pa, scale);
+            }
+        }
+        for w in log_grid(-20.0, 20.0, 8) {
+            let (a1, a2) = relax.complex_modulus(w);
+            let (b1, b2) = back.complex_modulus(w);
+            prop_assert!((b1 - a1).hypot(b2 - a2) <= 1e-12 * a1.hypot(a2), "E*({w})");
         }
         for t in log_grid(-16.0, 16.0, 4) {
             let (e1, e2) = (relax.relaxation_modulus(t), back.relaxation_modulus(t));

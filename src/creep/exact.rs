@@ -23,6 +23,16 @@
 //! Bisection runs first geometrically in |d| (any number of decades) and then arithmetically down to
 //! adjacent doubles; it cannot fail on a bracket. The residue sums are sums of positive terms.
 //!
+//! Accuracy (measured on 1000 random spectra, 1–40 terms over 24 decades, strengths over 8 decades:
+//! `cargo run --release --example park_schapery_table`): max |E*J* − 1| = 1.6e-15 over
+//! ω = 1e-20…1e20 rad/s in both directions; the round trip relaxation → creep → relaxation returns
+//! E(t), E*(ω), E∞ and every ρᵢ to ≤ 5.3e-15 relative. The individual strengths of two nearly
+//! coincident relaxation times (relative gap g) are ill-conditioned: the retardation term between them
+//! is weak (Jⱼ ∝ g²) and its time, stored to 1 ulp, is known to ε/g of the gap, so the split of strength
+//! between the pair moves by up to ~ε/g (measured 4.7e-12 of E(ρᵢ) for g = 1e-4) while their sum and
+//! the functions do not. Plain-double evaluation of h lost this much on every function too (6.5e-12),
+//! hence the double-double sums in [`PoleSeries::h`].
+//!
 //! Degenerate input, handled explicitly:
 //! - E∞ = 0 (a fluid): [`CreepError::Fluid`]. Its creep function has a flow term t/η₀ (eq. 2.11) that a
 //!   [`CreepSpectrum`] (a solid, eq. 2.12) cannot hold; rather than drop or fake it we refuse.
@@ -262,21 +272,48 @@ impl PoleSeries {
         }
     }
 
-    /// h = ln P − ln N.
+    /// (P − N)/(P + N), which has the sign of h = ln P − ln N. P and N are summed in double-double
+    /// arithmetic (≈ 32 digits), so that the sign is right even where P and N agree to many digits:
+    /// next to a weak term whose pole is close to the root, the root is fixed by P = N at a level
+    /// far below the rounding of P and N in plain doubles (see the accuracy note above).
     fn h(&self, pt: &Point) -> f64 {
-        let mut pos = self.c;
-        let mut neg = 0.0;
+        let mut pos = (self.c, 0.0);
+        let mut neg = (0.0, 0.0);
+        // x as a double-double: anchor + (anchor_lo + d).
+        let x = dd_add(two_sum(pt.anchor, pt.d), (pt.anchor_lo, 0.0));
         for i in 0..self.p.len() {
-            let dx = self.diff(pt, i);
-            let q = if self.num_is_x { pt.x } else { self.p[i] };
-            let t = self.w[i] * q / dx.abs();
-            if (dx > 0.0) == self.positive_above {
-                pos += t;
+            let dx = if pt.anchor_idx == Some(i) {
+                (pt.d, 0.0)
             } else {
-                neg += t;
+                dd_add(
+                    two_sum(pt.anchor, -self.p[i]),
+                    two_sum(pt.anchor_lo - self.p_lo[i], pt.d),
+                )
+            };
+            let q = if self.num_is_x {
+                x
+            } else {
+                (self.p[i], self.p_lo[i])
+            };
+            let abs_dx = if dx.0 < 0.0 { (-dx.0, -dx.1) } else { dx };
+            let t = dd_div(dd_mul_f(q, self.w[i]), abs_dx);
+            if (dx.0 > 0.0) == self.positive_above {
+                pos = dd_add(pos, t);
+            } else {
+                neg = dd_add(neg, t);
             }
         }
-        pos.ln() - neg.ln()
+        if !(pos.0.is_finite() && neg.0.is_finite()) {
+            return if pos.0.is_infinite() && neg.0.is_finite() {
+                1.0
+            } else if neg.0.is_infinite() && pos.0.is_finite() {
+                -1.0
+            } else {
+                f64::NAN
+            };
+        }
+        let diff = dd_add(pos, (-neg.0, -neg.1));
+        diff.0 / (pos.0 + neg.0)
     }
 
     /// 1/(x·Σ wᵢpᵢ/(x − pᵢ)²): the strength Jⱼ = 1/(σⱼM′(−σⱼ)) (relaxation → creep) or
@@ -381,6 +418,40 @@ impl PoleSeries {
         let m = if h_at(a).abs() <= h_at(b).abs() { a } else { b };
         Some(self.point(anchor, anchor_idx, dir * m))
     }
+}
+
+// Double-double arithmetic (value = hi + lo, |lo| ≤ ulp(hi)/2): error-free sum and product
+// (Knuth's two-sum, fused multiply-add), then the usual renormalised operations.
+
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
+fn dd_add(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+    let (s, e) = two_sum(a.0, b.0);
+    quick_two_sum(s, e + (a.1 + b.1))
+}
+
+fn dd_mul_f(a: (f64, f64), b: f64) -> (f64, f64) {
+    let p = a.0 * b;
+    let e = a.0.mul_add(b, -p);
+    quick_two_sum(p, e + a.1 * b)
+}
+
+fn dd_div(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+    let q1 = a.0 / b.0;
+    // r = a − q1·b, exactly enough: q1·b as a double-double.
+    let p = dd_add(dd_mul_f(b, q1), (0.0, 0.0));
+    let r = dd_add(a, (-p.0, -p.1));
+    let q2 = r.0 / b.0;
+    quick_two_sum(q1, q2)
 }
 
 #[cfg(test)]
