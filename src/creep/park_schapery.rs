@@ -23,7 +23,8 @@
 //! eq. 2.22 without cancellation and tends continuously to eq. 2.19 as ρᵢ → τⱼ; B_k is
 //! Σ Eᵢ(1 − e^(−t_k/ρᵢ))/E₀ (expm1), not 1 − E/E₀. The columns of A are scaled to unit norm before the
 //! solve (LU for collocation, SVD for least squares); the reported condition number is that of the
-//! scaled matrix, which does not depend on units.
+//! scaled matrix, which does not depend on units. A system with condition number ≥ 1/ε is refused
+//! ([`CreepError::SingularSystem`]): its solution would be rounding noise.
 //!
 //! Why and where it breaks down: the exact retardation times interlace the relaxation times, and the
 //! longest exceeds the longest relaxation time (by a factor up to E₀/E∞, ≈ 10³ for rubber); with
@@ -233,12 +234,13 @@ pub fn park_schapery(
         cols: n,
         condition,
     };
+    // Numerically singular (condition ≥ 1/ε): any solution would be rounding noise; refuse.
+    if !(condition < 1.0 / f64::EPSILON) {
+        return Err(singular());
+    }
     let y = if p == n {
         a_s.clone().lu().solve(&b).ok_or_else(singular)?
     } else {
-        if !condition.is_finite() {
-            return Err(singular());
-        }
         sv.solve(&b, 0.0).map_err(|_| singular())?
     };
     if y.iter().any(|v| !v.is_finite()) {
