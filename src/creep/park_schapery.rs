@@ -235,7 +235,7 @@ pub fn park_schapery(
         condition,
     };
     // Numerically singular (condition ≥ 1/ε): any solution would be rounding noise; refuse.
-    if !(condition < 1.0 / f64::EPSILON) {
+    if condition.is_nan() || condition >= 1.0 / f64::EPSILON {
         return Err(singular());
     }
     let y = if p == n {
