@@ -564,4 +564,29 @@ mod tests {
                 && (got[1].modulus_pa / 9e6 - 1.0).abs() < 1e-13
         );
     }
+
+    #[test]
+    fn shifting_commutes_with_conversion() {
+        // Scaling every time by a_T scales every root by 1/a_T and leaves strengths unchanged, so
+        // convert-then-shift equals shift-then-convert to rounding (a few ε).
+        let law = crate::ShiftLaw::Wlf {
+            t_ref_c: 25.0,
+            c1: 13.5,
+            c2_k: 141.19,
+        };
+        let r = relax(1e6, &[(9e6, 1e-3), (5e7, 1e-6), (3e8, 2e-9)]);
+        let a = relaxation_to_creep(&r.at_temperature(&law, 60.0, None).unwrap().spectrum)
+            .unwrap()
+            .0;
+        let b = relaxation_to_creep(&r)
+            .unwrap()
+            .0
+            .at_temperature(&law, 60.0, None)
+            .unwrap()
+            .spectrum;
+        for (x, y) in a.terms.iter().zip(&b.terms) {
+            assert!((x.tau_s / y.tau_s - 1.0).abs() < 1e-14);
+            assert!((x.compliance_per_pa / y.compliance_per_pa - 1.0).abs() < 1e-14);
+        }
+    }
 }
