@@ -1,2 +1,5 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
 mod special_functions;
+mod spectra_cards;
+mod spectra_cli;
+mod spectra_exact;

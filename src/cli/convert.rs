@@ -1,10 +1,176 @@
-//! `viscoroll convert`: Convert a relaxation spectrum to a creep spectrum (exact or Park & Schapery).
+//! `viscoroll convert`: a relaxation spectrum (JSON, [`crate::RelaxationSpectrum`]) → a creep spectrum
+//! (JSON, [`crate::CreepSpectrum`]), exactly (MATH.md §4, default) or by Park & Schapery (thesis
+//! eq. 2.18–2.23), with the checks that tell how good the result is.
+//!
+//! `--json` prints one object: `{ "method", "variant", "input", "output", "creep_spectrum", "checks":
+//! { "max_abs_product_error", "omega_min_rad_s", "omega_max_rad_s", "glassy_product", "relaxed_product",
+//! "negative_terms" }, "info" }`. Without `--json` and without `-o` the creep spectrum JSON goes to
+//! stdout; a summary always goes to stderr (unless `--json`).
+
+use crate::creep::exact::max_product_error;
+use crate::creep::{park_schapery, relaxation_to_creep, ParkSchaperySettings, ParkSchaperyVariant};
+use crate::RelaxationSpectrum;
+use anyhow::Context;
+use std::path::{Path, PathBuf};
+
+/// Conversion method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Method {
+    /// Exact: roots and residues of s·Ē(s) (MATH.md §4).
+    Exact,
+    /// Park & Schapery's collocation / least squares (thesis eq. 2.18–2.23), τⱼ = ρⱼ.
+    ParkSchapery,
+}
+
+/// Park & Schapery variant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Variant {
+    /// Collocation at t_k = τ_k.
+    #[value(name = "collocation-1")]
+    Collocation1,
+    /// Collocation at t_k = τ_k/2.
+    CollocationHalf,
+    /// Least squares at 4 times per decade.
+    LeastSquares,
+}
 
 /// Arguments of `viscoroll convert`.
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Relaxation spectrum JSON file (fields `modulus_inf_pa`, `terms[].modulus_pa`, `terms[].tau_s`,
+    /// optional `kind`, `poisson`).
+    pub spectrum: PathBuf,
+    /// Conversion method.
+    #[arg(long, value_enum, default_value = "exact")]
+    pub method: Method,
+    /// Park & Schapery variant (with --method park-schapery).
+    #[arg(long, value_enum, default_value = "collocation-1")]
+    pub park_schapery_variant: Variant,
+    /// Write the creep spectrum JSON to this file (atomically).
+    #[arg(short = 'o', long)]
+    pub output: Option<PathBuf>,
+    /// Overwrite OUT if it exists.
+    #[arg(long)]
+    pub force: bool,
+    /// Print one JSON object (result and checks) on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
 
 /// Run `viscoroll convert`.
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`viscoroll convert` is not implemented yet")
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let text = std::fs::read_to_string(&args.spectrum)
+        .with_context(|| format!("cannot read {}", args.spectrum.display()))?;
+    let relax: RelaxationSpectrum = serde_json::from_str(&text).with_context(|| {
+        format!(
+            "{}: not a relaxation spectrum JSON",
+            args.spectrum.display()
+        )
+    })?;
+    relax
+        .validate()
+        .with_context(|| format!("{}", args.spectrum.display()))?;
+    let (creep, variant, info) = match args.method {
+        Method::Exact => {
+            let (c, info) = relaxation_to_creep(&relax)?;
+            (c, None, serde_json::to_value(info)?)
+        }
+        Method::ParkSchapery => {
+            let variant = match args.park_schapery_variant {
+                Variant::Collocation1 => ParkSchaperyVariant::CollocationOne,
+                Variant::CollocationHalf => ParkSchaperyVariant::CollocationHalf,
+                Variant::LeastSquares => ParkSchaperyVariant::LeastSquares,
+            };
+            let settings = ParkSchaperySettings {
+                variant,
+                ..Default::default()
+            };
+            let (c, info) = park_schapery(&relax, &settings)?;
+            (c, Some(variant.name()), serde_json::to_value(info)?)
+        }
+    };
+    // Checks over the spectrum's own window ± 4 decades, 8 points per decade.
+    let taus = relax.terms.iter().map(|t| t.tau_s);
+    let (tmin, tmax) = taus.fold((f64::INFINITY, 0f64), |(a, b), t| (a.min(t), b.max(t)));
+    let (wmin, wmax) = if tmax > 0.0 {
+        (1e-4 / tmax, 1e4 / tmin)
+    } else {
+        (1.0, 1.0)
+    };
+    let n = ((wmax / wmin).log10() * 8.0).ceil().max(1.0) as usize;
+    let omegas: Vec<f64> = (0..=n)
+        .map(|k| wmin * (wmax / wmin).powf(k as f64 / n as f64))
+        .collect();
+    let product = max_product_error(&relax, &creep, &omegas);
+    let glassy = creep.creep_compliance(0.0) * relax.instantaneous_modulus();
+    let relaxed = creep.compliance_relaxed() * relax.modulus_inf_pa;
+    let negative = creep
+        .terms
+        .iter()
+        .filter(|t| t.compliance_per_pa < 0.0)
+        .count();
+
+    if let Some(out) = &args.output {
+        write_atomic(out, &serde_json::to_string_pretty(&creep)?, args.force)?;
+    }
+    let method = match args.method {
+        Method::Exact => "exact",
+        Method::ParkSchapery => "park-schapery",
+    };
+    if args.json {
+        let obj = serde_json::json!({
+            "method": method,
+            "variant": variant,
+            "input": args.spectrum.display().to_string(),
+            "output": args.output.as_ref().map(|p| p.display().to_string()),
+            "creep_spectrum": creep,
+            "checks": {
+                "max_abs_product_error": product,
+                "omega_min_rad_s": wmin,
+                "omega_max_rad_s": wmax,
+                "glassy_product": glassy,
+                "relaxed_product": relaxed,
+                "negative_terms": negative,
+            },
+            "info": info,
+        });
+        println!("{}", serde_json::to_string(&obj)?);
+    } else {
+        if args.output.is_none() {
+            println!("{}", serde_json::to_string_pretty(&creep)?);
+        }
+        eprintln!(
+            "viscoroll convert: {method}{}: {} retardation terms; max |E*J* − 1| = {product:.2e} over ω = {wmin:.1e}…{wmax:.1e} rad/s; J(0)·E₀ = {glassy:.15}; J∞·E∞ = {relaxed:.15}{}",
+            variant.map(|v| format!(" ({v})")).unwrap_or_default(),
+            creep.terms.len(),
+            if negative > 0 {
+                format!("; WARNING: {negative} negative strengths (non-physical)")
+            } else {
+                String::new()
+            }
+        );
+    }
+    Ok(())
+}
+
+/// Write `text` to `path` through a temporary file in the same directory and a rename.
+pub(crate) fn write_atomic(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
+    if path.exists() && !force {
+        anyhow::bail!("{} exists (use --force to overwrite)", path.display());
+    }
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .with_context(|| format!("{}: not a file name", path.display()))?;
+    let tmp = dir.join(format!(
+        ".{}.tmp{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    std::fs::write(&tmp, text).with_context(|| format!("cannot write {}", tmp.display()))?;
+    std::fs::rename(&tmp, path).with_context(|| format!("cannot rename to {}", path.display()))?;
+    Ok(())
 }

@@ -42,3 +42,15 @@ pub struct CreepSpectrum {
 pub(crate) fn default_poisson() -> f64 {
     0.5
 }
+
+pub mod error;
+pub mod exact;
+pub mod park_schapery;
+pub mod spectrum;
+
+pub use error::CreepError;
+pub use exact::{creep_to_relaxation, relaxation_to_creep, ExactInfo};
+pub use park_schapery::{
+    park_schapery, ParkSchaperyInfo, ParkSchaperySettings, ParkSchaperyVariant,
+};
+pub use spectrum::AtTemperature;

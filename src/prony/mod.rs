@@ -35,3 +35,5 @@ pub struct RelaxationSpectrum {
     /// Relaxation terms.
     pub terms: Vec<RelaxationTerm>,
 }
+
+mod spectrum;

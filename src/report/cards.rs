@@ -1,0 +1,638 @@
+//! FEA material cards from a [`RelaxationSpectrum`] (+ optional WLF [`ShiftLaw`]), and readers of such
+//! cards back into spectra: Abaqus, ANSYS Mechanical APDL, LS-DYNA.
+//!
+//! Input: [`RelaxationSpectrum`], [`ShiftLaw`], [`CardOptions`]; output: card text (`String`). Readers:
+//! [`read_abaqus`], [`read_ansys`], [`read_lsdyna`] → [`CardContents`] → [`CardContents::to_spectrum`].
+//! Units are SI (Pa, s, temperatures in °C as in the shift law); each card says so in a comment.
+//!
+//! Formats written (relative moduli are kind-independent: Eᵢ/E₀ = Gᵢ/G₀ for a constant ν):
+//! - **Abaqus** `*VISCOELASTIC, TIME=PRONY`, one data line `gᵢ, kᵢ, τᵢ` per term with gᵢ = Eᵢ/E₀
+//!   normalised to the *instantaneous* modulus (kᵢ: bulk ratios, 0 by default = elastic bulk response,
+//!   the usual choice for rubber; [`BulkRelaxation::SameAsShear`] writes kᵢ = gᵢ, constant ν).
+//!   `*TRS, DEFINITION=WLF` with one data line `θ₀, C1, C2`, Abaqus' WLF being
+//!   −log A = C1(θ − θ₀)/(C2 + θ − θ₀), i.e. log10 A = our log10 a_T.
+//!   Checked against: Abaqus Keywords Reference, `*TRS` (v2016 and 2017 pages: DEFINITION=WLF default,
+//!   data line "reference temperature, C1, C2") and the theory page "Time domain viscoelasticity" (WLF as
+//!   −log A = h(θ) = C1(θ−θ₀)/(C2+θ−θ₀)); `*VISCOELASTIC` (v6.5 keywords page: TIME=PRONY, elasticity
+//!   from `*ELASTIC`/`*HYPERELASTIC`). The card must be combined with an elastic definition of the
+//!   instantaneous modulus (`*ELASTIC, MODULI=INSTANTANEOUS`), given in a comment.
+//! - **ANSYS** `TB,PRONY,mat,1,n,SHEAR` then `TBDATA` with pairs `aᵢ, τᵢ` (aᵢ = Gᵢ/G₀ relative to the
+//!   instantaneous modulus), six values per `TBDATA` line with the start index, and
+//!   `TB,SHIFT,mat,1,3,WLF` + `TBDATA,1,T_ref,C1,C2`. Checked against: a real card written by ANSYS 2020 R1
+//!   (`data/pyvisco-ems-ca/ansys_prony_terms_freq_user_master.MPL`: `TB,PRON,_MATL,1,27,SHEA`,
+//!   `TBDATA,1,a1,t1,a2,t2,a3,t3`, `TBDATA,4,…`) and the ANSYS 18.2 command reference page of `TBDATA`
+//!   (STLOC + up to six constants). The TB,SHIFT WLF constant order (T_ref, C1, C2, with
+//!   log10 A = C1(T−T_ref)/(C2+T−T_ref) for the factor dividing times, i.e. the same C1, C2 as ours) is
+//!   from the ANSYS Material Reference as we remember it; we could not retrieve that page here: check
+//!   it before relying on the shift card.
+//! - **LS-DYNA** `*MAT_GENERAL_VISCOELASTIC` (MAT_076): card 1 `MID, RO, BULK, PCF, EF, TREF, A, B`,
+//!   card 2 (`LCID, NT, BSTART, TRAMP, LCIDK, NTK, BSTARTK, TRAMPK`) left blank because the Prony terms are
+//!   given directly, then one card `GI, BETAI, KI, BETAKI` per term with *absolute shear* moduli Gᵢ and
+//!   decay constants βᵢ = 1/τᵢ; the equilibrium modulus G∞ is a term with β = 0 (MAT_076 has no separate
+//!   long-term field: G(t) = Σ Gᵢ e^(−βᵢt)). Fixed 10-character fields; numbers are written with the most
+//!   significant digits that fit (5–7). TREF, A, B: WLF shift (A = C1, B = C2). At most 18 terms.
+//!   We could not retrieve the LS-DYNA Keyword User's Manual text through our search tool; the layout
+//!   follows the manual (vol. II, MAT_076) as we know it and a third-party exporter's test we saw
+//!   (G₀ = E/(2(1+ν)), Gᵢ and β = 1/τ). Check before production use.
+//!
+//! Readers: our own three formats (round trips) and ANSYS `TB,PRON`/`TB,PRONY` cards written by ANSYS
+//! itself (abbreviated keywords, `_MATL` placeholders, `TBFIELD`/`TBIN` lines ignored).
+
+use crate::prony::{RelaxationSpectrum, RelaxationTerm};
+use crate::{ModulusKind, ShiftLaw};
+use serde::{Deserialize, Serialize};
+
+/// Errors of card writing and reading.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum CardError {
+    /// The spectrum cannot be written (e.g. E₀ ≤ 0).
+    #[error("cannot write the card: {0}")]
+    Unwritable(String),
+    /// The shift law is not WLF (the only one the cards carry).
+    #[error("the {format} card carries a WLF shift only; the shift law given is {law}")]
+    ShiftNotWlf {
+        /// Card format.
+        format: &'static str,
+        /// The law found.
+        law: &'static str,
+    },
+    /// A line of a card could not be parsed.
+    #[error("line {line}: {message}")]
+    Parse {
+        /// 1-based line number.
+        line: usize,
+        /// What was wrong.
+        message: String,
+    },
+    /// The card holds no Prony data.
+    #[error("no Prony series found in the card ({0})")]
+    Missing(&'static str),
+}
+
+/// How the bulk modulus relaxes (Abaqus kᵢ, LS-DYNA KI).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum BulkRelaxation {
+    /// Elastic bulk response (kᵢ = 0), the usual choice for rubber.
+    #[default]
+    Elastic,
+    /// The bulk modulus relaxes like the shear modulus (kᵢ = gᵢ): a constant Poisson's ratio.
+    SameAsShear,
+}
+
+/// Options of the card writers.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct CardOptions {
+    /// Material id (ANSYS MAT, LS-DYNA MID).
+    pub material_id: u32,
+    /// Bulk relaxation (Abaqus kᵢ).
+    pub bulk: BulkRelaxation,
+    /// Mass density in kg/m³ for LS-DYNA's RO (blank when None: set it in the deck).
+    pub density_kg_m3: Option<f64>,
+}
+
+impl Default for CardOptions {
+    fn default() -> Self {
+        CardOptions {
+            material_id: 1,
+            bulk: BulkRelaxation::Elastic,
+            density_kg_m3: None,
+        }
+    }
+}
+
+/// What a card holds, normalised: relative strengths and times, plus what the card states about the
+/// instantaneous modulus (our own cards write it in a comment; foreign cards usually do not).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CardContents {
+    /// Instantaneous modulus E₀ (or G₀ for shear) in Pa, if the card states it.
+    pub instantaneous_modulus_pa: Option<f64>,
+    /// Tensile or shear, as the card states (LS-DYNA and ANSYS SHEAR: shear).
+    pub kind: ModulusKind,
+    /// Poisson's ratio, if the card states it.
+    pub poisson: Option<f64>,
+    /// (relative strength aᵢ = Eᵢ/E₀, τᵢ in s).
+    pub terms: Vec<(f64, f64)>,
+    /// WLF shift if the card carries one.
+    pub shift: Option<ShiftLaw>,
+}
+
+impl CardContents {
+    /// The spectrum, with E₀ = `instantaneous_modulus_pa` (overrides the card's) and ν = `poisson`
+    /// (overrides; default the card's or 0.5). E∞ = E₀(1 − Σ aᵢ).
+    pub fn to_spectrum(
+        &self,
+        instantaneous_modulus_pa: Option<f64>,
+        poisson: Option<f64>,
+    ) -> Result<RelaxationSpectrum, CardError> {
+        let e0 = instantaneous_modulus_pa
+            .or(self.instantaneous_modulus_pa)
+            .ok_or_else(|| {
+                CardError::Unwritable(
+                    "the card gives relative moduli only: state the instantaneous modulus".into(),
+                )
+            })?;
+        let sum: f64 = self.terms.iter().map(|t| t.0).sum();
+        Ok(RelaxationSpectrum {
+            kind: self.kind,
+            poisson: poisson.or(self.poisson).unwrap_or(0.5),
+            modulus_inf_pa: e0 * (1.0 - sum).max(0.0),
+            terms: self
+                .terms
+                .iter()
+                .map(|&(a, tau)| RelaxationTerm {
+                    modulus_pa: a * e0,
+                    tau_s: tau,
+                })
+                .collect(),
+        })
+    }
+}
+
+/// A number with 17 significant digits (exact round trip), exponent with sign and two digits.
+fn sci(x: f64) -> String {
+    let s = format!("{x:.16e}");
+    let (m, e) = s.split_once('e').expect("exponent");
+    let e: i32 = e.parse().expect("exponent");
+    format!("{m}e{}{:02}", if e < 0 { '-' } else { '+' }, e.abs())
+}
+
+/// A number in at most `width` characters with as many significant digits as fit (≥ 2).
+fn fixed_width(x: f64, width: usize) -> String {
+    if x == 0.0 {
+        return format!("{:>width$}", "0.0");
+    }
+    for digits in (1..=9).rev() {
+        let s = format!("{x:.digits$e}");
+        if s.len() <= width {
+            return format!("{s:>width$}");
+        }
+    }
+    format!("{:>width$}", format!("{x:.0e}"))
+}
+
+fn wlf_of(
+    law: Option<&ShiftLaw>,
+    format: &'static str,
+) -> Result<Option<(f64, f64, f64)>, CardError> {
+    match law {
+        None => Ok(None),
+        Some(ShiftLaw::Wlf { t_ref_c, c1, c2_k }) => Ok(Some((*t_ref_c, *c1, *c2_k))),
+        Some(ShiftLaw::Arrhenius { .. }) => Err(CardError::ShiftNotWlf {
+            format,
+            law: "Arrhenius",
+        }),
+        Some(ShiftLaw::Table { .. }) => Err(CardError::ShiftNotWlf {
+            format,
+            law: "a table",
+        }),
+    }
+}
+
+fn checked(spectrum: &RelaxationSpectrum) -> Result<f64, CardError> {
+    spectrum
+        .validate()
+        .map_err(|e| CardError::Unwritable(e.to_string()))?;
+    Ok(spectrum.instantaneous_modulus())
+}
+
+fn kind_name(kind: ModulusKind) -> &'static str {
+    match kind {
+        ModulusKind::Tensile => "tensile",
+        ModulusKind::Shear => "shear",
+    }
+}
+
+/// The viscoroll comment line that lets our readers recover E₀, the kind and ν.
+fn provenance(prefix: &str, spectrum: &RelaxationSpectrum, e0: f64) -> String {
+    format!(
+        "{prefix} viscoroll: instantaneous_modulus_pa={} kind={} poisson={}\n",
+        sci(e0),
+        kind_name(spectrum.kind),
+        spectrum.poisson
+    )
+}
+
+/// Abaqus `*VISCOELASTIC, TIME=PRONY` (+ `*TRS, DEFINITION=WLF` when a WLF law is given).
+pub fn abaqus(
+    spectrum: &RelaxationSpectrum,
+    shift: Option<&ShiftLaw>,
+    options: &CardOptions,
+) -> Result<String, CardError> {
+    let e0 = checked(spectrum)?;
+    let wlf = wlf_of(shift, "Abaqus")?;
+    let mut s = String::new();
+    s.push_str(&provenance("**", spectrum, e0));
+    s.push_str(
+        "** Units: Pa, s, degC. Prony ratios g_i = E_i/E0 relative to the instantaneous modulus.\n",
+    );
+    s.push_str(&format!(
+        "** Combine with *ELASTIC, MODULI=INSTANTANEOUS: E0 = {} Pa ({}), nu = {}\n",
+        sci(e0),
+        kind_name(spectrum.kind),
+        spectrum.poisson
+    ));
+    s.push_str("*VISCOELASTIC, TIME=PRONY\n");
+    for t in &spectrum.terms {
+        let g = t.modulus_pa / e0;
+        let k = match options.bulk {
+            BulkRelaxation::Elastic => 0.0,
+            BulkRelaxation::SameAsShear => g,
+        };
+        s.push_str(&format!("{}, {}, {}\n", sci(g), sci(k), sci(t.tau_s)));
+    }
+    if let Some((t_ref, c1, c2)) = wlf {
+        s.push_str("*TRS, DEFINITION=WLF\n");
+        s.push_str(&format!("{}, {}, {}\n", sci(t_ref), sci(c1), sci(c2)));
+    }
+    Ok(s)
+}
+
+/// ANSYS APDL `TB,PRONY … SHEAR` (+ `TB,SHIFT … WLF`).
+pub fn ansys(
+    spectrum: &RelaxationSpectrum,
+    shift: Option<&ShiftLaw>,
+    options: &CardOptions,
+) -> Result<String, CardError> {
+    let e0 = checked(spectrum)?;
+    let wlf = wlf_of(shift, "ANSYS")?;
+    let m = options.material_id;
+    let mut s = String::new();
+    s.push_str(&provenance("!", spectrum, e0));
+    s.push_str("! Units: Pa, s, degC. Relative moduli a_i = G_i/G0 (instantaneous), relaxation times tau_i.\n");
+    s.push_str(&format!(
+        "! Combine with the instantaneous elastic constants: E0 = {} Pa ({}), nu = {}\n",
+        sci(e0),
+        kind_name(spectrum.kind),
+        spectrum.poisson
+    ));
+    s.push_str(&format!("TB,PRONY,{m},1,{},SHEAR\n", spectrum.terms.len()));
+    let values: Vec<f64> = spectrum
+        .terms
+        .iter()
+        .flat_map(|t| [t.modulus_pa / e0, t.tau_s])
+        .collect();
+    for (c, chunk) in values.chunks(6).enumerate() {
+        let vals: Vec<String> = chunk.iter().map(|&v| sci(v)).collect();
+        s.push_str(&format!("TBDATA,{},{}\n", 6 * c + 1, vals.join(",")));
+    }
+    if let Some((t_ref, c1, c2)) = wlf {
+        s.push_str(&format!("TB,SHIFT,{m},1,3,WLF\n"));
+        s.push_str(&format!(
+            "TBDATA,1,{},{},{}\n",
+            sci(t_ref),
+            sci(c1),
+            sci(c2)
+        ));
+    }
+    Ok(s)
+}
+
+/// Maximum number of Prony cards (terms including the β = 0 one) written for LS-DYNA.
+pub const LSDYNA_MAX_TERMS: usize = 18;
+
+/// LS-DYNA `*MAT_GENERAL_VISCOELASTIC` with absolute shear moduli and βᵢ = 1/τᵢ.
+pub fn lsdyna(
+    spectrum: &RelaxationSpectrum,
+    shift: Option<&ShiftLaw>,
+    options: &CardOptions,
+) -> Result<String, CardError> {
+    let e0 = checked(spectrum)?;
+    let wlf = wlf_of(shift, "LS-DYNA")?;
+    let g = spectrum.to_kind(ModulusKind::Shear);
+    let n = g.terms.len() + usize::from(g.modulus_inf_pa > 0.0);
+    if n > LSDYNA_MAX_TERMS {
+        return Err(CardError::Unwritable(format!(
+            "{n} Prony terms (with the β = 0 equilibrium term); *MAT_GENERAL_VISCOELASTIC takes at most {LSDYNA_MAX_TERMS}"
+        )));
+    }
+    let f = |x: f64| fixed_width(x, 10);
+    let blank = " ".repeat(10);
+    let mut s = String::new();
+    s.push_str(&provenance("$", spectrum, e0));
+    s.push_str("$ Units: kg, m, s, Pa, degC. Shear moduli G_i (absolute), decay constants BETA_i = 1/tau_i.\n");
+    s.push_str("*MAT_GENERAL_VISCOELASTIC\n");
+    s.push_str(
+        "$      MID        RO      BULK       PCF        EF      TREF         A         B\n",
+    );
+    let (tref, a, b) = match wlf {
+        Some((t, c1, c2)) => (f(t), f(c1), f(c2)),
+        None => (blank.clone(), blank.clone(), blank.clone()),
+    };
+    let ro = options
+        .density_kg_m3
+        .map(f)
+        .unwrap_or_else(|| blank.clone());
+    let bulk = if spectrum.poisson < 0.5 {
+        f(e0 * spectrum.kind.to_tensile_factor(spectrum.poisson)
+            / (3.0 * (1.0 - 2.0 * spectrum.poisson)))
+    } else {
+        blank.clone()
+    };
+    s.push_str(&format!(
+        "{:>10}{ro}{bulk}{blank}{blank}{tref}{a}{b}\n",
+        options.material_id
+    ));
+    s.push_str(
+        "$     LCID        NT    BSTART     TRAMP     LCIDK       NTK   BSTARTK    TRAMPK\n",
+    );
+    s.push('\n');
+    s.push_str("$       GI     BETAI        KI    BETAKI\n");
+    if g.modulus_inf_pa > 0.0 {
+        s.push_str(&format!("{}{}\n", f(g.modulus_inf_pa), f(0.0)));
+    }
+    for t in &g.terms {
+        s.push_str(&format!("{}{}\n", f(t.modulus_pa), f(1.0 / t.tau_s)));
+    }
+    Ok(s)
+}
+
+fn parse_f64(tok: &str, line: usize) -> Result<f64, CardError> {
+    let t = tok.trim();
+    if t.is_empty() {
+        return Ok(0.0);
+    }
+    t.parse::<f64>().map_err(|_| CardError::Parse {
+        line,
+        message: format!("`{t}` is not a number"),
+    })
+}
+
+/// Parse our provenance comment (any comment prefix).
+fn read_provenance(line: &str, c: &mut CardContents) {
+    if let Some(rest) = line.split("viscoroll:").nth(1) {
+        for kv in rest.split_whitespace() {
+            match kv.split_once('=') {
+                Some(("instantaneous_modulus_pa", v)) => {
+                    c.instantaneous_modulus_pa = v.parse().ok()
+                }
+                Some(("kind", "shear")) => c.kind = ModulusKind::Shear,
+                Some(("kind", "tensile")) => c.kind = ModulusKind::Tensile,
+                Some(("poisson", v)) => c.poisson = v.parse().ok(),
+                _ => {}
+            }
+        }
+    }
+}
+
+fn empty_contents(kind: ModulusKind) -> CardContents {
+    CardContents {
+        instantaneous_modulus_pa: None,
+        kind,
+        poisson: None,
+        terms: vec![],
+        shift: None,
+    }
+}
+
+/// Read an Abaqus `*VISCOELASTIC, TIME=PRONY` card (and `*TRS, DEFINITION=WLF`).
+pub fn read_abaqus(text: &str) -> Result<CardContents, CardError> {
+    let mut c = empty_contents(ModulusKind::Tensile);
+    #[derive(PartialEq)]
+    enum Block {
+        None,
+        Prony,
+        Wlf,
+    }
+    let mut block = Block::None;
+    let mut found = false;
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if line.starts_with("**") {
+            read_provenance(line, &mut c);
+            continue;
+        }
+        if line.is_empty() {
+            continue;
+        }
+        if line.starts_with('*') {
+            let up = line.to_ascii_uppercase().replace(' ', "");
+            block = if up.starts_with("*VISCOELASTIC") && up.contains("TIME=PRONY") {
+                found = true;
+                Block::Prony
+            } else if up.starts_with("*TRS")
+                && (!up.contains("DEFINITION=") || up.contains("DEFINITION=WLF"))
+            {
+                Block::Wlf
+            } else {
+                Block::None
+            };
+            continue;
+        }
+        let v: Vec<f64> = line
+            .split(',')
+            .map(|t| parse_f64(t, i + 1))
+            .collect::<Result<_, _>>()?;
+        match block {
+            Block::Prony => {
+                if v.len() < 3 {
+                    return Err(CardError::Parse {
+                        line: i + 1,
+                        message: "expected g_i, k_i, tau_i".into(),
+                    });
+                }
+                c.terms.push((v[0], v[2]));
+            }
+            Block::Wlf => {
+                if v.len() < 3 {
+                    return Err(CardError::Parse {
+                        line: i + 1,
+                        message: "expected theta_0, C1, C2".into(),
+                    });
+                }
+                c.shift = Some(ShiftLaw::Wlf {
+                    t_ref_c: v[0],
+                    c1: v[1],
+                    c2_k: v[2],
+                });
+                block = Block::None;
+            }
+            Block::None => {}
+        }
+    }
+    if !found {
+        return Err(CardError::Missing("no *VISCOELASTIC, TIME=PRONY"));
+    }
+    Ok(c)
+}
+
+/// Read an ANSYS APDL card: `TB,PRONY`/`TB,PRON` (SHEAR; a BULK table is skipped) with its `TBDATA`
+/// lines, and `TB,SHIFT … WLF`. Written by ANSYS itself or by [`ansys`].
+pub fn read_ansys(text: &str) -> Result<CardContents, CardError> {
+    let mut c = empty_contents(ModulusKind::Shear);
+    #[derive(PartialEq, Clone, Copy)]
+    enum Table {
+        None,
+        PronyShear,
+        Wlf,
+    }
+    let mut table = Table::None;
+    let mut prony: Vec<f64> = vec![];
+    let mut wlf: Vec<f64> = vec![];
+    let mut found = false;
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if let Some(rest) = line.strip_prefix('!') {
+            read_provenance(rest, &mut c);
+            continue;
+        }
+        let line = line.split('!').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        let cmd = fields[0].to_ascii_uppercase();
+        if cmd == "TB" {
+            let lab = fields
+                .get(1)
+                .map(|s| s.to_ascii_uppercase())
+                .unwrap_or_default();
+            let opt = fields
+                .get(5)
+                .map(|s| s.to_ascii_uppercase())
+                .unwrap_or_default();
+            table = if lab.starts_with("PRON") && (opt.is_empty() || opt.starts_with("SHEA")) {
+                found = true;
+                prony.clear();
+                Table::PronyShear
+            } else if lab.starts_with("SHIF") && opt.starts_with("WLF") {
+                Table::Wlf
+            } else {
+                Table::None
+            };
+        } else if cmd.starts_with("TBDA") {
+            let start = parse_f64(fields.get(1).copied().unwrap_or("1"), i + 1)? as usize;
+            if start == 0 {
+                return Err(CardError::Parse {
+                    line: i + 1,
+                    message: "TBDATA start location must be ≥ 1".into(),
+                });
+            }
+            let target = match table {
+                Table::PronyShear => &mut prony,
+                Table::Wlf => &mut wlf,
+                Table::None => continue,
+            };
+            for (k, tok) in fields.iter().skip(2).enumerate() {
+                let idx = start - 1 + k;
+                if target.len() <= idx {
+                    target.resize(idx + 1, 0.0);
+                }
+                target[idx] = parse_f64(tok, i + 1)?;
+            }
+        }
+    }
+    if !found {
+        return Err(CardError::Missing("no TB,PRONY … SHEAR table"));
+    }
+    if prony.len() % 2 == 1 {
+        prony.push(0.0);
+    }
+    c.terms = prony.chunks(2).map(|p| (p[0], p[1])).collect();
+    if wlf.len() >= 3 {
+        c.shift = Some(ShiftLaw::Wlf {
+            t_ref_c: wlf[0],
+            c1: wlf[1],
+            c2_k: wlf[2],
+        });
+    }
+    Ok(c)
+}
+
+/// Read an LS-DYNA `*MAT_GENERAL_VISCOELASTIC` card written in fixed 10-character fields (or with
+/// commas). Terms with β = 0 make up the equilibrium modulus. Returns shear moduli relative to G₀ with
+/// G₀ = Σ GI stated as the instantaneous modulus.
+pub fn read_lsdyna(text: &str) -> Result<CardContents, CardError> {
+    let mut c = empty_contents(ModulusKind::Shear);
+    let mut in_card = false;
+    let mut card_no = 0;
+    let mut g_inf = 0.0;
+    let mut terms: Vec<(f64, f64)> = vec![];
+    let mut wlf = None;
+    let fields_of = |line: &str, i: usize| -> Result<Vec<f64>, CardError> {
+        if line.contains(',') {
+            line.split(',').map(|t| parse_f64(t, i)).collect()
+        } else {
+            let chars: Vec<char> = line.chars().collect();
+            chars
+                .chunks(10)
+                .map(|ch| parse_f64(&ch.iter().collect::<String>(), i))
+                .collect()
+        }
+    };
+    for (i, raw) in text.lines().enumerate() {
+        if raw.starts_with('$') {
+            read_provenance(raw, &mut c);
+            continue;
+        }
+        if raw.starts_with('*') {
+            in_card = raw
+                .trim()
+                .to_ascii_uppercase()
+                .starts_with("*MAT_GENERAL_VISCOELASTIC");
+            card_no = 0;
+            continue;
+        }
+        if !in_card {
+            continue;
+        }
+        card_no += 1;
+        match card_no {
+            1 => {
+                let v = fields_of(raw, i + 1)?;
+                let get = |k: usize| v.get(k).copied().unwrap_or(0.0);
+                if get(6) != 0.0 || get(7) != 0.0 {
+                    wlf = Some(ShiftLaw::Wlf {
+                        t_ref_c: get(5),
+                        c1: get(6),
+                        c2_k: get(7),
+                    });
+                }
+            }
+            2 => {}
+            _ => {
+                if raw.trim().is_empty() {
+                    continue;
+                }
+                let v = fields_of(raw, i + 1)?;
+                let gi = v.first().copied().unwrap_or(0.0);
+                let beta = v.get(1).copied().unwrap_or(0.0);
+                if beta == 0.0 {
+                    g_inf += gi;
+                } else {
+                    terms.push((gi, 1.0 / beta));
+                }
+            }
+        }
+    }
+    if card_no == 0 {
+        return Err(CardError::Missing("no *MAT_GENERAL_VISCOELASTIC"));
+    }
+    let g0 = g_inf + terms.iter().map(|t| t.0).sum::<f64>();
+    if g0 <= 0.0 {
+        return Err(CardError::Missing("all GI are zero"));
+    }
+    // The card's moduli are shear; keep them shear and relative to G₀.
+    c.kind = ModulusKind::Shear;
+    c.instantaneous_modulus_pa = Some(g0);
+    c.terms = terms.into_iter().map(|(g, tau)| (g / g0, tau)).collect();
+    c.shift = wlf;
+    Ok(c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn number_formats() {
+        assert_eq!(sci(1.5e-3), "1.5000000000000000e-03");
+        assert_eq!(sci(-2.0e12), "-2.0000000000000000e+12");
+        assert_eq!(fixed_width(1.234567891e9, 10), "1.234568e9");
+        assert_eq!(fixed_width(1.234567891e-9, 10), "1.23457e-9");
+        assert_eq!(fixed_width(0.0, 10), "       0.0");
+        assert_eq!(fixed_width(1e200, 10).trim().parse::<f64>().unwrap(), 1e200);
+    }
+}
