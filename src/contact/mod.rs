@@ -44,3 +44,16 @@ pub struct DimensionlessSolution {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error_estimate: Option<f64>,
 }
+
+pub mod error;
+pub mod kernel;
+pub mod load;
+pub mod scene;
+pub mod solve;
+pub mod thesis;
+
+pub use error::ContactError;
+pub use kernel::Kernel;
+pub use load::LoadSettings;
+pub use scene::{roll, DimensionlessScene, RollSolution, Scene};
+pub use solve::{solve_at_lambda, solve_at_load, ContactSettings, Scheme};
