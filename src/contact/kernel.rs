@@ -92,10 +92,11 @@ impl Kernel {
     ///
     /// The logarithmic part is summed in closed form without cancellation:
     /// (1/h)Δ²[ξ²log|ξ|/2] = h(D(k) + log h) with D(k) = ½Δ²[k² log|k|] (see [`half_second_diff_k2logk`]).
-    /// Per term with H = bh: (fᵢ/bᵢ³)(1/h)Δ²h₂ = (fᵢ/bᵢ)·h·S(k), S(k) = Δ²h₂(kH)/H². For H < 1 S is the plain
-    /// second difference (|h₂| ≲ (kH)² log so the relative loss is at most k² ε, ~1e-10 at k = 1280); for
-    /// H ≥ 1 the closed form of h₂ splits S into D(k) + log H + γ_E − 3/2 + E(k)/H + Δ²h(kH)/H² with
-    /// E(k) = Δ²[k log|k|], each piece cancellation-free.
+    /// Per term with H = bh: (fᵢ/bᵢ³)(1/h)Δ²h₂ = (fᵢ/bᵢ)·h·S(k), S(k) = Δ²h₂(kH)/H². Where |kH| < 2, S is
+    /// the plain second difference (h₂ ~ x³ log|x| is small there: relative loss ≲ k²ε). Elsewhere the
+    /// closed form of h₂ splits S into D(k) + log H + γ_E − 3/2 + E(k)/H + Δ²h(kH)/H² with
+    /// E(k) = Δ²[k log|k|], whose pieces do not cancel (the plain second difference of h₂ ~ x² log|x|/2
+    /// would lose k²ε, ~1e-10 at k = 1280, and made the load N′(λ) noisy at the 1e-9 level).
     pub fn hat_averages(&self, m: usize, h: f64) -> Vec<f64> {
         let mi = m as i64;
         let len = 2 * m + 1;
@@ -104,35 +105,39 @@ impl Kernel {
             .map(|k| h * (half_second_diff_k2logk(k) + ln_h) - 1.5 * h)
             .collect();
         // Values at k = −m−1 ..= m+1 (index k + m + 1), shared by neighbouring k.
-        let mut vals = vec![0.0; len + 2];
+        let mut v_h = vec![0.0; len + 2];
+        let mut v_h2 = vec![0.0; len + 2];
         for t in &self.terms {
             let big_h = t.b * h;
             let c = (t.f / t.b) * h;
-            if big_h < 1.0 {
-                for (idx, v) in vals.iter_mut().enumerate() {
-                    let k = idx as i64 - mi - 1;
-                    *v = kernel_bracket_int2(k as f64 * big_h);
-                }
-                let inv_h2 = 1.0 / (big_h * big_h);
-                for (idx, ak) in a.iter_mut().enumerate() {
-                    let s = (vals[idx + 2] - 2.0 * vals[idx + 1] + vals[idx]) * inv_h2;
-                    *ak += c * s;
-                }
+            // Plain second differences of h₂ where |kH| < 2 (h₂ is small there and has no large
+            // pieces), the split form elsewhere (its pieces do not cancel once |x| ≳ 1).
+            let split_from = if big_h >= 1.0 {
+                0
             } else {
-                for (idx, v) in vals.iter_mut().enumerate() {
-                    let k = idx as i64 - mi - 1;
-                    *v = kernel_bracket(k as f64 * big_h);
+                (2.0 / big_h).ceil().min(1e18) as i64
+            };
+            for (idx, (vh, vh2)) in v_h.iter_mut().zip(v_h2.iter_mut()).enumerate() {
+                let k = idx as i64 - mi - 1;
+                let x = k as f64 * big_h;
+                if k.abs() + 1 >= split_from {
+                    *vh = kernel_bracket(x);
                 }
-                let base = big_h.ln() + EULER_GAMMA - 1.5;
-                for (idx, ak) in a.iter_mut().enumerate() {
-                    let k = idx as i64 - mi;
-                    let dh = vals[idx + 2] - 2.0 * vals[idx + 1] + vals[idx];
-                    let s = half_second_diff_k2logk(k)
-                        + base
-                        + second_diff_klogk(k) / big_h
-                        + dh / (big_h * big_h);
-                    *ak += c * s;
+                if k.abs() <= split_from {
+                    *vh2 = kernel_bracket_int2(x);
                 }
+            }
+            let base = big_h.ln() + EULER_GAMMA - 1.5;
+            let inv_h2 = 1.0 / (big_h * big_h);
+            for (idx, ak) in a.iter_mut().enumerate() {
+                let k = idx as i64 - mi;
+                let s = if k.abs() >= split_from {
+                    let dh = v_h[idx + 2] - 2.0 * v_h[idx + 1] + v_h[idx];
+                    half_second_diff_k2logk(k) + base + second_diff_klogk(k) / big_h + dh * inv_h2
+                } else {
+                    (v_h2[idx + 2] - 2.0 * v_h2[idx + 1] + v_h2[idx]) * inv_h2
+                };
+                *ak += c * s;
             }
         }
         a
