@@ -11,22 +11,22 @@ use anyhow::{bail, Context};
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// Creep terms f:b[,f:b…] of γ(ζ) = Σ f·e^(−bζ) (f ≥ 0, b > 0; `0:1` is the elastic half-space).
-    #[arg(long, value_name = "f:b[,f:b...]")]
+    #[arg(long, value_name = "f:b[,f:b...]", allow_hyphen_values = true)]
     pub creep: String,
     /// Contact length λ (in units of V·T).
-    #[arg(long, conflicts_with = "load", required_unless_present = "load")]
+    #[arg(long, allow_negative_numbers = true)]
     pub lambda: Option<f64>,
     /// Load N′ = 2∫Q′dξ (eq. 3.24); λ is then found by the bracketed load loop.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub load: Option<f64>,
     /// Number of intervals on the contact.
     #[arg(long, default_value_t = 40)]
     pub n: usize,
     /// Discretisation: `thesis` (piecewise-linear collocation).
-    #[arg(long, default_value = "thesis", value_parser = ["thesis"])]
+    #[arg(long, default_value = "thesis")]
     pub scheme: String,
     /// Dimensionless roll radius ρ = R/(VT); with it, the friction coefficient F/N is reported.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub rho: Option<f64>,
     /// Print one JSON object on stdout.
     #[arg(long)]
@@ -94,7 +94,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             }
             contact::solve_at_load(&terms, load, &settings)?
         }
-        _ => bail!("give exactly one of --lambda and --load"),
+        (Some(_), Some(_)) => bail!("give only one of --lambda and --load, not both"),
+        (None, None) => bail!("give one of --lambda L (contact length) or --load N' (load)"),
     };
     let friction = args.rho.map(|rho| sol.friction_rho / rho);
     if args.json {

@@ -17,16 +17,16 @@ pub struct Args {
     #[arg(value_name = "SPECTRUM.json")]
     pub spectrum: PathBuf,
     /// Roll radius in mm (> 0).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius_mm: f64,
     /// Load per unit width in N/m (> 0).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub load_n_per_m: f64,
     /// Rolling speed in m/s (> 0).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub speed_m_s: f64,
     /// Poisson's ratio in [0, 0.5] (default: the spectrum's, itself 0.5 by default).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub poisson: Option<f64>,
     /// Number of intervals of the thesis scheme.
     #[arg(long, default_value_t = 200)]
