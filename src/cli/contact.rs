@@ -134,6 +134,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         if let Some(fr) = friction {
             eprintln!("F/N              = {fr:.9e}");
         }
+        if terms == [CreepTerm { f: 10.0, b: 1.0 }] && args.lambda == Some(1.0) {
+            eprintln!(
+                "thesis Table 1 (n = 40): beta/lambda = 0.1959, rho*F/N = 0.43093; \
+                 Goodier & Loutzenheiser: 0.1952, 0.4308"
+            );
+        }
         eprintln!("{:>14} {:>14}", "xi", "Q'");
         for (x, q) in sol.xi.iter().zip(&sol.pressure) {
             eprintln!("{x:>14.6e} {q:>14.6e}");

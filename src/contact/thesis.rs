@@ -13,7 +13,8 @@
 //!   Σⱼ Qⱼ [A(−j) − A(i−j)] − ξᵢ β = −ξᵢ²/2,     j = 1 … n−1
 //! ```
 //!
-//! A depends on i − j only (Toeplitz), so assembly needs 2n + 3 kernel evaluations per term, not n².
+//! A depends on i − j only (Toeplitz), so assembly needs O(n) special-function calls per term (at most
+//! 2(2n + 3)), not O(n²).
 //! The dense system is solved by LU with partial pivoting (nalgebra). Integrated quantities are exact
 //! for the piecewise-linear pressure: ∫Q′ = hΣQⱼ, ∫Q′ξ = hΣQⱼξⱼ, so N′ = 2hΣQⱼ (eq. 3.24) and
 //! ρF/N = ΣQⱼ(ξⱼ − β)/ΣQⱼ (eq. 3.20 with eq. 3.22).
