@@ -29,7 +29,7 @@ pub enum ContactError {
         n: usize,
     },
     /// The collocation system could not be solved (singular or non-finite).
-    #[error("the collocation system at lambda = {lambda} (n = {n}) is singular or not finite")]
+    #[error("the collocation system at lambda = {lambda:e} (n = {n}) is singular or not finite")]
     Singular {
         /// Contact length λ of the failed solve.
         lambda: f64,

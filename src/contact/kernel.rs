@@ -26,6 +26,9 @@ use super::error::{non_negative, positive, ContactError};
 use super::CreepTerm;
 use crate::special::{kernel_bracket, kernel_bracket_int1, kernel_bracket_int2, EULER_GAMMA};
 
+/// Below this bᵢh the hat averages use the leading series term of h₂ (see [`Kernel::hat_averages`]).
+const TINY_H: f64 = 1e-30;
+
 /// The kernel of eq. 3.19 for one creep spectrum γ(ζ) = Σ fᵢ e^(−bᵢζ).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Kernel {
@@ -104,43 +107,69 @@ impl Kernel {
         let mut a: Vec<f64> = (-mi..=mi)
             .map(|k| h * (half_second_diff_k2logk(k) + ln_h) - 1.5 * h)
             .collect();
-        // Values at k = −m−1 ..= m+1 (index k + m + 1), shared by neighbouring k.
-        let mut v_h = vec![0.0; len + 2];
-        let mut v_h2 = vec![0.0; len + 2];
         for t in &self.terms {
-            let big_h = t.b * h;
-            let c = (t.f / t.b) * h;
-            // Plain second differences of h₂ where |kH| < 2 (h₂ is small there and has no large
-            // pieces), the split form elsewhere (its pieces do not cancel once |x| ≳ 1).
-            let split_from = if big_h >= 1.0 {
-                0
-            } else {
-                (2.0 / big_h).ceil().min(1e18) as i64
-            };
-            for (idx, (vh, vh2)) in v_h.iter_mut().zip(v_h2.iter_mut()).enumerate() {
-                let k = idx as i64 - mi - 1;
-                let x = k as f64 * big_h;
-                if k.abs() + 1 >= split_from {
-                    *vh = kernel_bracket(x);
-                }
-                if k.abs() <= split_from {
-                    *vh2 = kernel_bracket_int2(x);
-                }
-            }
-            let base = big_h.ln() + EULER_GAMMA - 1.5;
-            let inv_h2 = 1.0 / (big_h * big_h);
-            for (idx, ak) in a.iter_mut().enumerate() {
-                let k = idx as i64 - mi;
-                let s = if k.abs() >= split_from {
-                    let dh = v_h[idx + 2] - 2.0 * v_h[idx + 1] + v_h[idx];
-                    half_second_diff_k2logk(k) + base + second_diff_klogk(k) / big_h + dh * inv_h2
-                } else {
-                    (v_h2[idx + 2] - 2.0 * v_h2[idx + 1] + v_h2[idx]) * inv_h2
-                };
-                *ak += c * s;
-            }
+            add_term_hat_averages(t, m, h, &mut a);
         }
         a
+    }
+}
+
+/// Add the hat averages of one term's part (fᵢ/bᵢ)h(bᵢξ) of K to `a` (indexed k + m, k = −m..=m).
+fn add_term_hat_averages(t: &CreepTerm, m: usize, h: f64, a: &mut [f64]) {
+    let mi = m as i64;
+    let len = 2 * m + 1;
+    let big_h = t.b * h;
+    let c = (t.f / t.b) * h;
+    if big_h < TINY_H {
+        // bh so small that h₂(kH) ~ (kH)³ log would underflow: leading term of the series
+        // h₂(x) = (x³/6)(11/6 − γ_E − log|x|) + O(x⁴ log|x|), divided by H² in closed form,
+        // S(k) = (H/6)[6k(11/6 − γ_E − log H) − Δ²(k³ log|k|)], relative error O(kH) < 1e-25.
+        let l = 11.0 / 6.0 - EULER_GAMMA - big_h.ln();
+        for (idx, ak) in a.iter_mut().enumerate() {
+            let k = idx as i64 - mi;
+            let p = |j: i64| {
+                if j == 0 {
+                    0.0
+                } else {
+                    (j as f64).powi(3) * (j.unsigned_abs() as f64).ln()
+                }
+            };
+            let d2 = p(k + 1) - 2.0 * p(k) + p(k - 1);
+            *ak += c * (big_h / 6.0) * (6.0 * k as f64 * l - d2);
+        }
+        return;
+    }
+    // Values at k = −m−1 ..= m+1 (index k + m + 1), shared by neighbouring k.
+    let mut v_h = vec![0.0; len + 2];
+    let mut v_h2 = vec![0.0; len + 2];
+    // Plain second differences of h₂ where |kH| < 2 (h₂ is small there and has no large
+    // pieces), the split form elsewhere (its pieces do not cancel once |x| ≳ 1).
+    let split_from = if big_h >= 1.0 {
+        0
+    } else {
+        (2.0 / big_h).ceil().min(1e18) as i64
+    };
+    for (idx, (vh, vh2)) in v_h.iter_mut().zip(v_h2.iter_mut()).enumerate() {
+        let k = idx as i64 - mi - 1;
+        let x = k as f64 * big_h;
+        if k.abs() + 1 >= split_from {
+            *vh = kernel_bracket(x);
+        }
+        if k.abs() <= split_from {
+            *vh2 = kernel_bracket_int2(x);
+        }
+    }
+    let base = big_h.ln() + EULER_GAMMA - 1.5;
+    let inv_h2 = 1.0 / (big_h * big_h);
+    for (idx, ak) in a.iter_mut().enumerate() {
+        let k = idx as i64 - mi;
+        let s = if k.abs() >= split_from {
+            let dh = v_h[idx + 2] - 2.0 * v_h[idx + 1] + v_h[idx];
+            half_second_diff_k2logk(k) + base + second_diff_klogk(k) / big_h + dh * inv_h2
+        } else {
+            (v_h2[idx + 2] - 2.0 * v_h2[idx + 1] + v_h2[idx]) * inv_h2
+        };
+        *ak += c * s;
     }
 }
 
@@ -383,6 +412,42 @@ mod tests {
                         "b={b} h={h} k={k}: {got} vs {want}"
                     );
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn hat_averages_viscous_part_for_tiny_bh() {
+        // bh = 1e-31 (< TINY_H) and 1e-25 (plain branch): one term's part of A(k) on its own (it is
+        // ≈ 1e-29 of the elastic part) against quadrature of ∫φ(s)(f/b)h(b(kh − s))ds, to 1e-9
+        // relative (series truncation O(kH) ≈ 1e-28; quadrature ≈ 1e-13; Δ²(k³ log k) loses ≈ k²ε).
+        for &(b, h) in &[(1e-12, 1e-19), (1e-12, 1e-13)] {
+            let f = 999.0 * b;
+            let m = 60;
+            let mut a = vec![0.0; 2 * m + 1];
+            add_term_hat_averages(&CreepTerm { f, b }, m, h, &mut a);
+            for k in [-60i64, -3, -1, 0, 1, 2, 60] {
+                let kf = k as f64;
+                let visc = |x: f64| (f / b) * kernel_bracket(b * x);
+                let big_h = b * h;
+                let arg = |c: f64, u: f64, um: f64| {
+                    if k == 0 {
+                        h * c * um
+                    } else {
+                        h * (kf + c - c * u)
+                    }
+                };
+                let want = (ts01_both(&|u, um| u * visc(arg(1.0, u, um)))
+                    + ts01_both(&|u, um| u * visc(arg(-1.0, u, um))))
+                    * h;
+                let idx = (k + m as i64) as usize;
+                let got = a[idx];
+                // scale: the k = 1 term, (f/b)·h·H·|log H|; S(0) is O(H²) and only absolutely small.
+                let tol = 1e-9 * (want.abs() + (f / b) * h * big_h * big_h.ln().abs());
+                assert!(
+                    (got - want).abs() <= tol,
+                    "b={b} h={h} k={k}: {got:e} vs {want:e}"
+                );
             }
         }
     }
