@@ -102,7 +102,6 @@ impl Kernel {
     /// would lose k²ε, ~1e-10 at k = 1280, and made the load N′(λ) noisy at the 1e-9 level).
     pub fn hat_averages(&self, m: usize, h: f64) -> Vec<f64> {
         let mi = m as i64;
-        let len = 2 * m + 1;
         let ln_h = h.ln();
         let mut a: Vec<f64> = (-mi..=mi)
             .map(|k| h * (half_second_diff_k2logk(k) + ln_h) - 1.5 * h)
