@@ -235,3 +235,21 @@ fn roll_bad_arguments() {
         "not a creep spectrum",
     );
 }
+
+#[test]
+fn contact_exact_scheme() {
+    let v = json(&run(&[
+        "contact", "--creep", "10:1", "--lambda", "1", "--n", "40", "--scheme", "exact", "--json",
+    ]));
+    assert_eq!(v["scheme"], "exact");
+    // Goodier & Loutzenheiser's 0.1952 and 0.4308 within 0.5 % (as in contact_exact).
+    assert!((num(&v, "beta_over_lambda") / 0.1952 - 1.0).abs() <= 5e-3);
+    assert!((num(&v, "friction_rho") / 0.4308 - 1.0).abs() <= 5e-3);
+    assert_eq!(v["xi"].as_array().unwrap().len(), 41);
+    one_line_error(
+        &[
+            "contact", "--creep", "1:1,1:2", "--lambda", "1", "--scheme", "exact",
+        ],
+        "one creep term",
+    );
+}

@@ -22,7 +22,8 @@ pub struct Args {
     /// Number of intervals on the contact.
     #[arg(long, default_value_t = 40)]
     pub n: usize,
-    /// Discretisation: `thesis` (piecewise-linear collocation).
+    /// Discretisation: `thesis` (piecewise-linear collocation) or `exact` (one creep term only; the
+    /// pressure is then sampled at n + 1 points).
     #[arg(long, default_value = "thesis")]
     pub scheme: String,
     /// Dimensionless roll radius ρ = R/(VT); with it, the friction coefficient F/N is reported.
@@ -74,7 +75,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let scheme = match args.scheme.as_str() {
         "thesis" => Scheme::Thesis,
-        other => bail!("--scheme `{other}` is not known (thesis)"),
+        "exact" => Scheme::Exact,
+        other => bail!("--scheme `{other}` is not known (thesis, exact)"),
     };
     let settings = ContactSettings {
         scheme,

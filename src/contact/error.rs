@@ -71,6 +71,9 @@ pub enum ContactError {
     /// A scheme not available for this input (e.g. the exact one for several terms).
     #[error("{0}")]
     Unsupported(String),
+    /// The exact one-term solution refused its input.
+    #[error("exact scheme: {0}")]
+    Exact(#[from] super::exact::ContactExactError),
 }
 
 /// Check that `value` is finite and > 0.

@@ -7,7 +7,7 @@
 use super::error::ContactError;
 use super::kernel::Kernel;
 use super::load::{solve_at_load as load_loop, LoadSettings};
-use super::{thesis, CreepTerm, DimensionlessSolution};
+use super::{exact, thesis, CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
 
 /// Which discretisation solves eq. 3.25.
@@ -17,6 +17,9 @@ pub enum Scheme {
     /// The thesis' piecewise-linear collocation (first order in h = λ/n).
     #[default]
     Thesis,
+    /// The exact solution for one creep term (standard linear solid, [`super::exact`]); the pressure
+    /// is sampled at n + 1 equally spaced points.
+    Exact,
 }
 
 impl Scheme {
@@ -24,6 +27,7 @@ impl Scheme {
     pub fn name(self) -> &'static str {
         match self {
             Scheme::Thesis => "thesis",
+            Scheme::Exact => "exact",
         }
     }
 }
@@ -59,6 +63,10 @@ pub fn solve_at_lambda(
     let kernel = Kernel::new(terms)?;
     match settings.scheme {
         Scheme::Thesis => thesis::solve_at_lambda(&kernel, lambda, settings.n),
+        Scheme::Exact => {
+            thesis::check_intervals(settings.n)?;
+            Ok(exact::one_term_at_lambda(one_term(terms)?, lambda)?.to_solution(settings.n + 1))
+        }
     }
 }
 
@@ -76,5 +84,20 @@ pub fn solve_at_load(
                 thesis::solve_at_lambda(&kernel, lambda, settings.n)
             })
         }
+        Scheme::Exact => {
+            thesis::check_intervals(settings.n)?;
+            Ok(exact::one_term_at_load(one_term(terms)?, load)?.to_solution(settings.n + 1))
+        }
+    }
+}
+
+/// The single term the exact scheme needs.
+fn one_term(terms: &[CreepTerm]) -> Result<CreepTerm, ContactError> {
+    match terms {
+        [t] => Ok(*t),
+        _ => Err(ContactError::Unsupported(format!(
+            "the exact scheme solves one creep term (the standard linear solid); got {} terms",
+            terms.len()
+        ))),
     }
 }
