@@ -3,8 +3,10 @@
 //! Measures, for n = 10 … 1280 intervals and for 1 and 10 creep terms: the wall time of one solve at
 //! given λ (kernel assembly, O(n) special-function calls, plus the dense LU, O(n³)) and of one load
 //! point (the bracketed Brent loop, several solves), next to the error of ρF/N and of λ against a
-//! reference. The reference is Richardson's extrapolation of n = 1280 and 2560 (first order in h,
-//! MATH.md §3): X_ref = 2X(2560) − X(1280).
+//! reference: the exact solution for one term (`contact::exact`); for ten terms Richardson's
+//! extrapolation of n = 1280 and 2560 (first order in h, MATH.md §3): X_ref = 2X(2560) − X(1280).
+//! A second table gives the error against the exact solution at given load over seven decades of
+//! speed (one term, b = 1e-3 … 1e3, f/b = 10, N′ = 1/4) and the observed order.
 //!
 //! Cases: one term f = 10, b = 1 (thesis Table 1) at λ = 1 and at N′ = 1/4; ten terms
 //! bᵢ = 10^(−6…6), Σfᵢ/bᵢ = 999 (compliance ratio 1000) at λ = 10 and at N′ = 1/4.
@@ -14,7 +16,8 @@
 
 use std::time::{Duration, Instant};
 use viscoroll::contact::{
-    solve_at_lambda, solve_at_load, ContactSettings, CreepTerm, DimensionlessSolution,
+    one_term_at_lambda, one_term_at_load, solve_at_lambda, solve_at_load, ContactSettings,
+    CreepTerm, DimensionlessSolution,
 };
 
 fn settings(n: usize) -> ContactSettings {
@@ -58,20 +61,26 @@ fn main() {
         ("1 term (f = 10, b = 1)", &one, 1.0),
         ("10 terms (b = 1e-6…1e6, ratio 1000)", &ten, 10.0),
     ] {
-        let reference = |g: &dyn Fn(usize) -> f64| 2.0 * g(2560) - g(1280);
-        let fr_lambda_ref = reference(&|n| {
-            solve_at_lambda(terms, lambda, &settings(n))
-                .unwrap()
-                .friction_rho
-        });
         let at_load = |n: usize| solve_at_load(terms, 0.25, &settings(n)).unwrap();
-        let s1280 = at_load(1280);
-        let s2560 = at_load(2560);
-        let fr_load_ref = 2.0 * s2560.friction_rho - s1280.friction_rho;
-        let lam_load_ref = 2.0 * s2560.lambda - s1280.lambda;
-        println!(
-            "\n{name}: at lambda = {lambda} and at N' = 1/4 (reference: Richardson n = 1280, 2560)"
-        );
+        let (fr_lambda_ref, fr_load_ref, lam_load_ref, what) = if terms.len() == 1 {
+            let e = one_term_at_lambda(terms[0], lambda).unwrap();
+            let el = one_term_at_load(terms[0], 0.25).unwrap();
+            (e.friction_rho, el.friction_rho, el.lambda, "exact solution")
+        } else {
+            let r = |n| {
+                solve_at_lambda(terms, lambda, &settings(n))
+                    .unwrap()
+                    .friction_rho
+            };
+            let (s1280, s2560) = (at_load(1280), at_load(2560));
+            (
+                2.0 * r(2560) - r(1280),
+                2.0 * s2560.friction_rho - s1280.friction_rho,
+                2.0 * s2560.lambda - s1280.lambda,
+                "Richardson n = 1280, 2560",
+            )
+        };
+        println!("\n{name}: at lambda = {lambda} and at N' = 1/4 (reference: {what})");
         println!("rho F/N ref at lambda: {fr_lambda_ref:.9}; at load: rho F/N {fr_load_ref:.9}, lambda {lam_load_ref:.9}");
         println!("|    n | solve at λ (ms) | rel. err ρF/N at λ | load point (ms) | solves | rel. err ρF/N at N′ | rel. err λ at N′ |");
         println!("|-----:|----------------:|-------------------:|----------------:|-------:|--------------------:|-----------------:|");
@@ -88,5 +97,58 @@ fn main() {
                 (s_n.lambda / lam_load_ref - 1.0).abs(),
             );
         }
+    }
+
+    // Thesis scheme against the exact one-term solution at given load over seven decades of speed.
+    println!("\nThesis scheme vs exact, one term f/b = 10, N' = 1/4, speed ∝ 1/b: relative errors of lambda | rho F/N");
+    let bs: Vec<f64> = (-3..=3).map(|e| 10f64.powi(e)).collect();
+    let exact: Vec<_> = bs
+        .iter()
+        .map(|&b| one_term_at_load(CreepTerm { f: 10.0 * b, b }, 0.25).unwrap())
+        .collect();
+    let mut header = String::from("|    n |");
+    for b in &bs {
+        header += &format!(" b = {b:<7e}     |");
+    }
+    println!("{header}");
+    println!("|-----:|{}", "-----------------:|".repeat(bs.len()));
+    let mut rows: Vec<Vec<(f64, f64)>> = Vec::new();
+    for &n in &ns {
+        let row: Vec<(f64, f64)> = bs
+            .iter()
+            .zip(&exact)
+            .map(|(&b, e)| {
+                let s = solve_at_load(&[CreepTerm { f: 10.0 * b, b }], 0.25, &settings(n)).unwrap();
+                (
+                    (s.lambda / e.lambda - 1.0).abs(),
+                    (s.friction_rho / e.friction_rho - 1.0).abs(),
+                )
+            })
+            .collect();
+        let mut line = format!("| {n:4} |");
+        for (el, ef) in &row {
+            line += &format!(" {el:.1e} / {ef:.1e} |");
+        }
+        println!("{line}");
+        rows.push(row);
+    }
+    for (label, i, j) in [
+        ("order 40→1280", 2usize, ns.len() - 1),
+        ("order 640→1280", ns.len() - 2, ns.len() - 1),
+    ] {
+        let span = (ns[j] as f64 / ns[i] as f64).log2();
+        let mut line = format!("| {label} |");
+        for (ri, rj) in rows[i].iter().zip(&rows[j]) {
+            let ol = (ri.0 / rj.0).log2() / span;
+            let of = (ri.1 / rj.1).log2() / span;
+            line += &format!(" {ol:7.2} / {of:7.2} |");
+        }
+        println!("{line}");
+    }
+    for (b, e) in bs.iter().zip(&exact) {
+        println!(
+            "exact b = {b:e}: lambda {:.9}, rho F/N {:.9e}",
+            e.lambda, e.friction_rho
+        );
     }
 }
