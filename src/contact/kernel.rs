@@ -2,7 +2,7 @@
 //! for the creep function γ(ζ) = Σᵢ fᵢ e^(−bᵢζ) (eq. 3.7).
 //!
 //! Input: the creep terms [`CreepTerm`] (fᵢ ≥ 0, bᵢ > 0); output: K, K₁ = ∫₀^ξ K, K₂ = ∫₀^ξ K₁ and the
-//! hat-function averages of K that are the matrix entries of the thesis scheme ([`Kernel::hat_average`]).
+//! hat-function averages of K that are the matrix entries of the thesis scheme ([`Kernel::hat_averages`]).
 //!
 //! Math (MATH.md §2). Per term, ∫₀^∞ e^(−bζ) log|ξ+ζ| dζ = (log|ξ| − log b + g(bξ))/b with
 //! g(x) = eˣE1(x) (x > 0), −eˣEi(−x) (x < 0). Constants cancel in eq. 3.25 (the kernel enters only as
