@@ -275,3 +275,82 @@ where
         residual: f64::NAN,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fake(lambda: f64, load: f64) -> DimensionlessSolution {
+        DimensionlessSolution {
+            scheme: "fake".into(),
+            lambda,
+            beta: lambda / 2.0,
+            load,
+            friction_rho: 0.0,
+            xi: vec![],
+            pressure: vec![],
+            n: 0,
+            iterations: 0,
+            error_estimate: None,
+        }
+    }
+
+    #[test]
+    fn finds_the_root_of_a_known_load_curve() {
+        // N′(λ) = λ²/(4(1 + c·λ/(1+λ))): monotone, between the relaxed (1 + c) and glassy Hertz loads.
+        let c = 999.0;
+        let curve = |l: f64| l * l / (4.0 * (1.0 + c * l / (1.0 + l)));
+        for &target in &[1e-6, 0.25, 1e4] {
+            let s = solve_at_load(target, c, &LoadSettings::default(), |l| {
+                Ok(fake(l, curve(l)))
+            })
+            .unwrap();
+            assert!(
+                (s.load / target - 1.0).abs() <= 1e-10,
+                "N' = {target}: {}",
+                s.load
+            );
+            assert!(s.iterations <= 15, "{} solves", s.iterations);
+        }
+    }
+
+    #[test]
+    fn unbracketed_load_names_the_bracket() {
+        // A solver whose load never reaches the target: the error carries the last bracket tried.
+        let err = solve_at_load(
+            1.0,
+            3.0,
+            &LoadSettings {
+                max_expand: 3,
+                ..Default::default()
+            },
+            |l| Ok(fake(l, 1e-3 * l.min(2.0))),
+        )
+        .unwrap_err();
+        match err {
+            ContactError::Unbracketed {
+                load,
+                lambda_lo,
+                lambda_hi,
+                load_hi,
+                ..
+            } => {
+                assert_eq!(load, 1.0);
+                assert!(lambda_lo < lambda_hi && load_hi < 1.0);
+                assert!(err_text(load, lambda_lo, lambda_hi).contains("not bracketed"));
+            }
+            other => panic!("expected Unbracketed, got {other:?}"),
+        }
+    }
+
+    fn err_text(load: f64, lo: f64, hi: f64) -> String {
+        unbracketed(load, lo, hi, -1.0, -1.0).to_string()
+    }
+
+    #[test]
+    fn rejects_bad_load() {
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(solve_at_load(bad, 1.0, &LoadSettings::default(), |l| Ok(fake(l, l))).is_err());
+        }
+    }
+}
