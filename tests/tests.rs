@@ -1,4 +1,8 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod contact_cli;
+mod contact_exact;
+mod contact_scene;
+mod contact_thesis;
 mod special_functions;
 mod spectra_cards;
 mod spectra_cli;

@@ -9,6 +9,14 @@
 
 use serde::{Deserialize, Serialize};
 
+mod bessel;
+pub mod exact;
+#[cfg(test)]
+mod exact_tests;
+mod quadrature;
+
+pub use exact::{one_term_at_lambda, one_term_at_load, ContactExactError, OneTermExact};
+
 /// One term fᵢ e^(−bᵢζ) of the dimensionless creep function γ(ζ) (thesis eq. 3.7–3.8):
 /// fᵢ = (Jᵢ/J_g)(T/τᵢ), bᵢ = T/τᵢ.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -44,3 +52,16 @@ pub struct DimensionlessSolution {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error_estimate: Option<f64>,
 }
+
+pub mod error;
+pub mod kernel;
+pub mod load;
+pub mod scene;
+pub mod solve;
+pub mod thesis;
+
+pub use error::ContactError;
+pub use kernel::Kernel;
+pub use load::LoadSettings;
+pub use scene::{roll, DimensionlessScene, RollSolution, Scene};
+pub use solve::{solve_at_lambda, solve_at_load, ContactSettings, Scheme};

@@ -1,0 +1,255 @@
+//! `viscoroll contact` and `viscoroll roll` end to end: JSON fields, Table 1 through the CLI, and bad
+//! arguments (one-line error, exit code 1, no panic).
+
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+        .args(args)
+        .output()
+        .expect("binary runs")
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout.clone()).unwrap();
+    assert_eq!(
+        text.trim().lines().count(),
+        1,
+        "exactly one JSON line on stdout: {text}"
+    );
+    serde_json::from_str(text.trim()).unwrap()
+}
+
+fn num(v: &serde_json::Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("field {key} missing or not a number in {v}"))
+}
+
+fn one_line_error(args: &[&str], needle: &str) {
+    let out = run(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{args:?}: exit code {:?}, stderr {err}",
+        out.status.code()
+    );
+    assert!(out.stdout.is_empty(), "{args:?}: stdout not empty");
+    assert_eq!(
+        err.trim().lines().count(),
+        1,
+        "{args:?}: not one line: {err}"
+    );
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+    assert!(err.contains(needle), "{args:?}: `{needle}` not in `{err}`");
+}
+
+#[test]
+fn contact_json_table_1() {
+    let v = json(&run(&[
+        "contact", "--creep", "10:1", "--lambda", "1", "--n", "40", "--json",
+    ]));
+    for key in [
+        "lambda",
+        "beta",
+        "beta_over_lambda",
+        "load",
+        "friction_rho",
+        "n",
+        "iterations",
+    ] {
+        num(&v, key);
+    }
+    assert_eq!(v["scheme"], "thesis");
+    assert!(v.get("friction").is_none(), "friction only with --rho");
+    // Table 1 (tolerances as in contact_thesis::table_1_one_parameter_model).
+    assert!((num(&v, "beta_over_lambda") - 0.1959).abs() <= 2e-4);
+    assert!((num(&v, "friction_rho") - 0.43093).abs() <= 5e-4);
+    assert_eq!(num(&v, "n"), 40.0);
+    assert_eq!(num(&v, "iterations"), 0.0);
+    let xi = v["xi"].as_array().unwrap();
+    let q = v["pressure"].as_array().unwrap();
+    assert_eq!(xi.len(), 41);
+    assert_eq!(q.len(), 41);
+    assert_eq!(q[0].as_f64(), Some(0.0));
+    assert_eq!(q[40].as_f64(), Some(0.0));
+}
+
+#[test]
+fn contact_json_at_load_with_rho() {
+    let v = json(&run(&[
+        "contact",
+        "--creep",
+        "10:1,0.5:0.01",
+        "--load",
+        "0.5",
+        "--n",
+        "60",
+        "--rho",
+        "20",
+        "--json",
+    ]));
+    assert!((num(&v, "load") / 0.5 - 1.0).abs() <= 1e-8);
+    assert!(num(&v, "iterations") >= 2.0);
+    // F/N = (ρF/N)/ρ (MATH.md §1).
+    assert!((num(&v, "friction") - num(&v, "friction_rho") / 20.0).abs() <= 1e-15);
+}
+
+#[test]
+fn contact_human_output_goes_to_stderr() {
+    let out = run(&["contact", "--creep", "0:1", "--lambda", "2", "--n", "10"]);
+    assert!(out.status.success());
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("beta/lambda"));
+}
+
+#[test]
+fn contact_bad_arguments() {
+    one_line_error(
+        &["contact", "--creep", "10:-1", "--lambda", "1"],
+        "b must be",
+    );
+    one_line_error(
+        &["contact", "--creep", "10:0", "--lambda", "1"],
+        "b must be",
+    );
+    one_line_error(
+        &["contact", "--creep", "-1:1", "--lambda", "1"],
+        "f must be",
+    );
+    one_line_error(
+        &["contact", "--creep", "10", "--lambda", "1"],
+        "not of the form f:b",
+    );
+    one_line_error(
+        &["contact", "--creep", "10:x", "--lambda", "1"],
+        "not a number",
+    );
+    one_line_error(
+        &["contact", "--creep", "10:1", "--lambda", "-1"],
+        "--lambda",
+    );
+    one_line_error(&["contact", "--creep", "10:1", "--load", "0"], "--load");
+    one_line_error(
+        &["contact", "--creep", "10:1", "--load", "1", "--lambda", "1"],
+        "only one",
+    );
+    one_line_error(&["contact", "--creep", "10:1"], "--lambda");
+    one_line_error(
+        &["contact", "--creep", "10:1", "--lambda", "1", "--n", "1"],
+        "number of intervals",
+    );
+    one_line_error(
+        &["contact", "--creep", "10:1", "--lambda", "1", "--rho", "0"],
+        "--rho",
+    );
+    one_line_error(
+        &[
+            "contact", "--creep", "10:1", "--lambda", "1", "--scheme", "magic",
+        ],
+        "--scheme",
+    );
+}
+
+const SPECTRUM: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/data/spectra/example_creep.json"
+);
+
+#[test]
+fn roll_json_fields() {
+    let v = json(&run(&[
+        "roll",
+        SPECTRUM,
+        "--radius-mm",
+        "100",
+        "--load-n-per-m",
+        "2000",
+        "--speed-m-s",
+        "5",
+        "--n",
+        "120",
+        "--json",
+    ]));
+    for key in [
+        "friction",
+        "contact_length_mm",
+        "offset_mm",
+        "resistance_n_per_m",
+        "max_pressure_mpa",
+    ] {
+        assert!(
+            num(&v, key).is_finite() && num(&v, key) > 0.0,
+            "{key} = {}",
+            v[key]
+        );
+    }
+    // F* = (F/N)·N*.
+    assert!((num(&v, "resistance_n_per_m") - 2000.0 * num(&v, "friction")).abs() <= 1e-12 * 2000.0);
+    // Contact length between the glassy and relaxed Hertz lengths 2√(4RN(1−ν²)/(πE)) for
+    // E₀ = 1 GPa and E∞ = 1/(3.333e-7 Pa⁻¹) (the spectrum file), with 1 % slack for the
+    // first-order discretisation error at n = 120.
+    let hertz =
+        |e: f64| 2.0 * (4.0 * 0.1 * 2000.0 * 0.75 / (std::f64::consts::PI * e)).sqrt() * 1e3;
+    let l = num(&v, "contact_length_mm");
+    assert!(
+        l > 0.99 * hertz(1e9) && l < 1.01 * hertz(1.0 / 3.333e-7),
+        "l = {l} mm"
+    );
+    assert_eq!(v["x_mm"].as_array().unwrap().len(), 121);
+}
+
+#[test]
+fn roll_bad_arguments() {
+    let base = [
+        "roll",
+        SPECTRUM,
+        "--radius-mm",
+        "100",
+        "--load-n-per-m",
+        "2000",
+        "--speed-m-s",
+        "5",
+    ];
+    let with = |i: usize, val: &'static str| {
+        let mut a = base.to_vec();
+        a[i] = val;
+        a
+    };
+    one_line_error(&with(3, "0"), "--radius-mm");
+    one_line_error(&with(3, "-5"), "--radius-mm");
+    one_line_error(&with(5, "-1"), "--load-n-per-m");
+    one_line_error(&with(7, "0"), "--speed-m-s");
+    one_line_error(&with(1, "/nonexistent/spectrum.json"), "cannot read");
+    let mut a = base.to_vec();
+    a.extend(["--poisson", "0.9"]);
+    one_line_error(&a, "poisson");
+    one_line_error(
+        &with(1, concat!(env!("CARGO_MANIFEST_DIR"), "/Cargo.toml")),
+        "not a creep spectrum",
+    );
+}
+
+#[test]
+fn contact_exact_scheme() {
+    let v = json(&run(&[
+        "contact", "--creep", "10:1", "--lambda", "1", "--n", "40", "--scheme", "exact", "--json",
+    ]));
+    assert_eq!(v["scheme"], "exact");
+    // Goodier & Loutzenheiser's 0.1952 and 0.4308 within 0.5 % (as in contact_exact).
+    assert!((num(&v, "beta_over_lambda") / 0.1952 - 1.0).abs() <= 5e-3);
+    assert!((num(&v, "friction_rho") / 0.4308 - 1.0).abs() <= 5e-3);
+    assert_eq!(v["xi"].as_array().unwrap().len(), 41);
+    one_line_error(
+        &[
+            "contact", "--creep", "1:1,1:2", "--lambda", "1", "--scheme", "exact",
+        ],
+        "one creep term",
+    );
+}
