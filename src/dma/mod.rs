@@ -15,6 +15,7 @@ pub mod isotherms;
 pub mod proteus;
 mod read;
 pub mod rheocompass;
+pub mod shiftfactors;
 pub mod table;
 pub mod text;
 pub mod trios;
@@ -27,6 +28,7 @@ pub use eplexor::read_eplexor_shiftlist;
 pub use error::DmaError;
 pub use isotherms::SplitSettings;
 pub use read::{read_bytes, read_files, sha256_hex, IngestOptions};
+pub use shiftfactors::read_shift_factors;
 
 /// serde: a NaN written as `null` by serde_json reads back as NaN (flagged points are kept).
 fn f64_or_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {

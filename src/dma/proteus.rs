@@ -109,5 +109,19 @@ pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
         });
     }
     raw.blocks.push(block);
+    if let Some(mode) = raw.metadata.get("MODE") {
+        let l = mode.to_lowercase();
+        let kind = if l.contains("shear") {
+            Some(crate::ModulusKind::Shear)
+        } else if ["tension", "tensile", "bending", "compression", "cantilever"]
+            .iter()
+            .any(|w| l.contains(w))
+        {
+            Some(crate::ModulusKind::Tensile)
+        } else {
+            None
+        };
+        raw.mode_hint = kind.map(|k| (k, format!("#MODE:{mode}")));
+    }
     Ok(raw)
 }

@@ -159,7 +159,9 @@ pub fn read_bytes(
             _ => None,
         });
         let labels: Vec<Option<String>> = raw.blocks.iter().map(|b| b.label.clone()).collect();
-        for g in isotherms::split(points, name_temp, &opts.split) {
+        let mut groups = isotherms::split(points, name_temp, &opts.split);
+        isotherms::grid_nominals(&mut groups);
+        for g in groups {
             let label = g
                 .points
                 .first()

@@ -70,6 +70,9 @@ pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
             .map(|l| text::split(l, Delimiter::Tab))
             .unwrap_or_default();
         let mut block = Block {
+            nominal_c: result_label
+                .as_deref()
+                .and_then(super::trios::temperature_in_name),
             label: result_label.clone(),
             header_loc: Some(Loc::Line(i + 1)),
             ..Block::default()

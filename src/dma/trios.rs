@@ -28,10 +28,18 @@ pub fn temperature_in_name(name: &str) -> Option<f64> {
         {
             let start = k;
             k += 1;
-            while k < chars.len() && (chars[k].is_ascii_digit() || chars[k] == '.') {
+            while k < chars.len()
+                && (chars[k].is_ascii_digit()
+                    || ((chars[k] == '.' || chars[k] == ',')
+                        && chars.get(k + 1).is_some_and(|c| c.is_ascii_digit())))
+            {
                 k += 1;
             }
-            let num: String = chars[start..k].iter().collect();
+            // A decimal comma (`-42,5 °C`, German/French step names) reads as a point.
+            let num: String = chars[start..k]
+                .iter()
+                .map(|&c| if c == ',' { '.' } else { c })
+                .collect();
             let mut j = k;
             while j < chars.len() && chars[j] == ' ' {
                 j += 1;
@@ -270,5 +278,7 @@ mod tests {
             (temperature_in_name("Frequency sweep - 2 (298.15 K)").unwrap() - 25.0).abs() < 1e-12
         );
         assert_eq!(temperature_in_name("Frequency sweep 3"), None);
+        assert_eq!(temperature_in_name("FS -42,5 °C"), Some(-42.5));
+        assert_eq!(temperature_in_name("Sweep 2, 25 °C"), Some(25.0));
     }
 }
