@@ -172,32 +172,32 @@ pub fn split(points: Vec<RawPoint>, name_temp_c: Option<f64>, set: &SplitSetting
         .collect()
 }
 
-/// Replace `rounded mean` nominals by the nearest point of the step grid of the file's isotherms
-/// (see the module docs); leaves the groups unchanged when there are fewer than three or the
-/// spacing is below 0.5 K.
-pub fn grid_nominals(groups: &mut [Group]) {
-    if groups.len() < 3 || groups.iter().any(|g| g.nominal_source != "rounded mean") {
-        return;
+/// The temperature step grid (origin, step Δ) of a set of isotherm means, both rounded to 0.5 K
+/// (see the module docs); `None` for fewer than three isotherms or a spacing below 0.5 K.
+pub fn step_grid(means: &[f64]) -> Option<(f64, f64)> {
+    if means.len() < 3 || means.iter().any(|m| !m.is_finite()) {
+        return None;
     }
     let half = |x: f64| (x * 2.0).round() / 2.0;
-    let mut means: Vec<f64> = groups.iter().map(|g| g.mean_c).collect();
+    let mut means = means.to_vec();
     means.sort_by(f64::total_cmp);
     let mut diffs: Vec<f64> = means.windows(2).map(|w| w[1] - w[0]).collect();
     diffs.sort_by(f64::total_cmp);
     let step = half(diffs[diffs.len() / 2]);
     if step < 0.5 {
-        return;
+        return None;
     }
     let mut origins: Vec<f64> = means
         .iter()
         .map(|m| m - ((m - means[0]) / step).round() * step)
         .collect();
     origins.sort_by(f64::total_cmp);
-    let origin = half(origins[origins.len() / 2]);
-    for g in groups.iter_mut() {
-        g.nominal_c = origin + ((g.mean_c - origin) / step).round() * step;
-        g.nominal_source = "step grid";
-    }
+    Some((half(origins[origins.len() / 2]), step))
+}
+
+/// The grid point nearest to `t`.
+pub fn on_grid(t: f64, (origin, step): (f64, f64)) -> f64 {
+    origin + ((t - origin) / step).round() * step
 }
 
 #[cfg(test)]
@@ -228,19 +228,15 @@ mod tests {
                 pts.push(pt(*f, t + 0.2 * i as f64 - 0.1 * k as f64));
             }
         }
-        let mut g = split(pts, None, &SplitSettings::default());
+        let g = split(pts, None, &SplitSettings::default());
         assert_eq!(g.len(), 3);
         assert_eq!(g[1].nominal_c, -42.5);
         assert_eq!(g[1].nominal_source, "rounded mean");
         // A mean 0.35 K above its step rounds to the wrong half-kelvin but sits on the grid.
-        g[1].mean_c = -42.15;
-        g[1].nominal_c = -42.0;
-        grid_nominals(&mut g);
-        assert_eq!(
-            g.iter().map(|g| g.nominal_c).collect::<Vec<_>>(),
-            [-50.0, -42.5, -35.0]
-        );
-        assert_eq!(g[1].nominal_source, "step grid");
+        let grid = step_grid(&[-49.9, -42.15, -35.0, -27.4]).unwrap();
+        assert_eq!(grid, (-50.0, 7.5));
+        assert_eq!(on_grid(-42.15, grid), -42.5);
+        assert_eq!(step_grid(&[20.0, 20.1, 20.2]), None);
         // A repeated frequency at the same temperature is not a new isotherm.
         let pts = vec![pt(0.1, 20.0), pt(1.0, 20.1), pt(0.5, 20.2), pt(10.0, 20.1)];
         assert_eq!(split(pts, Some(20.0), &SplitSettings::default()).len(), 1);

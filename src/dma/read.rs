@@ -159,9 +159,7 @@ pub fn read_bytes(
             _ => None,
         });
         let labels: Vec<Option<String>> = raw.blocks.iter().map(|b| b.label.clone()).collect();
-        let mut groups = isotherms::split(points, name_temp, &opts.split);
-        isotherms::grid_nominals(&mut groups);
-        for g in groups {
+        for g in isotherms::split(points, name_temp, &opts.split) {
             let label = g
                 .points
                 .first()
@@ -205,6 +203,19 @@ pub fn read_bytes(
         });
     }
     m.kind = kind.map(|k| k.0).unwrap_or_default();
+    // Nominals from rounded means only: snap them to the step grid of all isotherms.
+    if m.isotherms
+        .iter()
+        .all(|i| i.nominal_source == "rounded mean")
+    {
+        let means: Vec<f64> = m.isotherms.iter().map(|i| i.temp_mean_c).collect();
+        if let Some(grid) = isotherms::step_grid(&means) {
+            for iso in &mut m.isotherms {
+                iso.temp_nominal_c = isotherms::on_grid(iso.temp_mean_c, grid);
+                iso.nominal_source = "step grid".into();
+            }
+        }
+    }
     // In order of temperature (stable: equal temperatures keep file order).
     m.isotherms
         .sort_by(|a, b| a.temp_mean_c.total_cmp(&b.temp_mean_c));
