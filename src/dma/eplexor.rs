@@ -25,10 +25,21 @@ pub const SHIFT_SHEET: &str = "Shiftlist";
 type Book = Sheets<Cursor<Vec<u8>>>;
 
 fn open(file: &str, bytes: &[u8]) -> Result<Book, DmaError> {
-    open_workbook_auto_from_rs(Cursor::new(bytes.to_vec())).map_err(|e| DmaError::Excel {
-        file: file.into(),
-        reason: e.to_string(),
-    })
+    // calamine 0.31 panics on some damaged workbooks (e.g. a truncated .xls: a slice index in its
+    // compound-file reader); turn that into an error instead of letting user input crash the program.
+    let owned = bytes.to_vec();
+    let opened = std::panic::catch_unwind(move || open_workbook_auto_from_rs(Cursor::new(owned)));
+    match opened {
+        Ok(Ok(book)) => Ok(book),
+        Ok(Err(e)) => Err(DmaError::Excel {
+            file: file.into(),
+            reason: e.to_string(),
+        }),
+        Err(_) => Err(DmaError::Excel {
+            file: file.into(),
+            reason: "the workbook is damaged (the Excel reader failed on it)".into(),
+        }),
+    }
 }
 
 fn sheet(file: &str, book: &mut Book, name: &str) -> Result<Option<Range<Data>>, DmaError> {
