@@ -2,3 +2,4 @@
 mod dma_errors;
 mod dma_quirks;
 mod dma_real;
+mod ingest_cli;
