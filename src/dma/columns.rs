@@ -217,14 +217,14 @@ pub fn normalise(name: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
-fn name_matches(raw: &str, cand: &str) -> bool {
+fn name_matches(raw: &str, normalised: &str, cand: &str) -> bool {
     // Single capital letters are case-sensitive: `T` is temperature, `t` is time; `f` is frequency,
     // `F` is force.
     match cand {
         "T" => raw.trim() == "T",
         "f" => raw.trim() == "f",
         "w" => raw.trim() == "w",
-        _ => normalise(raw) == cand,
+        _ => normalised == cand,
     }
 }
 
@@ -279,6 +279,7 @@ struct Ctx<'a> {
     file: &'a str,
     loc: String,
     names: &'a [String],
+    normalised: Vec<String>,
     units: Vec<Option<String>>,
 }
 
@@ -291,7 +292,7 @@ impl Ctx<'_> {
     fn find(&self, q: Quantity, used: &[usize]) -> Option<usize> {
         for cand in candidates(q) {
             for (i, n) in self.names.iter().enumerate() {
-                if !used.contains(&i) && name_matches(n, cand) {
+                if !used.contains(&i) && name_matches(n, &self.normalised[i], cand) {
                     return Some(i);
                 }
             }
@@ -416,6 +417,7 @@ fn map_block(
         file,
         loc,
         names: &block.names,
+        normalised: block.names.iter().map(|n| normalise(n)).collect(),
         units: block.units.clone(),
     };
     let mut used: Vec<usize> = Vec::new();

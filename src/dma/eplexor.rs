@@ -27,6 +27,12 @@ type Book = Sheets<Cursor<Vec<u8>>>;
 fn open(file: &str, bytes: &[u8]) -> Result<Book, DmaError> {
     // calamine 0.31 panics on some damaged workbooks (e.g. a truncated .xls: a slice index in its
     // compound-file reader); turn that into an error instead of letting user input crash the program.
+    if super::detect::is_ole2(bytes) {
+        super::xls_guard::check(bytes).map_err(|reason| DmaError::Excel {
+            file: file.into(),
+            reason,
+        })?;
+    }
     let owned = bytes.to_vec();
     let opened = std::panic::catch_unwind(move || open_workbook_auto_from_rs(Cursor::new(owned)));
     match opened {

@@ -54,8 +54,12 @@ pub fn read_with(
     dec: Decimal,
 ) -> Result<RawFile, DmaError> {
     let fields: Vec<Vec<String>> = lines.iter().map(|l| text::split(l, delim)).collect();
-    let blank = |i: usize| lines[i].trim().is_empty();
-    let data = |i: usize| !blank(i) && is_data_row(&fields[i], dec);
+    let blank_v: Vec<bool> = lines.iter().map(|l| l.trim().is_empty()).collect();
+    let data_v: Vec<bool> = (0..lines.len())
+        .map(|i| !blank_v[i] && is_data_row(&fields[i], dec))
+        .collect();
+    let blank = |i: usize| blank_v[i];
+    let data = |i: usize| data_v[i];
     let n = lines.len();
     let mut raw = RawFile::default();
     let mut i = 0;

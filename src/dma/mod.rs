@@ -20,6 +20,7 @@ pub mod table;
 pub mod text;
 pub mod trios;
 pub mod units;
+pub mod xls_guard;
 
 pub use checks::{CheckSettings, Flag, Issue, Severity, Summary};
 pub use columns::ColumnInfo;
