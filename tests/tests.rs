@@ -7,3 +7,7 @@ mod special_functions;
 mod spectra_cards;
 mod spectra_cli;
 mod spectra_exact;
+mod dma_errors;
+mod dma_quirks;
+mod dma_real;
+mod ingest_cli;
