@@ -1,10 +1,250 @@
-//! `viscoroll ingest`: Read DMA exports and report what was found.
+//! `viscoroll ingest`: read DMA exports and report what was found; optionally write the
+//! `Measurement` JSON (atomically; an existing file only with `--force`).
+//!
+//! `--json` prints one object on stdout:
+//! `{"command":"ingest","kind","poisson","files":[{"path","sha256","format","encoding","metadata",
+//! "columns","isotherms","points","temp_range_c","freq_range_hz","issues"}],"summary",
+//! "warnings","output"}`; human text goes to stderr.
+
+use crate::dma::{self, Format, IngestOptions, Measurement};
+use crate::ModulusKind;
+use anyhow::Context;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `viscoroll ingest`.
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// DMA export files (EPLEXOR .xls/.xlsx, TRIOS LIMS or text, RheoCompass CSV, Proteus ASCII,
+    /// generic CSV/TSV/text).
+    #[arg(required = true)]
+    pub files: Vec<PathBuf>,
+    /// Write the Measurement JSON here (atomically).
+    #[arg(short = 'o', long = "output")]
+    pub output: Option<PathBuf>,
+    /// Overwrite the output file if it exists.
+    #[arg(long)]
+    pub force: bool,
+    /// Reader to use instead of detecting it: eplexor, trios-lims, trios-text, rheocompass, proteus,
+    /// generic.
+    #[arg(long)]
+    pub format: Option<String>,
+    /// Unit of modulus columns that have none in the file: Pa, kPa, MPa, GPa.
+    #[arg(long)]
+    pub modulus_unit: Option<String>,
+    /// Unit of the frequency column if the file has none: Hz or rad/s.
+    #[arg(long)]
+    pub freq_unit: Option<String>,
+    /// Unit of temperature columns if the file has none: °C (or C) or K.
+    #[arg(long)]
+    pub temp_unit: Option<String>,
+    /// tensile or shear, when the file does not say which moduli it holds.
+    #[arg(long)]
+    pub mode: Option<String>,
+    /// Poisson's ratio stated for shear ↔ tensile conversion (dimensionless, default 0.5).
+    #[arg(long, default_value_t = 0.5)]
+    pub poisson: f64,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn options(a: &Args) -> anyhow::Result<IngestOptions> {
+    let mut o = IngestOptions {
+        poisson: a.poisson,
+        ..IngestOptions::default()
+    };
+    if let Some(f) = &a.format {
+        o.format = Some(f.parse::<Format>().map_err(anyhow::Error::msg)?);
+    }
+    if let Some(u) = &a.modulus_unit {
+        o.modulus_unit = Some(dma::units::ModulusUnit::parse(u).ok_or_else(|| {
+            anyhow::anyhow!(
+                "--modulus-unit `{u}`: expected one of {}",
+                dma::units::MODULUS_UNITS
+            )
+        })?);
+    }
+    if let Some(u) = &a.freq_unit {
+        o.freq_unit = Some(dma::units::FreqUnit::parse(u).ok_or_else(|| {
+            anyhow::anyhow!(
+                "--freq-unit `{u}`: expected one of {}",
+                dma::units::FREQ_UNITS
+            )
+        })?);
+    }
+    if let Some(u) = &a.temp_unit {
+        o.temp_unit = Some(dma::units::TempUnit::parse(u).ok_or_else(|| {
+            anyhow::anyhow!(
+                "--temp-unit `{u}`: expected one of {}",
+                dma::units::TEMP_UNITS
+            )
+        })?);
+    }
+    if let Some(m) = &a.mode {
+        o.mode = Some(match m.to_ascii_lowercase().as_str() {
+            "tensile" | "tension" | "e" => ModulusKind::Tensile,
+            "shear" | "g" => ModulusKind::Shear,
+            _ => anyhow::bail!("--mode `{m}`: expected tensile or shear"),
+        });
+    }
+    Ok(o)
+}
+
+/// Write `bytes` to `path` through a temporary file in the same directory and a rename.
+pub fn write_atomic(path: &Path, bytes: &[u8], force: bool) -> anyhow::Result<()> {
+    if path.exists() && !force {
+        anyhow::bail!(
+            "{} exists; not overwritten (use --force to replace it)",
+            path.display()
+        );
+    }
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .ok_or_else(|| anyhow::anyhow!("{}: not a file name", path.display()))?;
+    let tmp = dir.join(format!(
+        ".{}.tmp{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    std::fs::write(&tmp, bytes).with_context(|| format!("cannot write {}", tmp.display()))?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        anyhow::anyhow!("cannot move {} to {}: {e}", tmp.display(), path.display())
+    })
+}
+
+fn range<I: Iterator<Item = f64>>(it: I) -> Option<(f64, f64)> {
+    it.filter(|v| v.is_finite()).fold(None, |acc, v| match acc {
+        None => Some((v, v)),
+        Some((a, b)) => Some((f64::min(a, v), f64::max(b, v))),
+    })
+}
+
+fn file_report(m: &Measurement, si: usize) -> serde_json::Value {
+    let src = &m.sources[si];
+    let isos: Vec<&dma::Isotherm> = m.isotherms.iter().filter(|i| i.source == si).collect();
+    let points: usize = isos.iter().map(|i| i.points.len()).sum();
+    let issues: Vec<&dma::Issue> = m.issues.iter().filter(|i| i.file == src.path).collect();
+    serde_json::json!({
+        "path": src.path,
+        "sha256": src.sha256,
+        "format": src.format,
+        "encoding": src.encoding,
+        "metadata": src.metadata,
+        "columns": src.columns,
+        "mode": dma::columns::kind_name(m.kind),
+        "isotherms": isos.len(),
+        "points": points,
+        "nominal_temps_c": isos.iter().map(|i| i.temp_nominal_c).collect::<Vec<_>>(),
+        "temp_range_c": range(isos.iter().map(|i| i.temp_mean_c)),
+        "freq_range_hz": range(isos.iter().flat_map(|i| i.points.iter().map(|p| p.freq_hz))),
+        "issues": issues,
+    })
+}
 
 /// Run `viscoroll ingest`.
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`viscoroll ingest` is not implemented yet")
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let opts = options(&args)?;
+    let m = dma::read_files(&args.files, &opts)?;
+    let mut files = Vec::new();
+    for si in 0..m.sources.len() {
+        let r = file_report(&m, si);
+        let src = &m.sources[si];
+        eprintln!(
+            "{}: {} ({}), sha256 {}",
+            src.path,
+            src.format,
+            src.encoding,
+            &src.sha256[..16]
+        );
+        let keys = [
+            "Instrument type",
+            "Instrument name",
+            "Trios version",
+            "Measurement type",
+            "Material",
+            "Material / Remark",
+            "INSTRUMENT",
+            "SAMPLE",
+            "Date / Time",
+            "Run date",
+            "Project",
+            "Test",
+            "trailing text",
+        ];
+        for k in keys {
+            if let Some(v) = src.metadata.get(k) {
+                eprintln!("  {k}: {v}");
+            }
+        }
+        let cols: Vec<String> = src
+            .columns
+            .iter()
+            .map(|c| format!("{} = `{}` [{}]", c.quantity, c.name, c.unit))
+            .collect();
+        eprintln!(
+            "  mode: {}; columns: {}",
+            r["mode"].as_str().unwrap_or(""),
+            cols.join(", ")
+        );
+        let tr = r["temp_range_c"].as_array().map(|a| {
+            format!(
+                "{:.2} … {:.2} °C",
+                a[0].as_f64().unwrap_or(f64::NAN),
+                a[1].as_f64().unwrap_or(f64::NAN)
+            )
+        });
+        let fr = r["freq_range_hz"].as_array().map(|a| {
+            format!(
+                "{:.4} … {:.4} Hz",
+                a[0].as_f64().unwrap_or(f64::NAN),
+                a[1].as_f64().unwrap_or(f64::NAN)
+            )
+        });
+        eprintln!(
+            "  isotherms: {}, mean temperature {}, frequency {}, points: {}",
+            r["isotherms"],
+            tr.unwrap_or_else(|| "—".into()),
+            fr.unwrap_or_else(|| "—".into()),
+            r["points"]
+        );
+        files.push(r);
+    }
+    let shown = 20;
+    for w in m.warnings.iter().take(shown) {
+        eprintln!("  warning: {w}");
+    }
+    if m.warnings.len() > shown {
+        eprintln!(
+            "  … and {} more (see --json or the output file)",
+            m.warnings.len() - shown
+        );
+    }
+    let s = &m.summary;
+    eprintln!(
+        "total: {} files, {} isotherms, {} points ({} flagged), {} errors, {} warnings",
+        s.files, s.isotherms, s.points, s.flagged_points, s.errors, s.warnings
+    );
+    if let Some(out) = &args.output {
+        let json = serde_json::to_vec_pretty(&m)?;
+        write_atomic(out, &json, args.force)?;
+        eprintln!("wrote {}", out.display());
+    }
+    if args.json {
+        let obj = serde_json::json!({
+            "command": "ingest",
+            "kind": dma::columns::kind_name(m.kind),
+            "poisson": m.poisson,
+            "files": files,
+            "summary": m.summary,
+            "warnings": m.warnings,
+            "output": args.output.as_ref().map(|p| p.display().to_string()),
+        });
+        println!("{}", serde_json::to_string(&obj)?);
+    }
+    Ok(())
 }

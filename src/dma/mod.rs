@@ -5,6 +5,34 @@ use crate::ModulusKind;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
+pub mod checks;
+pub mod columns;
+pub mod detect;
+pub mod eplexor;
+pub mod error;
+pub mod generic;
+pub mod isotherms;
+pub mod proteus;
+mod read;
+pub mod rheocompass;
+pub mod table;
+pub mod text;
+pub mod trios;
+pub mod units;
+
+pub use checks::{CheckSettings, Flag, Issue, Severity, Summary};
+pub use columns::ColumnInfo;
+pub use detect::Format;
+pub use eplexor::read_eplexor_shiftlist;
+pub use error::DmaError;
+pub use isotherms::SplitSettings;
+pub use read::{read_bytes, read_files, sha256_hex, IngestOptions};
+
+/// serde: a NaN written as `null` by serde_json reads back as NaN (flagged points are kept).
+fn f64_or_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+}
+
 /// Everything read from one or more DMA export files: isothermal frequency sweeps in SI units.
 ///
 /// Moduli stay of the kind measured (`kind`: tensile E′, E″ or shear G′, G″); nothing is converted
@@ -21,6 +49,12 @@ pub struct Measurement {
     pub isotherms: Vec<Isotherm>,
     /// Warnings that concern the whole measurement or a file.
     pub warnings: Vec<String>,
+    /// Every finding of the checks, with file, place, column and severity.
+    #[serde(default)]
+    pub issues: Vec<Issue>,
+    /// Counts: files, isotherms, points, flagged points, issues per flag, ranges.
+    #[serde(default)]
+    pub summary: Summary,
 }
 
 /// One input file.
@@ -34,6 +68,12 @@ pub struct SourceFile {
     pub format: String,
     /// Instrument metadata found in the file (key → value).
     pub metadata: BTreeMap<String, String>,
+    /// Text encoding read (`UTF-8`, `UTF-16LE`, `windows-1252`, `Excel`…).
+    #[serde(default)]
+    pub encoding: String,
+    /// The columns used, with their units as written.
+    #[serde(default)]
+    pub columns: Vec<ColumnInfo>,
 }
 
 /// One isothermal frequency sweep.
@@ -47,16 +87,29 @@ pub struct Isotherm {
     pub source: usize,
     /// The points, in the order measured.
     pub points: Vec<DataPoint>,
+    /// Where `temp_nominal_c` comes from: `file` (set temperature or step name), `file name`,
+    /// `rounded mean` (mean measured temperature rounded to 0.5 K).
+    #[serde(default)]
+    pub nominal_source: String,
+    /// Worksheet the points come from (then `DataPoint::line` is its row).
+    #[serde(default)]
+    pub sheet: Option<String>,
+    /// Step, interval or result name in the file, if any.
+    #[serde(default)]
+    pub label: Option<String>,
 }
 
 /// One measured point.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DataPoint {
     /// Frequency in Hz.
+    #[serde(deserialize_with = "f64_or_nan")]
     pub freq_hz: f64,
     /// Storage modulus (E′ or G′, per `Measurement::kind`) in Pa.
+    #[serde(deserialize_with = "f64_or_nan")]
     pub storage_pa: f64,
     /// Loss modulus (E″ or G″) in Pa.
+    #[serde(deserialize_with = "f64_or_nan")]
     pub loss_pa: f64,
     /// Measured temperature of this point in °C, when the file gives one.
     pub temp_c: Option<f64>,

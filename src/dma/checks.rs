@@ -1,0 +1,400 @@
+//! Data checks on a [`Measurement`]: missing and NaN values, zero or negative moduli and frequencies,
+//! duplicate frequencies, non-monotonic frequency within an isotherm, points far off their
+//! neighbours, a single isotherm, a nominal temperature far from the measured one. Each finding is an
+//! [`Issue`] naming file, line (or sheet and row) and column; flagged points stay in the measurement
+//! with their [`Flag`]s, never dropped. Counts go into the [`Summary`].
+//!
+//! Outliers: with x = log10 f and y = log10 M′ (or M″), an interior point's residual against the
+//! straight line through its two neighbours is r_i = y_i − [y_{i−1} + (y_{i+1} − y_{i−1})
+//! (x_i − x_{i−1})/(x_{i+1} − x_{i−1})]. A point is an outlier when |r_i| exceeds
+//! `outlier_log10` and is the largest of r_{i−1}, r_i, r_{i+1} (one bad point also disturbs the
+//! residuals of its neighbours, by about half as much).
+
+use super::{DataPoint, Measurement};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// What is wrong with a point, an isotherm or the measurement (serialised as snake_case strings).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Flag {
+    /// A needed cell was empty or `---`.
+    Missing,
+    /// A value is NaN.
+    NotANumber,
+    /// A modulus or the frequency is zero or negative.
+    NonPositive,
+    /// The same frequency appears twice in one isotherm.
+    DuplicateFrequency,
+    /// The frequency goes against the sweep direction.
+    NonMonotonic,
+    /// Far off the line through its neighbours (log–log).
+    Outlier,
+    /// The measurement has only one isotherm (no master curve can be built).
+    SingleIsotherm,
+    /// The mean measured temperature is far from the nominal one.
+    NominalOffset,
+}
+
+impl Flag {
+    /// The string stored in [`DataPoint::flags`].
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Flag::Missing => "missing",
+            Flag::NotANumber => "not_a_number",
+            Flag::NonPositive => "non_positive",
+            Flag::DuplicateFrequency => "duplicate_frequency",
+            Flag::NonMonotonic => "non_monotonic",
+            Flag::Outlier => "outlier",
+            Flag::SingleIsotherm => "single_isotherm",
+            Flag::NominalOffset => "nominal_offset",
+        }
+    }
+    /// Whether the point cannot be used as it is (error) or only deserves a look (warning).
+    pub fn severity(self) -> Severity {
+        match self {
+            Flag::Missing | Flag::NotANumber | Flag::NonPositive => Severity::Error,
+            _ => Severity::Warning,
+        }
+    }
+}
+
+/// Error: the point (or file) cannot be used as it is; warning: worth a look.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Severity {
+    /// Unusable as is.
+    Error,
+    /// Worth a look.
+    Warning,
+}
+
+/// One finding of the checks.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Issue {
+    /// Error or warning.
+    pub severity: Severity,
+    /// What kind.
+    pub flag: Flag,
+    /// File path as given (empty for the whole measurement).
+    pub file: String,
+    /// `line N`, `sheet `S` row N`, `isotherm at 25 °C` or `whole measurement`.
+    pub location: String,
+    /// Column name as written in the file (empty if none applies).
+    pub column: String,
+    /// The message, naming all of the above.
+    pub message: String,
+}
+
+/// Counts for the report.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct Summary {
+    /// Input files.
+    pub files: usize,
+    /// Isotherms.
+    pub isotherms: usize,
+    /// Points (flagged ones included).
+    pub points: usize,
+    /// Points with at least one flag.
+    pub flagged_points: usize,
+    /// Issues of severity error.
+    pub errors: usize,
+    /// Issues of severity warning.
+    pub warnings: usize,
+    /// Number of issues per flag.
+    pub by_flag: BTreeMap<String, usize>,
+    /// Lowest and highest mean isotherm temperature, °C.
+    pub temp_range_c: Option<(f64, f64)>,
+    /// Lowest and highest frequency, Hz.
+    pub freq_range_hz: Option<(f64, f64)>,
+}
+
+/// Settings of the checks.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct CheckSettings {
+    /// Outlier threshold on the log10 residual. Default 0.3 (a factor 2): measured sweeps are smooth
+    /// in log–log to a few hundredths of a decade between neighbours.
+    pub outlier_log10: f64,
+    /// Two frequencies closer than this relative difference are duplicates. Default 1e-9.
+    pub duplicate_rel: f64,
+    /// Warn when |mean measured − nominal| exceeds this (K). Default 1 K.
+    pub nominal_offset_k: f64,
+}
+
+impl Default for CheckSettings {
+    fn default() -> Self {
+        CheckSettings {
+            outlier_log10: 0.3,
+            duplicate_rel: 1e-9,
+            nominal_offset_k: 1.0,
+        }
+    }
+}
+
+fn column_name(m: &Measurement, source: usize, quantity: &str) -> String {
+    m.sources
+        .get(source)
+        .and_then(|s| s.columns.iter().find(|c| c.quantity == quantity))
+        .map(|c| c.name.clone())
+        .unwrap_or_default()
+}
+
+fn location(sheet: &Option<String>, line: usize) -> String {
+    match sheet {
+        Some(s) => format!("sheet `{s}` row {line}"),
+        None => format!("line {line}"),
+    }
+}
+
+/// Run every check, flag points, append issues (and their messages to `warnings`), fill the summary.
+pub fn run(m: &mut Measurement, set: &CheckSettings) {
+    let mut issues: Vec<Issue> = Vec::new();
+    let add_point_flag = |p: &mut DataPoint, flag: Flag| {
+        if !p.flags.iter().any(|f| f == flag.as_str()) {
+            p.flags.push(flag.as_str().to_string());
+        }
+    };
+    let n_iso = m.isotherms.len();
+    for ii in 0..n_iso {
+        let src = m.isotherms[ii].source;
+        let file = m
+            .sources
+            .get(src)
+            .map(|s| s.path.clone())
+            .unwrap_or_default();
+        let sheet = m.isotherms[ii].sheet.clone();
+        let col_f = column_name(m, src, "frequency");
+        let col_s = {
+            let s = column_name(m, src, "storage modulus");
+            if s.is_empty() {
+                column_name(m, src, "complex modulus")
+            } else {
+                s
+            }
+        };
+        let col_l = {
+            let s = column_name(m, src, "loss modulus");
+            if s.is_empty() {
+                column_name(m, src, "tan δ")
+            } else {
+                s
+            }
+        };
+        let col_t = column_name(m, src, "temperature");
+        let iso = &mut m.isotherms[ii];
+        let mut push = |flag: Flag, line: usize, column: &str, what: String| {
+            issues.push(Issue {
+                severity: flag.severity(),
+                flag,
+                file: file.clone(),
+                location: location(&sheet, line),
+                column: column.to_string(),
+                message: format!(
+                    "{file}: {}: column `{column}`: {what}",
+                    location(&sheet, line)
+                ),
+            });
+        };
+        // Value checks.
+        for p in iso.points.iter_mut() {
+            for (v, col, what) in [
+                (p.freq_hz, &col_f, "frequency"),
+                (p.storage_pa, &col_s, "storage modulus"),
+                (p.loss_pa, &col_l, "loss modulus"),
+            ] {
+                if v.is_nan() {
+                    let missing = p.flags.iter().any(|f| f == Flag::Missing.as_str());
+                    if missing {
+                        push(
+                            Flag::Missing,
+                            p.line,
+                            col,
+                            format!("{what} is missing; the point is kept, flagged `missing`"),
+                        );
+                    } else {
+                        add_point_flag(p, Flag::NotANumber);
+                        push(
+                            Flag::NotANumber,
+                            p.line,
+                            col,
+                            format!("{what} is NaN; the point is kept, flagged `not_a_number`"),
+                        );
+                    }
+                } else if v <= 0.0 {
+                    add_point_flag(p, Flag::NonPositive);
+                    push(Flag::NonPositive, p.line, col, format!("{what} {v:e} is not positive; the point is kept, flagged `non_positive`"));
+                }
+            }
+            if p.temp_c.is_some_and(|t| t.is_nan()) {
+                add_point_flag(p, Flag::NotANumber);
+                push(
+                    Flag::NotANumber,
+                    p.line,
+                    &col_t,
+                    "temperature is NaN".into(),
+                );
+            }
+        }
+        // Sweep checks.
+        let n = iso.points.len();
+        let valid = |p: &DataPoint| p.freq_hz > 0.0 && p.freq_hz.is_finite();
+        let first = iso.points.iter().find(|p| valid(p)).map(|p| p.freq_hz);
+        let last = iso
+            .points
+            .iter()
+            .rev()
+            .find(|p| valid(p))
+            .map(|p| p.freq_hz);
+        let ascending = match (first, last) {
+            (Some(a), Some(b)) => b >= a,
+            _ => true,
+        };
+        for i in 0..n {
+            if !valid(&iso.points[i]) {
+                continue;
+            }
+            let fi = iso.points[i].freq_hz;
+            let dup = iso.points[..i]
+                .iter()
+                .any(|q| valid(q) && ((q.freq_hz - fi).abs() <= set.duplicate_rel * fi));
+            let prev = iso.points[..i]
+                .iter()
+                .rev()
+                .find(|q| valid(q))
+                .map(|q| q.freq_hz);
+            let line = iso.points[i].line;
+            if dup {
+                add_point_flag(&mut iso.points[i], Flag::DuplicateFrequency);
+                push(
+                    Flag::DuplicateFrequency,
+                    line,
+                    &col_f,
+                    format!(
+                        "frequency {fi} Hz appears twice in the isotherm at {:.1} °C",
+                        iso.temp_nominal_c
+                    ),
+                );
+            } else if let Some(pf) = prev {
+                if (ascending && fi < pf) || (!ascending && fi > pf) {
+                    add_point_flag(&mut iso.points[i], Flag::NonMonotonic);
+                    push(Flag::NonMonotonic, line, &col_f, format!("frequency {fi} Hz after {pf} Hz goes against the sweep of the isotherm at {:.1} °C", iso.temp_nominal_c));
+                }
+            }
+        }
+        // Outliers, on points with positive finite values only.
+        let idx: Vec<usize> = (0..n)
+            .filter(|&i| {
+                let p = &iso.points[i];
+                valid(p)
+                    && p.storage_pa > 0.0
+                    && p.loss_pa > 0.0
+                    && p.storage_pa.is_finite()
+                    && p.loss_pa.is_finite()
+                    && !p
+                        .flags
+                        .iter()
+                        .any(|f| f == Flag::DuplicateFrequency.as_str())
+            })
+            .collect();
+        if idx.len() >= 3 {
+            for (sel, col) in [(0usize, &col_s), (1, &col_l)] {
+                let y = |k: usize| {
+                    let p = &iso.points[idx[k]];
+                    if sel == 0 {
+                        p.storage_pa.log10()
+                    } else {
+                        p.loss_pa.log10()
+                    }
+                };
+                let x = |k: usize| iso.points[idx[k]].freq_hz.log10();
+                let mut r = vec![0.0; idx.len()];
+                for (k, rk) in r.iter_mut().enumerate().take(idx.len() - 1).skip(1) {
+                    let dx = x(k + 1) - x(k - 1);
+                    if dx.abs() < 1e-12 {
+                        continue;
+                    }
+                    let pred = y(k - 1) + (y(k + 1) - y(k - 1)) * (x(k) - x(k - 1)) / dx;
+                    *rk = y(k) - pred;
+                }
+                for k in 1..idx.len() - 1 {
+                    if r[k].abs() > set.outlier_log10
+                        && r[k].abs() >= r[k - 1].abs()
+                        && r[k].abs() >= r[k + 1].abs()
+                    {
+                        let p = &mut iso.points[idx[k]];
+                        let line = p.line;
+                        add_point_flag(p, Flag::Outlier);
+                        let what = if sel == 0 {
+                            "storage modulus"
+                        } else {
+                            "loss modulus"
+                        };
+                        push(Flag::Outlier, line, col, format!("{what} is {:.2} decades off the line through its neighbours (threshold {})", r[k], set.outlier_log10));
+                    }
+                }
+            }
+        }
+        if (iso.temp_mean_c - iso.temp_nominal_c).abs() > set.nominal_offset_k {
+            let line = iso.points.first().map(|p| p.line).unwrap_or(0);
+            push(
+                Flag::NominalOffset,
+                line,
+                &col_t,
+                format!(
+                    "mean measured temperature {:.2} °C is {:.2} K from the nominal {} °C ({})",
+                    iso.temp_mean_c,
+                    iso.temp_mean_c - iso.temp_nominal_c,
+                    iso.temp_nominal_c,
+                    iso.nominal_source
+                ),
+            );
+        }
+    }
+    if m.isotherms.len() == 1 {
+        issues.push(Issue {
+            severity: Severity::Warning,
+            flag: Flag::SingleIsotherm,
+            file: String::new(),
+            location: "whole measurement".into(),
+            column: String::new(),
+            message: format!(
+                "only one isotherm (at {:.1} °C): a master curve needs several temperatures",
+                m.isotherms[0].temp_mean_c
+            ),
+        });
+    }
+    // Summary.
+    let mut s = Summary {
+        files: m.sources.len(),
+        isotherms: m.isotherms.len(),
+        ..Summary::default()
+    };
+    for iso in &m.isotherms {
+        s.points += iso.points.len();
+        s.flagged_points += iso.points.iter().filter(|p| !p.flags.is_empty()).count();
+        let t = iso.temp_mean_c;
+        s.temp_range_c = Some(match s.temp_range_c {
+            None => (t, t),
+            Some((a, b)) => (a.min(t), b.max(t)),
+        });
+        for p in &iso.points {
+            if p.freq_hz > 0.0 && p.freq_hz.is_finite() {
+                let f = p.freq_hz;
+                s.freq_range_hz = Some(match s.freq_range_hz {
+                    None => (f, f),
+                    Some((a, b)) => (a.min(f), b.max(f)),
+                });
+            }
+        }
+    }
+    for i in &issues {
+        match i.severity {
+            Severity::Error => s.errors += 1,
+            Severity::Warning => s.warnings += 1,
+        }
+        *s.by_flag.entry(i.flag.as_str().to_string()).or_insert(0) += 1;
+        m.warnings.push(i.message.clone());
+    }
+    m.issues.extend(issues);
+    m.summary = s;
+}

@@ -1,0 +1,277 @@
+//! Entry point of the `dma` stage: files (paths or bytes) + [`IngestOptions`] → [`Measurement`].
+//! Reads each file, hashes it (SHA-256), detects or takes its format, runs its reader, gives the
+//! columns their meaning and SI units, splits isotherms, sorts them by temperature and runs the checks.
+
+use super::checks::{self, CheckSettings};
+use super::columns::{self, kind_name};
+use super::detect::{self, Format};
+use super::error::DmaError;
+use super::isotherms::{self, SplitSettings};
+use super::table::{Loc, RawFile};
+use super::units::{FreqUnit, ModulusUnit, TempUnit};
+use super::{eplexor, generic, proteus, rheocompass, text, trios};
+use super::{DataPoint, Isotherm, Measurement, SourceFile};
+use crate::ModulusKind;
+use sha2::{Digest, Sha256};
+
+/// How to read the files; everything the command line can state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IngestOptions {
+    /// Force a reader instead of detecting it (`--format`).
+    pub format: Option<Format>,
+    /// Unit of modulus columns that have none in the file (`--modulus-unit`).
+    pub modulus_unit: Option<ModulusUnit>,
+    /// Unit of the frequency column if the file has none (`--freq-unit`).
+    pub freq_unit: Option<FreqUnit>,
+    /// Unit of temperature columns if the file has none (`--temp-unit`).
+    pub temp_unit: Option<TempUnit>,
+    /// Tensile or shear when the file does not say (`--mode`).
+    pub mode: Option<ModulusKind>,
+    /// Poisson's ratio stated for shear ↔ tensile conversion (`--poisson`); default 0.5
+    /// (incompressible rubber, ARCHITECTURE.md conventions).
+    pub poisson: f64,
+    /// Isotherm split settings.
+    pub split: SplitSettings,
+    /// Check settings.
+    pub checks: CheckSettings,
+}
+
+impl Default for IngestOptions {
+    fn default() -> Self {
+        IngestOptions {
+            format: None,
+            modulus_unit: None,
+            freq_unit: None,
+            temp_unit: None,
+            mode: None,
+            poisson: 0.5,
+            split: SplitSettings::default(),
+            checks: CheckSettings::default(),
+        }
+    }
+}
+
+impl IngestOptions {
+    fn validate(&self) -> Result<(), DmaError> {
+        // ν of an isotropic stable solid lies in (−1, 0.5].
+        if !(self.poisson > -1.0 && self.poisson <= 0.5) {
+            return Err(DmaError::Setting {
+                field: "poisson".into(),
+                value: self.poisson.to_string(),
+                reason: "Poisson's ratio must lie in (−1, 0.5]".into(),
+            });
+        }
+        if self.checks.outlier_log10.is_nan() || self.checks.outlier_log10 <= 0.0 {
+            return Err(DmaError::Setting {
+                field: "outlier_log10".into(),
+                value: self.checks.outlier_log10.to_string(),
+                reason: "must be positive".into(),
+            });
+        }
+        Ok(())
+    }
+}
+
+/// SHA-256 of bytes, lower-case hex.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    let d = Sha256::digest(bytes);
+    d.iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// Read one or more export files into one measurement.
+pub fn read_files<P: AsRef<std::path::Path>>(
+    paths: &[P],
+    opts: &IngestOptions,
+) -> Result<Measurement, DmaError> {
+    let mut inputs = Vec::with_capacity(paths.len());
+    for p in paths {
+        let name = p.as_ref().display().to_string();
+        let bytes = std::fs::read(p.as_ref()).map_err(|source| DmaError::Io {
+            file: name.clone(),
+            source,
+        })?;
+        inputs.push((name, bytes));
+    }
+    read_bytes(&inputs, opts)
+}
+
+/// Read files already in memory, each as (name, bytes).
+pub fn read_bytes(
+    inputs: &[(String, Vec<u8>)],
+    opts: &IngestOptions,
+) -> Result<Measurement, DmaError> {
+    opts.validate()?;
+    if inputs.is_empty() {
+        return Err(DmaError::NoFiles);
+    }
+    let mut m = Measurement {
+        sources: Vec::new(),
+        kind: ModulusKind::Tensile,
+        poisson: opts.poisson,
+        isotherms: Vec::new(),
+        warnings: Vec::new(),
+        issues: Vec::new(),
+        summary: Default::default(),
+    };
+    let mut kind: Option<(ModulusKind, String)> = None;
+    for (si, (name, bytes)) in inputs.iter().enumerate() {
+        let (format, raw, encoding) = parse_one(name, bytes, opts)?;
+        let mapped = columns::map_file(name, &raw, opts)?;
+        match &kind {
+            Some((k, first)) if *k != mapped.kind => {
+                return Err(DmaError::MixedMode {
+                    file: name.clone(),
+                    found: kind_name(mapped.kind).into(),
+                    expected: kind_name(*k).into(),
+                    why: format!("{first} holds {} moduli", kind_name(*k)),
+                })
+            }
+            None => kind = Some((mapped.kind, name.clone())),
+            _ => {}
+        }
+        let name_temp = isotherms::temperature_from_file_name(name);
+        let no_temp = mapped
+            .points
+            .iter()
+            .find(|p| p.temp_c.is_none() && p.nominal_c.is_none())
+            .map(|p| p.loc.to_string());
+        let mut points = mapped.points;
+        if let Some(p) = no_temp {
+            match name_temp {
+                Some(t) => {
+                    m.warnings.push(format!(
+                        "{name}: no temperature in the file; using {t} °C from the file name"
+                    ));
+                    for p in points.iter_mut().filter(|p| p.nominal_c.is_none()) {
+                        p.nominal_c = Some(t);
+                    }
+                }
+                None => {
+                    return Err(DmaError::NoTemperature {
+                        file: name.clone(),
+                        location: p,
+                    })
+                }
+            }
+        }
+        let sheet = points.first().and_then(|p| match &p.loc {
+            Loc::Row { sheet, .. } => Some(sheet.clone()),
+            _ => None,
+        });
+        let labels: Vec<Option<String>> = raw.blocks.iter().map(|b| b.label.clone()).collect();
+        for g in isotherms::split(points, name_temp, &opts.split) {
+            let label = g
+                .points
+                .first()
+                .and_then(|p| labels.get(p.block).cloned().flatten());
+            m.isotherms.push(Isotherm {
+                temp_nominal_c: g.nominal_c,
+                temp_mean_c: g.mean_c,
+                source: si,
+                points: g
+                    .points
+                    .into_iter()
+                    .map(|p| DataPoint {
+                        freq_hz: p.freq_hz,
+                        storage_pa: p.storage_pa,
+                        loss_pa: p.loss_pa,
+                        temp_c: p.temp_c,
+                        line: p.loc.number(),
+                        flags: if p.missing.is_empty() {
+                            Vec::new()
+                        } else {
+                            vec![checks::Flag::Missing.as_str().to_string()]
+                        },
+                    })
+                    .collect(),
+                nominal_source: g.nominal_source.to_string(),
+                sheet: sheet.clone(),
+                label,
+            });
+        }
+        let mut metadata = raw.metadata;
+        if let Some((_, why)) = &raw.mode_hint {
+            metadata.insert("mode evidence".into(), why.clone());
+        }
+        m.sources.push(SourceFile {
+            path: name.clone(),
+            sha256: sha256_hex(bytes),
+            format: format.name().to_string(),
+            metadata,
+            encoding: encoding.to_string(),
+            columns: mapped.columns,
+        });
+    }
+    m.kind = kind.map(|k| k.0).unwrap_or_default();
+    // In order of temperature (stable: equal temperatures keep file order).
+    m.isotherms
+        .sort_by(|a, b| a.temp_mean_c.total_cmp(&b.temp_mean_c));
+    checks::run(&mut m, &opts.checks);
+    Ok(m)
+}
+
+fn parse_one(
+    name: &str,
+    bytes: &[u8],
+    opts: &IngestOptions,
+) -> Result<(Format, RawFile, &'static str), DmaError> {
+    let excel = detect::is_ole2(bytes) || detect::is_zip(bytes);
+    if excel {
+        let f = opts.format.unwrap_or(Format::Eplexor);
+        if f != Format::Eplexor {
+            return Err(DmaError::UnknownFormat {
+                file: name.into(),
+                reason: format!("an Excel workbook cannot be read as `{}`", f.name()),
+            });
+        }
+        return Ok((f, eplexor::read(name, bytes)?, "Excel"));
+    }
+    if bytes.is_empty() {
+        return Err(DmaError::NoData {
+            file: name.into(),
+            reason: "the file is empty".into(),
+        });
+    }
+    let decoded = text::decode(bytes);
+    let format = opts
+        .format
+        .unwrap_or_else(|| detect::detect(bytes, &decoded.text));
+    let t = decoded.text.as_str();
+    let raw = match format {
+        Format::Eplexor => {
+            return Err(DmaError::UnknownFormat {
+                file: name.into(),
+                reason: "`eplexor` needs an Excel workbook (.xls or .xlsx); this is text".into(),
+            })
+        }
+        Format::TriosLims => trios::read_lims(name, t)?,
+        Format::TriosText => trios::read_text(name, t)?,
+        Format::Rheocompass => rheocompass::read(name, t)?,
+        Format::Proteus => proteus::read(name, t)?,
+        Format::Generic => generic::read(name, t)?,
+    };
+    Ok((format, raw, decoded.encoding))
+}
+
+impl Measurement {
+    /// The same measurement as tensile moduli: shear data multiplied by 2(1 + ν) with the stated
+    /// Poisson's ratio (E = 2(1 + ν) G, isotropic material); tensile data returned unchanged.
+    pub fn to_tensile(&self) -> Measurement {
+        let factor = self.kind.to_tensile_factor(self.poisson);
+        let mut m = self.clone();
+        if self.kind == ModulusKind::Shear {
+            for iso in &mut m.isotherms {
+                for p in &mut iso.points {
+                    p.storage_pa *= factor;
+                    p.loss_pa *= factor;
+                }
+            }
+            m.kind = ModulusKind::Tensile;
+            m.warnings.push(format!(
+                "shear moduli converted to tensile with E = 2(1 + ν) G, ν = {}",
+                self.poisson
+            ));
+        }
+        m
+    }
+}
