@@ -142,6 +142,9 @@ pub fn synthetic_measurement(
             temp_mean_c: actual,
             source: 0,
             points,
+            nominal_source: "synthetic".into(),
+            sheet: None,
+            label: None,
         });
     }
     Measurement {
@@ -150,11 +153,15 @@ pub fn synthetic_measurement(
             sha256: String::new(),
             format: "synthetic".into(),
             metadata: BTreeMap::new(),
+            encoding: String::new(),
+            columns: vec![],
         }],
         kind: spectrum.kind,
         poisson: spectrum.poisson,
         isotherms,
         warnings: vec![],
+        issues: vec![],
+        summary: Default::default(),
     }
 }
 

@@ -30,7 +30,7 @@ pub struct Args {
     #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "fitted")]
     pub vertical: Option<VerticalArg>,
     /// What the automatic shifting compares.
-    #[arg(long, value_enum, default_value = "joint")]
+    #[arg(long, value_enum, default_value = "storage")]
     pub criterion: CriterionArg,
     /// Law used as the master curve's shift law.
     #[arg(long, value_enum, default_value = "auto")]
@@ -61,10 +61,12 @@ pub enum VerticalArg {
 /// `--criterion` values.
 #[derive(Debug, Clone, Copy, clap::ValueEnum)]
 pub enum CriterionArg {
-    /// log E′ and log E″ jointly.
+    /// log E′ and log E″ jointly (each weighted by its own scatter).
     Joint,
     /// log tan δ.
     TanDelta,
+    /// log E′ only.
+    Storage,
 }
 
 /// `--law` values.
@@ -121,6 +123,7 @@ fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {
         criterion: match args.criterion {
             CriterionArg::Joint => ShiftCriterion::Joint,
             CriterionArg::TanDelta => ShiftCriterion::TanDelta,
+            CriterionArg::Storage => ShiftCriterion::Storage,
         },
         vertical: match args.vertical {
             None => VerticalShift::None,

@@ -223,7 +223,7 @@ pub fn fit_wlf(points: &[(f64, f64)], t_ref_c: f64) -> Result<WlfFit, TtsError> 
         let d1 = -(a22 * b1 - a12 * b2) / det;
         let d2 = -(a11 * b2 - a12 * b1) / det;
         let (n1, n2) = (c1 + d1, c2 + d2);
-        if n2.is_nan() || n2 <= c2_min || ss_of(n1, n2) > ss_of(c1, c2) {
+        if n2.is_nan() || n2 <= c2_min || n2 > c2_of(u_hi) || ss_of(n1, n2) > ss_of(c1, c2) {
             break;
         }
         let small = d1.abs() <= 1e-15 * c1.abs() && d2.abs() <= 1e-15 * c2.abs();

@@ -31,28 +31,47 @@ fn noise_free_round_trip_recovers_wlf() {
     let mut s = SyntheticSettings::new(temps(), truth());
     s.freqs_hz = log_spaced(0.1, 100.0, 61);
     let m = synthetic_measurement(&broad_spectrum(), &s);
-    let mc = build_master_curve(
-        &m,
-        &MasterSettings {
-            tref_c: Some(20.0),
-            ..Default::default()
-        },
-    )
-    .unwrap();
-    let (c1, c2) = wlf_of(&mc);
-    assert!((c1 / 10.0 - 1.0).abs() < 1e-6, "C1 = {c1}");
-    assert!((c2 / 150.0 - 1.0).abs() < 1e-6, "C2 = {c2}");
-    for iso in &mc.isotherms {
-        let want = truth().log10_a_t(iso.temp_c);
-        assert!(
-            (iso.log10_a_t - want).abs() < 1e-6,
-            "{}: {} vs {want}",
-            iso.temp_c,
-            iso.log10_a_t
+    for criterion in [
+        ShiftCriterion::Storage,
+        ShiftCriterion::Joint,
+        ShiftCriterion::TanDelta,
+    ] {
+        let mc = build_master_curve(
+            &m,
+            &MasterSettings {
+                tref_c: Some(20.0),
+                criterion,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let (c1, c2) = wlf_of(&mc);
+        eprintln!(
+            "noise-free {criterion:?}: C1 rel err {:.2e}, C2 rel err {:.2e}",
+            c1 / 10.0 - 1.0,
+            c2 / 150.0 - 1.0
         );
+        assert!((c1 / 10.0 - 1.0).abs() < 1e-6, "C1 = {c1}");
+        assert!((c2 / 150.0 - 1.0).abs() < 1e-6, "C2 = {c2}");
+        for iso in &mc.isotherms {
+            let want = truth().log10_a_t(iso.temp_c);
+            // log tan δ, a difference of two curves, has larger 4th derivatives, so its spline
+            // error is ~10× that of log E′ (measured 1.2e-6 at worst): 1e-5 for it.
+            let tol = if criterion == ShiftCriterion::TanDelta {
+                1e-5
+            } else {
+                1e-6
+            };
+            assert!(
+                (iso.log10_a_t - want).abs() < tol,
+                "{}: {} vs {want}",
+                iso.temp_c,
+                iso.log10_a_t
+            );
+        }
+        assert!(matches!(mc.shift_law, ShiftLaw::Wlf { .. }));
+        assert!(mc.quality.flags.is_empty(), "{:?}", mc.quality.flags);
     }
-    assert!(matches!(mc.shift_law, ShiftLaw::Wlf { .. }));
-    assert!(mc.quality.flags.is_empty(), "{:?}", mc.quality.flags);
 }
 
 #[test]
@@ -60,7 +79,15 @@ fn noisy_round_trip_within_five_percent_and_monotonic() {
     // 1 % multiplicative noise, EMS-CA layout (10 frequencies over 3 decades), actual temperatures
     // up to ±1 K off nominal: C₁ and C₂ within 5 % (the bound) for several seeds, shifts
     // strictly decreasing with temperature.
-    for seed in 1..=4 {
+    for (seed, criterion) in (1..=6).zip(
+        [
+            ShiftCriterion::Storage,
+            ShiftCriterion::Joint,
+            ShiftCriterion::TanDelta,
+        ]
+        .into_iter()
+        .cycle(),
+    ) {
         let mut s = SyntheticSettings::new(temps(), truth());
         s.noise_rel = 0.01;
         s.temp_offset_k = 1.0;
@@ -70,11 +97,17 @@ fn noisy_round_trip_within_five_percent_and_monotonic() {
             &m,
             &MasterSettings {
                 tref_c: Some(20.0),
+                criterion,
                 ..Default::default()
             },
         )
         .unwrap();
         let (c1, c2) = wlf_of(&mc);
+        eprintln!(
+            "1 % noise seed {seed} {criterion:?}: C1 rel err {:.2e}, C2 rel err {:.2e}",
+            c1 / 10.0 - 1.0,
+            c2 / 150.0 - 1.0
+        );
         assert!((c1 / 10.0 - 1.0).abs() < 0.05, "seed {seed}: C1 = {c1}");
         assert!((c2 / 150.0 - 1.0).abs() < 0.05, "seed {seed}: C2 = {c2}");
         for w in mc.isotherms.windows(2) {

@@ -126,6 +126,8 @@ fn pair_cost(a: &Prepared, b: &Prepared, d: f64, min_points: usize) -> Option<(f
 pub(crate) struct PairShift {
     /// d = s_b − s_a (log10 units).
     pub d: f64,
+    /// RMS mismatch at d (log10 units).
+    pub rms: f64,
 }
 
 /// Pairwise search (step 1 of the module docs); `None` when no shift leaves `min_points`
@@ -152,8 +154,27 @@ pub(crate) fn pair_shift(
     let h = (hi - lo) / n as f64;
     let f = |d: f64| pair_cost(a, b, d, min_points).map_or(f64::INFINITY, |(c, _)| c);
     let (d, c) = golden_min(f, d0 - h, d0 + h, 1e-10);
-    let d = if c <= c0 { d } else { d0 };
-    Some(PairShift { d })
+    let (d, c) = if c <= c0 { (d, c) } else { (d0, c0) };
+    Some(PairShift { d, rms: c.sqrt() })
+}
+
+/// How well one channel superposes on its own: the RMS over neighbour pairs of that channel's
+/// mismatch at its own best pairwise shift (log10 units); `None` if no pair overlaps.
+pub(crate) fn channel_scatter(
+    iso: &[Prepared],
+    channel: usize,
+    grid_step: f64,
+    min_points: usize,
+) -> Option<f64> {
+    let single: Vec<Prepared> = iso
+        .iter()
+        .map(|p| Prepared::new(p.x.clone(), vec![p.channels[channel].0.clone()]))
+        .collect();
+    let rms: Vec<f64> = single
+        .windows(2)
+        .filter_map(|w| pair_shift(&w[0], &w[1], grid_step, min_points).map(|p| p.rms))
+        .collect();
+    (!rms.is_empty()).then(|| (rms.iter().map(|r| r * r).sum::<f64>() / rms.len() as f64).sqrt())
 }
 
 /// Golden-section minimisation of `f` on [lo, hi] down to a bracket of width `tol`.
