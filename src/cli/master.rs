@@ -35,6 +35,10 @@ pub struct Args {
     /// Law used as the master curve's shift law.
     #[arg(long, value_enum, default_value = "auto")]
     pub law: LawArg,
+    /// Fit WLF and Arrhenius only to isotherms in this range of temperatures, `TMIN:TMAX` in °C
+    /// (e.g. above T_g) [default: all].
+    #[arg(long, allow_hyphen_values = true)]
+    pub fit_range: Option<String>,
     /// Use the nominal (set) temperatures instead of the mean measured ones.
     #[arg(long)]
     pub nominal: bool,
@@ -117,6 +121,22 @@ fn parse_measurement(text: &str) -> anyhow::Result<Measurement> {
 
 fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {
     let shift = parse_shift(&args.shift, args.tref)?;
+    let law_fit_range_c = match &args.fit_range {
+        None => None,
+        Some(r) => {
+            let (a, b) = r
+                .split_once(':')
+                .ok_or_else(|| anyhow::anyhow!("--fit-range expects TMIN:TMAX in °C, got {r:?}"))?;
+            let parse = |v: &str| -> anyhow::Result<f64> {
+                v.trim()
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|x| x.is_finite())
+                    .ok_or_else(|| anyhow::anyhow!("--fit-range: {v:?} is not a temperature in °C"))
+            };
+            Some((parse(a)?, parse(b)?))
+        }
+    };
     Ok(MasterSettings {
         tref_c: args.tref,
         shift,
@@ -141,6 +161,7 @@ fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {
             LawArg::Arrhenius => LawChoice::Arrhenius,
             LawArg::Table => LawChoice::Table,
         },
+        law_fit_range_c,
         ..MasterSettings::default()
     })
 }

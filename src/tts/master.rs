@@ -112,6 +112,9 @@ pub struct MasterSettings {
     /// Step of the pairwise grid scan in decades. Default 0.01 (the golden-section refinement then
     /// brackets the minimum to 1e-10).
     pub grid_step_decades: f64,
+    /// Fit WLF and Arrhenius only to the isotherms with temperatures in [min, max] °C (e.g. above
+    /// T_g, where WLF holds); `None`: all. The residuals are reported for the fitted isotherms.
+    pub law_fit_range_c: Option<(f64, f64)>,
     /// Floor of a channel's scatter in the joint criterion's weights, log10 units. Default 0.002
     /// (0.5 % in modulus, below the noise of any DMA): noise-free channels then weigh alike.
     pub channel_scatter_floor_log10: f64,
@@ -132,6 +135,7 @@ impl Default for MasterSettings {
             pair_reach: 2,
             grid_step_decades: 0.01,
             channel_scatter_floor_log10: 0.002,
+            law_fit_range_c: None,
             bounds: QualityBounds::default(),
         }
     }
@@ -176,6 +180,15 @@ impl MasterSettings {
                 value: self.channel_scatter_floor_log10.to_string(),
                 expected: "finite and > 0",
             });
+        }
+        if let Some((lo, hi)) = self.law_fit_range_c {
+            if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+                return Err(TtsError::BadSetting {
+                    field: "law_fit_range_c",
+                    value: format!("({lo}, {hi})"),
+                    expected: "finite (min, max) with min < max, °C",
+                });
+            }
         }
         Ok(())
     }
@@ -544,7 +557,16 @@ pub fn build_master_curve(
 
     // Laws, first at the reference isotherm's temperature, then re-referenced to T_ref.
     let fit_both = |s: &[f64], tr: f64, warnings: &mut Vec<String>| {
-        let pts: Vec<(f64, f64)> = temps.iter().copied().zip(s.iter().copied()).collect();
+        let pts: Vec<(f64, f64)> = temps
+            .iter()
+            .copied()
+            .zip(s.iter().copied())
+            .filter(|p| {
+                settings
+                    .law_fit_range_c
+                    .map_or(true, |(lo, hi)| p.0 >= lo && p.0 <= hi)
+            })
+            .collect();
         let w = fit_wlf(&pts, tr)
             .map_err(|e| warnings.push(e.to_string()))
             .ok();
@@ -603,7 +625,16 @@ pub fn build_master_curve(
                     *b -= b_ref;
                 }
             }
-            let pts: Vec<(f64, f64)> = temps.iter().copied().zip(shifts.iter().copied()).collect();
+            let all: Vec<(f64, f64)> = temps.iter().copied().zip(shifts.iter().copied()).collect();
+            let pts: Vec<(f64, f64)> = all
+                .iter()
+                .copied()
+                .filter(|p| {
+                    settings
+                        .law_fit_range_c
+                        .map_or(true, |(lo, hi)| p.0 >= lo && p.0 <= hi)
+                })
+                .collect();
             let mut tmp = Vec::new();
             let (wr, ar) = fit_both(&shifts, t_ref, &mut tmp);
             let w = match (&law0, &w0) {
@@ -617,7 +648,7 @@ pub fn build_master_curve(
             let law = match law0 {
                 ShiftLaw::Table { .. } => ShiftLaw::Table {
                     t_ref_c: t_ref,
-                    points: pts.clone(),
+                    points: all.clone(),
                 },
                 ShiftLaw::Wlf { .. } => w
                     .as_ref()
@@ -631,6 +662,17 @@ pub fn build_master_curve(
             (w, a, law)
         }
     };
+
+    if let Some(w) = &wlf {
+        if w.c2_k > 1e4 {
+            warnings.push(format!(
+                "WLF C2 = {:.3e} K at the search bound: the shifts are nearly linear in T and WLF \
+                 is degenerate (C1/C2 = {:.4} per K); see the Arrhenius fit or the table",
+                w.c2_k,
+                w.c1 / w.c2_k
+            ));
+        }
+    }
 
     // Quality.
     let vgp = van_gurp_palmen(
@@ -674,7 +716,7 @@ pub fn build_master_curve(
             }
         }
         for f in &flags {
-            flags_all.push(format!("{} °C: {f}", c.temp));
+            flags_all.push(format!("{:.2} °C: {f}", c.temp));
         }
         isotherms.push(IsothermShift {
             measurement_index: c.index,

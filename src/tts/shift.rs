@@ -304,7 +304,6 @@ pub(crate) fn refine_global(
         iterations = outer + 1;
         sets = pair_sets(iso, &s, reach, min_points);
         let mut mu = 1e-3;
-        let mut moved = 0.0f64;
         for _inner in 0..30 {
             jtj.fill(0.0);
             let mut jtr = DVector::<f64>::zeros(np);
@@ -329,6 +328,7 @@ pub(crate) fn refine_global(
             }
             let c0 = cost(iso, &s, &sets);
             let mut accepted = false;
+            let mut stalled = false;
             let mut step_max = 0.0f64;
             for _try in 0..12 {
                 let mut m = jtj.clone();
@@ -349,6 +349,7 @@ pub(crate) fn refine_global(
                 let c1 = cost(iso, &trial, &sets);
                 if c1 <= c0 {
                     step_max = delta.amax();
+                    stalled = c0 - c1 <= 1e-15 * c0;
                     s = trial;
                     mu = (mu / 3.0).max(1e-12);
                     accepted = true;
@@ -356,8 +357,9 @@ pub(crate) fn refine_global(
                 }
                 mu *= 4.0;
             }
-            moved = moved.max(step_max);
-            if !accepted || step_max < 1e-12 {
+            // Converged: no step lowers the cost, the step is below 1e-12 decades, or the cost no
+            // longer falls (relative 1e-15, rounding).
+            if !accepted || step_max < 1e-12 || stalled {
                 break;
             }
         }
@@ -367,7 +369,8 @@ pub(crate) fn refine_global(
                 .iter()
                 .zip(&sets)
                 .all(|(x, y)| x.0 == y.0 && x.1 == y.1 && x.2.len() == y.2.len());
-        if same && moved < 1e-9 {
+        // The inner loop converged on these sets; done when the shifts leave them unchanged.
+        if same {
             break;
         }
     }
