@@ -26,6 +26,8 @@ pub mod prony;
 pub mod report;
 pub mod tts;
 
+pub mod testdata;
+
 pub mod cli;
 
 pub use creep::CreepSpectrum;

@@ -11,3 +11,4 @@ mod dma_errors;
 mod dma_quirks;
 mod dma_real;
 mod ingest_cli;
+mod master_cli;

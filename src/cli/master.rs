@@ -1,10 +1,331 @@
-//! `viscoroll master`: Master curve by time–temperature superposition, with WLF and Arrhenius fits.
+//! `viscoroll master`: master curve by time–temperature superposition, with WLF and Arrhenius fits.
+//!
+//! Input: a measurement JSON (the serde of [`crate::Measurement`], as `viscoroll ingest` writes
+//! it); output: a [`MasterCurve`] (printed with `--json`, written with `-o`), a summary on stderr.
+
+use crate::tts::{
+    build_master_curve, LawChoice, MasterCurve, MasterSettings, ShiftCriterion, ShiftSource,
+    TemperatureBasis, VerticalShift,
+};
+use crate::{Measurement, ShiftLaw};
+use anyhow::{bail, Context};
+use std::io::Write;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `viscoroll master`.
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Measurement JSON (serde of `Measurement`, as written by `viscoroll ingest`).
+    pub measurement: PathBuf,
+    /// Reference temperature in °C [default: the middle isotherm's temperature].
+    #[arg(long, allow_hyphen_values = true)]
+    pub tref: Option<f64>,
+    /// Horizontal shifts: `auto`, `wlf:C1,C2` (C2 in K, at --tref), `arrhenius:EA` (J/mol, at
+    /// --tref), or a file: a JSON shift law, or a table of `T_C,log10_aT` rows (CSV or
+    /// whitespace; header and unit rows skipped).
+    #[arg(long, default_value = "auto")]
+    pub shift: String,
+    /// Vertical shift b_T: `fitted` (from the residual offset; horizontal then from tan δ) or
+    /// `temperature` (T/T_ref) [default when given without a value: fitted; off when absent].
+    #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "fitted")]
+    pub vertical: Option<VerticalArg>,
+    /// What the automatic shifting compares.
+    #[arg(long, value_enum, default_value = "storage")]
+    pub criterion: CriterionArg,
+    /// Law used as the master curve's shift law.
+    #[arg(long, value_enum, default_value = "auto")]
+    pub law: LawArg,
+    /// Fit WLF and Arrhenius only to isotherms in this range of temperatures, `TMIN:TMAX` in °C
+    /// (e.g. above T_g) [default: all].
+    #[arg(long, allow_hyphen_values = true)]
+    pub fit_range: Option<String>,
+    /// Use the nominal (set) temperatures instead of the mean measured ones.
+    #[arg(long)]
+    pub nominal: bool,
+    /// Print the master curve as one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+    /// Write the master curve JSON to this file.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// Overwrite the output file if it exists.
+    #[arg(long)]
+    pub force: bool,
+}
+
+/// `--vertical` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum VerticalArg {
+    /// From the residual offset of log E′.
+    Fitted,
+    /// T/T_ref (kelvin).
+    Temperature,
+}
+
+/// `--criterion` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum CriterionArg {
+    /// log E′ and log E″ jointly (each weighted by its own scatter).
+    Joint,
+    /// log tan δ.
+    TanDelta,
+    /// log E′ only.
+    Storage,
+}
+
+/// `--law` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum LawArg {
+    /// The better of WLF and Arrhenius by RMS.
+    Auto,
+    /// WLF.
+    Wlf,
+    /// Arrhenius.
+    Arrhenius,
+    /// The table of measured shifts.
+    Table,
+}
 
 /// Run `viscoroll master`.
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`viscoroll master` is not implemented yet")
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let settings = settings_from(&args)?;
+    if let Some(out) = &args.output {
+        if out.exists() && !args.force {
+            bail!("{} exists; use --force to overwrite it", out.display());
+        }
+    }
+    let text = std::fs::read_to_string(&args.measurement)
+        .with_context(|| format!("cannot read {}", args.measurement.display()))?;
+    let measurement = parse_measurement(&text)
+        .with_context(|| format!("{} is not a measurement JSON", args.measurement.display()))?;
+    let master = build_master_curve(&measurement, &settings)?;
+    let json = serde_json::to_string_pretty(&master)?;
+    if let Some(out) = &args.output {
+        write_atomic(out, json.as_bytes())?;
+        eprintln!("wrote {}", out.display());
+    }
+    summary(&master);
+    if args.json {
+        let mut stdout = std::io::stdout().lock();
+        writeln!(stdout, "{json}")?;
+    }
+    Ok(())
+}
+
+fn parse_measurement(text: &str) -> anyhow::Result<Measurement> {
+    // The bare serde of Measurement, or an object holding it under "measurement".
+    let value: serde_json::Value = serde_json::from_str(text)?;
+    let inner = value.get("measurement").cloned().unwrap_or(value);
+    Ok(serde_json::from_value(inner)?)
+}
+
+fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {
+    let shift = parse_shift(&args.shift, args.tref)?;
+    let law_fit_range_c = match &args.fit_range {
+        None => None,
+        Some(r) => {
+            let (a, b) = r
+                .split_once(':')
+                .ok_or_else(|| anyhow::anyhow!("--fit-range expects TMIN:TMAX in °C, got {r:?}"))?;
+            let parse = |v: &str| -> anyhow::Result<f64> {
+                v.trim()
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|x| x.is_finite())
+                    .ok_or_else(|| anyhow::anyhow!("--fit-range: {v:?} is not a temperature in °C"))
+            };
+            Some((parse(a)?, parse(b)?))
+        }
+    };
+    Ok(MasterSettings {
+        tref_c: args.tref,
+        shift,
+        criterion: match args.criterion {
+            CriterionArg::Joint => ShiftCriterion::Joint,
+            CriterionArg::TanDelta => ShiftCriterion::TanDelta,
+            CriterionArg::Storage => ShiftCriterion::Storage,
+        },
+        vertical: match args.vertical {
+            None => VerticalShift::None,
+            Some(VerticalArg::Fitted) => VerticalShift::Fitted,
+            Some(VerticalArg::Temperature) => VerticalShift::Temperature,
+        },
+        temperature: if args.nominal {
+            TemperatureBasis::Nominal
+        } else {
+            TemperatureBasis::Mean
+        },
+        law: match args.law {
+            LawArg::Auto => LawChoice::Auto,
+            LawArg::Wlf => LawChoice::Wlf,
+            LawArg::Arrhenius => LawChoice::Arrhenius,
+            LawArg::Table => LawChoice::Table,
+        },
+        law_fit_range_c,
+        ..MasterSettings::default()
+    })
+}
+
+fn parse_number(s: &str, what: &str) -> anyhow::Result<f64> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| anyhow::anyhow!("--shift: {what} = {s:?} is not a number"))?;
+    if !v.is_finite() {
+        bail!("--shift: {what} = {s} is not finite");
+    }
+    Ok(v)
+}
+
+/// `auto`, `wlf:C1,C2`, `arrhenius:EA` or a file.
+fn parse_shift(spec: &str, tref: Option<f64>) -> anyhow::Result<ShiftSource> {
+    if spec == "auto" {
+        return Ok(ShiftSource::Auto);
+    }
+    let need_tref = |form: &str| {
+        tref.ok_or_else(|| {
+            anyhow::anyhow!("--shift {form} needs --tref (the temperature its constants refer to)")
+        })
+    };
+    if let Some(rest) = spec.strip_prefix("wlf:") {
+        let parts: Vec<&str> = rest.split(',').collect();
+        if parts.len() != 2 {
+            bail!("--shift wlf:C1,C2 expects two numbers, got {rest:?}");
+        }
+        let c1 = parse_number(parts[0], "C1")?;
+        let c2_k = parse_number(parts[1], "C2")?;
+        if c1 <= 0.0 || c2_k <= 0.0 {
+            bail!("--shift wlf:C1,C2 needs C1 > 0 and C2 > 0 K, got C1 = {c1}, C2 = {c2_k}");
+        }
+        let t_ref_c = need_tref("wlf:C1,C2")?;
+        return Ok(ShiftSource::Given {
+            law: ShiftLaw::Wlf { t_ref_c, c1, c2_k },
+        });
+    }
+    if let Some(rest) = spec.strip_prefix("arrhenius:") {
+        let ea = parse_number(rest, "EA")?;
+        if ea <= 0.0 {
+            bail!("--shift arrhenius:EA needs EA > 0 J/mol, got {ea}");
+        }
+        let t_ref_c = need_tref("arrhenius:EA")?;
+        return Ok(ShiftSource::Given {
+            law: ShiftLaw::Arrhenius {
+                t_ref_c,
+                activation_energy_j_per_mol: ea,
+            },
+        });
+    }
+    let path = Path::new(spec);
+    if !path.exists() {
+        bail!("--shift {spec:?}: expected auto, wlf:C1,C2, arrhenius:EA or an existing file");
+    }
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read shift file {}", path.display()))?;
+    let law = if text.trim_start().starts_with('{') {
+        serde_json::from_str::<ShiftLaw>(&text)
+            .with_context(|| format!("{} is not a shift-law JSON", path.display()))?
+    } else {
+        parse_table(&text).with_context(|| format!("shift table {}", path.display()))?
+    };
+    Ok(ShiftSource::Given { law })
+}
+
+/// Rows of two numbers (T in °C, log10 a_T), separated by commas, semicolons or white space;
+/// other rows (header, units) are skipped.
+fn parse_table(text: &str) -> anyhow::Result<ShiftLaw> {
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    for line in text.lines() {
+        let line = line.trim_start_matches('\u{feff}');
+        let fields: Vec<&str> = line
+            .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
+            .filter(|f| !f.is_empty())
+            .collect();
+        if fields.len() < 2 {
+            continue;
+        }
+        if let (Ok(t), Ok(a)) = (fields[0].parse::<f64>(), fields[1].parse::<f64>()) {
+            if t.is_finite() && a.is_finite() {
+                points.push((t, a));
+            }
+        }
+    }
+    if points.len() < 2 {
+        bail!("fewer than 2 rows of (T in °C, log10 a_T)");
+    }
+    points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if points.windows(2).any(|w| w[0].0 == w[1].0) {
+        bail!("a temperature appears twice");
+    }
+    let t_ref_c = points
+        .iter()
+        .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .map(|p| p.0)
+        .unwrap_or(0.0);
+    Ok(ShiftLaw::Table { t_ref_c, points })
+}
+
+fn write_atomic(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path.file_name().context("output path has no file name")?;
+    let tmp = dir.join(format!(
+        ".{}.tmp{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    std::fs::write(&tmp, bytes).with_context(|| format!("cannot write {}", tmp.display()))?;
+    std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(())
+}
+
+fn summary(m: &MasterCurve) {
+    eprintln!(
+        "master curve: {} isotherms, {} points, T_ref = {} °C",
+        m.isotherms.len(),
+        m.points.len(),
+        m.t_ref_c
+    );
+    eprintln!("  T (°C)   log10 aT   ±std     log10 bT  overlap RMS  vGP (°)  KK log10");
+    for s in &m.isotherms {
+        let opt = |v: Option<f64>, p: usize| v.map_or("-".to_string(), |v| format!("{v:.p$}"));
+        eprintln!(
+            "  {:>7.2}  {:>8.3}  {:>7.4}  {:>8.4}  {:>11}  {:>7}  {:>8}{}",
+            s.temp_c,
+            s.log10_a_t,
+            s.log10_a_t_std,
+            s.log10_b_t,
+            opt(s.overlap_rms_log10, 4),
+            opt(s.vgp_rms_deg, 2),
+            opt(s.kk_median_log10_ratio, 2),
+            if s.flags.is_empty() { "" } else { "  !" }
+        );
+    }
+    if let Some(w) = &m.wlf {
+        eprintln!(
+            "WLF:       C1 = {:.4}, C2 = {:.3} K at {} °C, RMS {:.4}",
+            w.c1, w.c2_k, w.t_ref_c, w.rms_log10
+        );
+    }
+    if let Some(a) = &m.arrhenius {
+        eprintln!(
+            "Arrhenius: Ea = {:.1} kJ/mol at {} °C, RMS {:.4}",
+            a.activation_energy_j_per_mol / 1e3,
+            a.t_ref_c,
+            a.rms_log10
+        );
+    }
+    let law = match &m.shift_law {
+        ShiftLaw::Wlf { .. } => "WLF",
+        ShiftLaw::Arrhenius { .. } => "Arrhenius",
+        ShiftLaw::Table { .. } => "table",
+    };
+    eprintln!("shift law used: {law}");
+    for w in &m.warnings {
+        eprintln!("warning: {w}");
+    }
+    for f in &m.quality.flags {
+        eprintln!("flag: {f}");
+    }
 }

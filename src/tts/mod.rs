@@ -4,6 +4,22 @@
 
 use serde::{Deserialize, Serialize};
 
+mod error;
+pub mod fit_laws;
+mod interp;
+mod master;
+pub mod quality;
+mod shift;
+pub mod vertical;
+
+pub use error::TtsError;
+pub use fit_laws::{rereference_wlf, ArrheniusFit, ShiftResidual, WlfFit};
+pub use master::{
+    build_master_curve, IsothermShift, LawChoice, MasterCurve, MasterPoint, MasterQuality,
+    MasterSettings, ShiftCriterion, ShiftSource, TemperatureBasis, VerticalShift,
+};
+pub use quality::QualityBounds;
+
 /// Universal gas constant R in J/(mol·K).
 pub const GAS_CONSTANT_J_PER_MOL_K: f64 = 8.314_462_618;
 /// 0 °C in K.
@@ -118,3 +134,6 @@ mod tests {
         assert!((law.log10_a_t(-10.0) - 2.0).abs() < 1e-15);
     }
 }
+
+#[cfg(test)]
+mod roundtrip_tests;
