@@ -425,7 +425,7 @@ impl Problem {
                 lambda,
                 residual_norm,
                 seminorm,
-                score: f64::NAN,
+                score: None,
             });
             sols.push(s);
         }
@@ -441,7 +441,7 @@ impl Problem {
                 for (c, s) in cands.iter_mut().zip(&sols) {
                     let tr = self.influence_trace(&s.x, c.lambda, settings.drop_threshold);
                     let dof = (m - tr).max(1.0);
-                    c.score = m * c.residual_norm * c.residual_norm / (dof * dof);
+                    c.score = Some(m * c.residual_norm * c.residual_norm / (dof * dof));
                 }
                 argbest(&cands, |a, b| a < b)
             }
@@ -493,17 +493,19 @@ fn l_curve_curvature(cands: &mut [LambdaCandidate]) {
         let cross = d1.0 * d2.1 - d1.1 * d2.0;
         let den = d1.0.hypot(d1.1) * d2.0.hypot(d2.1) * d3.0.hypot(d3.1);
         let kappa = 2.0 * cross / den;
-        cands[i].score = if kappa > 0.0 { kappa } else { f64::NAN };
+        cands[i].score = (kappa > 0.0).then_some(kappa);
     }
 }
 
 fn argbest(cands: &[LambdaCandidate], better: impl Fn(f64, f64) -> bool) -> Option<usize> {
     let mut best: Option<usize> = None;
     for (i, c) in cands.iter().enumerate() {
-        if !c.score.is_finite() {
+        let Some(score) = c.score.filter(|s| s.is_finite()) else {
             continue;
-        }
-        if best.map_or(true, |b| better(c.score, cands[b].score)) {
+        };
+        if best.map_or(true, |b: usize| {
+            better(score, cands[b].score.unwrap_or(f64::NAN))
+        }) {
             best = Some(i);
         }
     }
@@ -647,7 +649,7 @@ mod tests {
                 lambda: i as f64,
                 residual_norm: r,
                 seminorm: s,
-                score: f64::NAN,
+                score: None,
             })
             .collect();
         l_curve_curvature(&mut c);

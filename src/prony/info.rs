@@ -14,8 +14,8 @@ pub struct LambdaCandidate {
     /// Seminorm ‖L x‖ of the scaled spectrum's second differences.
     pub seminorm: f64,
     /// The rule's score at this λ: L-curve curvature (largest wins) or GCV value (smallest wins);
-    /// NaN where the rule gives none (end points of the L-curve).
-    pub score: f64,
+    /// `None` where the rule gives none (end points of the L-curve, no counter-clockwise turn).
+    pub score: Option<f64>,
 }
 
 /// Diagnostics of a Prony fit.
