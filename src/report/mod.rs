@@ -1,1 +1,3 @@
 //! Stage `report`: plots, datasheets, friction maps, rankings and FEA export cards.
+
+pub mod plots;
