@@ -12,3 +12,5 @@ mod dma_quirks;
 mod dma_real;
 mod ingest_cli;
 mod master_cli;
+mod prony_ems_ca;
+mod report_plots;

@@ -6,6 +6,18 @@
 use crate::ModulusKind;
 use serde::{Deserialize, Serialize};
 
+mod error;
+pub mod fit;
+mod info;
+pub mod kernel;
+mod settings;
+pub mod synthetic;
+
+pub use error::PronyError;
+pub use fit::{fit_prony, log10_errors, relaxation_times_s, MasterPoint, PronyFit};
+pub use info::{LambdaCandidate, PronyInfo};
+pub use settings::{PronySettings, WeightRule};
+
 /// One relaxation term of a Prony series: Eᵢ e^(−t/ρᵢ).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct RelaxationTerm {

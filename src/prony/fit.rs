@@ -1,0 +1,691 @@
+//! The non-negative, regularised Prony fit (MATH.md §5): master-curve points ([`MasterPoint`]) →
+//! [`RelaxationSpectrum`] + [`PronyInfo`], solved as a convex QP with clarabel.
+//!
+//! # The problem
+//!
+//! Relaxation times ρ_j (j = 1…n) are fixed, log-spaced over the reduced-frequency window of the data
+//! (`terms_per_decade`, `margin_decades` beyond each end). With the modulus scale S = max_k E′_k and
+//! unknowns x₀ = E∞/S, x_j = E_j/S, the residuals of E′ and E″ *relative to each datum* are
+//!
+//! ```text
+//!   r′_k = (x₀ + Σ_j x_j (ω_kρ_j)²/(1+(ω_kρ_j)²)) · S/E′_k − 1
+//!   r″_k = (     Σ_j x_j  ω_kρ_j  /(1+(ω_kρ_j)²)) · S/E″_k − 1          (ω_k = 2π f_k)
+//! ```
+//!
+//! i.e. r = A x − 1 with A of size 2m × (n+1). A relative residual ≈ ln(fit/datum) near a good fit,
+//! so this is a log fit that stays linear in x. With L the (n−2)×(n+1) second-difference operator
+//! on x₁…x_n (uniform in log ρ, so the 1/Δ² factor is absorbed in λ):
+//!
+//! ```text
+//!   minimise ½‖A x − b‖² + ½ λ·(‖A‖²_F/‖L‖²_F) ‖L x‖²   subject to  x ≥ 0,
+//! ```
+//!
+//! with b = 1 on the E′ rows and the E″ rows (and A's E″ rows) multiplied by `loss_weight`. The
+//! factor ‖A‖²_F/‖L‖²_F makes λ dimensionless and comparable across data sets and grids.
+//!
+//! # Numerics
+//! * Normalisation: the moduli span 1e5–1e10 Pa; dividing by S puts the unknowns in [0, 1] and the
+//!   entries of A between ~1e-3 and ~1e3 (the ratio of glassy to rubbery modulus).
+//! * No normal equations: A = QR (thin, Householder), then ‖A x − b‖² = ‖R x − Qᵀb‖² + const. The QP
+//!   handed to clarabel is, with residual variables u (n+1 of them) and v (n−2):
+//!   minimise ½‖u‖² + ½‖v‖² s.t. R x − u = Qᵀb, √(λ‖A‖²_F/‖L‖²_F) L x − v = 0, x ≥ 0. Its KKT system has the
+//!   condition of A, not of AᵀA, which the noise-free round trip to 1e-6 needs.
+//! * λ: the rule in [`WeightRule`], over a log-spaced grid; each solve is a few dozen variables.
+//! * Terms whose largest relative contribution to any datum is below `drop_threshold` are dropped.
+//!
+//! # References
+//! * Hansen, P. C. & O'Leary, D. P. (1993), The use of the L-curve in the regularization of discrete
+//!   ill-posed problems, SIAM J. Sci. Comput. 14, 1487–1503.
+//! * Golub, G. H., Heath, M. & Wahba, G. (1979), Generalized cross-validation as a method for
+//!   choosing a good ridge parameter, Technometrics 21, 215–223.
+//! * Park, S. W. & Schapery, R. A. (1999), Methods of interconversion between linear viscoelastic
+//!   material functions. Part I, Int. J. Solids Struct. 36, 1653–1675 (Prony series fits).
+
+use super::kernel::{dynamic_moduli_pa, loss_kernel, storage_kernel};
+use super::{
+    LambdaCandidate, PronyError, PronyInfo, PronySettings, RelaxationSpectrum, RelaxationTerm,
+    WeightRule,
+};
+use crate::ModulusKind;
+use clarabel::algebra::CscMatrix;
+use clarabel::solver::{
+    DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus,
+    SupportedConeT, ZeroConeT,
+};
+use nalgebra::{DMatrix, DVector};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// One point of a master curve at the reference temperature: the input of the Prony fit.
+///
+/// A plain type so that the fit does not depend on how the master curve was built.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct MasterPoint {
+    /// Reduced frequency a_T·f in Hz (ω = 2π·reduced_freq_hz).
+    pub reduced_freq_hz: f64,
+    /// Storage modulus E′ (or G′) in Pa.
+    pub storage_pa: f64,
+    /// Loss modulus E″ (or G″) in Pa.
+    pub loss_pa: f64,
+}
+
+/// The result of [`fit_prony`]: the spectrum and how it was obtained.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PronyFit {
+    /// The fitted relaxation spectrum (terms that came out zero removed).
+    pub spectrum: RelaxationSpectrum,
+    /// Fit errors, term counts, λ and solver status.
+    pub info: PronyInfo,
+}
+
+/// The fixed relaxation-time grid in s for data over [`freq_min_hz`, `freq_max_hz`] (reduced):
+/// log-spaced from 10^(−margin)/ω_max to 10^(margin)/ω_min, `terms_per_decade` per decade (rounded up
+/// so the density is at least the one asked), at least 2 times.
+pub fn relaxation_times_s(
+    freq_min_hz: f64,
+    freq_max_hz: f64,
+    settings: &PronySettings,
+) -> Vec<f64> {
+    let lo = (1.0 / (2.0 * PI * freq_max_hz)).log10() - settings.margin_decades;
+    let hi = (1.0 / (2.0 * PI * freq_min_hz)).log10() + settings.margin_decades;
+    let n = (((hi - lo) * settings.terms_per_decade).ceil() as usize + 1).max(2);
+    (0..n)
+        .map(|j| 10f64.powf(lo + (hi - lo) * j as f64 / (n - 1) as f64))
+        .collect()
+}
+
+/// Fit a non-negative, smooth Prony series to master-curve points (MATH.md §5; see the module docs
+/// for the QP). `kind` and `poisson` are copied into the spectrum; the moduli are fitted as given.
+pub fn fit_prony(
+    points: &[MasterPoint],
+    kind: ModulusKind,
+    poisson: f64,
+    settings: &PronySettings,
+) -> Result<PronyFit, PronyError> {
+    settings.validate()?;
+    check_points(points)?;
+    let f_min = points
+        .iter()
+        .map(|p| p.reduced_freq_hz)
+        .fold(f64::INFINITY, f64::min);
+    let f_max = points.iter().map(|p| p.reduced_freq_hz).fold(0.0, f64::max);
+    if f_max <= f_min * (1.0 + 1e-12) {
+        return Err(PronyError::NoFrequencyWindow { freq_hz: f_min });
+    }
+    let taus = relaxation_times_s(f_min, f_max, settings);
+    let scale = points.iter().map(|p| p.storage_pa).fold(0.0, f64::max);
+    let problem = Problem::new(points, &taus, scale, settings.loss_weight);
+
+    // λ search (or the fixed λ).
+    let (lambda, solution, search, total_iterations) = match settings.weight_rule {
+        WeightRule::Fixed { lambda } => {
+            let s = problem.solve(lambda, settings.max_iter)?;
+            let it = s.iterations;
+            (lambda, s, Vec::new(), it)
+        }
+        rule => problem.search(rule, settings)?,
+    };
+    if !matches!(
+        solution.status,
+        SolverStatus::Solved | SolverStatus::AlmostSolved
+    ) {
+        return Err(PronyError::Solver(format!(
+            "status {:?} at λ = {lambda:e}",
+            solution.status
+        )));
+    }
+
+    // Drop terms whose largest relative contribution to any datum is below the threshold.
+    let x = &solution.x;
+    let mut terms = Vec::new();
+    for (j, &tau_s) in taus.iter().enumerate() {
+        let col = j + 1;
+        let effect = x[col].max(0.0) * problem.col_max[col];
+        if effect >= settings.drop_threshold {
+            terms.push(RelaxationTerm {
+                modulus_pa: x[col].max(0.0) * scale,
+                tau_s,
+            });
+        }
+    }
+    let spectrum = RelaxationSpectrum {
+        kind,
+        poisson,
+        modulus_inf_pa: x[0].max(0.0) * scale,
+        terms,
+    };
+    let errors = log10_errors(points, &spectrum);
+    let info = PronyInfo {
+        rms_log10_storage: errors.rms_storage,
+        rms_log10_loss: errors.rms_loss,
+        max_abs_log10_storage: errors.max_storage,
+        max_abs_log10_loss: errors.max_loss,
+        n_points: points.len(),
+        n_terms_grid: taus.len(),
+        n_terms_kept: spectrum.terms.len(),
+        drop_threshold: settings.drop_threshold,
+        weight_rule: settings.weight_rule,
+        lambda,
+        lambda_search: search,
+        solver_status: format!("{:?}", solution.status),
+        iterations: solution.iterations,
+        total_iterations,
+        freq_window_hz: [f_min, f_max],
+        tau_window_s: [taus[0], taus[taus.len() - 1]],
+        modulus_scale_pa: scale,
+    };
+    Ok(PronyFit { spectrum, info })
+}
+
+/// RMS and largest |log10(fit/datum)| of E′ and E″.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Log10Errors {
+    /// RMS log10 error of E′.
+    pub rms_storage: f64,
+    /// RMS log10 error of E″.
+    pub rms_loss: f64,
+    /// Largest |log10 error| of E′.
+    pub max_storage: f64,
+    /// Largest |log10 error| of E″.
+    pub max_loss: f64,
+}
+
+/// log10 errors of `spectrum` against master-curve points (independent of how it was fitted).
+pub fn log10_errors(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Log10Errors {
+    let (mut ss, mut sl, mut ms, mut ml) = (0.0, 0.0, 0.0f64, 0.0f64);
+    for p in points {
+        let (e1, e2) = dynamic_moduli_pa(spectrum, 2.0 * PI * p.reduced_freq_hz);
+        let d1 = (e1 / p.storage_pa).log10();
+        let d2 = (e2 / p.loss_pa).log10();
+        ss += d1 * d1;
+        sl += d2 * d2;
+        ms = ms.max(d1.abs());
+        ml = ml.max(d2.abs());
+    }
+    let m = points.len().max(1) as f64;
+    Log10Errors {
+        rms_storage: (ss / m).sqrt(),
+        rms_loss: (sl / m).sqrt(),
+        max_storage: ms,
+        max_loss: ml,
+    }
+}
+
+fn check_points(points: &[MasterPoint]) -> Result<(), PronyError> {
+    const NEEDED: usize = 3;
+    if points.len() < NEEDED {
+        return Err(PronyError::TooFewPoints {
+            found: points.len(),
+            needed: NEEDED,
+        });
+    }
+    for (index, p) in points.iter().enumerate() {
+        for (field, value) in [
+            ("reduced_freq_hz", p.reduced_freq_hz),
+            ("storage_pa", p.storage_pa),
+            ("loss_pa", p.loss_pa),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(PronyError::BadPoint {
+                    index,
+                    field,
+                    value,
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// One QP solution.
+struct Solution {
+    x: Vec<f64>,
+    status: SolverStatus,
+    iterations: u32,
+}
+
+/// The scaled least-squares problem, factored once for all λ.
+struct Problem {
+    /// Design matrix A (2m × (n+1)) of relative residuals, scaled unknowns.
+    a: DMatrix<f64>,
+    /// R of the thin QR of A ((n+1) × (n+1)).
+    r: DMatrix<f64>,
+    /// Target b (1 for E′ rows, `loss_weight` for E″ rows).
+    b: DVector<f64>,
+    /// Qᵀb.
+    qtb: DVector<f64>,
+    /// ‖A‖²_F / ‖L‖²_F: the unit of λ, so that λ is comparable across data sets and grids.
+    lambda_unit: f64,
+    /// Second-difference operator L ((n−2) × (n+1), zero first column).
+    l: DMatrix<f64>,
+    /// Largest |entry| of each column of A (the most a unit of x_j can move any datum, relatively).
+    col_max: Vec<f64>,
+}
+
+impl Problem {
+    fn new(points: &[MasterPoint], taus: &[f64], scale: f64, loss_weight: f64) -> Self {
+        let m = points.len();
+        let n = taus.len();
+        let mut a = DMatrix::<f64>::zeros(2 * m, n + 1);
+        for (k, p) in points.iter().enumerate() {
+            let omega = 2.0 * PI * p.reduced_freq_hz;
+            let s1 = scale / p.storage_pa;
+            let s2 = loss_weight * scale / p.loss_pa;
+            a[(k, 0)] = s1;
+            for (j, &tau) in taus.iter().enumerate() {
+                let w_rho = omega * tau;
+                a[(k, j + 1)] = storage_kernel(w_rho) * s1;
+                a[(m + k, j + 1)] = loss_kernel(w_rho) * s2;
+            }
+        }
+        let col_max = (0..=n)
+            .map(|j| a.column(j).iter().fold(0.0f64, |acc, v| acc.max(v.abs())))
+            .collect();
+        let mut b = DVector::<f64>::from_element(2 * m, 1.0);
+        b.rows_mut(m, m).fill(loss_weight);
+        let qr = a.clone().qr();
+        let qtb = qr.q().transpose() * &b;
+        let r = qr.r();
+        let nl = n.saturating_sub(2);
+        let mut l = DMatrix::<f64>::zeros(nl, n + 1);
+        for i in 0..nl {
+            l[(i, i + 1)] = 1.0;
+            l[(i, i + 2)] = -2.0;
+            l[(i, i + 3)] = 1.0;
+        }
+        let lambda_unit = a.norm_squared() / l.norm_squared().max(f64::MIN_POSITIVE);
+        Self {
+            a,
+            r,
+            b,
+            qtb,
+            lambda_unit,
+            l,
+            col_max,
+        }
+    }
+
+    /// ‖A x − b‖ and ‖L x‖.
+    fn norms(&self, x: &[f64]) -> (f64, f64) {
+        let xv = DVector::from_column_slice(x);
+        let res = &self.a * &xv;
+        let rn = (res - &self.b).norm();
+        let sn = (&self.l * &xv).norm();
+        (rn, sn)
+    }
+
+    /// Solve the QP at weight λ (module docs): variables z = [x (n+1); u (n+1); v (n−2)].
+    fn solve(&self, lambda: f64, max_iter: u32) -> Result<Solution, PronyError> {
+        let nx = self.r.ncols();
+        let nu = self.r.nrows();
+        let nv = self.l.nrows();
+        let nz = nx + nu + nv;
+        // P = diag(0, I, I): only the residual variables are penalised (upper triangle = diagonal).
+        let pi: Vec<usize> = (nx..nz).collect();
+        let p = CscMatrix::new_from_triplets(nz, nz, pi.clone(), pi, vec![1.0; nu + nv]);
+        let q = vec![0.0; nz];
+        // Constraint rows: zero cone  [R −I 0; √λL 0 −I] z = [Qᵀb; 0],  non-negative cone  −x + s = 0.
+        let (mut ri, mut ci, mut vals) = (Vec::new(), Vec::new(), Vec::new());
+        for i in 0..nu {
+            for j in i..nx {
+                let v = self.r[(i, j)];
+                if v != 0.0 {
+                    ri.push(i);
+                    ci.push(j);
+                    vals.push(v);
+                }
+            }
+            ri.push(i);
+            ci.push(nx + i);
+            vals.push(-1.0);
+        }
+        let sl = (lambda * self.lambda_unit).sqrt();
+        for i in 0..nv {
+            if sl > 0.0 {
+                for j in 0..nx {
+                    let v = self.l[(i, j)];
+                    if v != 0.0 {
+                        ri.push(nu + i);
+                        ci.push(j);
+                        vals.push(sl * v);
+                    }
+                }
+            }
+            ri.push(nu + i);
+            ci.push(nx + nu + i);
+            vals.push(-1.0);
+        }
+        for j in 0..nx {
+            ri.push(nu + nv + j);
+            ci.push(j);
+            vals.push(-1.0);
+        }
+        let nrows = nu + nv + nx;
+        let a = CscMatrix::new_from_triplets(nrows, nz, ri, ci, vals);
+        let mut b = vec![0.0; nrows];
+        b[..nu].copy_from_slice(self.qtb.as_slice());
+        let cones: [SupportedConeT<f64>; 2] = [ZeroConeT(nu + nv), NonnegativeConeT(nx)];
+        let settings = DefaultSettingsBuilder::default()
+            .verbose(false)
+            .max_iter(max_iter)
+            .build()
+            .map_err(|e| PronyError::Solver(e.to_string()))?;
+        let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, settings)
+            .map_err(|e| PronyError::Solver(format!("{e:?}")))?;
+        solver.solve();
+        Ok(Solution {
+            x: solver.solution.x[..nx].to_vec(),
+            status: solver.solution.status,
+            iterations: solver.solution.iterations,
+        })
+    }
+
+    /// tr H for GCV, H = A_F (A_FᵀA_F + λ L_FᵀL_F)⁻¹ A_Fᵀ over the free (non-zero) unknowns F of the
+    /// non-negative solution (the active bounds act as equality constraints). A_FᵀA_F = R_FᵀR_F.
+    fn influence_trace(&self, x: &[f64], lambda: f64, threshold: f64) -> f64 {
+        let free: Vec<usize> = (0..x.len())
+            .filter(|&j| x[j] * self.col_max[j] >= threshold)
+            .collect();
+        if free.is_empty() {
+            return 0.0;
+        }
+        let rf = self.r.select_columns(free.iter());
+        let lf = self.l.select_columns(free.iter());
+        let g = rf.transpose() * &rf;
+        let m = &g + lf.transpose() * &lf * (lambda * self.lambda_unit);
+        match m.cholesky() {
+            Some(ch) => {
+                let s = ch.solve(&g);
+                s.trace()
+            }
+            None => free.len() as f64,
+        }
+    }
+
+    /// Solve over the λ grid and pick λ by `rule`; returns (λ, its solution, the search, iterations).
+    fn search(
+        &self,
+        rule: WeightRule,
+        settings: &PronySettings,
+    ) -> Result<(f64, Solution, Vec<LambdaCandidate>, u32), PronyError> {
+        let count = settings.lambda_count;
+        let (l0, l1) = (settings.lambda_min.log10(), settings.lambda_max.log10());
+        let mut sols = Vec::with_capacity(count);
+        let mut cands = Vec::with_capacity(count);
+        let mut total = 0;
+        for i in 0..count {
+            let lambda = 10f64.powf(l0 + (l1 - l0) * i as f64 / (count - 1) as f64);
+            let s = self.solve(lambda, settings.max_iter)?;
+            total += s.iterations;
+            if !matches!(s.status, SolverStatus::Solved | SolverStatus::AlmostSolved) {
+                continue;
+            }
+            let (residual_norm, seminorm) = self.norms(&s.x);
+            cands.push(LambdaCandidate {
+                lambda,
+                residual_norm,
+                seminorm,
+                score: None,
+            });
+            sols.push(s);
+        }
+        if sols.is_empty() {
+            return Err(PronyError::Solver(format!(
+                "no solve of the λ search ended Solved (λ from {:e} to {:e})",
+                settings.lambda_min, settings.lambda_max
+            )));
+        }
+        let best = match rule {
+            WeightRule::Gcv => {
+                let m = self.a.nrows() as f64;
+                for (c, s) in cands.iter_mut().zip(&sols) {
+                    let tr = self.influence_trace(&s.x, c.lambda, settings.drop_threshold);
+                    let dof = (m - tr).max(1.0);
+                    c.score = Some(m * c.residual_norm * c.residual_norm / (dof * dof));
+                }
+                argbest(&cands, |a, b| a < b)
+            }
+            _ => {
+                l_curve_curvature(&mut cands);
+                argbest(&cands, |a, b| a > b)
+            }
+        }
+        // No finite score (no corner, or fewer than 3 solves): take the smallest λ that solved.
+        .unwrap_or(0);
+        let lambda = cands[best].lambda;
+        let sol = sols.swap_remove(best);
+        Ok((lambda, sol, cands, total))
+    }
+}
+
+/// Signed Menger curvature of the L-curve (ln ‖r‖, ln ‖Lx‖) at interior points, in the order of
+/// increasing λ. Along increasing λ the curve runs down the vertical arm (‖Lx‖ falls, ‖r‖ nearly
+/// fixed) and then right along the horizontal arm, a counter-clockwise turn: the corner is the largest
+/// *positive* curvature, κ = 2 (p₂−p₁)×(p₃−p₂) / (|p₂−p₁| |p₃−p₂| |p₃−p₁|).
+///
+/// Points that moved less than `L_CURVE_MIN_STEP` (0.1 % in both norms) from the previous kept point
+/// carry no shape, only solver round-off, and get no score. When no point turns counter-clockwise the
+/// curve has no corner (e.g. exact data: ‖r‖ only grows with λ while ‖Lx‖ hardly moves), i.e. the data
+/// do not call for regularisation; [`argbest`] then finds nothing and the smallest λ is used.
+fn l_curve_curvature(cands: &mut [LambdaCandidate]) {
+    const L_CURVE_MIN_STEP: f64 = 1e-3;
+    // A seminorm of exactly 0 (a straight-line spectrum) is floored so its log stays finite.
+    let mut kept: Vec<(usize, (f64, f64))> = Vec::new();
+    for (i, c) in cands.iter().enumerate() {
+        let p = (
+            c.residual_norm.max(1e-300).ln(),
+            c.seminorm.max(1e-300).ln(),
+        );
+        let far = kept.last().map_or(true, |(_, q)| {
+            (p.0 - q.0).abs() > L_CURVE_MIN_STEP || (p.1 - q.1).abs() > L_CURVE_MIN_STEP
+        });
+        if far {
+            kept.push((i, p));
+        }
+    }
+    for w in kept.windows(3) {
+        let (a, (i, b), c) = (w[0].1, w[1], w[2].1);
+        let (d1, d2, d3) = (
+            (b.0 - a.0, b.1 - a.1),
+            (c.0 - b.0, c.1 - b.1),
+            (c.0 - a.0, c.1 - a.1),
+        );
+        let cross = d1.0 * d2.1 - d1.1 * d2.0;
+        let den = d1.0.hypot(d1.1) * d2.0.hypot(d2.1) * d3.0.hypot(d3.1);
+        let kappa = 2.0 * cross / den;
+        cands[i].score = (kappa > 0.0).then_some(kappa);
+    }
+}
+
+fn argbest(cands: &[LambdaCandidate], better: impl Fn(f64, f64) -> bool) -> Option<usize> {
+    let mut best: Option<usize> = None;
+    for (i, c) in cands.iter().enumerate() {
+        let Some(score) = c.score.filter(|s| s.is_finite()) else {
+            continue;
+        };
+        if best.map_or(true, |b: usize| {
+            better(score, cands[b].score.unwrap_or(f64::NAN))
+        }) {
+            best = Some(i);
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::prony::synthetic::{master_points, rubber_like_spectrum};
+
+    /// Largest relative deviation of the fit from the noise-free moduli of `truth` at `points`' frequencies.
+    fn max_rel_dev(
+        points: &[MasterPoint],
+        fit: &RelaxationSpectrum,
+        truth: &RelaxationSpectrum,
+    ) -> (f64, f64) {
+        let (mut d1, mut d2) = (0.0f64, 0.0f64);
+        for p in points {
+            let w = 2.0 * PI * p.reduced_freq_hz;
+            let (a1, a2) = dynamic_moduli_pa(fit, w);
+            let (t1, t2) = dynamic_moduli_pa(truth, w);
+            d1 = d1.max((a1 / t1 - 1.0).abs());
+            d2 = d2.max((a2 / t2 - 1.0).abs());
+        }
+        (d1, d2)
+    }
+
+    /// Exact data from a smooth spectrum on the fit's own grid: the QP can reproduce them exactly, so
+    /// only the solver tolerance (1e-8 on the scaled problem) and the bias of the smallest λ remain.
+    #[test]
+    fn noise_free_round_trip_recovers_moduli_to_1e_6() {
+        let settings = PronySettings::default();
+        let (f0, f1) = (1e-3, 1e6);
+        let truth = rubber_like_spectrum(&relaxation_times_s(f0, f1, &settings));
+        let pts = master_points(&truth, f0, f1, 10.0, 0.0, 1);
+        for rule in [WeightRule::LCurve, WeightRule::Gcv] {
+            let s = PronySettings {
+                weight_rule: rule,
+                ..settings.clone()
+            };
+            let fit = fit_prony(&pts, ModulusKind::Tensile, 0.5, &s).unwrap();
+            assert_eq!(fit.info.solver_status, "Solved");
+            let (d1, d2) = max_rel_dev(&pts, &fit.spectrum, &truth);
+            assert!(d1 < 1e-6 && d2 < 1e-6, "{rule:?}: E′ {d1:e}, E″ {d2:e}");
+        }
+    }
+
+    /// 1 % multiplicative noise on both moduli (three seeds): the fit must stay within 2 % of the
+    /// noise-free moduli over the data window (the issue's figure). A smooth fit averages the noise,
+    /// so its error should be well below the 1 % per-point noise except near the window ends.
+    #[test]
+    fn one_percent_noise_recovers_moduli_within_2_percent() {
+        let settings = PronySettings::default();
+        let (f0, f1) = (1e-3, 1e6);
+        // Truth off the fit's grid (0.8 per decade, shifted), so the grid does not match by luck.
+        let taus: Vec<f64> = (0..40).map(|j| 10f64.powf(-7.9 + j as f64 / 3.0)).collect();
+        let truth = rubber_like_spectrum(&taus);
+        for seed in [1, 2, 3] {
+            let pts = master_points(&truth, f0, f1, 10.0, 0.01, seed);
+            for rule in [WeightRule::LCurve, WeightRule::Gcv] {
+                let s = PronySettings {
+                    weight_rule: rule,
+                    ..settings.clone()
+                };
+                let fit = fit_prony(&pts, ModulusKind::Tensile, 0.5, &s).unwrap();
+                let (d1, d2) = max_rel_dev(&pts, &fit.spectrum, &truth);
+                assert!(
+                    d1 < 0.02 && d2 < 0.02,
+                    "seed {seed} {rule:?}: E′ {d1:e}, E″ {d2:e}"
+                );
+            }
+        }
+    }
+
+    /// A spectrum with compact support (a hat over five grid times in the middle of a wide window),
+    /// exact data: the terms far outside the support must hit their bound E_j = 0 and be dropped,
+    /// none inside may be, and the fit must still reproduce the data.
+    #[test]
+    fn zero_terms_are_dropped() {
+        let settings = PronySettings::default();
+        let (f0, f1) = (1e-3, 1e6);
+        let grid = relaxation_times_s(f0, f1, &settings);
+        let mut truth = rubber_like_spectrum(&grid);
+        let support = 8..13;
+        truth.terms = support
+            .clone()
+            .zip([1.0, 2.0, 3.0, 2.0, 1.0])
+            .map(|(j, w)| RelaxationTerm {
+                modulus_pa: 1e8 * w,
+                tau_s: grid[j],
+            })
+            .collect();
+        let pts = master_points(&truth, f0, f1, 10.0, 0.0, 1);
+        let fit = fit_prony(&pts, ModulusKind::Tensile, 0.5, &settings).unwrap();
+        assert!(
+            fit.info.n_terms_kept < fit.info.n_terms_grid,
+            "{:?}",
+            fit.spectrum.terms
+        );
+        for j in support.clone() {
+            assert!(
+                fit.spectrum.terms.iter().any(|t| t.tau_s == grid[j]),
+                "term {j} inside the support was dropped"
+            );
+        }
+        // The hat is not smooth, so even the smallest λ of the grid bends it (no closed form for
+        // that bias; measured ≈ 6e-4): 1e-3 separates it from a wrong fit, whose error would be O(1).
+        let (d1, d2) = max_rel_dev(&pts, &fit.spectrum, &truth);
+        assert!(d1 < 1e-3 && d2 < 1e-3, "E′ {d1:e}, E″ {d2:e}");
+    }
+
+    #[test]
+    fn grid_covers_the_window_with_margins() {
+        let s = PronySettings::default();
+        let taus = relaxation_times_s(1e-2, 1e3, &s);
+        // 5 decades of data + 2 × 0.5 margin = 6 decades at 2 per decade → 13 times.
+        assert_eq!(taus.len(), 13);
+        let lo = 1.0 / (2.0 * PI * 1e3) / 10f64.sqrt();
+        let hi = 1.0 / (2.0 * PI * 1e-2) * 10f64.sqrt();
+        assert!((taus[0] / lo - 1.0).abs() < 1e-12 && (taus[12] / hi - 1.0).abs() < 1e-12);
+    }
+
+    /// Curvature on a curve with a known corner: two straight arms in log–log (vertical, then
+    /// horizontal) meeting at index 3; the largest positive curvature must be there.
+    #[test]
+    fn l_curve_corner_is_found_on_a_known_curve() {
+        let pts = [
+            (1e-3, 1e3),
+            (1.001e-3, 1e2),
+            (1.002e-3, 1e1),
+            (1.003e-3, 1.0),
+            (1e-2, 0.99),
+            (1e-1, 0.98),
+            (1.0, 0.97),
+        ];
+        let mut c: Vec<LambdaCandidate> = pts
+            .iter()
+            .enumerate()
+            .map(|(i, &(r, s))| LambdaCandidate {
+                lambda: i as f64,
+                residual_norm: r,
+                seminorm: s,
+                score: None,
+            })
+            .collect();
+        l_curve_curvature(&mut c);
+        assert_eq!(argbest(&c, |a, b| a > b), Some(3));
+    }
+
+    #[test]
+    fn bad_input_is_refused_with_the_field_named() {
+        let s = PronySettings::default();
+        let p = |f, e1, e2| MasterPoint {
+            reduced_freq_hz: f,
+            storage_pa: e1,
+            loss_pa: e2,
+        };
+        let err = fit_prony(&[p(1.0, 1e6, 1e5)], ModulusKind::Tensile, 0.5, &s).unwrap_err();
+        assert_eq!(
+            err,
+            PronyError::TooFewPoints {
+                found: 1,
+                needed: 3
+            }
+        );
+        let pts = [p(1.0, 1e6, 1e5), p(2.0, 1e6, -1.0), p(3.0, 1e6, 1e5)];
+        let err = fit_prony(&pts, ModulusKind::Tensile, 0.5, &s).unwrap_err();
+        assert!(err.to_string().contains("point 1: loss_pa = -1"), "{err}");
+        let pts = [p(1.0, 1e6, 1e5), p(1.0, 1e6, 1e5), p(1.0, 1e6, 1e5)];
+        assert!(matches!(
+            fit_prony(&pts, ModulusKind::Tensile, 0.5, &s),
+            Err(PronyError::NoFrequencyWindow { .. })
+        ));
+        let bad = PronySettings {
+            terms_per_decade: f64::NAN,
+            ..s
+        };
+        let pts = [p(1.0, 1e6, 1e5), p(2.0, 1e6, 1e5), p(3.0, 1e6, 1e5)];
+        let err = fit_prony(&pts, ModulusKind::Tensile, 0.5, &bad).unwrap_err();
+        assert!(err.to_string().contains("terms_per_decade"), "{err}");
+    }
+}

@@ -1,0 +1,505 @@
+//! Plots of a compound's fit (plotters; SVG or PNG chosen by the file extension): raw isotherms, the
+//! master curve with the Prony fit, log a_T with the WLF and Arrhenius laws, and the spectrum.
+//!
+//! Input: [`Measurement`], [`MasterPoint`]s, [`RelaxationSpectrum`], [`ShiftLaw`]s; output: image
+//! files, written atomically (temp file + rename). Text is drawn with DejaVu Sans embedded in the
+//! binary (assets/fonts/, Bitstream Vera licence), registered with plotters' `ab_glyph` backend, so
+//! PNG works on machines with no font libraries. The library never prints; errors are [`PlotError`].
+
+use crate::prony::kernel::dynamic_moduli_pa;
+use crate::prony::MasterPoint;
+use crate::{Measurement, RelaxationSpectrum, ShiftLaw};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+use thiserror::Error;
+
+/// DejaVu Sans (see assets/fonts/LICENSE-DejaVu.txt).
+static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+
+/// Size of every plot in pixels (SVG user units).
+pub const PLOT_SIZE: (u32, u32) = (900, 640);
+
+/// Why a plot could not be made.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum PlotError {
+    /// The file extension is neither `.svg` nor `.png`.
+    #[error("{path}: unknown plot format (use a .svg or .png file name)")]
+    UnknownFormat {
+        /// The path.
+        path: PathBuf,
+    },
+    /// Nothing to plot (no points with positive values).
+    #[error("nothing to plot for {what}: {reason}")]
+    NoData {
+        /// Which plot.
+        what: &'static str,
+        /// Why.
+        reason: &'static str,
+    },
+    /// Drawing failed (plotters' message).
+    #[error("{path}: drawing failed: {message}")]
+    Draw {
+        /// The path.
+        path: PathBuf,
+        /// plotters' message.
+        message: String,
+    },
+    /// Moving the finished file into place failed.
+    #[error("{path}: {source}")]
+    Io {
+        /// The path.
+        path: PathBuf,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+}
+
+type DrawResult = Result<(), String>;
+
+fn ensure_font() {
+    static DONE: OnceLock<()> = OnceLock::new();
+    DONE.get_or_init(|| {
+        // The embedded font is a valid TrueType file (checked by the tests); were it not, text would
+        // fail to draw and each plot would return a PlotError::Draw naming the cause.
+        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, FONT);
+    });
+}
+
+/// Render with the backend that matches `path`'s extension (SVG or PNG) into a temp file in the same
+/// folder (keeping the extension, which the bitmap encoder reads), then rename it into place.
+macro_rules! render_to {
+    ($path:expr, $draw:ident ( $($arg:expr),* )) => {{
+        let path: &Path = $path;
+        ensure_font();
+        let ext = path.extension().and_then(|e| e.to_str()).map(|e| e.to_ascii_lowercase());
+        let dir = match path.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        let draw_err = |message: String| PlotError::Draw { path: path.to_path_buf(), message };
+        let tmp = match ext.as_deref() {
+            Some(e @ ("svg" | "png")) => dir.join(format!(".{stem}.tmp-{}.{e}", std::process::id())),
+            _ => return Err(PlotError::UnknownFormat { path: path.to_path_buf() }),
+        };
+        let result: Result<(), PlotError> = if ext.as_deref() == Some("svg") {
+            let root = SVGBackend::new(&tmp, PLOT_SIZE).into_drawing_area();
+            $draw(&root, $($arg),*).map_err(draw_err)
+                .and_then(|_| root.present().map_err(|e| draw_err(e.to_string())))
+        } else {
+            let root = BitMapBackend::new(&tmp, PLOT_SIZE).into_drawing_area();
+            $draw(&root, $($arg),*).map_err(draw_err)
+                .and_then(|_| root.present().map_err(|e| draw_err(e.to_string())))
+        };
+        match result {
+            Ok(()) => std::fs::rename(&tmp, path).map_err(|source| {
+                let _ = std::fs::remove_file(&tmp);
+                PlotError::Io { path: path.to_path_buf(), source }
+            }),
+            Err(e) => {
+                let _ = std::fs::remove_file(&tmp);
+                Err(e)
+            }
+        }
+    }};
+}
+
+/// Colour of temperature `t` within [`lo`, `hi`]: blue (cold) → red (hot).
+fn temp_colour(t: f64, lo: f64, hi: f64) -> RGBColor {
+    let s = if hi > lo {
+        ((t - lo) / (hi - lo)).clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    let hsl = HSLColor(0.66 * (1.0 - s), 0.85, 0.45);
+    let (r, g, b) = hsl.rgb();
+    RGBColor(r, g, b)
+}
+
+/// Padded log range [lo/pad, hi·pad] of positive values.
+fn log_range(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    (hi > 0.0).then(|| {
+        let pad = if hi > lo { (hi / lo).powf(0.03) } else { 2.0 };
+        (lo / pad, hi * pad)
+    })
+}
+
+fn e<E: std::fmt::Display>(err: E) -> String {
+    err.to_string()
+}
+
+/// Raw isotherms: log f vs log E′ (filled dots, lines) and E″ (open dots), coloured by temperature.
+pub fn plot_isotherms(m: &Measurement, path: &Path) -> Result<(), PlotError> {
+    let pts = || m.isotherms.iter().flat_map(|i| i.points.iter());
+    let xr = log_range(pts().map(|p| p.freq_hz));
+    let yr = log_range(pts().flat_map(|p| [p.storage_pa, p.loss_pa]));
+    let (Some(xr), Some(yr)) = (xr, yr) else {
+        return Err(PlotError::NoData {
+            what: "isotherms",
+            reason: "no point with positive frequency and moduli",
+        });
+    };
+    render_to!(path, draw_isotherms(m, xr, yr))
+}
+
+fn draw_isotherms<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    m: &Measurement,
+    xr: (f64, f64),
+    yr: (f64, f64),
+) -> DrawResult {
+    root.fill(&WHITE).map_err(e)?;
+    let sym = if m.kind == crate::ModulusKind::Shear {
+        ("G′", "G″")
+    } else {
+        ("E′", "E″")
+    };
+    let mut chart = ChartBuilder::on(root)
+        .caption(
+            format!("Isotherms: {} (filled), {} (open)", sym.0, sym.1),
+            ("sans-serif", 22),
+        )
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d((xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale())
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("frequency f [Hz]")
+        .y_desc("modulus [Pa]")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()
+        .map_err(e)?;
+    let (lo, hi) = m
+        .isotherms
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), i| {
+            (lo.min(i.temp_nominal_c), hi.max(i.temp_nominal_c))
+        });
+    for iso in &m.isotherms {
+        let c = temp_colour(iso.temp_nominal_c, lo, hi);
+        let ok: Vec<_> = iso.points.iter().filter(|p| p.freq_hz > 0.0).collect();
+        let s: Vec<(f64, f64)> = ok
+            .iter()
+            .filter(|p| p.storage_pa > 0.0)
+            .map(|p| (p.freq_hz, p.storage_pa))
+            .collect();
+        let l: Vec<(f64, f64)> = ok
+            .iter()
+            .filter(|p| p.loss_pa > 0.0)
+            .map(|p| (p.freq_hz, p.loss_pa))
+            .collect();
+        chart
+            .draw_series(LineSeries::new(s.iter().copied(), c.stroke_width(1)))
+            .map_err(e)?
+            .label(format!("{:.0} °C", iso.temp_nominal_c))
+            .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+        chart
+            .draw_series(s.iter().map(|&p| Circle::new(p, 3, c.filled())))
+            .map_err(e)?;
+        chart
+            .draw_series(LineSeries::new(l.iter().copied(), c.stroke_width(1)))
+            .map_err(e)?;
+        chart
+            .draw_series(l.iter().map(|&p| Circle::new(p, 3, c.stroke_width(1))))
+            .map_err(e)?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::LowerRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 12))
+        .draw()
+        .map_err(e)?;
+    Ok(())
+}
+
+/// Master curve (points) with the Prony fit (lines): E′ and E″ against reduced frequency.
+pub fn plot_master_fit(
+    points: &[MasterPoint],
+    spectrum: &RelaxationSpectrum,
+    path: &Path,
+) -> Result<(), PlotError> {
+    let xr = log_range(points.iter().map(|p| p.reduced_freq_hz));
+    let yr = log_range(points.iter().flat_map(|p| [p.storage_pa, p.loss_pa]));
+    let (Some(xr), Some(yr)) = (xr, yr) else {
+        return Err(PlotError::NoData {
+            what: "master curve",
+            reason: "no point with positive frequency and moduli",
+        });
+    };
+    render_to!(path, draw_master(points, spectrum, xr, yr))
+}
+
+fn draw_master<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    points: &[MasterPoint],
+    spectrum: &RelaxationSpectrum,
+    xr: (f64, f64),
+    yr: (f64, f64),
+) -> DrawResult {
+    root.fill(&WHITE).map_err(e)?;
+    let mut chart = ChartBuilder::on(root)
+        .caption("Master curve and Prony fit", ("sans-serif", 22))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d((xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale())
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("reduced frequency a_T·f [Hz]")
+        .y_desc("modulus [Pa]")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()
+        .map_err(e)?;
+    let (blue, red) = (RGBColor(30, 90, 200), RGBColor(210, 50, 40));
+    chart
+        .draw_series(
+            points
+                .iter()
+                .map(|p| Circle::new((p.reduced_freq_hz, p.storage_pa), 3, blue.filled())),
+        )
+        .map_err(e)?
+        .label("storage (data)")
+        .legend(move |(x, y)| Circle::new((x + 8, y), 4, blue.filled()));
+    chart
+        .draw_series(
+            points
+                .iter()
+                .map(|p| Circle::new((p.reduced_freq_hz, p.loss_pa), 3, red.stroke_width(1))),
+        )
+        .map_err(e)?
+        .label("loss (data)")
+        .legend(move |(x, y)| Circle::new((x + 8, y), 4, red.stroke_width(1)));
+    // The fit on a fine grid: 20 points per decade.
+    let (l0, l1) = (xr.0.log10(), xr.1.log10());
+    let n = ((l1 - l0) * 20.0).ceil().max(2.0) as usize;
+    let curve: Vec<(f64, (f64, f64))> = (0..=n)
+        .map(|k| {
+            let f = 10f64.powf(l0 + (l1 - l0) * k as f64 / n as f64);
+            (
+                f,
+                dynamic_moduli_pa(spectrum, 2.0 * std::f64::consts::PI * f),
+            )
+        })
+        .collect();
+    chart
+        .draw_series(LineSeries::new(
+            curve.iter().map(|&(f, (s, _))| (f, s)),
+            blue.stroke_width(2),
+        ))
+        .map_err(e)?
+        .label("storage (Prony fit)")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], blue.stroke_width(2)));
+    chart
+        .draw_series(LineSeries::new(
+            curve
+                .iter()
+                .filter(|c| c.1 .1 >= yr.0)
+                .map(|&(f, (_, l))| (f, l)),
+            red.stroke_width(2),
+        ))
+        .map_err(e)?
+        .label("loss (Prony fit)")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], red.stroke_width(2)));
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .draw()
+        .map_err(e)?;
+    Ok(())
+}
+
+/// log10 a_T against temperature: the shifts found (points) and the WLF and Arrhenius laws (lines).
+/// `shifts` are (temperature in °C, log10 a_T); `laws` are drawn over the shifts' temperature range.
+pub fn plot_shift_factors(
+    shifts: &[(f64, f64)],
+    laws: &[(&str, &ShiftLaw)],
+    path: &Path,
+) -> Result<(), PlotError> {
+    let finite: Vec<(f64, f64)> = shifts
+        .iter()
+        .copied()
+        .filter(|(t, a)| t.is_finite() && a.is_finite())
+        .collect();
+    if finite.is_empty() {
+        return Err(PlotError::NoData {
+            what: "shift factors",
+            reason: "no finite (T, log a_T) pair",
+        });
+    }
+    render_to!(path, draw_shifts(&finite, laws))
+}
+
+fn draw_shifts<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    shifts: &[(f64, f64)],
+    laws: &[(&str, &ShiftLaw)],
+) -> DrawResult {
+    root.fill(&WHITE).map_err(e)?;
+    let (t0, t1) = shifts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    let (t0, t1) = if t1 > t0 {
+        (t0, t1)
+    } else {
+        (t0 - 1.0, t1 + 1.0)
+    };
+    let n = 200;
+    let curves: Vec<Vec<(f64, f64)>> = laws
+        .iter()
+        .map(|(_, law)| {
+            (0..=n)
+                .map(|k| t0 + (t1 - t0) * k as f64 / n as f64)
+                .map(|t| (t, law.log10_a_t(t)))
+                .filter(|p| p.1.is_finite())
+                .collect()
+        })
+        .collect();
+    let ys = shifts
+        .iter()
+        .map(|p| p.1)
+        .chain(curves.iter().flatten().map(|p| p.1));
+    let (y0, y1) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
+        (a.min(y), b.max(y))
+    });
+    let pad = ((y1 - y0) * 0.05).max(0.5);
+    let dt = (t1 - t0) * 0.03;
+    let mut chart = ChartBuilder::on(root)
+        .caption("Shift factors log a_T", ("sans-serif", 22))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d((t0 - dt)..(t1 + dt), (y0 - pad)..(y1 + pad))
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("temperature T [°C]")
+        .y_desc("log10 a_T")
+        .draw()
+        .map_err(e)?;
+    let palette = [
+        RGBColor(210, 50, 40),
+        RGBColor(30, 140, 60),
+        RGBColor(130, 60, 170),
+    ];
+    for (i, ((name, law), curve)) in laws.iter().zip(&curves).enumerate() {
+        let c = palette[i % palette.len()];
+        let label = match law {
+            ShiftLaw::Wlf { t_ref_c, c1, c2_k } => {
+                format!("{name}: C1 = {c1:.2}, C2 = {c2_k:.1} K, T_ref = {t_ref_c} °C")
+            }
+            ShiftLaw::Arrhenius {
+                t_ref_c,
+                activation_energy_j_per_mol,
+            } => {
+                format!(
+                    "{name}: E_a = {:.0} kJ/mol, T_ref = {t_ref_c} °C",
+                    activation_energy_j_per_mol / 1e3
+                )
+            }
+            ShiftLaw::Table { t_ref_c, .. } => format!("{name}: table, T_ref = {t_ref_c} °C"),
+        };
+        chart
+            .draw_series(LineSeries::new(curve.iter().copied(), c.stroke_width(2)))
+            .map_err(e)?
+            .label(label)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2)));
+    }
+    chart
+        .draw_series(shifts.iter().map(|&p| Circle::new(p, 4, BLACK.filled())))
+        .map_err(e)?
+        .label("shifts found")
+        .legend(|(x, y)| Circle::new((x + 8, y), 4, BLACK.filled()));
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .draw()
+        .map_err(e)?;
+    Ok(())
+}
+
+/// The relaxation spectrum: a stem Eᵢ at each τᵢ (log–log), E∞ stated in the caption.
+pub fn plot_spectrum(spectrum: &RelaxationSpectrum, path: &Path) -> Result<(), PlotError> {
+    let xr = log_range(spectrum.terms.iter().map(|t| t.tau_s));
+    let yr = log_range(spectrum.terms.iter().map(|t| t.modulus_pa));
+    let (Some(xr), Some(yr)) = (xr, yr) else {
+        return Err(PlotError::NoData {
+            what: "spectrum",
+            reason: "no term with positive strength and time",
+        });
+    };
+    // Stems start a decade below the smallest strength so every term is visible.
+    let yr = (yr.0 / 10.0, yr.1 * 2.0);
+    render_to!(path, draw_spectrum(spectrum, xr, yr))
+}
+
+fn draw_spectrum<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    spectrum: &RelaxationSpectrum,
+    xr: (f64, f64),
+    yr: (f64, f64),
+) -> DrawResult {
+    root.fill(&WHITE).map_err(e)?;
+    let mut chart = ChartBuilder::on(root)
+        .caption(
+            format!(
+                "Relaxation spectrum: {} terms, E∞ = {:.3e} Pa",
+                spectrum.terms.len(),
+                spectrum.modulus_inf_pa
+            ),
+            ("sans-serif", 22),
+        )
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d((xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale())
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("relaxation time τ [s]")
+        .y_desc("strength E_i [Pa]")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()
+        .map_err(e)?;
+    let c = RGBColor(30, 90, 200);
+    chart
+        .draw_series(spectrum.terms.iter().map(|t| {
+            PathElement::new(
+                vec![(t.tau_s, yr.0), (t.tau_s, t.modulus_pa)],
+                c.stroke_width(2),
+            )
+        }))
+        .map_err(e)?;
+    chart
+        .draw_series(
+            spectrum
+                .terms
+                .iter()
+                .map(|t| Circle::new((t.tau_s, t.modulus_pa), 4, c.filled())),
+        )
+        .map_err(e)?;
+    Ok(())
+}
