@@ -108,6 +108,9 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
                     }
                 })
                 .collect(),
+            nominal_source: "file".into(),
+            sheet: None,
+            label: None,
         })
         .collect();
     let m = Measurement {
@@ -116,6 +119,8 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
         poisson: 0.5,
         isotherms,
         warnings: vec![],
+        issues: vec![],
+        summary: Default::default(),
     };
     for ext in ["png", "svg"] {
         let p = |name: &str| dir.join(format!("ems_ca_{name}.{ext}"));

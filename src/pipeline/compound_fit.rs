@@ -411,6 +411,8 @@ mod tests {
                 sha256: "ab".repeat(32),
                 format: "synthetic".into(),
                 metadata: BTreeMap::new(),
+                encoding: "utf-8".into(),
+                columns: vec![],
             }],
             kind: ModulusKind::Tensile,
             poisson: 0.5,
@@ -429,8 +431,13 @@ mod tests {
                         flags: vec![],
                     })
                     .collect(),
+                nominal_source: "file".into(),
+                sheet: None,
+                label: None,
             }],
             warnings: vec![],
+            issues: vec![],
+            summary: Default::default(),
         };
         let law = ShiftLaw::Wlf {
             t_ref_c: 20.0,
