@@ -2,4 +2,5 @@
 mod dma_errors;
 mod dma_quirks;
 mod dma_real;
+mod dma_xlsx;
 mod ingest_cli;
