@@ -127,7 +127,7 @@ impl Default for MasterSettings {
         MasterSettings {
             tref_c: None,
             shift: ShiftSource::Auto,
-            criterion: ShiftCriterion::Joint,
+            criterion: ShiftCriterion::Storage,
             vertical: VerticalShift::None,
             temperature: TemperatureBasis::Mean,
             law: LawChoice::Auto,
