@@ -44,3 +44,7 @@ pub struct DimensionlessSolution {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error_estimate: Option<f64>,
 }
+
+pub mod auto;
+pub mod chebyshev;
+pub mod modes;
