@@ -1,1 +1,2 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod contact_auto;

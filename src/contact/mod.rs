@@ -47,4 +47,6 @@ pub struct DimensionlessSolution {
 
 pub mod auto;
 pub mod chebyshev;
+pub mod controlled;
 pub mod modes;
+pub mod reduce;
