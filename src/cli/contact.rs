@@ -1,10 +1,142 @@
-//! `viscoroll contact`: The dimensionless problem of the thesis (ch. 3–4): one creep spectrum f:b, at given λ or load N'.
+//! `viscoroll contact`: the dimensionless problem of the thesis (ch. 3–4) for a creep function
+//! γ(ζ) = Σ fᵢe^(−bᵢζ) given as `f:b` pairs, at given contact length λ or load N′.
+//!
+//! `--json` prints one object: `lambda`, `beta`, `beta_over_lambda`, `load` (N′), `friction_rho` (ρ·F/N),
+//! `friction` (F/N, only with `--rho`), `n`, `scheme`, `iterations`, `xi`, `pressure`, `creep` (the terms).
+
+use crate::contact::{self, ContactSettings, CreepTerm, Scheme};
+use anyhow::{bail, Context};
 
 /// Arguments of `viscoroll contact`.
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Creep terms f:b[,f:b…] of γ(ζ) = Σ f·e^(−bζ) (f ≥ 0, b > 0; `0:1` is the elastic half-space).
+    #[arg(long, value_name = "f:b[,f:b...]")]
+    pub creep: String,
+    /// Contact length λ (in units of V·T).
+    #[arg(long, conflicts_with = "load", required_unless_present = "load")]
+    pub lambda: Option<f64>,
+    /// Load N′ = 2∫Q′dξ (eq. 3.24); λ is then found by the bracketed load loop.
+    #[arg(long)]
+    pub load: Option<f64>,
+    /// Number of intervals on the contact.
+    #[arg(long, default_value_t = 40)]
+    pub n: usize,
+    /// Discretisation: `thesis` (piecewise-linear collocation).
+    #[arg(long, default_value = "thesis", value_parser = ["thesis"])]
+    pub scheme: String,
+    /// Dimensionless roll radius ρ = R/(VT); with it, the friction coefficient F/N is reported.
+    #[arg(long)]
+    pub rho: Option<f64>,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Parse `f:b[,f:b…]` into creep terms (f ≥ 0, b > 0, finite).
+pub fn parse_creep(text: &str) -> anyhow::Result<Vec<CreepTerm>> {
+    let mut terms = Vec::new();
+    for (i, item) in text.split(',').enumerate() {
+        let item = item.trim();
+        let (f, b) = item
+            .split_once(':')
+            .with_context(|| format!("--creep term {} `{item}` is not of the form f:b", i + 1))?;
+        let f: f64 = f.trim().parse().with_context(|| {
+            format!("--creep term {} `{item}`: f = `{f}` is not a number", i + 1)
+        })?;
+        let b: f64 = b.trim().parse().with_context(|| {
+            format!("--creep term {} `{item}`: b = `{b}` is not a number", i + 1)
+        })?;
+        if !(f.is_finite() && f >= 0.0) {
+            bail!(
+                "--creep term {} `{item}`: f must be finite and >= 0, got {f}",
+                i + 1
+            );
+        }
+        if !(b.is_finite() && b > 0.0) {
+            bail!(
+                "--creep term {} `{item}`: b must be finite and > 0, got {b}",
+                i + 1
+            );
+        }
+        terms.push(CreepTerm { f, b });
+    }
+    Ok(terms)
+}
 
 /// Run `viscoroll contact`.
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`viscoroll contact` is not implemented yet")
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let terms = parse_creep(&args.creep)?;
+    if let Some(rho) = args.rho {
+        if !(rho.is_finite() && rho > 0.0) {
+            bail!("--rho must be finite and > 0, got {rho}");
+        }
+    }
+    let scheme = match args.scheme.as_str() {
+        "thesis" => Scheme::Thesis,
+        other => bail!("--scheme `{other}` is not known (thesis)"),
+    };
+    let settings = ContactSettings {
+        scheme,
+        n: args.n,
+        ..Default::default()
+    };
+    let sol = match (args.lambda, args.load) {
+        (Some(lambda), None) => {
+            if !(lambda.is_finite() && lambda > 0.0) {
+                bail!("--lambda must be finite and > 0, got {lambda}");
+            }
+            contact::solve_at_lambda(&terms, lambda, &settings)?
+        }
+        (None, Some(load)) => {
+            if !(load.is_finite() && load > 0.0) {
+                bail!("--load must be finite and > 0, got {load}");
+            }
+            contact::solve_at_load(&terms, load, &settings)?
+        }
+        _ => bail!("give exactly one of --lambda and --load"),
+    };
+    let friction = args.rho.map(|rho| sol.friction_rho / rho);
+    if args.json {
+        let mut obj = serde_json::json!({
+            "scheme": sol.scheme,
+            "creep": terms,
+            "lambda": sol.lambda,
+            "beta": sol.beta,
+            "beta_over_lambda": sol.beta / sol.lambda,
+            "load": sol.load,
+            "friction_rho": sol.friction_rho,
+            "n": sol.n,
+            "iterations": sol.iterations,
+            "xi": sol.xi,
+            "pressure": sol.pressure,
+        });
+        if let (Some(rho), Some(fr)) = (args.rho, friction) {
+            obj["rho"] = serde_json::json!(rho);
+            obj["friction"] = serde_json::json!(fr);
+        }
+        if let Some(e) = sol.error_estimate {
+            obj["error_estimate"] = serde_json::json!(e);
+        }
+        println!("{obj}");
+    } else {
+        eprintln!(
+            "scheme {}  n = {}  load iterations = {}",
+            sol.scheme, sol.n, sol.iterations
+        );
+        eprintln!("creep terms (f, b): {}", args.creep);
+        eprintln!("lambda           = {:.9}", sol.lambda);
+        eprintln!("beta             = {:.9}", sol.beta);
+        eprintln!("beta/lambda      = {:.9}", sol.beta / sol.lambda);
+        eprintln!("load N'          = {:.9}", sol.load);
+        eprintln!("rho*F/N          = {:.9}", sol.friction_rho);
+        if let Some(fr) = friction {
+            eprintln!("F/N              = {fr:.9e}");
+        }
+        eprintln!("{:>14} {:>14}", "xi", "Q'");
+        for (x, q) in sol.xi.iter().zip(&sol.pressure) {
+            eprintln!("{x:>14.6e} {q:>14.6e}");
+        }
+    }
+    Ok(())
 }

@@ -1,10 +1,119 @@
-//! `viscoroll roll`: One dimensional scene: a roll on a compound's creep spectrum → friction, contact length, pressure.
+//! `viscoroll roll`: one dimensional scene, a rigid roll on a half-space with a given creep spectrum
+//! (JSON, the serde form of [`crate::CreepSpectrum`]) → friction, contact length, offset, pressure.
+//!
+//! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
+//! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
+//! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
+
+use crate::contact::{self, ContactSettings, Scene};
+use crate::CreepSpectrum;
+use anyhow::{bail, Context};
+use std::path::PathBuf;
 
 /// Arguments of `viscoroll roll`.
 #[derive(Debug, clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Creep spectrum, JSON (`kind`, `poisson`, `compliance_glassy_per_pa`, `terms`: [{`compliance_per_pa`, `tau_s`}]).
+    #[arg(value_name = "SPECTRUM.json")]
+    pub spectrum: PathBuf,
+    /// Roll radius in mm (> 0).
+    #[arg(long)]
+    pub radius_mm: f64,
+    /// Load per unit width in N/m (> 0).
+    #[arg(long)]
+    pub load_n_per_m: f64,
+    /// Rolling speed in m/s (> 0).
+    #[arg(long)]
+    pub speed_m_s: f64,
+    /// Poisson's ratio in [0, 0.5] (default: the spectrum's, itself 0.5 by default).
+    #[arg(long)]
+    pub poisson: Option<f64>,
+    /// Number of intervals of the thesis scheme.
+    #[arg(long, default_value_t = 200)]
+    pub n: usize,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
 
 /// Run `viscoroll roll`.
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`viscoroll roll` is not implemented yet")
+pub fn run(args: Args) -> anyhow::Result<()> {
+    for (name, v) in [
+        ("--radius-mm", args.radius_mm),
+        ("--load-n-per-m", args.load_n_per_m),
+        ("--speed-m-s", args.speed_m_s),
+    ] {
+        if !(v.is_finite() && v > 0.0) {
+            bail!("{name} must be finite and > 0, got {v}");
+        }
+    }
+    let text = std::fs::read_to_string(&args.spectrum)
+        .with_context(|| format!("cannot read spectrum file {}", args.spectrum.display()))?;
+    let spectrum: CreepSpectrum = serde_json::from_str(&text)
+        .with_context(|| format!("{}: not a creep spectrum", args.spectrum.display()))?;
+    let scene = Scene {
+        radius_m: args.radius_mm * 1e-3,
+        load_n_per_m: args.load_n_per_m,
+        speed_m_s: args.speed_m_s,
+        poisson: args.poisson,
+    };
+    let settings = ContactSettings {
+        n: args.n,
+        ..Default::default()
+    };
+    let sol = contact::roll(&scene, &spectrum, &settings)
+        .with_context(|| format!("{}", args.spectrum.display()))?;
+    let d = &sol.dimensionless;
+    if args.json {
+        let obj = serde_json::json!({
+            "friction": sol.friction,
+            "contact_length_mm": sol.contact_length_m * 1e3,
+            "offset_mm": sol.offset_m * 1e3,
+            "resistance_n_per_m": sol.resistance_n_per_m,
+            "max_pressure_mpa": sol.max_pressure_pa * 1e-6,
+            "x_mm": sol.x_m.iter().map(|x| x * 1e3).collect::<Vec<_>>(),
+            "pressure_mpa": sol.pressure_pa.iter().map(|p| p * 1e-6).collect::<Vec<_>>(),
+            "radius_mm": args.radius_mm,
+            "load_n_per_m": args.load_n_per_m,
+            "speed_m_s": args.speed_m_s,
+            "poisson": sol.problem.poisson,
+            "lambda": d.lambda,
+            "beta": d.beta,
+            "load": d.load,
+            "friction_rho": d.friction_rho,
+            "rho": sol.problem.rho,
+            "time_scale_s": sol.problem.time_scale_s,
+            "creep": sol.problem.terms,
+            "scheme": d.scheme,
+            "n": d.n,
+            "iterations": d.iterations,
+        });
+        println!("{obj}");
+    } else {
+        eprintln!(
+            "roll R = {} mm, N = {} N/m, V = {} m/s on {} ({} terms, nu = {})",
+            args.radius_mm,
+            args.load_n_per_m,
+            args.speed_m_s,
+            args.spectrum.display(),
+            spectrum.terms.len(),
+            sol.problem.poisson
+        );
+        eprintln!("friction F/N        = {:.6e}", sol.friction);
+        eprintln!("resistance          = {:.6e} N/m", sol.resistance_n_per_m);
+        eprintln!("contact length      = {:.6} mm", sol.contact_length_m * 1e3);
+        eprintln!(
+            "offset (centre ahead of lowest point) = {:.6} mm",
+            sol.offset_m * 1e3
+        );
+        eprintln!(
+            "max pressure        = {:.6} MPa",
+            sol.max_pressure_pa * 1e-6
+        );
+        eprintln!(
+            "dimensionless: lambda = {:.6}, beta = {:.6}, N' = {}, rho = {:.6e}, T = {:.6e} s; {} n = {}, {} solves",
+            d.lambda, d.beta, d.load, sol.problem.rho, sol.problem.time_scale_s, d.scheme, d.n, d.iterations
+        );
+    }
+    Ok(())
 }

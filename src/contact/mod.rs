@@ -50,3 +50,15 @@ pub mod chebyshev;
 pub mod controlled;
 pub mod modes;
 pub mod reduce;
+pub mod error;
+pub mod kernel;
+pub mod load;
+pub mod scene;
+pub mod solve;
+pub mod thesis;
+
+pub use error::ContactError;
+pub use kernel::Kernel;
+pub use load::LoadSettings;
+pub use scene::{roll, DimensionlessScene, RollSolution, Scene};
+pub use solve::{solve_at_lambda, solve_at_load, ContactSettings, Scheme};

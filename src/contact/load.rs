@@ -1,0 +1,262 @@
+//! The load loop: find the contact length λ whose solution carries a prescribed load N′ (thesis ch. 4).
+//!
+//! Input: N′₀, Σfᵢ/bᵢ and any solver at given λ (a closure: thesis scheme, exact solution…); output:
+//! the [`DimensionlessSolution`] at the λ found, with `iterations` = number of solves.
+//!
+//! The thesis iterates by secant from λ₁ = 2√N′₀, λ₀ = λ₁/2 ([`thesis_secant`], kept for comparison). At
+//! low speeds the true λ is up to √(1 + Σf/b) times the elastic start (MATH.md §3) and the secant runs
+//! off (λ ≤ 0 or no convergence). Here instead: N′ grows monotonically with λ and lies between the
+//! glassy and the relaxed Hertz values, N′ ∈ [λ²/(4(1+Σf/b)), λ²/4], so λ ∈ [2√N′₀, 2√((1+Σf/b)N′₀)]
+//! brackets the root. The bracket is widened (×/÷ 1.25, up to [`LoadSettings::max_expand`] times) to
+//! absorb the discretisation error of a coarse grid, then Brent's method (inverse quadratic
+//! interpolation, secant and bisection; Brent 1973, ch. 4) on u = log λ with the residual
+//! F(u) = log(N′(eᵘ)/N′₀) (nearly linear: N′ ∝ λ² at both speed limits) keeps the root bracketed.
+//!
+//! References: R. P. Brent, *Algorithms for Minimization without Derivatives*, Prentice-Hall 1973, ch. 4.
+
+use super::error::{positive, ContactError};
+use super::DimensionlessSolution;
+
+/// Settings of the load loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadSettings {
+    /// Relative tolerance on the load: stop when |N′(λ) − N′₀| ≤ `rel_tol`·N′₀. Default 1e-10 (far
+    /// below any discretisation error, and Brent converges superlinearly, so it costs few solves).
+    pub rel_tol: f64,
+    /// Largest number of solves. Default 100.
+    pub max_solves: usize,
+    /// How many times each end of the initial bracket may be widened by 1.25. Default 40 (a factor 7500).
+    pub max_expand: usize,
+}
+
+impl Default for LoadSettings {
+    fn default() -> Self {
+        Self {
+            rel_tol: 1e-10,
+            max_solves: 100,
+            max_expand: 40,
+        }
+    }
+}
+
+/// Solve for the contact length that carries load `load` (N′₀), with the solver `solve` at given λ.
+///
+/// `sum_f_over_b` = Σfᵢ/bᵢ sets the initial bracket (relaxed Hertz width). The returned solution has
+/// `iterations` set to the number of solves made (bracketing included).
+pub fn solve_at_load<F>(
+    load: f64,
+    sum_f_over_b: f64,
+    settings: &LoadSettings,
+    mut solve: F,
+) -> Result<DimensionlessSolution, ContactError>
+where
+    F: FnMut(f64) -> Result<DimensionlessSolution, ContactError>,
+{
+    positive("load N'", load)?;
+    if !(sum_f_over_b.is_finite() && sum_f_over_b >= 0.0) {
+        return Err(ContactError::BadValue {
+            field: "sum of f/b".into(),
+            expected: "finite and >= 0",
+            value: sum_f_over_b,
+        });
+    }
+    let solves = std::cell::Cell::new(0usize);
+    let mut eval = |lambda: f64| -> Result<(f64, DimensionlessSolution), ContactError> {
+        solves.set(solves.get() + 1);
+        let s = solve(lambda)?;
+        let r = if s.load > 0.0 && s.load.is_finite() {
+            (s.load / load).ln()
+        } else {
+            f64::NEG_INFINITY
+        };
+        Ok((r, s))
+    };
+
+    // Initial bracket from the glassy and relaxed Hertz widths (MATH.md §3).
+    let mut lo = 2.0 * load.sqrt();
+    let mut hi = lo * (1.0 + sum_f_over_b).sqrt();
+    if hi <= lo * 1.0001 {
+        hi = lo * 1.0001;
+    }
+    let (mut f_lo, mut s_lo) = eval(lo)?;
+    let mut hi_eval = None;
+    let mut expand = 0;
+    while f_lo > 0.0 {
+        if expand == settings.max_expand {
+            return Err(unbracketed(load, lo, hi, f_lo, f64::NAN));
+        }
+        hi = lo;
+        lo /= 1.25;
+        let (f, s) = eval(lo)?;
+        hi_eval = Some((f_lo, std::mem::replace(&mut s_lo, s)));
+        f_lo = f;
+        expand += 1;
+    }
+    let (mut f_hi, s_hi) = match hi_eval {
+        Some(v) => v,
+        None => eval(hi)?,
+    };
+    let mut best = if f_hi.abs() < f_lo.abs() {
+        (f_hi, s_hi)
+    } else {
+        (f_lo, s_lo)
+    };
+    expand = 0;
+    while f_hi < 0.0 {
+        if expand == settings.max_expand {
+            return Err(unbracketed(load, lo, hi, f_lo, f_hi));
+        }
+        lo = hi;
+        f_lo = f_hi;
+        hi *= 1.25;
+        let (f, s) = eval(hi)?;
+        f_hi = f;
+        if f.abs() < best.0.abs() {
+            best = (f, s);
+        }
+        expand += 1;
+    }
+    if best.0.abs() <= settings.rel_tol {
+        return finish_with(best.1, solves.get());
+    }
+
+    // Brent's method on u = log λ, residual f(u) = log(N′/N′₀); the root stays between b and c.
+    let (mut a, mut fa) = (lo.ln(), f_lo);
+    let (mut b, mut fb) = (hi.ln(), f_hi);
+    let (mut c, mut fc) = (a, fa);
+    let (mut d, mut e) = (b - a, b - a);
+    loop {
+        if (fb > 0.0) == (fc > 0.0) {
+            c = a;
+            fc = fa;
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            a = b;
+            b = c;
+            c = a;
+            fa = fb;
+            fb = fc;
+            fc = fa;
+        }
+        let tol = 2.0 * f64::EPSILON * b.abs().max(1.0);
+        let m = 0.5 * (c - b);
+        let stop_err = |solves: usize| ContactError::NotConverged {
+            iterations: solves,
+            lambda_lo: b.min(c).exp(),
+            lambda_hi: b.max(c).exp(),
+            residual: fb.exp_m1().abs(),
+        };
+        if best.0.abs() <= settings.rel_tol {
+            return finish_with(best.1, solves.get());
+        }
+        if m.abs() <= tol {
+            // Bracket collapsed to the resolution of λ: accept if the load is met to 1e-8.
+            if best.0.abs() <= settings.rel_tol.max(1e-8) {
+                return finish_with(best.1, solves.get());
+            }
+            return Err(stop_err(solves.get()));
+        }
+        if solves.get() >= settings.max_solves {
+            return Err(stop_err(solves.get()));
+        }
+        if e.abs() >= tol && fa.abs() > fb.abs() && fa.is_finite() && fc.is_finite() {
+            // Interpolate: secant (a = c) or inverse quadratic.
+            let s = fb / fa;
+            let (mut p, mut q);
+            if a == c {
+                p = 2.0 * m * s;
+                q = 1.0 - s;
+            } else {
+                let qa = fa / fc;
+                let r = fb / fc;
+                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+            }
+            if p > 0.0 {
+                q = -q;
+            } else {
+                p = -p;
+            }
+            if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = m;
+                e = m;
+            }
+        } else {
+            d = m;
+            e = m;
+        }
+        a = b;
+        fa = fb;
+        b += if d.abs() > tol { d } else { tol.copysign(m) };
+        let (f_new, s_new) = eval(b.exp())?;
+        fb = f_new;
+        if f_new.abs() < best.0.abs() {
+            best = (f_new, s_new);
+        }
+    }
+}
+
+fn unbracketed(load: f64, lo: f64, hi: f64, f_lo: f64, f_hi: f64) -> ContactError {
+    ContactError::Unbracketed {
+        load,
+        lambda_lo: lo,
+        lambda_hi: hi,
+        load_lo: load * f_lo.exp(),
+        load_hi: load * f_hi.exp(),
+    }
+}
+
+fn finish_with(
+    mut s: DimensionlessSolution,
+    solves: usize,
+) -> Result<DimensionlessSolution, ContactError> {
+    s.iterations = solves;
+    Ok(s)
+}
+
+/// The thesis' load iteration (ch. 4, Fig. 4), as printed: secant on N′(λ) from λ₁ = 2√N′₀, λ₀ = λ₁/2
+/// (with N′(λ₀) taken as 0), stopping when |N′₀ − N′ᵢ| ≤ `tol`. Kept to show where it fails: returns
+/// [`ContactError::NotConverged`] if λ leaves (0, ∞) or `max_iter` solves pass.
+pub fn thesis_secant<F>(
+    load: f64,
+    tol: f64,
+    max_iter: usize,
+    mut solve: F,
+) -> Result<DimensionlessSolution, ContactError>
+where
+    F: FnMut(f64) -> Result<DimensionlessSolution, ContactError>,
+{
+    positive("load N'", load)?;
+    let mut lam_prev = load.sqrt(); // λ₀ = λ₁/2
+    let mut n_prev = 0.0; // N₀ = 0
+    let mut lam = 2.0 * load.sqrt(); // λ₁
+    for it in 1..=max_iter {
+        let s = solve(lam)?;
+        if (load - s.load).abs() <= tol {
+            return finish_with(s, it);
+        }
+        let next = lam + (s.load - load) / (s.load - n_prev) * (lam_prev - lam);
+        if !(next.is_finite() && next > 0.0) {
+            return Err(ContactError::NotConverged {
+                iterations: it,
+                lambda_lo: lam.min(lam_prev),
+                lambda_hi: lam.max(lam_prev),
+                residual: ((s.load - load) / load).abs(),
+            });
+        }
+        lam_prev = lam;
+        n_prev = s.load;
+        lam = next;
+    }
+    Err(ContactError::NotConverged {
+        iterations: max_iter,
+        lambda_lo: lam.min(lam_prev),
+        lambda_hi: lam.max(lam_prev),
+        residual: f64::NAN,
+    })
+}
