@@ -66,6 +66,9 @@ pub enum AutoError {
         /// What was expected.
         expected: &'static str,
     },
+    /// The scene could not be made dimensionless.
+    #[error(transparent)]
+    Scene(#[from] super::error::ContactError),
     /// The load loop hit its iteration limit (not seen in tests; reported, not hidden).
     #[error("load iteration did not converge in {iterations} steps: λ in [{lo}, {hi}]")]
     NotConverged {

@@ -48,11 +48,11 @@ pub struct DimensionlessSolution {
 pub mod auto;
 pub mod chebyshev;
 pub mod controlled;
-pub mod modes;
-pub mod reduce;
 pub mod error;
 pub mod kernel;
 pub mod load;
+pub mod modes;
+pub mod reduce;
 pub mod scene;
 pub mod solve;
 pub mod thesis;
@@ -62,3 +62,4 @@ pub use kernel::Kernel;
 pub use load::LoadSettings;
 pub use scene::{roll, DimensionlessScene, RollSolution, Scene};
 pub use solve::{solve_at_lambda, solve_at_load, ContactSettings, Scheme};
+pub mod roll_auto;

@@ -43,8 +43,11 @@ pub struct Reduction {
     pub load_error: f64,
 }
 
-/// Per-mode error estimates (ρF/N/λ, relative N′), `None` outside the asymptotic ranges.
-fn estimates(t: &CreepTerm, l: f64) -> (Option<(f64, f64)>, Option<(f64, f64)>) {
+/// (ρF/N/λ error, relative N′ error) of one mode, when its estimate applies.
+type Estimate = Option<(f64, f64)>;
+
+/// Per-mode error estimates when lumped (fast) and dropped (slow).
+fn estimates(t: &CreepTerm, l: f64) -> (Estimate, Estimate) {
     let c = t.b * l;
     let r = t.f / t.b;
     let mu = (1.0 + r) * c;
