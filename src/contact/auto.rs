@@ -117,7 +117,21 @@ pub fn solve_at_lambda(modes: &Modes, lambda: f64, q: QuadratureSettings) -> Lam
     }
     let c: Vec<f64> = modes.b.iter().map(|b| b * l).collect();
     let mu: Vec<f64> = (0..n).map(|j| modes.kappa(j) * l).collect();
+    // Unknowns Âⱼ = Aⱼμⱼ: the components Aⱼ(e^{μⱼ(t−1)} − Ĩ₀(μⱼ)) are O(Âⱼ) for every μⱼ, so
+    // slow modes (μⱼ ≪ 1) do not produce huge Aⱼ and cancelling p₀ (see `beta` below).
     let coef: Vec<Vec<f64>> = mu.iter().map(|&m| exp_coefficients(m)).collect();
+    let hat: Vec<Vec<f64>> = coef
+        .iter()
+        .zip(&mu)
+        .map(|(cf, &m)| {
+            let mut h: Vec<f64> = cf.iter().map(|v| v / m).collect();
+            h[0] = 0.0;
+            h
+        })
+        .collect();
+    // (1 − Ĩ₀(μ))/μ = Σₙ≥₁ 2Ĩₙ(μ)/μ exactly (the Miller normalisation), no cancellation
+    let om: Vec<f64> = hat.iter().map(|h| h.iter().skip(1).sum::<f64>()).collect();
+    let i0: Vec<f64> = coef.iter().map(|cf| cf[0]).collect();
 
     // Trapezoid nodes in v = ln σ covering σ ∈ [σ_min, σ_max]:
     // below σ_min the integrand ≤ σ_min (|H̃ₑₓₜ| ≤ 1 per unit coefficient sum), above σ_max
@@ -131,12 +145,14 @@ pub fn solve_at_lambda(modes: &Modes, lambda: f64, q: QuadratureSettings) -> Lam
     let sig: Vec<f64> = (0..n_nodes).map(|k| (v_min + k as f64 * h).exp()).collect();
     let (th, w): (Vec<f64>, Vec<f64>) = sig.iter().map(|&s| theta_w(s)).unzip();
 
-    // Exterior values of each exponential component at the nodes.
+    // Exterior values of each scaled exponential component at the nodes.
     let mut x = vec![vec![0.0; n_nodes]; n];
     for j in 0..n {
-        exterior_values(&coef[j], &th, &w, &mut x[j]);
+        exterior_values(&hat[j], &th, &w, &mut x[j]);
     }
-    // Matrix B A = r (module doc), rows scaled to unit max.
+    // Ĝᵢⱼ = ∫e^{−cᵢσ}H̃ₑₓₜ[ĵ](1+σ)dσ, M₁ᵢ = ∫e^{−cᵢσ}w dσ; system B̂Â = r (module doc, divided by μⱼ)
+    let mut gmat = DMatrix::<f64>::zeros(n, n);
+    let mut m1 = vec![0.0; n];
     let mut bmat = DMatrix::<f64>::zeros(n, n);
     let mut r = DVector::<f64>::zeros(n);
     let mut wq = vec![0.0; n_nodes];
@@ -146,13 +162,15 @@ pub fn solve_at_lambda(modes: &Modes, lambda: f64, q: QuadratureSettings) -> Lam
             let end = if k == 0 || k == n_nodes - 1 { 0.5 } else { 1.0 };
             wq[k] = end * h * sig[k] * (-c[i] * sig[k]).exp();
         }
-        let m1: f64 = wq.iter().zip(&w).map(|(a, b)| a * b).sum();
+        m1[i] = wq.iter().zip(&w).map(|(a, b)| a * b).sum();
         for j in 0..n {
             let g: f64 = wq.iter().zip(&x[j]).map(|(a, b)| a * b).sum();
+            gmat[(i, j)] = g;
             let cm = l * modes.b_minus_kappa(i, j); // cᵢ − μⱼ
-            bmat[(i, j)] = g + coef[j][0] / c[i] - 1.0 / cm;
+                                                    // Bᵢⱼ/μⱼ = Ĝ + Ĩ₀/(cμ) − 1/((c−μ)μ) = Ĝ − [c(1−Ĩ₀)/μ + Ĩ₀]/(c(c−μ))
+            bmat[(i, j)] = g - (c[i] * om[j] + i0[j]) / (c[i] * cm);
         }
-        r[i] = p1 * ((1.0 / c[i] + 1.0 / (c[i] * c[i])) - m1);
+        r[i] = p1 * ((1.0 / c[i] + 1.0 / (c[i] * c[i])) - m1[i]);
         let scale = (0..n).map(|j| bmat[(i, j)].abs()).fold(0.0, f64::max);
         if scale > 0.0 && scale.is_finite() {
             for j in 0..n {
@@ -161,28 +179,45 @@ pub fn solve_at_lambda(modes: &Modes, lambda: f64, q: QuadratureSettings) -> Lam
             r[i] /= scale;
         }
     }
-    let a = bmat
+    // column equilibration too (columns of fast modes scale like 1/μⱼ)
+    let mut colscale = vec![1.0; n];
+    for (j, cs) in colscale.iter_mut().enumerate() {
+        let m = (0..n).map(|i| bmat[(i, j)].abs()).fold(0.0, f64::max);
+        if m > 0.0 && m.is_finite() {
+            *cs = m;
+            for i in 0..n {
+                bmat[(i, j)] /= m;
+            }
+        }
+    }
+    let mut a = bmat
         .full_piv_lu()
         .solve(&r)
         .unwrap_or_else(|| DVector::zeros(n));
-
-    let n_coef = coef.iter().map(|v| v.len()).max().unwrap_or(1).max(3);
-    let mut fcoef = vec![0.0; n_coef];
-    let mut p0 = 0.0;
     for j in 0..n {
-        p0 -= a[j] * coef[j][0];
-        for (k, v) in coef[j].iter().enumerate().skip(1) {
+        a[j] /= colscale[j];
+    }
+
+    let n_coef = hat.iter().map(|v| v.len()).max().unwrap_or(1).max(3);
+    let mut fcoef = vec![0.0; n_coef];
+    for j in 0..n {
+        for (k, v) in hat[j].iter().enumerate().skip(1) {
             fcoef[k] += a[j] * v;
         }
     }
     fcoef[1] += p1;
-    let sum_dc2: f64 = modes
-        .f
-        .iter()
-        .zip(&modes.b)
-        .map(|(f, b)| f / (b * b * l))
+    // β from the equation at the front edge t = 1 (no cancellation, unlike the constant-term
+    // identity (L−β)/π = p₀S + p₁Σdᵢ/cᵢ², whose two terms grow like 1/μ for slow modes):
+    // π[H̃(1) + Σᵢ Ṽᵢ(1)] = 2L − β, H̃(1) = p₁ + ΣÂⱼ(1−Ĩ₀)/μⱼ, Ṽᵢ(1) = dᵢ(ΣⱼĜᵢⱼÂⱼ + p₁M₁ᵢ).
+    let h1 = p1 + (0..n).map(|j| a[j] * om[j]).sum::<f64>();
+    let v1: f64 = (0..n)
+        .map(|i| {
+            let d = modes.f[i] * l;
+            d * ((0..n).map(|j| gmat[(i, j)] * a[j]).sum::<f64>() + p1 * m1[i])
+        })
         .sum();
-    let beta = l - PI * (p0 * s_ratio + p1 * sum_dc2);
+    let beta = 2.0 * l - PI * (h1 + v1);
+    let _ = s_ratio;
     let mu_max = mu.iter().cloned().fold(0.0, f64::max);
     finish(lambda, l, beta, mu_max, fcoef)
 }

@@ -144,6 +144,10 @@ fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaS
     s
 }
 
+fn merge_mu(tol: f64) -> f64 {
+    (1e-14 / tol).min(0.05)
+}
+
 fn budgets(tol: f64, fr_over_lambda: f64) -> (f64, f64) {
     (0.3 * tol * fr_over_lambda.abs().max(1e-300), 0.3 * tol)
 }
@@ -171,7 +175,7 @@ pub fn solve_auto_at_lambda(
     let mut pass = 0;
     loop {
         let (bf, bl) = budgets(tol, fr_guess);
-        red = select(terms, lambda, bf, bl);
+        red = select(terms, lambda, bf, bl, merge_mu(tol));
         sol = solve_reduced(&red, lambda, q);
         let fr = sol.friction_rho / lambda;
         pass += 1;
@@ -243,7 +247,7 @@ pub fn solve_auto_at_load(
     loop {
         round += 1;
         let (bf, bl) = budgets(tol, fr_guess);
-        let red = select(terms, lam0, bf, bl);
+        let red = select(terms, lam0, bf, bl, merge_mu(tol));
         let (sol, iters, lam_err_u, slope, dfr) = load_loop(
             &red,
             load,
@@ -335,8 +339,9 @@ fn load_loop(
         let step = (un - u).abs();
         let lnfr = sol.friction_rho.abs().max(1e-300).ln();
         if let Some((up, _, lfp)) = prev {
-            if (u - up).abs() > 0.0 {
-                dfr = (lnfr - lfp) / (u - up);
+            // only from steps long enough that round-off in ρF/N does not dominate
+            if (u - up).abs() > 1e-4 {
+                dfr = ((lnfr - lfp) / (u - up)).clamp(-10.0, 10.0);
             }
         }
         prev = Some((u, g, lnfr));
@@ -403,7 +408,7 @@ fn package(
             iterations,
             error_estimate: Some(error_estimate),
         },
-        modes_used: red.kept.len(),
+        modes_used: red.modes_used,
         modes_total,
         modes_lumped: red.lumped.len(),
         modes_dropped: red.dropped.len(),

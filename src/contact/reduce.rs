@@ -29,6 +29,12 @@ use super::CreepTerm;
 pub struct Reduction {
     /// Indices (into the input terms) of modes kept.
     pub kept: Vec<usize>,
+    /// How many kept slow modes were merged into one (0 or ≥ 2).
+    pub merged: usize,
+    /// Merge threshold on μ used.
+    pub merge_mu: f64,
+    /// Modes in the reduced problem (merged slow modes count once).
+    pub modes_used: usize,
     /// Indices of fast modes lumped into the glassy compliance.
     pub lumped: Vec<usize>,
     /// Indices of slow modes dropped.
@@ -64,7 +70,17 @@ fn estimates(t: &CreepTerm, l: f64) -> (Estimate, Estimate) {
 }
 
 /// Select modes at contact length λ within the budgets (absolute on ρF/N/λ, relative on N′).
-pub fn select(terms: &[CreepTerm], lambda: f64, fr_budget: f64, load_budget: f64) -> Reduction {
+///
+/// Kept slow modes with μ ≤ `merge_mu` are merged into one (see the body); the caller picks
+/// `merge_mu` = min(0.05, 1e−14/tol): solving them separately would lose ~1e−16/μ relative, more than
+/// 1 % of the tolerance below that μ.
+pub fn select(
+    terms: &[CreepTerm],
+    lambda: f64,
+    fr_budget: f64,
+    load_budget: f64,
+    merge_mu: f64,
+) -> Reduction {
     let l = 0.5 * lambda;
     // candidates: (cost measure, index, is_fast, fr error, load error)
     let mut cand: Vec<(f64, usize, bool, f64, f64)> = Vec::new();
@@ -95,6 +111,19 @@ pub fn select(terms: &[CreepTerm], lambda: f64, fr_budget: f64, load_budget: f64
     let (mut sum_fr, mut sum_ld) = (0.0, 0.0);
     let mut lumped = Vec::new();
     let mut dropped = Vec::new();
+    // Hard cap: a mode with c > C_MAX needs ~√(83μ) > 3e4 Chebyshev terms; it is lumped whatever the
+    // budget, and its estimate counts (so the reported error says when the tolerance is not met).
+    const C_MAX: f64 = 1e7;
+    cand.retain(|&(_, i, fast, e_fr, e_ld)| {
+        if fast && terms[i].b * l > C_MAX {
+            sum_fr += e_fr;
+            sum_ld += e_ld;
+            lumped.push(i);
+            false
+        } else {
+            true
+        }
+    });
     for &(_, i, fast, e_fr, e_ld) in &cand {
         if sum_fr + e_fr > fr_budget || sum_ld + e_ld > load_budget {
             break;
@@ -111,15 +140,59 @@ pub fn select(terms: &[CreepTerm], lambda: f64, fr_budget: f64, load_budget: f64
         .filter(|i| terms[*i].f > 0.0 && !lumped.contains(i) && !dropped.contains(i))
         .collect();
     let scale = 1.0 + lumped.iter().map(|&i| terms[i].f / terms[i].b).sum::<f64>();
-    let reduced: Vec<CreepTerm> = kept
+    // Kept slow modes (μ ≤ 0.05) are merged into one: to first order in bξ their kernel terms are
+    // fξ(1 − γ − ln b) − fξ ln|ξ| (module doc), reproduced exactly by F = Σf, ln B = Σf ln b / F.
+    // Several such modes give nearly equal columns in the reduced system (they differ by O(μ)), so
+    // solving them separately loses ~1/μ digits; merged, one well-conditioned column remains.
+    // Error: the second-order terms, O(bξ) relative to the first (and the merged mode keeps most of
+    // them, B being a weighted geometric mean of the bᵢ); we take 2·max(cᵢ, B·L) times the drop
+    // estimate of each merged mode.
+    let slow_kept: Vec<usize> = kept
         .iter()
-        .map(|&i| CreepTerm {
-            f: terms[i].f / scale,
-            b: terms[i].b,
+        .copied()
+        .filter(|&i| {
+            let t = terms[i];
+            (1.0 + t.f / t.b) * t.b * l <= merge_mu.min(0.05)
         })
         .collect();
+    let mut merged = 0;
+    let mut reduced: Vec<CreepTerm> = Vec::new();
+    if slow_kept.len() >= 2 {
+        let fs: f64 = slow_kept.iter().map(|&i| terms[i].f).sum();
+        let lnb: f64 = slow_kept
+            .iter()
+            .map(|&i| terms[i].f * terms[i].b.ln())
+            .sum::<f64>()
+            / fs;
+        let c_merged = lnb.exp() * l;
+        for &i in &slow_kept {
+            let t = terms[i];
+            if let (_, Some((e_fr, e_ld))) = estimates(&t, l) {
+                let k = 2.0 * (t.b * l).max(c_merged);
+                sum_fr += k * e_fr;
+                sum_ld += k * e_ld;
+            }
+        }
+        merged = slow_kept.len();
+        reduced.push(CreepTerm {
+            f: fs / scale,
+            b: lnb.exp(),
+        });
+    }
+    reduced.extend(
+        kept.iter()
+            .filter(|i| merged == 0 || !slow_kept.contains(i))
+            .map(|&i| CreepTerm {
+                f: terms[i].f / scale,
+                b: terms[i].b,
+            }),
+    );
+    let modes_used = reduced.len();
     Reduction {
+        merge_mu: merge_mu.min(0.05),
         kept,
+        merged,
+        modes_used,
         lumped,
         dropped,
         scale,
@@ -141,6 +214,19 @@ pub fn estimate_at(terms: &[CreepTerm], red: &Reduction, lambda: f64) -> (f64, f
         // outside the asymptotic range the whole effect is bounded by the one-term maximum
         fr += if c >= 30.0 { q / c } else { q };
         ld += if c >= 30.0 { 2.0 * q / c } else { 1.0 };
+    }
+    // merged slow modes: second-order estimate as in `select`
+    if red.merged >= 2 {
+        for &i in &red.kept {
+            let t = &terms[i];
+            let (c, r) = (t.b * l, t.f / t.b);
+            let mu = (1.0 + r) * c;
+            if mu <= red.merge_mu {
+                let k = 2.0 * c.max(red.modes.b[0] * l);
+                fr += k * 0.6 * r * c * (1.0 + (1.0 / c).ln());
+                ld += k * 2.0 * r * c * mu * (2.0 + (1.0 / mu).ln());
+            }
+        }
     }
     for &i in &red.dropped {
         let t = &terms[i];
