@@ -80,29 +80,39 @@ impl LambdaSolution {
         sine_series(&self.coefficients, theta)
     }
 
-    /// Sample points: uniform in θ (clustered at both edges) plus a geometric set within a few
-    /// layer widths 1/μ_max of the front edge; returns (ξ, Q′) sorted by ξ.
-    pub fn profile(&self, n_uniform: usize) -> (Vec<f64>, Vec<f64>) {
+    /// Pressure on the FFT grid θ_m = πm/M (M ≥ number of coefficients, so the spacing near the
+    /// front edge, 1 − t ≈ (π/M)²/2 < 1/μ_max, resolves the thinnest layer): (ξ, Q′) for all m,
+    /// and the subset returned as the profile: about `n_uniform` points uniform in θ plus every grid
+    /// point within 30 layer widths of the front edge (at most ~40 of them, log-spaced).
+    pub fn profile(&self, n_uniform: usize) -> (Vec<f64>, Vec<f64>, f64) {
         let l = 0.5 * self.lambda;
-        let mut thetas: Vec<f64> = (0..=n_uniform)
-            .map(|k| PI * k as f64 / n_uniform as f64)
-            .collect();
-        // front layer: 1 − t = s/μ for s from 1e−3 to 30
+        let grid = super::chebyshev::sine_series_grid(&self.coefficients);
+        let m = grid.len() - 1;
+        let min_ratio = {
+            let pmax = grid.iter().map(|g| g.1).fold(0.0, f64::max);
+            let pmin = grid.iter().map(|g| g.1).fold(f64::INFINITY, f64::min);
+            if pmax > 0.0 {
+                pmin / pmax
+            } else {
+                0.0
+            }
+        };
+        let stride = (m / n_uniform.max(1)).max(1);
+        let mut idx: Vec<usize> = (0..=m).step_by(stride).collect();
+        idx.push(m);
         if self.mu_max > 1.0 {
+            // layer: 1 − t = s/μ_max, s ∈ [1e−3, 30] → θ ≈ √(2s/μ)
             for k in 0..=40 {
                 let s = 1e-3 * 10f64.powf(k as f64 * 4.5 / 40.0);
-                let one_minus_t = (s / self.mu_max).min(2.0);
-                thetas.push((1.0 - one_minus_t).clamp(-1.0, 1.0).acos());
+                let th = (2.0 * s / self.mu_max).sqrt().min(PI);
+                idx.push(((th / PI) * m as f64).round() as usize);
             }
         }
-        thetas.sort_by(|a, b| b.total_cmp(a)); // θ descending = ξ ascending
-        thetas.dedup();
-        let xi = thetas.iter().map(|th| l * (1.0 + th.cos())).collect();
-        let p = thetas
-            .iter()
-            .map(|&th| self.pressure_at_theta(th))
-            .collect();
-        (xi, p)
+        idx.sort_unstable_by(|a, b| b.cmp(a)); // θ descending = ξ ascending
+        idx.dedup();
+        let xi = idx.iter().map(|&k| l * (1.0 + grid[k].0.cos())).collect();
+        let p = idx.iter().map(|&k| grid[k].1).collect();
+        (xi, p, min_ratio)
     }
 }
 

@@ -374,10 +374,8 @@ fn package(
     size_error: f64,
     settings: &AutoSettings,
 ) -> AutoSolution {
-    let (xi, pressure) = sol.profile(settings.profile_points.max(8));
-    let pmax = pressure.iter().cloned().fold(0.0, f64::max);
-    let pmin = pressure.iter().cloned().fold(f64::INFINITY, f64::min);
-    let min_pressure_ratio = if pmax > 0.0 { pmin / pmax } else { 0.0 };
+    // min Q′/max Q′ over the whole FFT grid (finer than the returned profile)
+    let (xi, pressure, min_pressure_ratio) = sol.profile(settings.profile_points.max(8));
     let mut warnings = Vec::new();
     if min_pressure_ratio < -settings.tol {
         warnings.push(format!(
