@@ -1,2 +1,3 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod contact_exact;
 mod special_functions;
