@@ -9,6 +9,14 @@
 
 use serde::{Deserialize, Serialize};
 
+mod bessel;
+pub mod exact;
+#[cfg(test)]
+mod exact_tests;
+mod quadrature;
+
+pub use exact::{one_term_at_lambda, one_term_at_load, ContactExactError, OneTermExact};
+
 /// One term fᵢ e^(−bᵢζ) of the dimensionless creep function γ(ζ) (thesis eq. 3.7–3.8):
 /// fᵢ = (Jᵢ/J_g)(T/τᵢ), bᵢ = T/τᵢ.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

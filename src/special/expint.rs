@@ -12,19 +12,22 @@
 //! ```
 //!
 //! Branches (chosen so that no branch sums terms of opposite sign that cancel by more than a factor ≈ 4):
-//! - eˣE1(x), x ≤ 1: the series above (−γ − ln x and Ein(x) cancel at most by a factor 3.6, at x = 1).
-//! - eˣE1(x), x > 1: the continued fraction eˣE1(x) = 1/(x+1− 1²/(x+3− 2²/(x+5− …))) (A&S 5.1.22 in
-//!   its even contraction), evaluated by the modified Lentz method; it needs ≈ 45 levels at x = 1 and
-//!   fewer beyond.
-//! - Ei(x), 0 < x < 40: the series rewritten about Ei's only positive zero x₀ = 0.3725074107813666…
+//! - E1(x), x ≤ 0.5: the series above (its two pieces −γ − ln x and Ein(x) have the same sign there).
+//! - eˣE1(x), x > 0.5: the continued fraction eˣE1(x) = 1/(x+1− 1²/(x+3− 2²/(x+5− …))) (A&S 5.1.22 in
+//!   its even contraction), evaluated backward from a depth ⌈140/x⌉ + 12 (≤ 292 levels).
+//! - Ei(x), 0 < x < 1.5: the series rewritten about Ei's only positive zero x₀ = 0.3725074107813666…
 //!   (two doubles, hi + lo). Because Ei(x₀) = 0, γ + ln x₀ = −Σ x₀ᵏ/(k·k!), hence
 //!   `Ei(x) = ln(x/x₀) + (x − x₀)·Σ_{k≥1} Pₖ/(k·k!)`, `Pₖ = (xᵏ − x₀ᵏ)/(x − x₀) = Σ_{j<k} xʲx₀^{k−1−j} > 0`.
 //!   Both parts have the sign of x − x₀, so nothing cancels anywhere, including at the zero;
 //!   ln(x/x₀) is taken as log1p((x − x₀)/x₀) when x is within a factor 2 of x₀.
-//! - Ei(x) for 0 < x < 45 uses the series about the zero (all terms positive, ≈ 130 terms at 45).
-//! - e⁻ˣEi(x), x ≥ 45: the asymptotic series (1/x)·Σ_{k≥0} k!/xᵏ (A&S 5.1.51), stopped when a term no
-//!   longer changes the sum; its best truncation error (≈ √(2πx)·e⁻ˣ relative) is below 1e-18
-//!   from x = 45 on (see `ASYMPTOTIC_EI_FROM`).
+//!   This branch serves 0 < x < 1.5.
+//! - Ei(x), 1.5 ≤ x < 45: the standard series (every piece positive) with its terms xᵏ/k! carried in
+//!   double-double and a compensated sum (≈ 130 terms at 45); see `ei_series_standard`.
+//! - e⁻ˣEi(x), x ≥ 45: the asymptotic series (1/x)·Σ_{k≥0} k!/xᵏ (A&S 5.1.51), summed (compensated)
+//!   while its terms shrink and exceed 1e-18; its best truncation error (≈ √(2πx)·e⁻ˣ relative) is
+//!   below 1e-18 from x = 45 on (see `ASYMPTOTIC_EI_FROM`).
+//! - Unscaled values multiply by e^{∓x}; past |x| = 700 that factor is taken as a square of e^{∓x/2}
+//!   so that E1 fades gracefully through the subnormals and Ei reaches the largest double.
 //! - For x < 0, Ei(x) = −E1(−x) and e⁻ˣEi(x) = −e^{|x|}E1(|x|), so the E1 branches serve.
 
 /// Euler–Mascheroni constant γ_E = 0.5772156649015328606… (nearest double).
@@ -43,8 +46,14 @@ const LN_EI_ZERO: f64 = -0.987_498_346_645_341_9;
 /// series is used (all terms positive, ≈ 130 terms at x = 45).
 const ASYMPTOTIC_EI_FROM: f64 = 45.0;
 
-/// Switch from the E1 series to the continued fraction.
-const E1_SERIES_UP_TO: f64 = 1.0;
+/// Below this point Ei uses the series about its zero x₀; above, the standard series (all pieces
+/// positive once x > e^{−γ} = 0.56; the about-zero recursion drifts by ≈ 1 ulp per 10 terms beyond).
+const EI_ABOUT_ZERO_UP_TO: f64 = 1.5;
+
+/// Switch from the E1 series to the continued fraction. Below 0.5 the series' pieces −γ − ln x and
+/// Ein(x) have the same sign; between 0.5 and 1 they cancel (by up to 3.6×) and cost ≈ 8e-16, while the
+/// backward fraction stays at ≈ 3e-16 (mpmath check) for ≤ 292 levels.
+const E1_SERIES_UP_TO: f64 = 0.5;
 
 /// E1(x) = ∫ₓ^∞ e⁻ᵗ/t dt for x > 0. E1(0) = +∞; NaN for x < 0 or NaN. Underflows to 0 past x ≈ 745.
 pub fn e1(x: f64) -> f64 {
@@ -57,9 +66,7 @@ pub fn e1(x: f64) -> f64 {
     if x <= E1_SERIES_UP_TO {
         e1_series(x)
     } else {
-        // e^{-x} may be subnormal or zero: split it so the product keeps what precision there is.
-        let half = (-0.5 * x).exp();
-        half * (half * exp_e1_cf(x))
+        exp_times(-x, exp_e1_cf(x))
     }
 }
 
@@ -91,11 +98,13 @@ pub fn ei(x: f64) -> f64 {
     if x < 0.0 {
         return -e1(-x);
     }
+    if x == f64::INFINITY {
+        return f64::INFINITY;
+    }
     if x < ASYMPTOTIC_EI_FROM {
-        ei_series_about_zero(x)
+        ei_positive(x)
     } else {
-        let half = (0.5 * x).exp();
-        half * (half * expm_ei_asymptotic(x))
+        exp_times(x, expm_ei_asymptotic(x))
     }
 }
 
@@ -113,9 +122,20 @@ pub fn expm_ei(x: f64) -> f64 {
         return -exp_e1(-x);
     }
     if x < ASYMPTOTIC_EI_FROM {
-        (-x).exp() * ei_series_about_zero(x)
+        (-x).exp() * ei_positive(x)
     } else {
         expm_ei_asymptotic(x)
+    }
+}
+
+/// eᵃ·v without spurious overflow or underflow of eᵃ alone (|a| > 700: eᵃ = (e^{a/2})², applied
+/// one factor at a time; below, one exp, one rounding fewer).
+fn exp_times(a: f64, v: f64) -> f64 {
+    if a.abs() < 700.0 {
+        a.exp() * v
+    } else {
+        let half = (0.5 * a).exp();
+        half * (half * v)
     }
 }
 
@@ -141,43 +161,29 @@ pub(crate) fn ein_small(x: f64) -> f64 {
     sum
 }
 
-/// E1(x) = −γ − ln x + Ein(x) for 0 < x ≤ 1 (A&S 5.1.11).
+/// E1(x) = −γ − ln x + Ein(x) for 0 < x ≤ 0.5 (A&S 5.1.11).
 fn e1_series(x: f64) -> f64 {
-    // Sum the two O(1) pieces first; their cancellation is at worst a factor 3.6 at x = 1.
+    // For x ≤ 0.5 the result exceeds each piece divided by 1.5: no significant cancellation.
     (ein_small(x) - EULER_GAMMA) - x.ln()
 }
 
-/// eˣE1(x) for x > 1 by the continued fraction
-/// eˣE1(x) = 1/(x+1 − 1²/(x+3 − 2²/(x+5 − …))) (A&S 5.1.22, even part), modified Lentz.
+/// eˣE1(x) for x > 0.5 by the continued fraction
+/// eˣE1(x) = 1/(x+1 − 1²/(x+3 − 2²/(x+5 − …))) (A&S 5.1.22, even part), evaluated backward from a
+/// fixed depth N. The truncation error of N levels is ≈ exp(−4√(N·x)) (checked against mpmath:
+/// N = ⌈140/x⌉ + 12 leaves < 1e-19 for every x ≥ 0.3); backward evaluation of this fraction is
+/// stable (all partial denominators stay ≥ x + 1), so the result is good to about 1 ulp, where the
+/// forward (Lentz) product of ~100 factors lost up to 5e-15 near x = 2.
 fn exp_e1_cf(x: f64) -> f64 {
-    const TINY: f64 = 1e-300;
-    let mut b = x + 1.0;
-    let mut c = 1.0 / TINY;
-    let mut d = 1.0 / b;
-    let mut h = d;
-    for i in 1..1000 {
-        let fi = i as f64;
-        let a = -fi * fi;
-        b += 2.0;
-        d = a * d + b;
-        if d.abs() < TINY {
-            d = TINY;
-        }
-        c = b + a / c;
-        if c.abs() < TINY {
-            c = TINY;
-        }
-        d = 1.0 / d;
-        let del = c * d;
-        h *= del;
-        if (del - 1.0).abs() < 1e-17 {
-            break;
-        }
+    let depth = (140.0 / x).ceil().min(400.0) as u32 + 12;
+    let mut tail = 0.0_f64;
+    for i in (1..=depth).rev() {
+        let fi = f64::from(i);
+        tail = fi * fi / (x + (2.0 * fi + 1.0) - tail);
     }
-    h
+    1.0 / (x + 1.0 - tail)
 }
 
-/// Ei(x) for 0 < x < 45 by the series about the zero x₀ (module doc):
+/// Ei(x) for 0 < x < 1.5 by the series about the zero x₀ (module doc):
 /// Ei(x) = ln(x/x₀) + (x − x₀)·Σ_{k≥1} Pₖ/(k·k!).
 fn ei_series_about_zero(x: f64) -> f64 {
     // d = x − x₀ to full relative precision: x − hi is exact (Sterbenz) when x is within a factor 2
@@ -208,24 +214,88 @@ fn ei_series_about_zero(x: f64) -> f64 {
     log_ratio + d * sum
 }
 
-/// e⁻ˣEi(x) ≈ (1/x)·Σ_{k≥0} k!/xᵏ for x ≥ 45 (A&S 5.1.51), stopped at the first term that no
-/// longer changes the sum or starts to grow.
+/// Ei(x) for 0 < x < 45: about the zero below [`EI_ABOUT_ZERO_UP_TO`], else the standard series.
+fn ei_positive(x: f64) -> f64 {
+    if x < EI_ABOUT_ZERO_UP_TO {
+        ei_series_about_zero(x)
+    } else {
+        ei_series_standard(x)
+    }
+}
+
+/// Ei(x) = γ + ln x + Σ_{k≥1} tₖ/k, tₖ = xᵏ/k! (A&S 5.1.10) for 1.5 ≤ x < 45, where every piece is
+/// positive. Plain running products tₖ = t_{k−1}·x/k lose ≈ k/2 ulp by k ≈ x (1e-15 at x = 45), so
+/// tₖ is carried as a double-double (error-free products by FMA) and the ≈ 130 terms are added with
+/// Neumaier's compensated sum; mpmath comparison: ≤ 1 ulp in this range.
+fn ei_series_standard(x: f64) -> f64 {
+    let (mut t_hi, mut t_lo) = (1.0_f64, 0.0_f64);
+    let mut sum = Neumaier::default();
+    for k in 1..400_u32 {
+        let fk = f64::from(k);
+        // (t_hi + t_lo)·x exactly to double-double.
+        let p = t_hi * x;
+        let e = t_hi.mul_add(x, -p) + t_lo * x;
+        let (p, e) = fast_two_sum(p, e);
+        // (p + e)/k: quotient q, remainder (p − q·k + e)/k.
+        let q = p / fk;
+        let r = ((-q).mul_add(fk, p) + e) / fk;
+        (t_hi, t_lo) = fast_two_sum(q, r);
+        let term = t_hi / fk;
+        sum.add(term);
+        if f64::from(k) > x && term < 1e-18 * sum.value() {
+            break;
+        }
+    }
+    sum.add(EULER_GAMMA);
+    sum.add(x.ln());
+    sum.value()
+}
+
+/// Sum a + b as hi + lo with hi = fl(a + b), for |a| ≥ |b| (Dekker).
+fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
+/// Neumaier's compensated summation (error ≈ 1 ulp of the result, independent of the term count).
+#[derive(Default)]
+struct Neumaier {
+    sum: f64,
+    comp: f64,
+}
+
+impl Neumaier {
+    fn add(&mut self, v: f64) {
+        let t = self.sum + v;
+        if self.sum.abs() >= v.abs() {
+            self.comp += (self.sum - t) + v;
+        } else {
+            self.comp += (v - t) + self.sum;
+        }
+        self.sum = t;
+    }
+
+    fn value(&self) -> f64 {
+        self.sum + self.comp
+    }
+}
+
+/// e⁻ˣEi(x) ≈ (1/x)·Σ_{k≥0} k!/xᵏ for x ≥ 45 (A&S 5.1.51), summed while the terms shrink and exceed
+/// 1e-18 of the sum. (Stopping when a term no longer changes the sum is too early: near k ≈ x the
+/// terms shrink slowly, and the neglected tail is many times the last term.)
 fn expm_ei_asymptotic(x: f64) -> f64 {
     let mut term = 1.0_f64;
-    let mut sum = 1.0_f64;
+    let mut sum = Neumaier::default();
+    sum.add(1.0);
     let mut k = 0.0_f64;
     loop {
         k += 1.0;
         let next = term * k / x;
-        if next >= term {
+        if next >= term || term < 1e-18 {
             break;
         }
         term = next;
-        let new = sum + term;
-        if new == sum {
-            break;
-        }
-        sum = new;
+        sum.add(term);
     }
-    sum / x
+    sum.value() / x
 }
