@@ -188,7 +188,9 @@ pub fn solve_auto_at_lambda(
     let fr = sol.friction_rho;
     let num_fr = rel(coarse.friction_rho, fr);
     let num_ld = rel(coarse.load, sol.load);
-    let friction_error = num_fr + red.friction_over_lambda_error * lambda / fr.abs().max(1e-300);
+    let friction_error = num_fr
+        + red.friction_over_lambda_error * lambda / fr.abs().max(1e-300)
+        + roundoff_floor(&sol);
     let size_error = num_ld + red.load_error;
     Ok(package(
         terms,
@@ -199,6 +201,12 @@ pub fn solve_auto_at_lambda(
         size_error,
         settings,
     ))
+}
+
+/// Round-off floor of ρF/N = L − β + L·F₂/(2F₁) (eq. in `auto`'s module doc): a difference of
+/// O(λ) terms, so its absolute error is a few ε·(λ + |β|), large relative to a small friction.
+fn roundoff_floor(sol: &LambdaSolution) -> f64 {
+    8.0 * f64::EPSILON * (sol.lambda + sol.beta.abs()) / sol.friction_rho.abs().max(1e-300)
 }
 
 fn rel(a: f64, b: f64) -> f64 {
