@@ -275,3 +275,21 @@ fn cli_contact_auto_and_roll_default_report_error_and_modes() {
     assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn negative_beta_is_detected_and_the_outside_gap_checked() {
+    // f = 10, b = 0.01 at λ = 1: β = −1.8595… (mpmath table), the lowest point lies behind the rear
+    // edge. The solver warns and evaluates the gap around it (computed value ≈ +1.7e−3 of λ²/8:
+    // the slowly recovering surface stays below the roll, so the single contact is consistent).
+    let s = solve_auto_at_lambda(&[CreepTerm { f: 10.0, b: 0.01 }], 1.0, &settings(1e-6)).unwrap();
+    assert!(s.solution.beta < 0.0);
+    assert!(s.warnings.iter().any(|w| w.contains("behind the rear")));
+    assert!(s.min_gap_ratio.is_finite());
+    // Hertz-like case: gap open everywhere outside, no warnings
+    let s = solve_auto_at_lambda(&[CreepTerm { f: 10.0, b: 1.0 }], 1.0, &settings(1e-6)).unwrap();
+    assert!(
+        s.min_gap_ratio > 0.0 && s.warnings.is_empty(),
+        "{:?}",
+        s.warnings
+    );
+}

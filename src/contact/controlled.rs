@@ -18,6 +18,7 @@
 //! load) or N′ (at given λ).
 
 use super::auto::{solve_at_lambda, LambdaSolution, QuadratureSettings};
+use super::conditions::gap_outside;
 use super::reduce::{estimate_at, select, Reduction};
 use super::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
@@ -101,6 +102,11 @@ pub struct AutoSolution {
     pub size_error: f64,
     /// min Q′ / max Q′ over the profile (≥ −tol when the contact condition holds).
     pub min_pressure_ratio: f64,
+    /// Smallest gap outside the contact (behind the rear edge, ahead of the front edge, and around
+    /// the roll's lowest point when β < 0) over the depth scale λ²/8; < 0 means the roll penetrates
+    /// the surface there (coarse check, see [`super::conditions`]).
+    #[serde(default)]
+    pub min_gap_ratio: f64,
     /// The tolerance asked for.
     pub tol: f64,
     /// Human-readable warnings (validity of the model, contact conditions).
@@ -391,6 +397,24 @@ fn package(
              the contact condition Q' ≥ 0 fails"
         ));
     }
+    let lam = sol.lambda;
+    let mut xs: Vec<f64> = [-1.5, -0.5, -0.1, -0.02, 1.02, 1.1, 1.5]
+        .iter()
+        .map(|k| k * lam)
+        .collect();
+    if sol.beta < 0.0 {
+        xs.extend([0.5, 1.0, 1.5].iter().map(|k| k * sol.beta));
+    }
+    let min_gap_ratio = gap_outside(&red.modes, red.scale, &sol, &xs)
+        .into_iter()
+        .fold(f64::INFINITY, f64::min);
+    if min_gap_ratio < -1e-3 {
+        warnings.push(format!(
+            "the roll penetrates the surface outside the contact (min gap / (λ²/8) = \
+             {min_gap_ratio:.3e}): the single-contact solution is not valid here (a moving rear \
+             edge or a second contact zone would be needed; not implemented)"
+        ));
+    }
     if sol.beta < 0.0 {
         warnings.push(format!(
             "the roll's lowest point lies behind the rear contact edge (β = {:.4e}, β/λ = {:.4e})",
@@ -421,6 +445,7 @@ fn package(
         friction_error,
         size_error,
         min_pressure_ratio,
+        min_gap_ratio,
         tol: settings.tol,
         warnings,
     }
