@@ -8,8 +8,8 @@
 //! ρv(ξ) = ∫₀^λ Q′(ξ′)[K(−ξ′) − K(ξ−ξ′)]dξ′ (eq. 3.19 with v(0) = 0) and the roll sits at depth
 //! ξβ − ξ²/2 (eq. 3.22), so the gap is g(ξ) = ρv(ξ) − (ξβ − ξ²/2) ≥ 0 (surface below the roll).
 //! With fast modes lumped, Q′K = Q̂K̂ (module [`super::reduce`]). The integral is a trapezoid sum in θ
-//! (ξ′ = L(1 + cos θ)) on ≤ 256 intervals of the FFT grid, spectrally accurate for the smooth part
-//! but not resolving front layers thinner than ~1/256² of the contact: a coarse check (it flags
+//! (ξ′ = L(1 + cos θ)) on ≥ 128 intervals of the FFT grid, spectrally accurate for the smooth part
+//! but not resolving front layers thinner than ~1/128² of the contact: a coarse check (it flags
 //! penetration deeper than 1e−3 of the depth scale), and no more is claimed for it.
 //!
 //! When β < 0 the roll's lowest point lies behind the rear edge, where the surface is still
@@ -34,14 +34,14 @@ pub fn gap_outside(modes: &Modes, scale: f64, sol: &LambdaSolution, xs: &[f64]) 
         return vec![f64::NAN; xs.len()];
     };
     let l = 0.5 * sol.lambda;
-    // at least 256 intervals even for short coefficient vectors (the elastic case has 2)
+    // at least 128 intervals even for short coefficient vectors (the elastic case has 2)
     let mut a = sol.coefficients.clone();
-    if a.len() < 257 {
-        a.resize(257, 0.0);
+    if a.len() < 129 {
+        a.resize(129, 0.0);
     }
     let grid = sine_series_grid(&a);
     let m = grid.len() - 1;
-    let stride = (m / 256).max(1);
+    let stride = (m / 128).max(1);
     let pts: Vec<(f64, f64)> = (0..=m).step_by(stride).map(|k| grid[k]).collect();
     let h = pts.get(1).map(|p| p.0 - pts[0].0).unwrap_or(0.0);
     let depth = sol.lambda * sol.lambda / 8.0;

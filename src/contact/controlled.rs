@@ -32,6 +32,14 @@ pub struct AutoSettings {
     pub max_iterations: usize,
     /// Uniform-in-θ points of the returned pressure profile (default 200), plus ~40 in the front layer.
     pub profile_points: usize,
+    /// Evaluate the gap outside the contact (default true; costs ~4 points × 129 × N kernel
+    /// evaluations, ≈ 0.3 ms for one term, more than the solve itself for few terms).
+    #[serde(default = "default_true")]
+    pub gap_check: bool,
+}
+
+fn default_true() -> bool {
+    true
 }
 
 impl Default for AutoSettings {
@@ -40,6 +48,7 @@ impl Default for AutoSettings {
             tol: 1e-6,
             max_iterations: 100,
             profile_points: 200,
+            gap_check: true,
         }
     }
 }
@@ -398,16 +407,17 @@ fn package(
         ));
     }
     let lam = sol.lambda;
-    let mut xs: Vec<f64> = [-1.5, -0.5, -0.1, -0.02, 1.02, 1.1, 1.5]
-        .iter()
-        .map(|k| k * lam)
-        .collect();
+    let mut xs: Vec<f64> = [-1.0, -0.05, 1.05, 1.5].iter().map(|k| k * lam).collect();
     if sol.beta < 0.0 {
         xs.extend([0.5, 1.0, 1.5].iter().map(|k| k * sol.beta));
     }
-    let min_gap_ratio = gap_outside(&red.modes, red.scale, &sol, &xs)
-        .into_iter()
-        .fold(f64::INFINITY, f64::min);
+    let min_gap_ratio = if settings.gap_check {
+        gap_outside(&red.modes, red.scale, &sol, &xs)
+            .into_iter()
+            .fold(f64::INFINITY, f64::min)
+    } else {
+        f64::NAN
+    };
     if min_gap_ratio < -1e-3 {
         warnings.push(format!(
             "the roll penetrates the surface outside the contact (min gap / (λ²/8) = \
