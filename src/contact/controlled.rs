@@ -286,7 +286,14 @@ pub fn solve_auto_at_load(
         let fr = sol.friction_rho;
         let (e_fr, e_ld) = estimate_at(terms, &red, lambda);
         let ok = e_fr <= 0.3 * tol * (fr / lambda).abs() && e_ld <= 0.3 * tol;
-        if ok || round >= 4 {
+        // if the next round would select the same modes it cannot do better: stop here (the
+        // estimate says honestly whether the tolerance is met)
+        let same = !ok && {
+            let (bf2, bl2) = budgets(tol, 0.5 * (fr / lambda).abs());
+            let next = select(terms, lambda, bf2, bl2, merge_mu(tol));
+            next.kept == red.kept && next.lumped == red.lumped && next.dropped == red.dropped
+        };
+        if ok || same || round >= 4 {
             let coarse = solve_reduced(&red, lambda, QuadratureSettings { step: 1.5 * q.step });
             // at fixed λ the coarse/fine N′ difference maps to λ through the slope
             let num_ld = rel(coarse.load, sol.load);
