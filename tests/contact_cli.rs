@@ -173,6 +173,8 @@ fn roll_json_fields() {
         "2000",
         "--speed-m-s",
         "5",
+        "--scheme",
+        "thesis",
         "--n",
         "120",
         "--json",

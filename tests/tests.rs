@@ -1,18 +1,20 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod contact_auto;
 mod contact_cli;
 mod contact_exact;
 mod contact_scene;
 mod contact_thesis;
+mod contact_thesis_vs_exact;
 mod dma_errors;
 mod dma_quirks;
 mod dma_real;
 mod dma_xlsx;
 mod ingest_cli;
 mod master_cli;
+mod master_real;
 mod prony_ems_ca;
 mod report_plots;
 mod special_functions;
 mod spectra_cards;
 mod spectra_cli;
 mod spectra_exact;
-mod master_real;

@@ -22,10 +22,14 @@ pub struct Args {
     /// Number of intervals on the contact.
     #[arg(long, default_value_t = 40)]
     pub n: usize,
-    /// Discretisation: `thesis` (piecewise-linear collocation) or `exact` (one creep term only; the
-    /// pressure is then sampled at n + 1 points).
+    /// Discretisation: `thesis` (piecewise-linear collocation, `--n` intervals), `exact` (one creep
+    /// term only; the pressure is then sampled at n + 1 points) or `auto` (error-controlled
+    /// Chebyshev–exponential scheme, `--tol`).
     #[arg(long, default_value = "thesis")]
     pub scheme: String,
+    /// Relative tolerance on ρF/N and λ for `--scheme auto` (1e-12 … 0.1).
+    #[arg(long, default_value_t = 1e-6)]
+    pub tol: f64,
     /// Dimensionless roll radius ρ = R/(VT); with it, the friction coefficient F/N is reported.
     #[arg(long, allow_negative_numbers = true)]
     pub rho: Option<f64>,
@@ -76,7 +80,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let scheme = match args.scheme.as_str() {
         "thesis" => Scheme::Thesis,
         "exact" => Scheme::Exact,
-        other => bail!("--scheme `{other}` is not known (thesis, exact)"),
+        "auto" => return run_auto(&args, &terms),
+        other => bail!("--scheme `{other}` is not known (thesis, exact, auto)"),
     };
     let settings = ContactSettings {
         scheme,
@@ -145,6 +150,60 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         eprintln!("{:>14} {:>14}", "xi", "Q'");
         for (x, q) in sol.xi.iter().zip(&sol.pressure) {
             eprintln!("{x:>14.6e} {q:>14.6e}");
+        }
+    }
+    Ok(())
+}
+
+/// `--scheme auto`: the error-controlled solver; JSON adds `error_estimate`, `modes_used`,
+/// `modes_total`, `modes_lumped`, `modes_dropped`, `min_pressure_ratio`, `tol`, `warnings`.
+fn run_auto(args: &Args, terms: &[CreepTerm]) -> anyhow::Result<()> {
+    use crate::contact::controlled::{solve_auto_at_lambda, solve_auto_at_load, AutoSettings};
+    let settings = AutoSettings {
+        tol: args.tol,
+        ..Default::default()
+    };
+    let sol = match (args.lambda, args.load) {
+        (Some(lambda), None) => solve_auto_at_lambda(terms, lambda, &settings)?,
+        (None, Some(load)) => solve_auto_at_load(terms, load, &settings)?,
+        _ => bail!("give exactly one of --lambda and --load"),
+    };
+    let d = &sol.solution;
+    let friction = args.rho.map(|rho| d.friction_rho / rho);
+    if args.json {
+        let mut obj = serde_json::to_value(&sol)?;
+        obj["creep"] = serde_json::json!(terms);
+        obj["beta_over_lambda"] = serde_json::json!(d.beta / d.lambda);
+        if let (Some(rho), Some(fr)) = (args.rho, friction) {
+            obj["rho"] = serde_json::json!(rho);
+            obj["friction"] = serde_json::json!(fr);
+        }
+        println!("{obj}");
+    } else {
+        eprintln!(
+            "scheme auto  tol = {:e}  modes used {}/{} (lumped {}, dropped {})  load solves = {}",
+            args.tol,
+            sol.modes_used,
+            sol.modes_total,
+            sol.modes_lumped,
+            sol.modes_dropped,
+            d.iterations
+        );
+        eprintln!("lambda           = {:.12}", d.lambda);
+        eprintln!("beta             = {:.12}", d.beta);
+        eprintln!("beta/lambda      = {:.12}", d.beta / d.lambda);
+        eprintln!("load N'          = {:.12}", d.load);
+        eprintln!("rho*F/N          = {:.12}", d.friction_rho);
+        if let Some(fr) = friction {
+            eprintln!("F/N              = {fr:.12e}");
+        }
+        eprintln!(
+            "error estimate   = {:.3e}",
+            d.error_estimate.unwrap_or(f64::NAN)
+        );
+        eprintln!("min Q'/max Q'    = {:.3e}", sol.min_pressure_ratio);
+        for w in &sol.warnings {
+            eprintln!("warning: {w}");
         }
     }
     Ok(())

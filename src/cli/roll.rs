@@ -5,6 +5,8 @@
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
 //! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
 
+use crate::contact::controlled::AutoSettings;
+use crate::contact::roll_auto::roll_auto;
 use crate::contact::{self, ContactSettings, Scene};
 use crate::CreepSpectrum;
 use anyhow::{bail, Context};
@@ -31,6 +33,12 @@ pub struct Args {
     /// Number of intervals of the thesis scheme.
     #[arg(long, default_value_t = 200)]
     pub n: usize,
+    /// Discretisation: `auto` (error-controlled, default) or `thesis` (piecewise linear, `--n`).
+    #[arg(long, default_value = "auto")]
+    pub scheme: String,
+    /// Relative tolerance on friction and contact length for `--scheme auto` (1e-12 … 0.1).
+    #[arg(long, default_value_t = 1e-6)]
+    pub tol: f64,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -57,15 +65,30 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         speed_m_s: args.speed_m_s,
         poisson: args.poisson,
     };
-    let settings = ContactSettings {
-        n: args.n,
-        ..Default::default()
+    if !matches!(args.scheme.as_str(), "auto" | "thesis") {
+        anyhow::bail!("--scheme `{}` is not known (auto, thesis)", args.scheme);
+    }
+    let mut auto_info = None;
+    let sol = if args.scheme == "auto" {
+        let settings = AutoSettings {
+            tol: args.tol,
+            ..Default::default()
+        };
+        let r = roll_auto(&scene, &spectrum, &settings)
+            .with_context(|| format!("{}", args.spectrum.display()))?;
+        auto_info = Some(r.auto);
+        r.roll
+    } else {
+        let settings = ContactSettings {
+            n: args.n,
+            ..Default::default()
+        };
+        contact::roll(&scene, &spectrum, &settings)
+            .with_context(|| format!("{}", args.spectrum.display()))?
     };
-    let sol = contact::roll(&scene, &spectrum, &settings)
-        .with_context(|| format!("{}", args.spectrum.display()))?;
     let d = &sol.dimensionless;
     if args.json {
-        let obj = serde_json::json!({
+        let mut obj = serde_json::json!({
             "friction": sol.friction,
             "contact_length_mm": sol.contact_length_m * 1e3,
             "offset_mm": sol.offset_m * 1e3,
@@ -88,6 +111,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "n": d.n,
             "iterations": d.iterations,
         });
+        if let Some(a) = &auto_info {
+            obj["error_estimate"] = serde_json::json!(d.error_estimate);
+            obj["tol"] = serde_json::json!(a.tol);
+            obj["modes_used"] = serde_json::json!(a.modes_used);
+            obj["modes_total"] = serde_json::json!(a.modes_total);
+            obj["modes_lumped"] = serde_json::json!(a.modes_lumped);
+            obj["modes_dropped"] = serde_json::json!(a.modes_dropped);
+            obj["min_pressure_ratio"] = serde_json::json!(a.min_pressure_ratio);
+            obj["warnings"] = serde_json::json!(a.warnings);
+        }
         println!("{obj}");
     } else {
         eprintln!(
@@ -114,6 +147,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "dimensionless: lambda = {:.6}, beta = {:.6}, N' = {}, rho = {:.6e}, T = {:.6e} s; {} n = {}, {} solves",
             d.lambda, d.beta, d.load, sol.problem.rho, sol.problem.time_scale_s, d.scheme, d.n, d.iterations
         );
+        if let Some(a) = &auto_info {
+            eprintln!(
+                "auto: error estimate {:.3e} (tol {:e}), modes used {}/{} (lumped {}, dropped {})",
+                d.error_estimate.unwrap_or(f64::NAN),
+                a.tol,
+                a.modes_used,
+                a.modes_total,
+                a.modes_lumped,
+                a.modes_dropped
+            );
+            for w in &a.warnings {
+                eprintln!("warning: {w}");
+            }
+        }
     }
     Ok(())
 }

@@ -53,9 +53,14 @@ pub struct DimensionlessSolution {
     pub error_estimate: Option<f64>,
 }
 
+pub mod auto;
+pub mod chebyshev;
+pub mod controlled;
 pub mod error;
 pub mod kernel;
 pub mod load;
+pub mod modes;
+pub mod reduce;
 pub mod scene;
 pub mod solve;
 pub mod thesis;
@@ -65,3 +70,5 @@ pub use kernel::Kernel;
 pub use load::LoadSettings;
 pub use scene::{roll, DimensionlessScene, RollSolution, Scene};
 pub use solve::{solve_at_lambda, solve_at_load, ContactSettings, Scheme};
+pub mod conditions;
+pub mod roll_auto;

@@ -1,0 +1,116 @@
+//! Benchmark table of the `auto` contact scheme against the thesis scheme (issue 4).
+//!
+//! Scope: time per load point (solve at given N′, load loop included) and achieved relative error
+//! of ρF/N and λ, for 1-, 10- and 30-term spectra, at tol = 1e−3, 1e−6, 1e−9; next to it the thesis
+//! scheme's smallest n (doubling from 10 up to 1280) reaching the same friction error, and its time.
+//! References: the exact one-term solution (auto reduction, fine quadrature, at its own root λ) for
+//! one term; the auto scheme at tol 1e−10 for the spectra (its estimate is printed).
+//! Times are without the optional gap check outside the contact (`gap_check: false`); the last
+//! line prints its cost for the one-term case.
+//! Run: `cargo bench --bench contact_auto` (single-threaded; prints a Markdown table).
+
+use std::time::Instant;
+use viscoroll::contact::controlled::{solve_auto_at_load, AutoSettings};
+use viscoroll::contact::{solve_at_load, ContactSettings, CreepTerm};
+
+fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
+    if n == 1 {
+        return vec![CreepTerm { f: 10.0, b: 1.0 }];
+    }
+    // log-spaced rates over `decades` centred on 1, equal strengths with Σ r = ratio − 1
+    (0..n)
+        .map(|k| {
+            let b = 10f64.powf(-decades / 2.0 + decades * k as f64 / (n - 1) as f64);
+            let r = (ratio - 1.0) / n as f64;
+            CreepTerm { f: r * b, b }
+        })
+        .collect()
+}
+
+fn time_it<T>(mut f: impl FnMut() -> T) -> (T, f64) {
+    let t0 = Instant::now();
+    let mut out = f();
+    let mut reps = 1;
+    while t0.elapsed().as_secs_f64() < 0.3 && reps < 2000 {
+        out = f();
+        reps += 1;
+    }
+    (out, t0.elapsed().as_secs_f64() / reps as f64)
+}
+
+fn main() {
+    let load = 1.0;
+    println!("| spectrum | tol | auto time/load point | modes used | error ρF/N | error λ | estimate | thesis n (same ρF/N error) | thesis time |");
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for (name, terms) in [
+        ("1 term f=10 b=1", spectrum(1, 0.0, 0.0)),
+        ("10 terms, 12 decades, J∞/J_g=1e3", spectrum(10, 12.0, 1e3)),
+        ("30 terms, 24 decades, J∞/J_g=1e3", spectrum(30, 24.0, 1e3)),
+    ] {
+        let reference = solve_auto_at_load(
+            &terms,
+            load,
+            &AutoSettings {
+                tol: 1e-10,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let (fr_ref, lam_ref) = (reference.solution.friction_rho, reference.solution.lambda);
+        // thesis scheme errors against n (computed once per spectrum)
+        let mut thesis: Vec<(usize, f64, f64)> = Vec::new();
+        let mut n = 10;
+        while n <= 1280 {
+            let settings = ContactSettings {
+                n,
+                ..Default::default()
+            };
+            let (s, t) = time_it(|| solve_at_load(&terms, load, &settings).unwrap());
+            thesis.push((n, ((s.friction_rho - fr_ref) / fr_ref).abs(), t));
+            n *= 2;
+        }
+        for tol in [1e-3, 1e-6, 1e-9] {
+            // the solve alone; the optional gap check adds ~4·129·N kernel evaluations
+            let settings = AutoSettings {
+                tol,
+                gap_check: false,
+                ..Default::default()
+            };
+            let (s, t) = time_it(|| solve_auto_at_load(&terms, load, &settings).unwrap());
+            let e_fr = ((s.solution.friction_rho - fr_ref) / fr_ref).abs();
+            let e_l = ((s.solution.lambda - lam_ref) / lam_ref).abs();
+            let th = thesis.iter().find(|(_, e, _)| *e <= e_fr.max(1e-15));
+            let (tn, tt) = match th {
+                Some((n, _, t)) => (format!("{n}"), format!("{:.3} ms", t * 1e3)),
+                None => {
+                    let (n, e, t) = thesis.last().unwrap();
+                    (
+                        format!("not reached (n={n}: error {e:.1e})"),
+                        format!("{:.3} ms", t * 1e3),
+                    )
+                }
+            };
+            println!(
+                "| {name} | {tol:.0e} | {:.1} µs | {}/{} | {e_fr:.1e} | {e_l:.1e} | {:.1e} | {tn} | {tt} |",
+                t * 1e6,
+                s.modes_used,
+                s.modes_total,
+                s.solution.error_estimate.unwrap()
+            );
+        }
+        if terms.len() == 1 {
+            let (_, t) =
+                time_it(|| solve_auto_at_load(&terms, load, &AutoSettings::default()).unwrap());
+            println!(
+                "| {name}: tol 1e-6 with gap check | | {:.1} µs | | | | | | |",
+                t * 1e6
+            );
+        }
+        println!(
+            "| {name}: reference tol 1e-10 | | | {}/{} | | | {:.1e} | | |",
+            reference.modes_used,
+            reference.modes_total,
+            reference.solution.error_estimate.unwrap()
+        );
+    }
+}

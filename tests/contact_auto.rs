@@ -1,0 +1,320 @@
+//! The `auto` contact scheme (issue 4): exact one-term cases, load loop over speeds, random spectra
+//! and scenes, contact conditions, speed limits.
+//!
+//! References for the one-term cases: the independent exact solution of `contact::exact` and its
+//! mpmath table (tests/data/exact_one_term_reference.csv).
+
+use viscoroll::contact::controlled::{
+    solve_auto_at_lambda, solve_auto_at_load, AutoSettings, AutoSolution,
+};
+use viscoroll::contact::roll_auto::roll_auto;
+use viscoroll::contact::{one_term_at_load, CreepTerm, Scene};
+use viscoroll::creep::{CreepSpectrum, RetardationTerm};
+
+fn settings(tol: f64) -> AutoSettings {
+    AutoSettings {
+        tol,
+        ..AutoSettings::default()
+    }
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    ((a - b) / b).abs()
+}
+
+/// Deterministic generator (SplitMix64) so the random cases are the same on every run.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn check_conditions(s: &AutoSolution, tol: f64) {
+    let d = &s.solution;
+    for v in [d.lambda, d.beta, d.load, d.friction_rho] {
+        assert!(v.is_finite(), "non-finite result {d:?}");
+    }
+    assert!(d.pressure.iter().all(|p| p.is_finite()));
+    // contact condition Q′ ≥ 0 within the tolerance (relative to the peak)
+    assert!(
+        s.min_pressure_ratio >= -tol,
+        "min Q'/max Q' = {}",
+        s.min_pressure_ratio
+    );
+    // dissipation cannot be negative
+    assert!(d.friction_rho >= 0.0, "friction {}", d.friction_rho);
+}
+
+/// The exact one-term solution of `contact::exact`, reference table from mpmath (30 digits,
+/// tools/gen_exact_reference.py): 24 cases at λ = 1 with f from 1e−7 to 1e4 and b from 1e−4 to 1e4,
+/// including f = 10 and f = 1000 at b = 1 (thesis Table 1's one-parameter case and a stiff one).
+#[test]
+fn one_term_exact_at_lambda_one_against_mpmath() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/exact_one_term_reference.csv"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut seen = 0;
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    {
+        let v: Vec<f64> = line.split(',').map(|x| x.trim().parse().unwrap()).collect();
+        let (term, lambda) = (CreepTerm { f: v[0], b: v[1] }, v[2]);
+        let s = solve_auto_at_lambda(&[term], lambda, &settings(1e-9)).unwrap();
+        let d = &s.solution;
+        let errs = [
+            rel(d.beta, v[3]),
+            rel(d.load, v[4]),
+            rel(d.friction_rho, v[5]),
+        ];
+        // the issue's requirement at tol 1e−9: ≤ 1e−8 relative in β, N′ and ρF/N
+        assert!(errs.iter().all(|e| *e <= 1e-8), "{term:?}: {errs:?}");
+        // the estimate bounds the true error of ρF/N and N′ (β has no estimate of its own)
+        let est = d.error_estimate.unwrap();
+        assert!(
+            errs[1] <= est.max(1e-14) && errs[2] <= est.max(1e-14),
+            "{term:?}: {errs:?} > {est}"
+        );
+        assert!(
+            s.min_pressure_ratio >= -1e-9,
+            "{term:?}: {}",
+            s.min_pressure_ratio
+        );
+        seen += 1;
+    }
+    assert_eq!(seen, 24);
+}
+
+#[test]
+fn one_term_at_given_load_over_eight_decades_of_speed() {
+    // Fixed dimensional scene, T = τ₁: N′ ∝ 1/V², so 8 decades of V are 16 decades of N′.
+    let term = CreepTerm { f: 10.0, b: 1.0 };
+    for k in 0..=16 {
+        let load = 10f64.powi(k - 8);
+        let s = solve_auto_at_load(&[term], load, &settings(1e-9)).unwrap();
+        let d = &s.solution;
+        // reference: the exact solution at the same load (contact::exact, ≤ 1e−10)
+        let r = one_term_at_load(term, load).unwrap();
+        let errs = [
+            rel(d.lambda, r.lambda),
+            rel(d.friction_rho, r.friction_rho),
+            rel(d.beta, r.beta),
+            rel(d.load, load),
+        ];
+        // 1e−8 required; the reference's own error (≤ 1e−10) is far below
+        assert!(errs.iter().all(|e| *e <= 1e-8), "N' {load:e}: {errs:?}");
+        let est = d.error_estimate.unwrap();
+        assert!(
+            errs[0] <= est + 1e-10 && errs[1] <= est + 1e-10,
+            "N' {load:e}: {errs:?} > {est}"
+        );
+        check_conditions(&s, 1e-9);
+    }
+}
+
+/// A spectrum of n terms with log-uniform random times over 24 decades and random strengths
+/// normalised to J∞/J_g = ratio.
+fn random_spectrum(rng: &mut Rng, n: usize, ratio: f64) -> CreepSpectrum {
+    let mut w: Vec<f64> = (0..n).map(|_| 0.05 + rng.next()).collect();
+    let sw: f64 = w.iter().sum();
+    w.iter_mut().for_each(|x| *x *= (ratio - 1.0) / sw);
+    let jg = 1e-9;
+    CreepSpectrum {
+        kind: Default::default(),
+        poisson: 0.5,
+        compliance_glassy_per_pa: jg,
+        terms: w
+            .iter()
+            .map(|&x| RetardationTerm {
+                compliance_per_pa: x * jg,
+                tau_s: 10f64.powf(-12.0 + 24.0 * rng.next()),
+            })
+            .collect(),
+    }
+}
+
+#[test]
+fn random_spectra_and_scenes_estimate_confirmed_by_tighter_solve() {
+    let mut rng = Rng(20260422);
+    for case in 0..6 {
+        let n = 1 + (rng.next() * 40.0) as usize;
+        let ratio = 10f64.powf(4.0 * rng.next());
+        let spec = random_spectrum(&mut rng, n.min(40), ratio);
+        let scene = Scene {
+            radius_m: 10f64.powf(-2.0 + 2.0 * rng.next()),
+            load_n_per_m: 10f64.powf(6.0 * rng.next()),
+            speed_m_s: 10f64.powf(-6.0 + 9.0 * rng.next()),
+            poisson: None,
+        };
+        let a = roll_auto(&scene, &spec, &settings(1e-6)).unwrap();
+        let b = roll_auto(&scene, &spec, &settings(1e-9)).unwrap();
+        check_conditions(&a.auto, 1e-6);
+        check_conditions(&b.auto, 1e-9);
+        let est = a.auto.solution.error_estimate.unwrap();
+        let e_fr = rel(a.roll.friction, b.roll.friction);
+        let e_l = rel(a.roll.contact_length_m, b.roll.contact_length_m);
+        eprintln!(
+            "case {case}: n {n} ratio {ratio:.1e} modes {}/{} fr {:.3e} err {e_fr:.1e} {e_l:.1e} est {est:.1e} ({:.1e} {:.1e}) lumped {} dropped {} tol-ok {}",
+            a.auto.modes_used, a.auto.modes_total, a.roll.friction, a.auto.friction_error, a.auto.size_error, a.auto.modes_lumped, a.auto.modes_dropped, est <= 1e-6
+        );
+        // the estimate (plus the tighter solve's own ≤ 1e−9) bounds the observed differences
+        assert!(e_fr <= est + 1e-9 && e_l <= est + 1e-9, "case {case}");
+        // The estimate may exceed tol where the friction is small and very fast modes (c > 1e7)
+        // are lumped whatever the budget: the isolated-mode bound is then very conservative
+        // (observed up to ~4e4× the true error). It stays within 100·tol in these scenes.
+        assert!(est <= 1e-4, "case {case}: estimate {est} far above tol");
+    }
+}
+
+#[test]
+fn friction_vanishes_at_both_speed_limits() {
+    let mut rng = Rng(7);
+    let spec = random_spectrum(&mut rng, 20, 1e3);
+    let fr = |v: f64| {
+        let scene = Scene {
+            radius_m: 0.1,
+            load_n_per_m: 1e3,
+            speed_m_s: v,
+            poisson: None,
+        };
+        roll_auto(&scene, &spec, &settings(1e-6))
+            .unwrap()
+            .roll
+            .friction
+    };
+    let mid = (-6..=3).map(|k| fr(10f64.powi(k))).fold(0.0, f64::max);
+    // τ spans [1e−12, 1e12] s and the contact is ~1e−4…1e−2 m long: below V ≈ 1e−16 m/s every mode
+    // is relaxed, above ~1e8 m/s every mode glassy. There friction must fall like V resp. 1/V
+    // (MATH.md §3): four decades of speed → about four decades of friction (asserted: ≥ three).
+    let (slow1, slow2) = (fr(1e-20), fr(1e-24));
+    let (fast1, fast2) = (fr(1e14), fr(1e18));
+    assert!(
+        slow1 < 1e-2 * mid && slow2 < 1e-3 * slow1,
+        "{slow1:e} {slow2:e} vs {mid:e}"
+    );
+    assert!(
+        fast1 < 1e-2 * mid && fast2 < 1e-3 * fast1,
+        "{fast1:e} {fast2:e} vs {mid:e}"
+    );
+    for v in [slow1, slow2, fast1, fast2] {
+        assert!(v >= 0.0);
+    }
+}
+
+#[test]
+fn cli_contact_auto_and_roll_default_report_error_and_modes() {
+    let exe = env!("CARGO_BIN_EXE_viscoroll");
+    let out = std::process::Command::new(exe)
+        .args([
+            "contact", "--creep", "10:1", "--lambda", "1", "--scheme", "auto", "--tol", "1e-9",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["scheme"], "auto");
+    // thesis Table 1 case, exact (mpmath) ρF/N = 0.43218841466733969
+    assert!((v["friction_rho"].as_f64().unwrap() / 0.432_188_414_667_339_7 - 1.0).abs() < 1e-9);
+    assert!(v["error_estimate"].as_f64().unwrap() <= 1e-9);
+    assert_eq!(v["modes_used"], 1);
+    assert_eq!(v["modes_total"], 1);
+
+    let dir = std::env::temp_dir().join(format!("viscoroll-auto-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let spec = dir.join("spec.json");
+    std::fs::write(
+        &spec,
+        r#"{"compliance_glassy_per_pa": 1e-9, "terms": [
+            {"compliance_per_pa": 1e-7, "tau_s": 1e-3}, {"compliance_per_pa": 5e-7, "tau_s": 1e3}]}"#,
+    )
+    .unwrap();
+    let out = std::process::Command::new(exe)
+        .args([
+            "roll",
+            spec.to_str().unwrap(),
+            "--radius-mm",
+            "50",
+            "--load-n-per-m",
+            "1000",
+        ])
+        .args(["--speed-m-s", "1", "--json"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["scheme"], "auto");
+    assert!(v["error_estimate"].as_f64().unwrap() <= 1e-6);
+    assert_eq!(v["modes_total"], 2);
+    assert!(v["friction"].as_f64().unwrap() > 0.0);
+    // a bad tolerance is a one-line error, not a panic
+    let out = std::process::Command::new(exe)
+        .args([
+            "roll",
+            spec.to_str().unwrap(),
+            "--radius-mm",
+            "50",
+            "--load-n-per-m",
+            "1000",
+        ])
+        .args(["--speed-m-s", "1", "--tol", "0"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn negative_beta_is_detected_and_the_outside_gap_checked() {
+    // f = 10, b = 0.01 at λ = 1: β = −1.8595… (mpmath table), the lowest point lies behind the rear
+    // edge. The solver warns and evaluates the gap around it (computed value ≈ +1.7e−3 of λ²/8:
+    // the slowly recovering surface stays below the roll, so the single contact is consistent).
+    let s = solve_auto_at_lambda(&[CreepTerm { f: 10.0, b: 0.01 }], 1.0, &settings(1e-6)).unwrap();
+    assert!(s.solution.beta < 0.0);
+    assert!(s.warnings.iter().any(|w| w.contains("behind the rear")));
+    assert!(s.min_gap_ratio.is_finite());
+    // Hertz-like case: gap open everywhere outside, no warnings
+    let s = solve_auto_at_lambda(&[CreepTerm { f: 10.0, b: 1.0 }], 1.0, &settings(1e-6)).unwrap();
+    assert!(
+        s.min_gap_ratio > 0.0 && s.warnings.is_empty(),
+        "{:?}",
+        s.warnings
+    );
+}
+
+#[test]
+fn whole_range_of_scenes_converges_without_nan() {
+    // The issue's range: speeds 1e−6…1e3 m/s, loads 1…1e6 N/m, radii 10 mm…1 m, a 30-term spectrum
+    // over 24 decades with J∞/J_g = 1e4. Every corner and centre at tol 1e−4 (fast; the accuracy
+    // claims are tested above): converged, finite, Q′ ≥ 0 within tol, friction ≥ 0.
+    let mut rng = Rng(99);
+    let spec = random_spectrum(&mut rng, 30, 1e4);
+    for v in [1e-6, 1e-3, 1.0, 1e3] {
+        for n in [1.0, 1e3, 1e6] {
+            for r in [0.01, 0.1, 1.0] {
+                let scene = Scene {
+                    radius_m: r,
+                    load_n_per_m: n,
+                    speed_m_s: v,
+                    poisson: None,
+                };
+                let a = roll_auto(&scene, &spec, &settings(1e-4))
+                    .unwrap_or_else(|e| panic!("V {v} N {n} R {r}: {e}"));
+                check_conditions(&a.auto, 1e-4);
+                assert!(a.roll.friction.is_finite() && a.roll.contact_length_m > 0.0);
+            }
+        }
+    }
+}
