@@ -6,7 +6,7 @@
 //! with y = cos θ). The scaling keeps every value in [0, 1] for any c: Iₙ(c) itself overflows past c ≈ 713.
 //!
 //! Method: Miller's backward recurrence Iₙ₋₁ = (2n/c)·Iₙ + Iₙ₊₁ (A&S 9.6.26), started far enough above the
-//! last order needed that the start error has died out, rescaled on the way down to avoid overflow, and
+//! last order needed that the start error has died out, run on the ratios Iₙ/Iₙ₋₁ (no overflow), and
 //! normalised with the identity Ĩ₀ + 2 Σₙ≥₁ Ĩₙ = 1 (A&S 9.6.36 at y = 1, times e^(−c)). Iₙ is the
 //! minimal solution of the recurrence as n grows, so the backward direction is stable; every term of the
 //! normalisation sum is positive, so it loses nothing to cancellation.
@@ -38,20 +38,19 @@ pub fn scaled_bessel_i_orders(c: f64, rel_cut: f64) -> Vec<f64> {
     };
     let n_last = n_last.unwrap_or(start);
 
-    // Backward recurrence from I_{start+1} = 0, I_start = tiny (any positive value: only ratios matter).
-    let mut vals = vec![0.0f64; start + 2];
-    vals[start] = 1e-280;
+    // Backward recurrence in ratio form: rₖ = Iₖ/Iₖ₋₁ = 1/(2k/c + rₖ₊₁) from r_{start+1} = 0 (the
+    // continued fraction of the minimal solution; no overflow even for tiny c, where 2k/c is huge),
+    // then Ĩₖ = rₖ·Ĩₖ₋₁ from Ĩ₀ = 1 (products underflow harmlessly to 0) and normalisation.
+    let mut vals = vec![0.0f64; start + 1];
+    let mut r_next = 0.0;
     for k in (1..=start).rev() {
-        let next = vals[k + 1];
-        let cur = vals[k];
-        let prev = (2.0 * k as f64 / c) * cur + next;
-        vals[k - 1] = prev;
-        if prev > 1e250 {
-            // Rescale everything computed so far (the tail underflows harmlessly to 0).
-            for v in vals[k - 1..].iter_mut() {
-                *v *= 1e-250;
-            }
-        }
+        let r = 1.0 / (2.0 * k as f64 / c + r_next);
+        vals[k] = r;
+        r_next = r;
+    }
+    vals[0] = 1.0;
+    for k in 1..=start {
+        vals[k] *= vals[k - 1];
     }
     // Normalise: Ĩ₀ + 2 Σ Ĩₙ = 1; sum the small terms first.
     let mut sum = 0.0;

@@ -80,6 +80,9 @@ pub enum ContactExactError {
     /// κλ = (b+f)λ beyond what the series is set up for (its length grows like √(κλ)).
     #[error("(b + f)*lambda = {0:e} is beyond the exact solution's range (at most {max:e})", max = MAX_KAPPA_LAMBDA)]
     OutOfRange(f64),
+    /// bλ so small that the quadrature range ln(1/bλ) is no longer representable.
+    #[error("b*lambda = {0:e} is below the exact solution's range (at least {min:e})", min = MIN_B_LAMBDA)]
+    TooSmall(f64),
     /// The load could not be bracketed between two contact lengths.
     #[error("load N' = {load} could not be bracketed: N'({lambda_lo}) = {load_lo}, N'({lambda_hi}) = {load_hi}")]
     NotBracketed {
@@ -98,6 +101,9 @@ pub enum ContactExactError {
 
 /// Largest κλ accepted: the series then has ~1.3e5 terms and one solve takes of the order of a second.
 pub const MAX_KAPPA_LAMBDA: f64 = 1e9;
+
+/// Smallest bλ accepted (the solution is then Hertz to about (f/b)·bλ·ln(1/bλ) anyway).
+pub const MIN_B_LAMBDA: f64 = 1e-250;
 
 /// Relative cut of the Bessel series Ĩₙ(c) (terms below it are dropped; see [`scaled_bessel_i_orders`]).
 const SERIES_CUT: f64 = 1e-19;
@@ -142,6 +148,9 @@ pub fn one_term_at_lambda(term: CreepTerm, lambda: f64) -> Result<OneTermExact, 
     let kl = (term.b + term.f) * lambda;
     if kl > MAX_KAPPA_LAMBDA {
         return Err(ContactExactError::OutOfRange(kl));
+    }
+    if term.b * lambda < MIN_B_LAMBDA {
+        return Err(ContactExactError::TooSmall(term.b * lambda));
     }
     Ok(solve_with_cut(term, lambda, SERIES_CUT))
 }

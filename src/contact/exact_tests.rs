@@ -351,6 +351,14 @@ fn bad_input_is_an_error() {
         one_term_at_lambda(t(1e12, 1.0), 1e3),
         Err(ContactExactError::OutOfRange(_))
     ));
+    assert!(matches!(
+        one_term_at_lambda(t(1.0, 1e-200), 1e-100),
+        Err(ContactExactError::TooSmall(_))
+    ));
+    // Just above the lower limit everything is still finite (and Hertz-like).
+    let s = one_term_at_lambda(t(1e-240, 1e-240), 1e-9).unwrap();
+    assert!(s.beta.is_finite() && s.load.is_finite() && s.friction_rho.is_finite());
+    assert!(rel(s.load, 0.25e-18) < 1e-12);
 }
 
 #[test]

@@ -101,7 +101,13 @@ impl Integrator {
             let right = self.rule(&mut f, m, b);
             let halves = left + right;
             let err = (halves - whole).abs();
-            if err <= tol * total_est.max(f64::MIN_POSITIVE) || depth >= 60 || m <= a || m >= b {
+            // Non-finite values cannot be refined away: accept them (the NaN/∞ propagates to the caller).
+            if err <= tol * total_est.max(f64::MIN_POSITIVE)
+                || !err.is_finite()
+                || depth >= 60
+                || m <= a
+                || m >= b
+            {
                 result += halves;
             } else {
                 stack.push((a, m, left, depth + 1));
