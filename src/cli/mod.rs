@@ -42,12 +42,22 @@ enum Command {
 
 /// Parse the command line, run the command, report an error once; returns the exit code.
 pub fn run() -> i32 {
+    quiet_broken_pipe();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
-        Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
+        Err(e) if !e.use_stderr() => {
+            // --help and --version: clap's own text on stdout.
             let _ = e.print();
-            return code;
+            return 0;
+        }
+        Err(e) => {
+            // A usage error: one line (clap's first line, which names the argument and value),
+            // then where to read more. Exit code 2.
+            let text = e.to_string();
+            let first = text.lines().next().unwrap_or("bad arguments");
+            let first = first.trim_start_matches("error: ");
+            eprintln!("viscoroll: {first} (see `viscoroll --help`)");
+            return 2;
         }
     };
     let result: anyhow::Result<()> = match cli.command {
@@ -66,4 +76,22 @@ pub fn run() -> i32 {
             1
         }
     }
+}
+
+/// A closed stdout (`viscoroll … --json | head`) is not an error: exit quietly with code 0 instead
+/// of the standard library's "failed printing to stdout: Broken pipe" panic.
+fn quiet_broken_pipe() {
+    let default_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let msg = info
+            .payload()
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| info.payload().downcast_ref::<&str>().copied())
+            .unwrap_or("");
+        if msg.contains("Broken pipe") {
+            std::process::exit(0);
+        }
+        default_hook(info);
+    }));
 }
