@@ -15,6 +15,35 @@
 //! Each stage is a module that takes plain serde types and returns plain serde types, so any stage can
 //! be run, saved, inspected and tested alone. The `viscoroll` binary is a thin shell over this library
 //! ([`cli`]). SI units inside; explicit units in field names at the edges (`freq_hz`, `load_n_per_m`).
+//!
+//! From a relaxation spectrum to the rolling friction of one scene:
+//!
+//! ```
+//! use viscoroll::contact::{controlled::AutoSettings, roll_auto::roll_auto, Scene};
+//! use viscoroll::creep::relaxation_to_creep;
+//! use viscoroll::prony::{RelaxationSpectrum, RelaxationTerm};
+//! use viscoroll::ModulusKind;
+//!
+//! // A standard linear solid: E∞ = 3 MPa, one 1 GPa term relaxing in 1 ms.
+//! let relaxation = RelaxationSpectrum {
+//!     kind: ModulusKind::Tensile,
+//!     poisson: 0.5,
+//!     modulus_inf_pa: 3e6,
+//!     terms: vec![RelaxationTerm { modulus_pa: 1e9, tau_s: 1e-3 }],
+//! };
+//! let (creep, _info) = relaxation_to_creep(&relaxation).unwrap();
+//! // The glassy compliance is 1/E₀ (MATH.md §4).
+//! assert!((creep.compliance_glassy_per_pa * (1e9 + 3e6) - 1.0).abs() < 1e-12);
+//!
+//! // A 100 mm roll under 2 kN/m at 1 m/s.
+//! let scene = Scene { radius_m: 0.1, load_n_per_m: 2000.0, speed_m_s: 1.0, poisson: None };
+//! let r = roll_auto(&scene, &creep, &AutoSettings::default()).unwrap();
+//! // Dissipation makes the friction positive; the contact lies between the glassy and relaxed
+//! // Hertz lengths l = 2√(4RN(1−ν²)/(πE)).
+//! let hertz = |e: f64| 2.0 * (4.0 * 0.1 * 2000.0 * 0.75 / (std::f64::consts::PI * e)).sqrt();
+//! assert!(r.roll.friction > 0.0);
+//! assert!(r.roll.contact_length_m > hertz(1e9 + 3e6) && r.roll.contact_length_m < hertz(3e6));
+//! ```
 
 pub mod special;
 
