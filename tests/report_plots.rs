@@ -91,6 +91,9 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
             temp_nominal_c: t,
             temp_mean_c: t,
             source: 0,
+            nominal_source: String::new(),
+            sheet: None,
+            label: None,
             points: (0..10)
                 .map(|i| {
                     let f = 0.1 * 10f64.powf(i as f64 / 3.0);
@@ -116,6 +119,8 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
         poisson: 0.5,
         isotherms,
         warnings: vec![],
+        issues: vec![],
+        summary: Default::default(),
     };
     for ext in ["png", "svg"] {
         let p = |name: &str| dir.join(format!("ems_ca_{name}.{ext}"));
