@@ -1,11 +1,17 @@
 //! `viscoroll roll`: one dimensional scene, a rigid roll on a half-space with a given creep spectrum
 //! (JSON, the serde form of [`crate::CreepSpectrum`]) → friction, contact length, offset, pressure.
+//! A fit file (`fits/NAME.json`, [`crate::pipeline::CompoundFit`]) is accepted too, with `--temp-c T`:
+//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, MATH.md §6);
+//! a T outside the measured temperatures is allowed and flagged (`extrapolated`, and a warning).
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
 //! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
 
 use crate::contact::{self, ContactSettings, Scene};
+use crate::creep::AtTemperature;
+use crate::pipeline::fit_compound::measured_range_c;
+use crate::pipeline::CompoundFit;
 use crate::CreepSpectrum;
 use anyhow::{bail, Context};
 use std::path::PathBuf;
@@ -13,9 +19,13 @@ use std::path::PathBuf;
 /// Arguments of `viscoroll roll`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Creep spectrum, JSON (`kind`, `poisson`, `compliance_glassy_per_pa`, `terms`: [{`compliance_per_pa`, `tau_s`}]).
-    #[arg(value_name = "SPECTRUM.json")]
+    /// Creep spectrum, JSON (`kind`, `poisson`, `compliance_glassy_per_pa`, `terms`: [{`compliance_per_pa`, `tau_s`}]),
+    /// or a fit file (`viscoroll run`'s fits/NAME.json) together with --temp-c.
+    #[arg(value_name = "SPECTRUM.json|FIT.json")]
     pub spectrum: PathBuf,
+    /// Temperature in °C (fit files only: the spectrum is shifted there by the fit's shift law).
+    #[arg(long, allow_negative_numbers = true)]
+    pub temp_c: Option<f64>,
     /// Roll radius in mm (> 0).
     #[arg(long, allow_negative_numbers = true)]
     pub radius_mm: f64,
@@ -49,8 +59,45 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let text = std::fs::read_to_string(&args.spectrum)
         .with_context(|| format!("cannot read spectrum file {}", args.spectrum.display()))?;
-    let spectrum: CreepSpectrum = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not a creep spectrum", args.spectrum.display()))?;
+    let value: serde_json::Value = serde_json::from_str(&text)
+        .with_context(|| format!("{}: not JSON", args.spectrum.display()))?;
+    let mut shifted: Option<AtTemperature<CreepSpectrum>> = None;
+    let mut warnings: Vec<String> = Vec::new();
+    let spectrum: CreepSpectrum = if value.get("format_version").is_some() {
+        let fit = CompoundFit::read(&args.spectrum)?;
+        let Some(t) = args.temp_c else {
+            bail!(
+                "{}: a fit file needs --temp-c (its spectrum is at T_ref = {} °C)",
+                args.spectrum.display(),
+                fit.shift_law.t_ref_c()
+            );
+        };
+        let creep = fit.creep.as_ref().with_context(|| {
+            format!("{}: the fit has no creep spectrum", args.spectrum.display())
+        })?;
+        let range = measured_range_c(&fit);
+        let at = creep
+            .at_temperature(&fit.shift_law, t, range)
+            .with_context(|| format!("{}: --temp-c {t}", args.spectrum.display()))?;
+        if at.extrapolated {
+            let (lo, hi) = range.unwrap_or((f64::NAN, f64::NAN));
+            warnings.push(format!(
+                "--temp-c {t} °C lies outside the measured temperatures {lo} … {hi} °C: the shift law is extrapolated"
+            ));
+        }
+        let sp = at.spectrum.clone();
+        shifted = Some(at);
+        sp
+    } else {
+        if args.temp_c.is_some() {
+            bail!(
+                "{}: --temp-c needs a fit file (a bare creep spectrum has no shift law)",
+                args.spectrum.display()
+            );
+        }
+        serde_json::from_value(value)
+            .with_context(|| format!("{}: not a creep spectrum", args.spectrum.display()))?
+    };
     let scene = Scene {
         radius_m: args.radius_mm * 1e-3,
         load_n_per_m: args.load_n_per_m,
@@ -87,9 +134,25 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "scheme": d.scheme,
             "n": d.n,
             "iterations": d.iterations,
+            "temp_c": shifted.as_ref().map(|a| a.temp_c),
+            "log10_a_t": shifted.as_ref().map(|a| a.log10_a_t),
+            "extrapolated": shifted.as_ref().map(|a| a.extrapolated),
+            "warnings": warnings,
         });
         println!("{obj}");
     } else {
+        if let Some(a) = &shifted {
+            eprintln!(
+                "at {} °C: log10 a_T = {:.4}{}",
+                a.temp_c,
+                a.log10_a_t,
+                if a.extrapolated {
+                    " (extrapolated)"
+                } else {
+                    ""
+                }
+            );
+        }
         eprintln!(
             "roll R = {} mm, N = {} N/m, V = {} m/s on {} ({} terms, nu = {})",
             args.radius_mm,
@@ -114,6 +177,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "dimensionless: lambda = {:.6}, beta = {:.6}, N' = {}, rho = {:.6e}, T = {:.6e} s; {} n = {}, {} solves",
             d.lambda, d.beta, d.load, sol.problem.rho, sol.problem.time_scale_s, d.scheme, d.n, d.iterations
         );
+    }
+    for w in &warnings {
+        eprintln!("warning: {w}");
     }
     Ok(())
 }
