@@ -101,6 +101,26 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
         for f in ["isotherms.png", "master.png", "friction.svg"] {
             assert!(rep.join(f).is_file(), "{name}: {f}");
         }
+        // Friction maps against speed and load: every listed point solved, finite and positive.
+        let map = std::fs::read_to_string(rep.join("friction_map.csv")).unwrap();
+        let map_rows: Vec<f64> = map
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("scene,"))
+            .map(|l| l.rsplit(',').next().unwrap().parse().unwrap())
+            .collect();
+        let expected_map: usize = scenes
+            .iter()
+            .map(|s| {
+                let n = |k: &str| s.get(k).and_then(|v| v.as_array()).map_or(0, |a| a.len());
+                n("map_temps_c") * (n("map_speeds_m_s") + n("map_loads_n_per_m"))
+            })
+            .sum();
+        assert!(expected_map > 0);
+        assert_eq!(map_rows.len(), expected_map, "{name}");
+        assert!(
+            map_rows.iter().all(|f| f.is_finite() && *f > 0.0),
+            "{name}: {map_rows:?}"
+        );
         // Glassy and relaxed moduli of the fitted relaxation spectrum.
         let e_inf = fit["relaxation"]["modulus_inf_pa"].as_f64().unwrap();
         let e0 = e_inf

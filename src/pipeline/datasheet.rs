@@ -9,7 +9,7 @@
 use super::compound_fit::CompoundFit;
 use super::error::{io, PipelineError};
 use super::fit_compound::measured_range_c;
-use super::scenes::{FrictionPoint, SceneSpec};
+use super::scenes::{FrictionPoint, MapPoint, SceneSpec};
 use crate::report::{cards, plots};
 use crate::Measurement;
 use std::f64::consts::PI;
@@ -72,6 +72,31 @@ pub fn svg_chart(
     y_label: &str,
     series: &[(String, Vec<(f64, f64)>)],
 ) -> String {
+    svg_chart_axes(title, x_label, y_label, series, false)
+}
+
+/// As [`svg_chart`], with x on a log10 axis when `log_x` (x > 0 only).
+pub fn svg_chart_axes(
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[(String, Vec<(f64, f64)>)],
+    log_x: bool,
+) -> String {
+    let fx = |x: f64| if log_x { x.log10() } else { x };
+    let series: Vec<(String, Vec<(f64, f64)>)> = series
+        .iter()
+        .map(|(n, p)| {
+            (
+                n.clone(),
+                p.iter()
+                    .filter(|(x, _)| !log_x || *x > 0.0)
+                    .map(|&(x, y)| (fx(x), y))
+                    .collect(),
+            )
+        })
+        .collect();
+    let series = &series[..];
     const W: f64 = 720.0;
     const H: f64 = 420.0;
     let (l, r, t, b) = (80.0, 170.0, 40.0, 50.0);
@@ -134,9 +159,14 @@ pub fn svg_chart(
     for i in 0..=5 {
         let xv = x0 + (x1 - x0) * i as f64 / 5.0;
         let x = px(xv);
+        let label = if log_x {
+            format!("{:.3}", 10f64.powf(xv))
+        } else {
+            format!("{xv:.0}")
+        };
         let _ = writeln!(
             s,
-            "<line x1=\"{x:.1}\" x2=\"{x:.1}\" y1=\"{t}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{xv:.0}</text>",
+            "<line x1=\"{x:.1}\" x2=\"{x:.1}\" y1=\"{t}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{label}</text>",
             H - b,
             H - b + 16.0
         );
@@ -235,6 +265,7 @@ pub fn write_report(
     fit: &CompoundFit,
     measurement: &Measurement,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
+    maps: &[Vec<MapPoint>],
     dir: &Path,
 ) -> Result<(), PipelineError> {
     std::fs::create_dir_all(dir).map_err(io(dir))?;
@@ -276,6 +307,71 @@ pub fn write_report(
         &series,
     );
     write_atomic(&dir.join("friction.svg"), friction_svg.as_bytes())?;
+
+    // Friction maps: CSV and, per scene, F/N against speed and against load (one curve per temperature).
+    let mut map_csv = format!("# {prov}\nscene,temp_c,speed_m_s,load_n_per_m,friction\n");
+    let mut map_svgs = String::new();
+    for ((spec, _), pts) in friction.iter().zip(maps) {
+        for p in pts {
+            let _ = writeln!(
+                map_csv,
+                "{},{},{},{},{:e}",
+                spec.name, p.temp_c, p.speed_m_s, p.load_n_per_m, p.friction
+            );
+        }
+        for (by_speed, list, label) in [
+            (true, &spec.map_speeds_m_s, "speed (m/s)"),
+            (false, &spec.map_loads_n_per_m, "load (N/m)"),
+        ] {
+            if list.is_empty() {
+                continue;
+            }
+            let series: Vec<(String, Vec<(f64, f64)>)> = spec
+                .map_temps_c
+                .iter()
+                .map(|&t| {
+                    let pts: Vec<(f64, f64)> = pts
+                        .iter()
+                        .filter(|p| {
+                            p.temp_c == t
+                                && if by_speed {
+                                    p.load_n_per_m == spec.load_n_per_m
+                                        && list.contains(&p.speed_m_s)
+                                } else {
+                                    p.speed_m_s == spec.speed_m_s && list.contains(&p.load_n_per_m)
+                                }
+                        })
+                        .map(|p| {
+                            (
+                                if by_speed {
+                                    p.speed_m_s
+                                } else {
+                                    p.load_n_per_m
+                                },
+                                p.friction,
+                            )
+                        })
+                        .collect();
+                    (format!("{t} °C"), pts)
+                })
+                .collect();
+            let svg = svg_chart_axes(
+                &format!("{}: F/N against {label}", spec.name),
+                label,
+                "F/N",
+                &series,
+                true,
+            );
+            let stem = format!(
+                "friction_{}_{}",
+                spec.name,
+                if by_speed { "speed" } else { "load" }
+            );
+            write_atomic(&dir.join(format!("{stem}.svg")), svg.as_bytes())?;
+            map_svgs.push_str(&svg);
+        }
+    }
+    write_atomic(&dir.join("friction_map.csv"), map_csv.as_bytes())?;
 
     let iso_svg = plot_pair(dir, "isotherms", |p| plots::plot_isotherms(measurement, p))?;
     let master_svg = plot_pair(dir, "master", |p| {
@@ -462,6 +558,12 @@ pub fn write_report(
         }
     }
     h.push_str("</table>");
+    if !map_svgs.is_empty() {
+        let _ = write!(
+            h,
+            "<h3>Friction against speed and load</h3><p>Values in friction_map.csv.</p>{map_svgs}"
+        );
+    }
 
     let r = &fit.relaxation;
     let _ = write!(

@@ -91,16 +91,19 @@ fn one_compound(
     let (fit, action) = fit_or_reuse(&c.name, &measurement, &fit_path, &opts.fit, opts.force)?;
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
+    let mut maps = Vec::new();
     for spec in &opts.scenes.scene {
         friction.push((
             spec.clone(),
             friction_vs_temperature(&fit, spec, &settings)?,
         ));
+        maps.push(super::scenes::friction_maps(&fit, spec, &settings)?);
     }
     write_report(
         &fit,
         &measurement,
         &friction,
+        &maps,
         &opts.out_dir.join("reports").join(&c.name),
     )?;
     Ok((

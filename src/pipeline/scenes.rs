@@ -36,6 +36,15 @@ pub struct SceneSpec {
     /// Poisson's ratio (default: the spectrum's).
     #[serde(default)]
     pub poisson: Option<f64>,
+    /// Temperatures in °C of the friction maps (each solve costs; keep it short).
+    #[serde(default)]
+    pub map_temps_c: Vec<f64>,
+    /// Speeds in m/s of the friction map against speed (at the scene's load, each map temperature).
+    #[serde(default)]
+    pub map_speeds_m_s: Vec<f64>,
+    /// Loads per unit width in N/m of the friction map against load (at the scene's speed).
+    #[serde(default)]
+    pub map_loads_n_per_m: Vec<f64>,
 }
 
 impl SceneSpec {
@@ -99,6 +108,20 @@ impl SceneSet {
                     "{} must be a non-empty list of temperatures in °C above −273.15",
                     at("temps_c")
                 )));
+            }
+            for (key, list) in [
+                ("map_speeds_m_s", &s.map_speeds_m_s),
+                ("map_loads_n_per_m", &s.map_loads_n_per_m),
+            ] {
+                if !list.is_empty() && s.map_temps_c.is_empty() {
+                    return Err(cfg(format!("{} needs map_temps_c", at(key))));
+                }
+                if let Some(v) = list.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+                    return Err(cfg(format!(
+                        "{} must hold finite values > 0, got {v}",
+                        at(key)
+                    )));
+                }
             }
             s.scene().validate().map_err(|e| cfg(at(&e.to_string())))?;
         }
@@ -184,6 +207,63 @@ pub fn friction_vs_temperature(
                     error: None,
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
+            }
+        })
+        .collect())
+}
+
+/// One point of a friction map (speed or load varied at a temperature).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct MapPoint {
+    /// Temperature in °C.
+    pub temp_c: f64,
+    /// Speed in m/s.
+    pub speed_m_s: f64,
+    /// Load per unit width in N/m.
+    pub load_n_per_m: f64,
+    /// F*/N* (NaN when the solve failed).
+    pub friction: f64,
+}
+
+/// Friction maps of `fit` in `spec`: against `map_speeds_m_s` (at the scene's load) and against
+/// `map_loads_n_per_m` (at the scene's speed), each at every temperature; parallel over points.
+pub fn friction_maps(
+    fit: &CompoundFit,
+    spec: &SceneSpec,
+    settings: &ContactSettings,
+) -> Result<Vec<MapPoint>, PipelineError> {
+    let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
+        compound: fit.compound.clone(),
+    })?;
+    let mut jobs = Vec::new();
+    for &t in &spec.map_temps_c {
+        for &v in &spec.map_speeds_m_s {
+            jobs.push((t, v, spec.load_n_per_m));
+        }
+        for &n in &spec.map_loads_n_per_m {
+            jobs.push((t, spec.speed_m_s, n));
+        }
+    }
+    Ok(jobs
+        .par_iter()
+        .map(|&(t, v, n)| {
+            let friction = creep
+                .at_temperature(&fit.shift_law, t, None)
+                .ok()
+                .and_then(|at| {
+                    let scene = Scene {
+                        speed_m_s: v,
+                        load_n_per_m: n,
+                        ..spec.scene()
+                    };
+                    contact::roll(&scene, &at.spectrum, settings).ok()
+                })
+                .map_or(f64::NAN, |s| s.friction);
+            MapPoint {
+                temp_c: t,
+                speed_m_s: v,
+                load_n_per_m: n,
+                friction,
             }
         })
         .collect())
