@@ -15,3 +15,4 @@ mod special_functions;
 mod spectra_cards;
 mod spectra_cli;
 mod spectra_exact;
+mod master_real;

@@ -287,16 +287,17 @@ fn summary(m: &MasterCurve) {
         m.points.len(),
         m.t_ref_c
     );
-    eprintln!("  T (°C)   log10 aT   ±std     log10 bT  overlap RMS  vGP (°)  KK log10");
+    eprintln!("  T (°C)   log10 aT   ±std     log10 bT  overlap RMS  E″ alone  vGP (°)  KK log10");
     for s in &m.isotherms {
         let opt = |v: Option<f64>, p: usize| v.map_or("-".to_string(), |v| format!("{v:.p$}"));
         eprintln!(
-            "  {:>7.2}  {:>8.3}  {:>7.4}  {:>8.4}  {:>11}  {:>7}  {:>8}{}",
+            "  {:>7.2}  {:>8.3}  {:>7.4}  {:>8.4}  {:>11}  {:>8}  {:>7}  {:>8}{}",
             s.temp_c,
             s.log10_a_t,
             s.log10_a_t_std,
             s.log10_b_t,
             opt(s.overlap_rms_log10, 4),
+            opt(s.loss_overlap_rms_log10, 4),
             opt(s.vgp_rms_deg, 2),
             opt(s.kk_median_log10_ratio, 2),
             if s.flags.is_empty() { "" } else { "  !" }

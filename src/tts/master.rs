@@ -127,7 +127,7 @@ impl Default for MasterSettings {
         MasterSettings {
             tref_c: None,
             shift: ShiftSource::Auto,
-            criterion: ShiftCriterion::Joint,
+            criterion: ShiftCriterion::Storage,
             vertical: VerticalShift::None,
             temperature: TemperatureBasis::Mean,
             law: LawChoice::Auto,
@@ -231,6 +231,11 @@ pub struct IsothermShift {
     pub points_dropped: usize,
     /// RMS mismatch of its overlaps, log10 units (`None`: overlaps nothing).
     pub overlap_rms_log10: Option<f64>,
+    /// RMS mismatch of log10 E″ alone in its overlaps at the final shifts (log10 units): with the
+    /// default E′ criterion, whether E″ superposes with the shifts found from E′ (a direct test of
+    /// thermorheological simplicity).
+    #[serde(default)]
+    pub loss_overlap_rms_log10: Option<f64>,
     /// van Gurp–Palmen RMS against its neighbours, degrees.
     pub vgp_rms_deg: Option<f64>,
     /// Median log10 of (π/2)·dE′/d ln ω over E″ (local Kramers–Kronig).
@@ -248,6 +253,9 @@ pub struct MasterQuality {
     pub overlap_rms_max_log10: f64,
     /// RMS over all isotherms' overlap RMS, log10 units.
     pub overlap_rms_log10: f64,
+    /// Worst E″-alone overlap RMS at the final shifts, log10 units.
+    #[serde(default)]
+    pub loss_overlap_rms_max_log10: f64,
     /// Worst van Gurp–Palmen RMS, degrees.
     pub vgp_rms_max_deg: f64,
     /// Largest |median log10 ratio| of the local Kramers–Kronig rule.
@@ -675,6 +683,11 @@ pub fn build_master_curve(
     }
 
     // Quality.
+    let loss_only: Vec<Prepared> = joint
+        .iter()
+        .map(|p| Prepared::new(p.x.clone(), vec![p.channels[1].0.clone()]))
+        .collect();
+    let loss_overlap = overlap_rms(&loss_only, &shifts, reach, min_pts);
     let vgp = van_gurp_palmen(
         &joint,
         &if settings.vertical == VerticalShift::Fitted {
@@ -698,6 +711,14 @@ pub fn build_master_curve(
             }
         } else {
             flags.push("overlaps no other isotherm".to_string());
+        }
+        if let Some(o) = loss_overlap[i] {
+            if o > bounds.overlap_rms_max_log10 {
+                flags.push(format!(
+                    "E″ alone overlap RMS {o:.3} > {} (log10) at these shifts",
+                    bounds.overlap_rms_max_log10
+                ));
+            }
         }
         if let Some(v) = vgp[i] {
             if v > bounds.vgp_rms_max_deg {
@@ -728,6 +749,7 @@ pub fn build_master_curve(
             points_used: c.x.len(),
             points_dropped: c.dropped,
             overlap_rms_log10: overlap[i],
+            loss_overlap_rms_log10: loss_overlap[i],
             vgp_rms_deg: vgp[i],
             kk_median_log10_ratio: kk,
             flags,
@@ -743,6 +765,7 @@ pub fn build_master_curve(
         } else {
             (ov.iter().map(|v| v * v).sum::<f64>() / ov.len() as f64).sqrt()
         },
+        loss_overlap_rms_max_log10: max_of(&mut loss_overlap.iter().flatten().copied()),
         vgp_rms_max_deg: max_of(&mut vgp.iter().flatten().copied()),
         kk_max_abs_log10_ratio: max_of(
             &mut isotherms
