@@ -6,6 +6,7 @@ mod contact_thesis;
 mod dma_errors;
 mod dma_quirks;
 mod dma_real;
+mod dma_xlsx;
 mod ingest_cli;
 mod master_cli;
 mod pipeline_cli;
