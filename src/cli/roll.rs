@@ -59,8 +59,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let text = std::fs::read_to_string(&args.spectrum)
         .with_context(|| format!("cannot read spectrum file {}", args.spectrum.display()))?;
-    let value: serde_json::Value = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not JSON", args.spectrum.display()))?;
+    let value: serde_json::Value = serde_json::from_str(&text).with_context(|| {
+        format!(
+            "{}: not a creep spectrum or fit file",
+            args.spectrum.display()
+        )
+    })?;
     let mut shifted: Option<AtTemperature<CreepSpectrum>> = None;
     let mut warnings: Vec<String> = Vec::new();
     let spectrum: CreepSpectrum = if value.get("format_version").is_some() {
