@@ -216,6 +216,38 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
     // The CSV prints the shortest round-trip form ({:e}), so equality is exact.
     assert_eq!(v["friction"].as_f64().unwrap(), *f);
     assert_eq!(v["extrapolated"], false);
+    // Below the lowest measured temperature (EMS-CA: −50 °C) the shift is flagged as extrapolated.
+    let roll = |file: &Path, temp: Option<&str>| {
+        let mut c = Command::new(bin());
+        c.arg("roll").arg(file);
+        if let Some(t) = temp {
+            c.args(["--temp-c", t]);
+        }
+        c.args([
+            "--radius-mm",
+            "66.5",
+            "--load-n-per-m",
+            "10000",
+            "--speed-m-s",
+            "4",
+            "--json",
+        ])
+        .output()
+        .unwrap()
+    };
+    let o = roll(&out.join("fits/ems-ca.json"), Some("-60"));
+    assert!(o.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["extrapolated"], true);
+    assert!(v["warnings"][0].as_str().unwrap().contains("extrapolated"));
+    // A fit file needs --temp-c; a bare spectrum refuses it (it has no shift law).
+    let o = roll(&out.join("fits/ems-ca.json"), None);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("--temp-c"));
+    let o = roll(&data().join("spectra/example_creep.json"), Some("20"));
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("no shift law"));
+    assert!(roll(&data().join("spectra/example_creep.json"), None)
+        .status
+        .success());
 
     // rank: every compound, ordered, temperature table.
     let fits: Vec<PathBuf> = COMPOUNDS
