@@ -91,6 +91,9 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
             temp_nominal_c: t,
             temp_mean_c: t,
             source: 0,
+            nominal_source: String::new(),
+            sheet: None,
+            label: None,
             points: (0..10)
                 .map(|i| {
                     let f = 0.1 * 10f64.powf(i as f64 / 3.0);
@@ -108,9 +111,6 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
                     }
                 })
                 .collect(),
-            nominal_source: "file".into(),
-            sheet: None,
-            label: None,
         })
         .collect();
     let m = Measurement {

@@ -12,6 +12,7 @@ mod dma_xlsx;
 mod ingest_cli;
 mod master_cli;
 mod master_real;
+mod pipeline_cli;
 mod prony_ems_ca;
 mod report_plots;
 mod special_functions;

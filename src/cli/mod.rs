@@ -10,7 +10,9 @@ mod export;
 mod fit;
 mod ingest;
 mod master;
+mod rank;
 mod roll;
+mod run;
 
 use clap::{Parser, Subcommand};
 
@@ -38,6 +40,10 @@ enum Command {
     Master(master::Args),
     /// Master curve + Prony fit + creep spectrum → a fit file.
     Fit(fit::Args),
+    /// The main job: every compound of a folder → fits, friction, datasheets, ranking.
+    Run(run::Args),
+    /// Rank fit files by predicted rolling friction in a scene.
+    Rank(rank::Args),
 }
 
 /// Parse the command line, run the command, report an error once; returns the exit code.
@@ -68,6 +74,8 @@ pub fn run() -> i32 {
         Command::Ingest(args) => ingest::run(args),
         Command::Master(args) => master::run(args),
         Command::Fit(args) => fit::run(args),
+        Command::Run(args) => run::run(args),
+        Command::Rank(args) => rank::run(args),
     };
     match result {
         Ok(()) => 0,

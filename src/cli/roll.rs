@@ -1,5 +1,8 @@
 //! `viscoroll roll`: one dimensional scene, a rigid roll on a half-space with a given creep spectrum
 //! (JSON, the serde form of [`crate::CreepSpectrum`]) → friction, contact length, offset, pressure.
+//! A fit file (`fits/NAME.json`, [`crate::pipeline::CompoundFit`]) is accepted too, with `--temp-c T`:
+//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, MATH.md §6);
+//! a T outside the measured temperatures is allowed and flagged (`extrapolated`, and a warning).
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
@@ -8,6 +11,9 @@
 use crate::contact::controlled::AutoSettings;
 use crate::contact::roll_auto::roll_auto;
 use crate::contact::{self, ContactSettings, Scene};
+use crate::creep::AtTemperature;
+use crate::pipeline::fit_compound::measured_range_c;
+use crate::pipeline::CompoundFit;
 use crate::CreepSpectrum;
 use anyhow::{bail, Context};
 use std::path::PathBuf;
@@ -15,9 +21,13 @@ use std::path::PathBuf;
 /// Arguments of `viscoroll roll`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Creep spectrum, JSON (`kind`, `poisson`, `compliance_glassy_per_pa`, `terms`: [{`compliance_per_pa`, `tau_s`}]).
-    #[arg(value_name = "SPECTRUM.json")]
+    /// Creep spectrum, JSON (`kind`, `poisson`, `compliance_glassy_per_pa`, `terms`: [{`compliance_per_pa`, `tau_s`}]),
+    /// or a fit file (`viscoroll run`'s fits/NAME.json) together with --temp-c.
+    #[arg(value_name = "SPECTRUM.json|FIT.json")]
     pub spectrum: PathBuf,
+    /// Temperature in °C (fit files only: the spectrum is shifted there by the fit's shift law).
+    #[arg(long, allow_negative_numbers = true)]
+    pub temp_c: Option<f64>,
     /// Roll radius in mm (> 0).
     #[arg(long, allow_negative_numbers = true)]
     pub radius_mm: f64,
@@ -57,8 +67,49 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let text = std::fs::read_to_string(&args.spectrum)
         .with_context(|| format!("cannot read spectrum file {}", args.spectrum.display()))?;
-    let spectrum: CreepSpectrum = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not a creep spectrum", args.spectrum.display()))?;
+    let value: serde_json::Value = serde_json::from_str(&text).with_context(|| {
+        format!(
+            "{}: not a creep spectrum or fit file",
+            args.spectrum.display()
+        )
+    })?;
+    let mut shifted: Option<AtTemperature<CreepSpectrum>> = None;
+    let mut warnings: Vec<String> = Vec::new();
+    let spectrum: CreepSpectrum = if value.get("format_version").is_some() {
+        let fit = CompoundFit::read(&args.spectrum)?;
+        let Some(t) = args.temp_c else {
+            bail!(
+                "{}: a fit file needs --temp-c (its spectrum is at T_ref = {} °C)",
+                args.spectrum.display(),
+                fit.shift_law.t_ref_c()
+            );
+        };
+        let creep = fit.creep.as_ref().with_context(|| {
+            format!("{}: the fit has no creep spectrum", args.spectrum.display())
+        })?;
+        let range = measured_range_c(&fit);
+        let at = creep
+            .at_temperature(&fit.shift_law, t, range)
+            .with_context(|| format!("{}: --temp-c {t}", args.spectrum.display()))?;
+        if at.extrapolated {
+            let (lo, hi) = range.unwrap_or((f64::NAN, f64::NAN));
+            warnings.push(format!(
+                "--temp-c {t} °C lies outside the measured temperatures {lo} … {hi} °C: the shift law is extrapolated"
+            ));
+        }
+        let sp = at.spectrum.clone();
+        shifted = Some(at);
+        sp
+    } else {
+        if args.temp_c.is_some() {
+            bail!(
+                "{}: --temp-c needs a fit file (a bare creep spectrum has no shift law)",
+                args.spectrum.display()
+            );
+        }
+        serde_json::from_value(value)
+            .with_context(|| format!("{}: not a creep spectrum", args.spectrum.display()))?
+    };
     let scene = Scene {
         radius_m: args.radius_mm * 1e-3,
         load_n_per_m: args.load_n_per_m,
@@ -110,6 +161,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "scheme": d.scheme,
             "n": d.n,
             "iterations": d.iterations,
+            "temp_c": shifted.as_ref().map(|a| a.temp_c),
+            "log10_a_t": shifted.as_ref().map(|a| a.log10_a_t),
+            "extrapolated": shifted.as_ref().map(|a| a.extrapolated),
+            "warnings": warnings,
         });
         if let Some(a) = &auto_info {
             obj["error_estimate"] = serde_json::json!(d.error_estimate);
@@ -119,10 +174,24 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             obj["modes_lumped"] = serde_json::json!(a.modes_lumped);
             obj["modes_dropped"] = serde_json::json!(a.modes_dropped);
             obj["min_pressure_ratio"] = serde_json::json!(a.min_pressure_ratio);
-            obj["warnings"] = serde_json::json!(a.warnings);
+            // Temperature warnings first, then the solver's.
+            let all: Vec<&String> = warnings.iter().chain(a.warnings.iter()).collect();
+            obj["warnings"] = serde_json::json!(all);
         }
         println!("{obj}");
     } else {
+        if let Some(a) = &shifted {
+            eprintln!(
+                "at {} °C: log10 a_T = {:.4}{}",
+                a.temp_c,
+                a.log10_a_t,
+                if a.extrapolated {
+                    " (extrapolated)"
+                } else {
+                    ""
+                }
+            );
+        }
         eprintln!(
             "roll R = {} mm, N = {} N/m, V = {} m/s on {} ({} terms, nu = {})",
             args.radius_mm,
@@ -161,6 +230,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 eprintln!("warning: {w}");
             }
         }
+    }
+    for w in &warnings {
+        eprintln!("warning: {w}");
     }
     Ok(())
 }

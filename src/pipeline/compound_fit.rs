@@ -51,6 +51,9 @@ pub struct CompoundFit {
     /// The creep spectrum (exact conversion of `relaxation`); `None` until that conversion has run.
     #[serde(default)]
     pub creep: Option<CreepSpectrum>,
+    /// The shifts found per isotherm and both fitted laws (for the datasheet); `None` in older files.
+    #[serde(default)]
+    pub tts: Option<TtsSummary>,
     /// Quality figures of every stage (shift residuals, fit errors, consistency checks).
     #[serde(default)]
     pub quality: Vec<QualityFigure>,
@@ -58,6 +61,28 @@ pub struct CompoundFit {
     pub settings: FitSettings,
     /// Tool, version and input hashes.
     pub provenance: Provenance,
+}
+
+/// What the master-curve stage found besides the law used: shifts per isotherm and both laws.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct TtsSummary {
+    /// (temperature in °C, log10 a_T) of each isotherm.
+    pub shifts: Vec<(f64, f64)>,
+    /// The WLF fit of the shifts, if it succeeded.
+    #[serde(default)]
+    pub wlf: Option<ShiftLaw>,
+    /// The Arrhenius fit of the shifts, if it succeeded.
+    #[serde(default)]
+    pub arrhenius: Option<ShiftLaw>,
+    /// RMS of the shifts about the WLF and the Arrhenius law, log10 units.
+    #[serde(default)]
+    pub law_rms_log10: Vec<(String, f64)>,
+    /// Quality flags of the master curve (in words).
+    #[serde(default)]
+    pub flags: Vec<String>,
+    /// Warnings of the master-curve stage.
+    #[serde(default)]
+    pub warnings: Vec<String>,
 }
 
 /// A summary of the [`Measurement`] a fit was made from.
@@ -237,6 +262,7 @@ impl CompoundFit {
             relaxation: prony.spectrum,
             prony_info: prony.info,
             creep: None,
+            tts: None,
             settings: FitSettings {
                 prony: prony_settings,
                 stages: BTreeMap::new(),
@@ -411,7 +437,7 @@ mod tests {
                 sha256: "ab".repeat(32),
                 format: "synthetic".into(),
                 metadata: BTreeMap::new(),
-                encoding: "utf-8".into(),
+                encoding: String::new(),
                 columns: vec![],
             }],
             kind: ModulusKind::Tensile,
@@ -420,6 +446,9 @@ mod tests {
                 temp_nominal_c: 20.0,
                 temp_mean_c: 20.1,
                 source: 0,
+                nominal_source: String::new(),
+                sheet: None,
+                label: None,
                 points: [0.1, 10.0]
                     .iter()
                     .map(|&f| DataPoint {
@@ -431,9 +460,6 @@ mod tests {
                         flags: vec![],
                     })
                     .collect(),
-                nominal_source: "file".into(),
-                sheet: None,
-                label: None,
             }],
             warnings: vec![],
             issues: vec![],

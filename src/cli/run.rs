@@ -1,0 +1,84 @@
+//! `viscoroll run [DIR]`: the main job — every compound under DIR → fit file → friction in the
+//! scenes → report folder; `reports/ranking.csv` and `reports/index.html` (crate::pipeline::run).
+//!
+//! Progress: a bar on a terminal, plain log lines otherwise (stderr). `--json` prints one object
+//! (the [`crate::pipeline::RunSummary`]). Exit code 1 when any compound failed.
+
+use crate::pipeline::{run_all, FitOptions, RunOptions, SceneSet};
+use anyhow::bail;
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+/// Arguments of `viscoroll run`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Folder of compounds: `compounds.toml` if present, else one compound per sub-folder and per
+    /// export file.
+    #[arg(default_value = "data")]
+    pub dir: PathBuf,
+    /// Scenes TOML [default: DIR/scenes.toml if present, else the shipped scenes].
+    #[arg(long)]
+    pub scenes: Option<PathBuf>,
+    /// Output folder (gets fits/ and reports/).
+    #[arg(long, default_value = ".")]
+    pub out: PathBuf,
+    /// Replace fit files made from other inputs or settings.
+    #[arg(long)]
+    pub force: bool,
+    /// Print one JSON object on stdout.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Run `viscoroll run`.
+pub fn run(args: Args) -> anyhow::Result<()> {
+    if !args.dir.is_dir() {
+        bail!("{} is not a folder", args.dir.display());
+    }
+    let scenes = match &args.scenes {
+        Some(p) => SceneSet::read(p)?,
+        None if args.dir.join("scenes.toml").is_file() => {
+            SceneSet::read(&args.dir.join("scenes.toml"))?
+        }
+        None => SceneSet::shipped(),
+    };
+    let opts = RunOptions {
+        input_dir: args.dir.clone(),
+        out_dir: args.out.clone(),
+        scenes,
+        force: args.force,
+        fit: FitOptions::default(),
+    };
+    let start = std::time::Instant::now();
+    let summary = if std::io::stderr().is_terminal() {
+        let bar = indicatif::ProgressBar::new_spinner();
+        bar.set_message("compounds");
+        bar.enable_steady_tick(std::time::Duration::from_millis(120));
+        let b = bar.clone();
+        let s = run_all(&opts, &move |line: &str| b.println(line));
+        bar.finish_and_clear();
+        s?
+    } else {
+        run_all(&opts, &|line: &str| eprintln!("{line}"))?
+    };
+    let secs = start.elapsed().as_secs_f64();
+    let failed = summary.failures();
+    eprintln!(
+        "{} compounds ({} failed) in {secs:.2} s; see {} and {}",
+        summary.compounds.len(),
+        failed,
+        summary.index_html.display(),
+        summary.ranking_csv.display()
+    );
+    if args.json {
+        println!("{}", serde_json::to_string(&summary)?);
+    }
+    if failed > 0 {
+        bail!(
+            "{failed} of {} compounds failed (listed in {})",
+            summary.compounds.len(),
+            summary.index_html.display()
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,70 @@
+//! Errors of the `pipeline` stage ([`PipelineError`]): each names the compound, file or field.
+
+use std::path::PathBuf;
+use thiserror::Error;
+
+/// Why a step of the main job failed.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum PipelineError {
+    /// Reading the DMA exports failed.
+    #[error("ingest: {0}")]
+    Ingest(#[from] crate::dma::DmaError),
+    /// The master curve could not be built.
+    #[error("master curve: {0}")]
+    Master(#[from] crate::tts::TtsError),
+    /// The Prony fit failed.
+    #[error("Prony fit: {0}")]
+    Prony(#[from] crate::prony::PronyError),
+    /// Relaxation → creep conversion or a temperature shift failed.
+    #[error("creep spectrum: {0}")]
+    Creep(#[from] crate::creep::CreepError),
+    /// The contact solve failed.
+    #[error("contact: {0}")]
+    Contact(#[from] crate::contact::ContactError),
+    /// A fit file could not be read or written.
+    #[error("{0}")]
+    Fit(#[from] super::compound_fit::CompoundFitError),
+    /// A plot could not be drawn.
+    #[error("plot: {0}")]
+    Plot(#[from] crate::report::plots::PlotError),
+    /// An FEA card could not be written.
+    #[error("FEA card: {0}")]
+    Card(String),
+    /// A scenes or compounds file is not valid.
+    #[error("{path}: {message}")]
+    Config {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong (names the key).
+        message: String,
+    },
+    /// A file or folder could not be read or written.
+    #[error("{path}: {source}")]
+    Io {
+        /// The path.
+        path: PathBuf,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// The fit file holds a different fit (other inputs or settings) and `force` was not given.
+    #[error("{path}: holds a fit of other inputs or settings; pass --force to replace it")]
+    FitDiffers {
+        /// The fit file.
+        path: PathBuf,
+    },
+    /// A fit file has no creep spectrum.
+    #[error("{compound}: the fit has no creep spectrum")]
+    NoCreep {
+        /// The compound.
+        compound: String,
+    },
+}
+
+/// Wrap an I/O error with its path.
+pub(crate) fn io(path: &std::path::Path) -> impl FnOnce(std::io::Error) -> PipelineError + '_ {
+    move |source| PipelineError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
+}

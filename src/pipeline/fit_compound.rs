@@ -1,0 +1,202 @@
+//! One compound from its DMA exports to a [`CompoundFit`]: ingest → master curve → Prony fit → exact
+//! creep spectrum; and the checks that decide whether an existing fit file can be reused.
+//!
+//! Input: file paths + [`FitOptions`]; output: [`CompoundFit`] (with `creep` and `tts` filled in).
+//! Math: master curve MATH.md §6 (crate::tts), Prony QP MATH.md §5 (crate::prony), exact conversion
+//! MATH.md §4 (crate::creep::exact). Reuse rule: same SHA-256 of every input (as a multiset, paths
+//! ignored), same settings, same tool version.
+
+use super::compound_fit::{CompoundFit, QualityFigure, TtsSummary};
+use super::error::{io, PipelineError};
+use crate::dma::{read_files, sha256_hex, IngestOptions};
+use crate::prony::{fit_prony, MasterPoint as PronyPoint, PronySettings};
+use crate::tts::{build_master_curve, LawChoice, MasterSettings, ShiftCriterion};
+use std::path::{Path, PathBuf};
+
+/// Bound on the worst overlap RMS of the master curve (log10 units) above which it is flagged: 0.05
+/// is about 12 % scatter between neighbouring isotherms, five times a good DMA's repeatability.
+pub const MASTER_OVERLAP_RMS_BOUND: f64 = 0.05;
+
+/// Settings of the whole fit, stored in the fit file so a re-run can tell whether it may reuse it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FitOptions {
+    /// Master-curve settings.
+    pub master: MasterSettings,
+    /// Prony-fit settings.
+    pub prony: PronySettings,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        Self {
+            // The criterion `viscoroll master` uses by default (log E′: the best-conditioned channel).
+            // The law used for friction is the table of the shifts found (interpolated, extrapolated
+            // linearly from the end segments): on the shipped EMS-CA and DMA-suite sets the fitted WLF
+            // and Arrhenius laws miss the shifts by 0.77–1.7 decades RMS, which would move the
+            // friction curves by as much in temperature terms; WLF and Arrhenius stay in the fit file
+            // (`tts`) for the datasheet and the FEA cards.
+            master: MasterSettings {
+                criterion: ShiftCriterion::Storage,
+                law: LawChoice::Table,
+                ..MasterSettings::default()
+            },
+            prony: PronySettings::default(),
+        }
+    }
+}
+
+impl FitOptions {
+    /// The settings as stored under `settings.stages` of a fit file.
+    fn stages(&self) -> std::collections::BTreeMap<String, serde_json::Value> {
+        let mut m = std::collections::BTreeMap::new();
+        m.insert(
+            "tts".to_string(),
+            serde_json::to_value(&self.master).unwrap_or(serde_json::Value::Null),
+        );
+        m
+    }
+}
+
+/// SHA-256 of each file, sorted (the reuse key; paths do not matter).
+pub fn input_hashes(files: &[PathBuf]) -> Result<Vec<String>, PipelineError> {
+    let mut v = Vec::with_capacity(files.len());
+    for f in files {
+        let bytes = std::fs::read(f).map_err(io(f))?;
+        v.push(sha256_hex(&bytes));
+    }
+    v.sort();
+    Ok(v)
+}
+
+/// Whether `fit` was made from inputs with exactly these hashes, with `options`, by this build.
+pub fn fit_matches(fit: &CompoundFit, hashes: &[String], options: &FitOptions) -> bool {
+    let mut have: Vec<String> = fit
+        .provenance
+        .inputs
+        .iter()
+        .map(|i| i.sha256.clone())
+        .collect();
+    have.sort();
+    have == hashes
+        && fit.settings.prony == options.prony
+        && fit.settings.stages == options.stages()
+        && fit.provenance.tool_version == env!("CARGO_PKG_VERSION")
+        && fit.creep.is_some()
+}
+
+/// Read `files` as one measurement and fit it (see the module docs).
+pub fn fit_files(
+    compound: &str,
+    files: &[PathBuf],
+    options: &FitOptions,
+) -> Result<CompoundFit, PipelineError> {
+    let measurement = read_files(files, &IngestOptions::default())?;
+    fit_measurement(compound, &measurement, options)
+}
+
+/// Fit one measurement: master curve, Prony series, exact creep spectrum, quality figures.
+pub fn fit_measurement(
+    compound: &str,
+    measurement: &crate::Measurement,
+    options: &FitOptions,
+) -> Result<CompoundFit, PipelineError> {
+    let master = build_master_curve(measurement, &options.master)?;
+    let points: Vec<PronyPoint> = master
+        .points
+        .iter()
+        .map(|p| PronyPoint {
+            reduced_freq_hz: p.reduced_freq_hz,
+            storage_pa: p.storage_pa,
+            loss_pa: p.loss_pa,
+        })
+        .collect();
+    let prony = fit_prony(&points, master.kind, master.poisson, &options.prony)?;
+    let (creep, _info) = crate::creep::relaxation_to_creep(&prony.spectrum)?;
+    let mut fit = CompoundFit::new(
+        compound,
+        measurement,
+        master.shift_law.clone(),
+        points,
+        prony,
+        options.prony.clone(),
+    );
+    fit.creep = Some(creep);
+    fit.settings.stages = options.stages();
+    fit.quality.push(QualityFigure::bounded(
+        "master_overlap_rms_max_log10",
+        master.quality.overlap_rms_max_log10,
+        "log10",
+        MASTER_OVERLAP_RMS_BOUND,
+    ));
+    let mut law_rms = Vec::new();
+    if let Some(w) = &master.wlf {
+        law_rms.push(("wlf".to_string(), w.rms_log10));
+    }
+    if let Some(a) = &master.arrhenius {
+        law_rms.push(("arrhenius".to_string(), a.rms_log10));
+    }
+    fit.tts = Some(TtsSummary {
+        shifts: master
+            .isotherms
+            .iter()
+            .map(|i| (i.temp_c, i.log10_a_t))
+            .collect(),
+        wlf: master.wlf.as_ref().map(|w| w.law()),
+        arrhenius: master.arrhenius.as_ref().map(|a| a.law()),
+        law_rms_log10: law_rms,
+        flags: master.quality.flags.clone(),
+        warnings: master.warnings.clone(),
+    });
+    Ok(fit)
+}
+
+/// Outcome of [`fit_or_reuse`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FitAction {
+    /// The existing fit file matched and was reused.
+    Reused,
+    /// A new fit was made and written.
+    Fitted,
+    /// A different fit was replaced (`force`).
+    Replaced,
+}
+
+/// Reuse `fit_path` if it matches the measurement's inputs and `options`; otherwise fit and write it
+/// (refusing to replace a different fit without `force`).
+pub fn fit_or_reuse(
+    compound: &str,
+    measurement: &crate::Measurement,
+    fit_path: &Path,
+    options: &FitOptions,
+    force: bool,
+) -> Result<(CompoundFit, FitAction), PipelineError> {
+    let mut hashes: Vec<String> = measurement
+        .sources
+        .iter()
+        .map(|s| s.sha256.clone())
+        .collect();
+    hashes.sort();
+    let mut action = FitAction::Fitted;
+    if fit_path.exists() {
+        match CompoundFit::read(fit_path) {
+            Ok(old) if fit_matches(&old, &hashes, options) => return Ok((old, FitAction::Reused)),
+            _ if !force => {
+                return Err(PipelineError::FitDiffers {
+                    path: fit_path.to_path_buf(),
+                })
+            }
+            _ => action = FitAction::Replaced,
+        }
+    }
+    let fit = fit_measurement(compound, measurement, options)?;
+    fit.write(fit_path, force)?;
+    Ok((fit, action))
+}
+
+/// The measured temperature range (°C) of a fit, for flagging extrapolation.
+pub fn measured_range_c(fit: &CompoundFit) -> Option<(f64, f64)> {
+    let t = &fit.measurement.temps_nominal_c;
+    let lo = t.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = t.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
+}
