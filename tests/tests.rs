@@ -9,6 +9,7 @@ mod dma_errors;
 mod dma_quirks;
 mod dma_real;
 mod dma_xlsx;
+mod fit_cli;
 mod ingest_cli;
 mod master_cli;
 mod master_real;
