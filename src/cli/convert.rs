@@ -11,7 +11,7 @@ use crate::creep::exact::max_product_error;
 use crate::creep::{park_schapery, relaxation_to_creep, ParkSchaperySettings, ParkSchaperyVariant};
 use crate::RelaxationSpectrum;
 use anyhow::Context;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Conversion method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -111,7 +111,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         .count();
 
     if let Some(out) = &args.output {
-        write_atomic(out, &serde_json::to_string_pretty(&creep)?, args.force)?;
+        super::output::write_atomic(
+            out,
+            serde_json::to_string_pretty(&creep)?.as_bytes(),
+            args.force,
+        )?;
     }
     let method = match args.method {
         Method::Exact => "exact",
@@ -150,27 +154,5 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             }
         );
     }
-    Ok(())
-}
-
-/// Write `text` to `path` through a temporary file in the same directory and a rename.
-pub(crate) fn write_atomic(path: &Path, text: &str, force: bool) -> anyhow::Result<()> {
-    if path.exists() && !force {
-        anyhow::bail!("{} exists (use --force to overwrite)", path.display());
-    }
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .with_context(|| format!("{}: not a file name", path.display()))?;
-    let tmp = dir.join(format!(
-        ".{}.tmp{}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    std::fs::write(&tmp, text).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("cannot rename to {}", path.display()))?;
     Ok(())
 }

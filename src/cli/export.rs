@@ -5,7 +5,7 @@
 //! `--json` prints one object `{ "format", "input", "output", "card" }`. Without `--json` and without
 //! `-o` the card text goes to stdout.
 
-use super::convert::write_atomic;
+use super::output::write_atomic;
 use crate::report::cards::{self, BulkRelaxation, CardOptions};
 use crate::{RelaxationSpectrum, ShiftLaw};
 use anyhow::Context;
@@ -109,7 +109,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let card = card.with_context(|| format!("{}", args.file.display()))?;
     if let Some(out) = &args.output {
-        write_atomic(out, &card, args.force)?;
+        write_atomic(out, card.as_bytes(), args.force)?;
     }
     if args.json {
         let obj = serde_json::json!({

@@ -8,8 +8,7 @@
 
 use crate::dma::{self, Format, IngestOptions, Measurement};
 use crate::ModulusKind;
-use anyhow::Context;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Arguments of `viscoroll ingest`.
 #[derive(Debug, clap::Args)]
@@ -88,33 +87,6 @@ fn options(a: &Args) -> anyhow::Result<IngestOptions> {
         });
     }
     Ok(o)
-}
-
-/// Write `bytes` to `path` through a temporary file in the same directory and a rename.
-pub fn write_atomic(path: &Path, bytes: &[u8], force: bool) -> anyhow::Result<()> {
-    if path.exists() && !force {
-        anyhow::bail!(
-            "{} exists; not overwritten (use --force to replace it)",
-            path.display()
-        );
-    }
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .ok_or_else(|| anyhow::anyhow!("{}: not a file name", path.display()))?;
-    let tmp = dir.join(format!(
-        ".{}.tmp{}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    std::fs::write(&tmp, bytes).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        anyhow::anyhow!("cannot move {} to {}: {e}", tmp.display(), path.display())
-    })
 }
 
 fn range<I: Iterator<Item = f64>>(it: I) -> Option<(f64, f64)> {
@@ -231,7 +203,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     );
     if let Some(out) = &args.output {
         let json = serde_json::to_vec_pretty(&m)?;
-        write_atomic(out, &json, args.force)?;
+        super::output::write_atomic(out, &json, args.force)?;
         eprintln!("wrote {}", out.display());
     }
     if args.json {

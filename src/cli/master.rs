@@ -101,7 +101,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let master = build_master_curve(&measurement, &settings)?;
     let json = serde_json::to_string_pretty(&master)?;
     if let Some(out) = &args.output {
-        write_atomic(out, json.as_bytes())?;
+        // --force was checked before the work started.
+        super::output::write_atomic(out, json.as_bytes(), true)?;
         eprintln!("wrote {}", out.display());
     }
     summary(&master);
@@ -262,22 +263,6 @@ fn parse_table(text: &str) -> anyhow::Result<ShiftLaw> {
         .map(|p| p.0)
         .unwrap_or(0.0);
     Ok(ShiftLaw::Table { t_ref_c, points })
-}
-
-fn write_atomic(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path.file_name().context("output path has no file name")?;
-    let tmp = dir.join(format!(
-        ".{}.tmp{}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    std::fs::write(&tmp, bytes).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
 }
 
 fn summary(m: &MasterCurve) {

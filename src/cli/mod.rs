@@ -10,6 +10,7 @@ mod export;
 mod fit;
 mod ingest;
 mod master;
+mod output;
 mod rank;
 mod roll;
 mod run;
