@@ -336,34 +336,7 @@ pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, Cont
         if m.abs() <= tol || fb == 0.0 {
             break;
         }
-        if e.abs() >= tol && fa.abs() > fb.abs() {
-            let s = fb / fa;
-            let (mut pn, mut qn);
-            if a == c {
-                pn = 2.0 * m * s;
-                qn = 1.0 - s;
-            } else {
-                let qa = fa / fc;
-                let r = fb / fc;
-                pn = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
-                qn = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-            }
-            if pn > 0.0 {
-                qn = -qn;
-            } else {
-                pn = -pn;
-            }
-            if 2.0 * pn < (3.0 * m * qn - (tol * qn).abs()).min((e * qn).abs()) {
-                e = d;
-                d = pn / qn;
-            } else {
-                d = m;
-                e = m;
-            }
-        } else {
-            d = m;
-            e = m;
-        }
+        (d, e) = super::brent::brent_step((a, b, c), (fa, fb, fc), m, tol, (d, e), true);
         a = b;
         fa = fb;
         b += if d.abs() > tol { d } else { tol.copysign(m) };

@@ -170,35 +170,14 @@ where
         if solves.get() >= settings.max_solves {
             return Err(stop_err(solves.get()));
         }
-        if e.abs() >= tol && fa.abs() > fb.abs() && fa.is_finite() && fc.is_finite() {
-            // Interpolate: secant (a = c) or inverse quadratic.
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * m * s;
-                q = 1.0 - s;
-            } else {
-                let qa = fa / fc;
-                let r = fb / fc;
-                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
-                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            } else {
-                p = -p;
-            }
-            if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
-                e = d;
-                d = p / q;
-            } else {
-                d = m;
-                e = m;
-            }
-        } else {
-            d = m;
-            e = m;
-        }
+        (d, e) = super::brent::brent_step(
+            (a, b, c),
+            (fa, fb, fc),
+            m,
+            tol,
+            (d, e),
+            fa.is_finite() && fc.is_finite(),
+        );
         a = b;
         fa = fb;
         let step = if d.abs() > tol { d } else { tol.copysign(m) };

@@ -10,6 +10,7 @@
 use serde::{Deserialize, Serialize};
 
 mod bessel;
+mod brent;
 pub mod exact;
 #[cfg(test)]
 mod exact_tests;
