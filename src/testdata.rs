@@ -11,6 +11,8 @@
 //! given [`ShiftLaw`] (time–temperature superposition, MATH.md §6) for each isotherm, with seeded
 //! multiplicative Gaussian noise and a seeded offset of the actual temperature from the nominal one.
 
+pub mod realistic;
+
 use crate::dma::{DataPoint, Isotherm, Measurement, SourceFile};
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
 use crate::{ModulusKind, ShiftLaw};

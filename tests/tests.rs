@@ -11,6 +11,7 @@ mod dma_real;
 mod dma_xlsx;
 mod fit_cli;
 mod ingest_cli;
+mod known_truth;
 mod master_cli;
 mod master_real;
 mod pipeline_cli;
