@@ -1,15 +1,17 @@
 //! End to end against a known truth (issue 8, "what it must show"): DMA exports generated from known
-//! relaxation spectra and WLF laws (viscoroll::testdata::realistic: three rubbers, 27–34 Prony
-//! terms over 20 decades, E₀/E∞ 150–900, 1 % noise on E′ and 3 % on E″, measured temperatures
-//! within ±1.5 K of the step), written to CSV files and run through the whole pipeline as
+//! relaxation spectra and WLF laws (viscoroll::testdata::realistic: four rubbers, 27–34 Prony
+//! terms over 20 decades, E₀/E∞ 150–900, isotherms −60 … +100 °C every 5 K at 13 frequencies
+//! 0.1–100 Hz, 1 % noise on E′ and 3 % on E″, measured temperatures within ±1.5 K of the step),
+//! written to CSV files and run through the whole pipeline as
 //! `viscoroll run` runs it (ingest → master curve → Prony fit → exact creep spectrum → friction, via
 //! `pipeline::fit_files` and `pipeline::scenes::friction_vs_temperature`) at the shipped scenes
 //! (data/scenes.toml) at −40 … +60 °C every 10 K. The reference is computed independently of every
 //! fitted quantity: the true spectrum converted exactly to creep (crate::creep::exact, MATH.md §4),
 //! shifted by the true WLF law, through the same contact solver at the same tolerance.
 //!
-//! Acceptance (the issue's figures): per compound, median relative friction error ≤ 2 %, worst ≤ 5 %.
-//! The table and a stage-by-stage breakdown print with
+//! Acceptance (the issue's figures): per compound, median relative friction error ≤ 2 %, worst ≤ 5 %
+//! over both scenes × 11 temperatures, for three compounds; the fourth is a stress case with a
+//! looser worst-case bound (see [`bounds`]). The table and a stage-by-stage breakdown print with
 //! `cargo test --test tests known_truth -- --nocapture`.
 
 use std::path::PathBuf;
@@ -18,7 +20,9 @@ use viscoroll::contact::roll_auto::roll_auto;
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet};
 use viscoroll::pipeline::{fit_files, FitOptions};
-use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
+use viscoroll::testdata::realistic::{
+    dma_csv, dma_rows, realistic_compounds, DmaProtocol, RealisticCompound,
+};
 use viscoroll::testdata::{loss_modulus, storage_modulus};
 use viscoroll::CreepSpectrum;
 
@@ -67,7 +71,12 @@ fn median(v: &mut [f64]) -> f64 {
 
 /// Per compound: (name, median, worst relative friction error) over both shipped scenes at
 /// [`TEMPS_C`]; with `verbose` the stage-by-stage table is printed.
-fn evaluate(protocol: &DmaProtocol, verbose: bool) -> Vec<(String, f64, f64)> {
+fn evaluate(
+    compounds: &[RealisticCompound],
+    protocol: &DmaProtocol,
+    options: &FitOptions,
+    verbose: bool,
+) -> Vec<(String, f64, f64)> {
     let dir = std::env::temp_dir().join(format!(
         "viscoroll-truth-{}-{}",
         std::process::id(),
@@ -78,11 +87,11 @@ fn evaluate(protocol: &DmaProtocol, verbose: bool) -> Vec<(String, f64, f64)> {
     let scenes = SceneSet::shipped();
     let settings = contact_settings();
     let mut summary = Vec::new();
-    for compound in realistic_compounds() {
+    for compound in compounds {
         // Ingest reads the file as `viscoroll run DIR` would (one compound per file).
         let path: PathBuf = dir.join(format!("{}.csv", compound.name));
-        std::fs::write(&path, dma_csv(&dma_rows(&compound, protocol))).unwrap();
-        let fit = fit_files(&compound.name, &[path], &FitOptions::default()).unwrap();
+        std::fs::write(&path, dma_csv(&dma_rows(compound, protocol))).unwrap();
+        let fit = fit_files(&compound.name, &[path], options).unwrap();
         let t_ref_fit = fit.shift_law.t_ref_c();
         // The true law re-expressed at the fit's reference temperature (the fitted spectrum is the
         // material at t_ref_fit): log a(T) − log a(t_ref_fit).
@@ -228,20 +237,50 @@ fn print_summary(summary: &[(String, f64, f64)]) {
     }
 }
 
-/// The issue's acceptance figures: median ≤ 2 %, worst ≤ 5 % for every compound.
+/// Bounds (median, worst) on the relative friction error of a compound: the issue's acceptance
+/// figures, 2 % and 5 %, for the three compounds whose glass transition lies below the comparison
+/// range. The fourth, `high-tg-tread`, is the stress case: it is glassy at −40 °C in both scenes (its
+/// friction there is 40–80× below its peak) and its worst case, always at −40 °C, depends on the
+/// noise draw: 0.3–6.4 % over the default and 10 other seeds (`known_truth_other_seeds`), from the
+/// fitted E″ at the top of the reduced window (the coldest isotherms), not from the shifts (0.004
+/// decade there). Its median (≤ 0.35 % over those seeds) is held to 2 % and its worst to 10 %.
+fn bounds(compound: &str) -> (f64, f64) {
+    if compound == "high-tg-tread" {
+        (0.02, 0.10)
+    } else {
+        (0.02, 0.05)
+    }
+}
+
 fn failures(summary: &[(String, f64, f64)]) -> Vec<String> {
     summary
         .iter()
-        .filter(|(_, m, w)| !(*m <= 0.02 && *w <= 0.05))
+        .filter(|(n, m, w)| {
+            let (bm, bw) = bounds(n);
+            !(*m <= bm && *w <= bw)
+        })
         .map(|(n, m, w)| format!("{n}: median {:.2} %, worst {:.2} %", 100.0 * m, 100.0 * w))
         .collect()
 }
 
 #[test]
 fn friction_from_synthetic_exports_matches_the_true_spectrum() {
-    let summary = evaluate(&DmaProtocol::default(), true);
+    let summary = evaluate(
+        &realistic_compounds(),
+        &DmaProtocol::default(),
+        &FitOptions::default(),
+        true,
+    );
     print_summary(&summary);
-    assert_eq!(summary.len(), 3);
+    // At least three compounds held to the issue's figures.
+    assert_eq!(summary.len(), 4);
+    assert!(
+        summary
+            .iter()
+            .filter(|(n, _, _)| bounds(n) == (0.02, 0.05))
+            .count()
+            >= 3
+    );
     let bad = failures(&summary);
     assert!(bad.is_empty(), "{bad:?}");
 }
@@ -254,10 +293,12 @@ fn known_truth_other_seeds() {
     let mut bad = Vec::new();
     for seed in 1..=10 {
         let summary = evaluate(
+            &realistic_compounds(),
             &DmaProtocol {
                 seed,
                 ..DmaProtocol::default()
             },
+            &FitOptions::default(),
             false,
         );
         println!("\nseed {seed}");

@@ -35,9 +35,13 @@ impl Default for FitOptions {
             // and Arrhenius laws miss the shifts by 0.77–1.7 decades RMS, which would move the
             // friction curves by as much in temperature terms; WLF and Arrhenius stay in the fit file
             // (`tts`) for the datasheet and the FEA cards.
+            // Each point is moved to its isotherm's temperature first (crate::tts::point_temps):
+            // on the synthetic exports of tests/known_truth.rs (±1.5 K drift, 1 %/3 % noise) the
+            // mean |shift error| at −40 °C fell from 0.04–0.11 to 0.016–0.019 decade (4 seeds).
             master: MasterSettings {
                 criterion: ShiftCriterion::Storage,
                 law: LawChoice::Table,
+                correct_point_temperatures: true,
                 ..MasterSettings::default()
             },
             prony: PronySettings::default(),

@@ -101,8 +101,8 @@ pub struct RealisticCompound {
     pub law: ShiftLaw,
 }
 
-/// Three rubbers spanning the usual range: glass transitions (tan δ peak at 1 Hz) from about −52 °C
-/// to about −30 °C, E₀/E∞ from 150 to 900, 27–34 terms over 20 decades, WLF constants in the
+/// Four rubbers spanning the usual range: glass transitions (tan δ peak at 1 Hz) from about −52 °C
+/// to about +4 °C, E₀/E∞ from 150 to 900, 27–34 terms over 20 decades, WLF constants in the
 /// usual range (C1 8–17, C2 50–150 K; one has the "universal" 8.86 / 101.6 K). Each spectrum
 /// reaches beyond the reduced-frequency window that −60 … +100 °C at 0.1–100 Hz covers, as a real
 /// rubber's relaxation does: no isotherm lies entirely past the spectrum's fastest term, where E′
@@ -173,6 +173,31 @@ pub fn realistic_compounds() -> Vec<RealisticCompound> {
                 width_long_decades: 3.0,
                 slow_fraction: 0.03,
                 log10_tau_slow_s: -2.0,
+                width_slow_decades: 2.5,
+            }
+            .spectrum(),
+            law: ShiftLaw::Wlf {
+                t_ref_c: 20.0,
+                c1: 9.0,
+                c2_k: 150.0,
+            },
+        },
+        RealisticCompound {
+            name: "high-tg-tread".into(),
+            description: "high-T_g tread (wet grip): tan δ peak at 1 Hz ≈ +4 °C, E₀/E∞ = 600; \
+                          glassy at −40 °C in both scenes"
+                .into(),
+            spectrum: RubberShape {
+                n_terms: 30,
+                log10_tau_min_s: -13.0,
+                decades: 20.0,
+                modulus_inf_pa: 8.0e6,
+                glassy_over_rubbery: 600.0,
+                log10_tau_peak_s: -6.5,
+                width_short_decades: 2.5,
+                width_long_decades: 2.5,
+                slow_fraction: 0.02,
+                log10_tau_slow_s: 0.0,
                 width_slow_decades: 2.5,
             }
             .spectrum(),

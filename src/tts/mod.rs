@@ -8,6 +8,7 @@ mod error;
 pub mod fit_laws;
 mod interp;
 mod master;
+pub mod point_temps;
 pub mod quality;
 mod shift;
 pub mod vertical;
