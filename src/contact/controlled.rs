@@ -22,7 +22,7 @@
 //! The reported `error_estimate` is the largest of the relative errors of ρF/N and of λ (at given
 //! load) or N′ (at given λ).
 
-use super::auto::{solve_at_lambda, LambdaSolution, QuadratureSettings};
+use super::auto::{solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings};
 use super::conditions::gap_outside;
 use super::reduce::{
     effective_compliance, lump_weight, lumped_residual, model_gains, select, slow_estimate_at,
@@ -30,6 +30,7 @@ use super::reduce::{
 };
 use super::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
 
 /// Settings of the `auto` scheme.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -151,20 +152,49 @@ fn validate(terms: &[CreepTerm], tol: f64) -> Result<(), AutoError> {
     Ok(())
 }
 
+/// Trapezoid step for a tolerance: measured errors (1–30 terms) ≤ 5e−8 at h = 0.6, ≤ 2e−11 at
+/// 0.4, ~1e−15 at 0.3 (≈ e^{−π²/h}).
 fn quad_for(tol: f64) -> QuadratureSettings {
     QuadratureSettings {
-        step: if tol >= 1e-7 { 0.4 } else { 0.3 },
+        step: if tol >= 1e-4 {
+            0.6
+        } else if tol >= 1e-7 {
+            0.4
+        } else {
+            0.3
+        },
     }
 }
 
-/// Solve the reduced problem at λ and map back to the full problem's units.
-fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaSolution {
-    let mut s = solve_at_lambda(&red.modes, lambda, q);
+/// Map a solution of the reduced problem back to the full problem's units.
+fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution {
     s.load /= red.scale;
     for c in s.coefficients.iter_mut() {
         *c /= red.scale;
     }
     s
+}
+
+/// Solve the reduced problem at λ and map back to the full problem's units.
+fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaSolution {
+    unscale(red, solve_at_lambda(&red.modes, lambda, q))
+}
+
+/// As [`solve_reduced`], with the quadrature error estimate: (solution, relative error of ρF/N,
+/// relative error of N′). The trapezoid error falls like e^{−π²/h} (module doc of
+/// [`super::auto`]; measured constant ≤ 1 for h = 0.4…0.8 on 1–30-term problems), so the error at
+/// step h is about e^{−π²/(2h)} times the difference to the same sum on every second node (step
+/// 2h, no extra exterior values); we take 10 times that.
+fn solve_reduced_checked(
+    red: &Reduction,
+    lambda: f64,
+    q: QuadratureSettings,
+) -> (LambdaSolution, f64, f64) {
+    let (fine, coarse) = solve_at_lambda_checked(&red.modes, lambda, q);
+    let k = 10.0 * (-PI * PI / (2.0 * q.step)).exp();
+    let e_fr = k * rel(coarse.friction_rho, fine.friction_rho);
+    let e_ld = k * rel(coarse.load, fine.load);
+    (unscale(red, fine), e_fr, e_ld)
 }
 
 fn merge_mu(tol: f64) -> f64 {
@@ -288,7 +318,7 @@ pub fn solve_auto_at_lambda(
     let mut fr_guess = 1e-2;
     let mut corr = Correction::model(terms, lambda);
     let mut pass = 0;
-    let (red, sol, e_fr, e_ld) = loop {
+    let (red, sol, e_fr, e_ld, num_fr, num_ld) = loop {
         pass += 1;
         let (bf, bl) = budgets(tol, fr_guess);
         let red = select(
@@ -299,7 +329,7 @@ pub fn solve_auto_at_lambda(
             merge_mu(tol),
             (corr.gains.0, corr.gains.1),
         );
-        let sol = solve_reduced(&red, lambda, q);
+        let (sol, num_fr, num_ld) = solve_reduced_checked(&red, lambda, q);
         corr = calibrate(terms, &red, &sol, q);
         let (l_fr, l_ld) = lumping_error(terms, &red, &corr, lambda);
         let (s_fr, s_ld) = slow_estimate_at(terms, &red, lambda);
@@ -307,13 +337,10 @@ pub fn solve_auto_at_lambda(
         let fr = sol.friction_rho / lambda
             + corr.gains.0 * lumped_weight_times_lambda(terms, &red) / lambda;
         if (e_fr <= 0.3 * tol * fr.abs() && e_ld <= 0.3 * tol) || pass >= 4 {
-            break (red, sol, e_fr, e_ld);
+            break (red, sol, e_fr, e_ld, num_fr, num_ld);
         }
         fr_guess = fr.abs();
     };
-    let coarse = solve_reduced(&red, lambda, QuadratureSettings { step: 1.5 * q.step });
-    let num_fr = rel(coarse.friction_rho, sol.friction_rho);
-    let num_ld = rel(coarse.load, sol.load);
     let mut sol = sol;
     corr.apply(terms, &red, &mut sol);
     let fr = sol.friction_rho;
@@ -412,7 +439,7 @@ pub fn solve_auto_at_load(
             .abs();
         corr = measured;
         if moved > 0.05 * tol * lp.slope.abs().max(0.2) {
-            let start = Start::Solved(lp.sol.clone(), lp.slope, lp.dfr);
+            let start = Start::Solved((lp.sol.clone(), lp.num_fr, lp.num_ld), lp.slope, lp.dfr);
             lp = load_loop(
                 &red,
                 load.ln(),
@@ -446,18 +473,19 @@ pub fn solve_auto_at_load(
             next.kept == red.kept && next.lumped == red.lumped && next.dropped == red.dropped
         };
         if ok || same || round >= 4 {
-            let coarse = solve_reduced(&red, lambda, QuadratureSettings { step: 1.5 * q.step });
-            // at fixed λ the coarse/fine N′ difference maps to λ through the slope
+            // at fixed λ the quadrature error of N′ maps to λ through the slope
             let amp = 1.0 + 2.0 * corr.amplification;
-            let num_ld = amp * rel(coarse.load, lp.sol.load);
-            let num_fr = amp * rel(coarse.friction_rho, lp.sol.friction_rho);
+            let num_ld = amp * lp.num_ld;
+            let num_fr = amp * lp.num_fr;
             let slope = lp.slope.abs().max(0.2);
             let size_error = lp.last_step + (num_ld + e_ld) / slope;
             let mut sol = lp.sol;
             corr.apply(terms, &red, &mut sol);
             let fr = sol.friction_rho;
-            let friction_error =
-                num_fr + e_fr * lambda / fr.abs().max(1e-300) + lp.dfr.abs().max(1.0) * size_error;
+            let friction_error = num_fr
+                + e_fr * lambda / fr.abs().max(1e-300)
+                + lp.dfr.abs().max(1.0) * size_error
+                + roundoff_floor(&sol);
             return Ok(package(
                 terms,
                 &red,
@@ -477,12 +505,15 @@ pub fn solve_auto_at_load(
 /// d ln N′/d ln λ and d ln(ρF/N)/d ln λ known there).
 enum Start {
     Guess(f64),
-    Solved(LambdaSolution, f64, f64),
+    Solved((LambdaSolution, f64, f64), f64, f64),
 }
 
 /// The load loop's answer: the (uncorrected, reduced) solution at the λ found.
 struct LoopResult {
     sol: LambdaSolution,
+    /// Quadrature error estimates of `sol` (relative, ρF/N and N′).
+    num_fr: f64,
+    num_ld: f64,
     /// Solves done.
     iterations: usize,
     /// Last |Δ ln λ|.
@@ -507,18 +538,19 @@ fn load_loop(
     max_iter: usize,
 ) -> Result<LoopResult, AutoError> {
     let gval = |s: &LambdaSolution| s.load.ln() + (1.0 + k / s.lambda).ln() - target;
-    let eval = |u: f64| -> (f64, LambdaSolution) {
-        let s = solve_reduced(red, u.exp(), q);
-        (gval(&s), s)
+    let eval = |u: f64| -> (f64, (LambdaSolution, f64, f64)) {
+        let s = solve_reduced_checked(red, u.exp(), q);
+        (gval(&s.0), s)
     };
-    let (mut u, mut g, mut sol, mut slope, mut dfr, mut iters) = match start {
-        Start::Guess(lam0) => {
-            let u = lam0.ln().clamp(a, b);
-            let (g, sol) = eval(u);
-            (u, g, sol, 2.0, 1.0, 1)
-        }
-        Start::Solved(sol, slope, dfr) => (sol.lambda.ln(), gval(&sol), sol, slope, dfr, 0),
-    };
+    let (mut u, mut g, (mut sol, mut num_fr, mut num_ld), mut slope, mut dfr, mut iters) =
+        match start {
+            Start::Guess(lam0) => {
+                let u = lam0.ln().clamp(a, b);
+                let (g, s) = eval(u);
+                (u, g, s, 2.0, 1.0, 1)
+            }
+            Start::Solved(s, slope, dfr) => (s.0.lambda.ln(), gval(&s.0), s, slope, dfr, 0),
+        };
     let mut prev: Option<(f64, f64, f64)> = None; // (u, g, ln fr)
     let last_step;
     loop {
@@ -567,11 +599,13 @@ fn load_loop(
         u = un;
         let (gn, sn) = eval(u);
         g = gn;
-        sol = sn;
+        (sol, num_fr, num_ld) = sn;
         iters += 1;
     }
     Ok(LoopResult {
         sol,
+        num_fr,
+        num_ld,
         iterations: iters,
         last_step,
         slope,
