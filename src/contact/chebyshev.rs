@@ -75,7 +75,8 @@ pub fn theta_w(sigma: f64) -> (f64, f64) {
 /// the continuation of the finite Hilbert transform beyond the front edge t = 1.
 ///
 /// Small θ·n_max uses the Taylor series in θ with the moments Σ nᵏaₙ (all terms of one sign for the
-/// exponential components, so no cancellation); larger θ a Horner sum cut where e^{−nθ} < e^{−41}.
+/// exponential components, so no cancellation); larger θ a Horner sum cut where e^{−nθ} < e^{−41},
+/// run for four points at once (independent chains: the sums are latency-bound one at a time).
 pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
     let n_max = a.len().saturating_sub(1);
     if n_max == 0 {
@@ -84,19 +85,10 @@ pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
     }
     const K: usize = 18; // (0.5)^k/k! < 1e−17 at k = 18
     let mut moments: Option<[f64; K]> = None;
-    for ((&theta, &w), o) in thetas.iter().zip(ws).zip(out.iter_mut()) {
+    let mut horner: Vec<(usize, usize)> = Vec::new(); // (point, n_cut)
+    for (k, (&theta, o)) in thetas.iter().zip(out.iter_mut()).enumerate() {
         if theta * n_max as f64 <= 0.5 {
-            let m = moments.get_or_insert_with(|| {
-                let mut m = [0.0; K];
-                for (n, &an) in a.iter().enumerate().skip(1) {
-                    let mut p = an;
-                    for mk in m.iter_mut() {
-                        *mk += p;
-                        p *= n as f64;
-                    }
-                }
-                m
-            });
+            let m = moments.get_or_insert_with(|| taylor_moments::<K>(a));
             // Σ_k (−θ)^k/k! m_k
             let mut s = 0.0;
             let mut fac = 1.0;
@@ -108,14 +100,51 @@ pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
             }
             *o = s;
         } else {
-            let n_cut = ((41.0 / theta).ceil() as usize + 1).min(n_max);
-            let mut s = 0.0;
-            for n in (1..=n_cut).rev() {
-                s = (s + a[n]) * w;
-            }
-            *o = s;
+            horner.push((k, ((41.0 / theta).ceil() as usize + 1).min(n_max)));
         }
     }
+    for chunk in horner.chunks(4) {
+        let mut idx = [chunk[0].0; 4];
+        let mut n_cut = 0;
+        for (slot, &(k, nc)) in idx.iter_mut().zip(chunk) {
+            *slot = k;
+            n_cut = n_cut.max(nc);
+        }
+        let w = [ws[idx[0]], ws[idx[1]], ws[idx[2]], ws[idx[3]]];
+        let mut s = [0.0_f64; 4];
+        for n in (1..=n_cut).rev() {
+            let an = a[n];
+            for q in 0..4 {
+                s[q] = (s[q] + an) * w[q];
+            }
+        }
+        for (q, &(k, _)) in chunk.iter().enumerate() {
+            out[k] = s[q];
+        }
+    }
+}
+
+/// The moments m_k = Σ_{n≥1} nᵏaₙ, k < K.
+fn taylor_moments<const K: usize>(a: &[f64]) -> [f64; K] {
+    let mut m = [0.0; K];
+    let mut p: Vec<f64> = a.to_vec();
+    p[0] = 0.0;
+    let nf: Vec<f64> = (0..a.len()).map(|n| n as f64).collect();
+    for mk in m.iter_mut() {
+        // four partial sums so the additions need not wait on each other
+        let mut acc = [0.0; 4];
+        for (c, chunk) in p.chunks(4).enumerate() {
+            for (q, v) in chunk.iter().enumerate() {
+                acc[q] += v;
+            }
+            let _ = c;
+        }
+        *mk = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+        for (v, n) in p.iter_mut().zip(&nf) {
+            *v *= n;
+        }
+    }
+    m
 }
 
 /// Q′(t)/scale = √(1−t²)Σ_{k≥0} a_{k+1}U_k(t) = Σ_{n≥1} aₙ sin(nθ) at t = cos θ (a[0] ignored);
