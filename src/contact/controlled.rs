@@ -438,7 +438,11 @@ pub fn solve_auto_at_load(
             .ln()
             .abs();
         corr = measured;
-        if moved > 0.05 * tol * lp.slope.abs().max(0.2) {
+        // a target moved by less than the loop's own stopping step is not chased: its λ shift
+        // counts in the error instead (like the loop's last step)
+        let mut unchased = moved / lp.slope.abs().max(0.2);
+        if unchased >= 0.05 * tol {
+            unchased = 0.0;
             let start = Start::Solved((lp.sol.clone(), lp.num_fr, lp.num_ld), lp.slope, lp.dfr);
             lp = load_loop(
                 &red,
@@ -478,7 +482,7 @@ pub fn solve_auto_at_load(
             let num_ld = amp * lp.num_ld;
             let num_fr = amp * lp.num_fr;
             let slope = lp.slope.abs().max(0.2);
-            let size_error = lp.last_step + (num_ld + e_ld) / slope;
+            let size_error = lp.last_step + unchased + (num_ld + e_ld) / slope;
             let mut sol = lp.sol;
             corr.apply(terms, &red, &mut sol);
             let fr = sol.friction_rho;
