@@ -76,7 +76,8 @@ pub fn theta_w(sigma: f64) -> (f64, f64) {
 ///
 /// Small θ·n_max uses the Taylor series in θ with the moments Σ nᵏaₙ (all terms of one sign for the
 /// exponential components, so no cancellation); larger θ a Horner sum cut where e^{−nθ} < e^{−41},
-/// run for four points at once (independent chains: the sums are latency-bound one at a time).
+/// run for eight points at once and two coefficients per step, s ← s·w² + (aₙw² + aₙ₋₁w)
+/// (independent chains: one sum at a time is bound by the latency of its multiply-add chain).
 pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
     let n_max = a.len().saturating_sub(1);
     if n_max == 0 {
@@ -103,20 +104,33 @@ pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
             horner.push((k, ((41.0 / theta).ceil() as usize + 1).min(n_max)));
         }
     }
-    for chunk in horner.chunks(4) {
-        let mut idx = [chunk[0].0; 4];
+    const P: usize = 8;
+    for chunk in horner.chunks(P) {
+        let mut w = [0.0_f64; P];
         let mut n_cut = 0;
-        for (slot, &(k, nc)) in idx.iter_mut().zip(chunk) {
-            *slot = k;
+        for (wq, &(k, nc)) in w.iter_mut().zip(chunk) {
+            *wq = ws[k];
             n_cut = n_cut.max(nc);
         }
-        let w = [ws[idx[0]], ws[idx[1]], ws[idx[2]], ws[idx[3]]];
-        let mut s = [0.0_f64; 4];
-        for n in (1..=n_cut).rev() {
-            let an = a[n];
-            for q in 0..4 {
-                s[q] = (s[q] + an) * w[q];
+        let mut w2 = [0.0_f64; P];
+        for q in 0..P {
+            w2[q] = w[q] * w[q];
+        }
+        let mut s = [0.0_f64; P];
+        let mut n = n_cut;
+        if n % 2 == 1 {
+            for q in 0..P {
+                s[q] = a[n] * w[q];
             }
+            n -= 1;
+        }
+        // s = Σ_{m>n} aₘw^{m−n}; two steps: s ← s·w² + aₙw² + aₙ₋₁w
+        while n >= 2 {
+            let (an, an1) = (a[n], a[n - 1]);
+            for q in 0..P {
+                s[q] = s[q] * w2[q] + (an * w2[q] + an1 * w[q]);
+            }
+            n -= 2;
         }
         for (q, &(k, _)) in chunk.iter().enumerate() {
             out[k] = s[q];
@@ -133,13 +147,15 @@ fn taylor_moments<const K: usize>(a: &[f64]) -> [f64; K] {
     for mk in m.iter_mut() {
         // four partial sums so the additions need not wait on each other
         let mut acc = [0.0; 4];
-        for (c, chunk) in p.chunks(4).enumerate() {
-            for (q, v) in chunk.iter().enumerate() {
-                acc[q] += v;
-            }
-            let _ = c;
+        let chunks = p.chunks_exact(4);
+        let rest: f64 = chunks.remainder().iter().sum();
+        for c in chunks {
+            acc[0] += c[0];
+            acc[1] += c[1];
+            acc[2] += c[2];
+            acc[3] += c[3];
         }
-        *mk = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+        *mk = (acc[0] + acc[1]) + (acc[2] + acc[3]) + rest;
         for (v, n) in p.iter_mut().zip(&nf) {
             *v *= n;
         }
@@ -201,19 +217,22 @@ fn fft_positive(re: &mut [f64], im: &mut [f64]) {
             im.swap(i, j);
         }
     }
+    // twiddles e^{2πik/P}, k < P/2, computed directly (no recurrence drift) once; stage `len`
+    // uses every (P/len)-th
+    let ang = 2.0 * std::f64::consts::PI / p as f64;
+    let tw: Vec<(f64, f64)> = (0..p / 2)
+        .map(|k| {
+            let (s, c) = (ang * k as f64).sin_cos();
+            (c, s)
+        })
+        .collect();
     let mut len = 2;
     while len <= p {
-        let ang = 2.0 * std::f64::consts::PI / len as f64;
         let half = len / 2;
-        // twiddles computed directly (no recurrence drift)
-        let tw: Vec<(f64, f64)> = (0..half)
-            .map(|k| {
-                let (s, c) = (ang * k as f64).sin_cos();
-                (c, s)
-            })
-            .collect();
+        let stride = p / len;
         for start in (0..p).step_by(len) {
-            for (k, &(wr, wi)) in tw.iter().enumerate() {
+            for k in 0..half {
+                let (wr, wi) = tw[k * stride];
                 let (a, b) = (start + k, start + k + half);
                 let xr = re[b] * wr - im[b] * wi;
                 let xi = re[b] * wi + im[b] * wr;

@@ -426,7 +426,7 @@ pub fn solve_auto_at_load(
             load.ln(),
             corr.gains.1 * w_lambda,
             bracket,
-            Start::Guess(lam0),
+            Start::Guess(lam0, model_slope(terms, lam0)),
             tol,
             q,
             settings.max_iterations,
@@ -482,7 +482,9 @@ pub fn solve_auto_at_load(
             let num_ld = amp * lp.num_ld;
             let num_fr = amp * lp.num_fr;
             let slope = lp.slope.abs().max(0.2);
-            let size_error = lp.last_step + unchased + (num_ld + e_ld) / slope;
+            // the steps not taken are first-order distances to the root (slope known to better
+            // than a factor 2 from the secant): counted twice
+            let size_error = 2.0 * (lp.last_step + unchased) + (num_ld + e_ld) / slope;
             let mut sol = lp.sol;
             corr.apply(terms, &red, &mut sol);
             let fr = sol.friction_rho;
@@ -505,10 +507,26 @@ pub fn solve_auto_at_load(
     }
 }
 
+/// The model slope d ln N′/d ln λ of N′ ≈ λ²/(4S_eff(λ)) (MATH.md §3 with the effective
+/// compliance of [`super::reduce`]): 2 − d ln S_eff/d ln λ, d S_eff/d ln λ = Σ rᵢcᵢ/(1+cᵢ)².
+fn model_slope(terms: &[CreepTerm], lambda: f64) -> f64 {
+    let l = 0.5 * lambda;
+    let d: f64 = terms
+        .iter()
+        .filter(|t| t.f > 0.0)
+        .map(|t| {
+            let c = t.b * l;
+            (t.f / t.b) * c / ((1.0 + c) * (1.0 + c))
+        })
+        .sum();
+    (2.0 - d / effective_compliance(terms, lambda)).clamp(0.5, 2.0)
+}
+
 /// Where the load loop starts: a guess of λ, or a solution already computed (with the slope
 /// d ln N′/d ln λ and d ln(ρF/N)/d ln λ known there).
 enum Start {
-    Guess(f64),
+    /// λ₀ and the slope d ln N′/d ln λ to start the secant with.
+    Guess(f64, f64),
     Solved((LambdaSolution, f64, f64), f64, f64),
 }
 
@@ -548,10 +566,10 @@ fn load_loop(
     };
     let (mut u, mut g, (mut sol, mut num_fr, mut num_ld), mut slope, mut dfr, mut iters) =
         match start {
-            Start::Guess(lam0) => {
+            Start::Guess(lam0, slope0) => {
                 let u = lam0.ln().clamp(a, b);
                 let (g, s) = eval(u);
-                (u, g, s, 2.0, 1.0, 1)
+                (u, g, s, slope0, 1.0, 1)
             }
             Start::Solved(s, slope, dfr) => (s.0.lambda.ln(), gval(&s.0), s, slope, dfr, 0),
         };
