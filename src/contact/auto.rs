@@ -27,7 +27,9 @@
 //! exact one-term solution the results agree to ~1e−13 already at the default step (see tests and the
 //! README of the bench), against first order in h for the thesis scheme.
 //! Costs: O(N·Q·√μ_max + N²·Q) with Q ≈ 200 quadrature nodes, so fast modes (large μ) are lumped
-//! into the glassy compliance by [`super::reduce`] before they get here.
+//! into the glassy compliance by [`super::reduce`] before they get here. The exterior values (the
+//! O(N·Q·√μ) part, half the time of a 30-term solve) are shared by the step-h solve and the step-2h
+//! check of [`solve_at_lambda_checked`], whose difference gives the quadrature error estimate.
 
 use super::chebyshev::{exp_coefficients, exterior_values, sine_series, theta_w};
 use super::modes::Modes;

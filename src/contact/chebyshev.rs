@@ -71,7 +71,7 @@ pub fn theta_w(sigma: f64) -> (f64, f64) {
     ((sigma + r).ln_1p(), 1.0 / (1.0 + sigma + r))
 }
 
-/// The exterior function Σ_{n≥1} aₙwⁿ (a[0] ignored) at the points of `thetas` (θ ≥ 0, w = e^{−θ}),
+/// The exterior function Σ_{n≥1} aₙwⁿ (`a[0]` ignored) at the points of `thetas` (θ ≥ 0, w = e^{−θ}),
 /// the continuation of the finite Hilbert transform beyond the front edge t = 1.
 ///
 /// Small θ·n_max uses the Taylor series in θ with the moments Σ nᵏaₙ (all terms of one sign for the
@@ -163,7 +163,7 @@ fn taylor_moments<const K: usize>(a: &[f64]) -> [f64; K] {
     m
 }
 
-/// Q′(t)/scale = √(1−t²)Σ_{k≥0} a_{k+1}U_k(t) = Σ_{n≥1} aₙ sin(nθ) at t = cos θ (a[0] ignored);
+/// Q′(t)/scale = √(1−t²)Σ_{k≥0} a_{k+1}U_k(t) = Σ_{n≥1} aₙ sin(nθ) at t = cos θ (`a[0]` ignored);
 /// the sine form keeps the error ~ n·ε right up to the edges, where a Clenshaw sum loses ~ n²·ε.
 pub fn sine_series(a: &[f64], theta: f64) -> f64 {
     let (s1, c1) = theta.sin_cos();
