@@ -32,7 +32,7 @@
 //!   c from 1e−8 to 1e−2): ρF/N/λ ≈ 0.26·r·c·ln(1/c) and 1 − N′ ≤ r·c·μ·(2 + ln(1/μ)); used with a
 //!   safety factor 2, per mode in isolation. Within a spectrum the friction law is an upper bound
 //!   (~700× on the benchmark's 30-term spectrum: other modes add compliance), but the N′ effect is
-//!   first order in c there, so [`drop_estimate`] adds rᵢcᵢ/S_eff (see its doc).
+//!   first order in c there, so `drop_estimate` adds rᵢcᵢ/S_eff (see its doc).
 //!
 //! Fast modes are lumped from the fastest down while the second-order estimate stays inside 0.7 of
 //! the budgets (only c ≥ 30, where the first-order law holds); slow modes (μ ≤ 0.05) are dropped
