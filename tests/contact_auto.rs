@@ -166,10 +166,9 @@ fn random_spectra_and_scenes_estimate_confirmed_by_tighter_solve() {
         );
         // the estimate (plus the tighter solve's own ≤ 1e−9) bounds the observed differences
         assert!(e_fr <= est + 1e-9 && e_l <= est + 1e-9, "case {case}");
-        // The estimate may exceed tol where the friction is small and very fast modes (c > 1e7)
-        // are lumped whatever the budget: the isolated-mode bound is then very conservative
-        // (observed up to ~4e4× the true error). It stays within 100·tol in these scenes.
-        assert!(est <= 1e-4, "case {case}: estimate {est} far above tol");
+        // and the solver honours the tolerance (lumped modes are corrected to first order, so
+        // even modes far too fast to solve for cost only their second-order error)
+        assert!(est <= 1e-6, "case {case}: estimate {est} above tol");
     }
 }
 
@@ -317,4 +316,112 @@ fn whole_range_of_scenes_converges_without_nan() {
             }
         }
     }
+}
+
+/// The benchmark's spectra (benches/contact_auto.rs): n log-spaced rates over `decades`, equal
+/// strengths with J∞/J_g = 1e3.
+fn bench_spectrum(n: usize, decades: f64) -> Vec<CreepTerm> {
+    (0..n)
+        .map(|k| {
+            let b = 10f64.powf(-decades / 2.0 + decades * k as f64 / (n - 1) as f64);
+            CreepTerm {
+                f: 999.0 / n as f64 * b,
+                b,
+            }
+        })
+        .collect()
+}
+
+/// Relative errors (ρF/N, λ or N′) of `s` against the reference `r`.
+fn errors(s: &AutoSolution, r: &AutoSolution, at_load: bool) -> (f64, f64) {
+    let (a, b) = (&s.solution, &r.solution);
+    let size = if at_load {
+        rel(a.lambda, b.lambda)
+    } else {
+        rel(a.load, b.load)
+    };
+    (rel(a.friction_rho, b.friction_rho), size)
+}
+
+/// Issue 4: at tol 1e−3, 1e−6, 1e−9 the benchmark's 10- and 30-term spectra get an estimate ≤ tol
+/// that bounds the true error (from a tol 1e−10 solve, whose own estimate is allowed on top).
+#[test]
+fn bench_spectra_honour_tol_and_the_estimate_bounds_the_error() {
+    for (n, decades) in [(10, 12.0), (30, 24.0)] {
+        let terms = bench_spectrum(n, decades);
+        let reference = solve_auto_at_load(&terms, 1.0, &settings(1e-10)).unwrap();
+        let r_est = reference.solution.error_estimate.unwrap();
+        for tol in [1e-3, 1e-6, 1e-9] {
+            let s = solve_auto_at_load(&terms, 1.0, &settings(tol)).unwrap();
+            let est = s.solution.error_estimate.unwrap();
+            let (e_fr, e_l) = errors(&s, &reference, true);
+            eprintln!(
+                "{n} terms tol {tol:e}: est {est:.2e} err {e_fr:.2e} {e_l:.2e} (ref est {r_est:.1e}) est/err {:.0}",
+                est / e_fr.max(e_l)
+            );
+            assert!(est <= tol, "{n} terms tol {tol}: estimate {est}");
+            // the reference's own estimated error is added to the allowance
+            assert!(e_fr.max(e_l) <= est + r_est, "{n} terms tol {tol}");
+        }
+    }
+}
+
+/// The estimate is a bound of the true error and not a loose one: on seeded random spectra at
+/// random λ or N′, error ≤ estimate ≤ tol, and where the true error is resolved (above 10× the
+/// reference's own estimate and above 1e−12, the round-off level of ρF/N differences) the
+/// estimate is within 1000× of it (observed 2…160×).
+#[test]
+fn estimate_bounds_the_true_error_on_random_spectra() {
+    // Random spectra (3–40 terms over 16 decades of rates, J∞/J_g = 10…1e4, uneven strengths)
+    // at random λ and random loads; true error from a tol 1e−10 solve.
+    let mut rng = Rng(4_2026);
+    let mut worst_ratio = f64::INFINITY;
+    for case in 0..8 {
+        let n = 3 + (rng.next() * 38.0) as usize;
+        let ratio = 10f64.powf(1.0 + 3.0 * rng.next());
+        let mut w: Vec<f64> = (0..n).map(|_| 0.02 + rng.next().powi(3)).collect();
+        let sw: f64 = w.iter().sum();
+        w.iter_mut().for_each(|x| *x *= (ratio - 1.0) / sw);
+        let terms: Vec<CreepTerm> = w
+            .iter()
+            .map(|&r| {
+                let b = 10f64.powf(-8.0 + 16.0 * rng.next());
+                CreepTerm { f: r * b, b }
+            })
+            .collect();
+        let at_load = case % 2 == 0;
+        let x = 10f64.powf(-2.0 + 5.0 * rng.next());
+        let solve = |tol: f64| {
+            if at_load {
+                solve_auto_at_load(&terms, x, &settings(tol)).unwrap()
+            } else {
+                solve_auto_at_lambda(&terms, x, &settings(tol)).unwrap()
+            }
+        };
+        let reference = solve(1e-10);
+        let r_est = reference.solution.error_estimate.unwrap();
+        for tol in [1e-3, 1e-6] {
+            let s = solve(tol);
+            let est = s.solution.error_estimate.unwrap();
+            let (e_fr, e_s) = errors(&s, &reference, at_load);
+            let err = e_fr.max(e_s);
+            eprintln!(
+                "case {case} ({n} terms, ratio {ratio:.1e}, {} {x:.2e}) tol {tol:e}: modes {}/{} est {est:.2e} err {e_fr:.2e} {e_s:.2e} ref est {r_est:.1e} est/err {:.0}",
+                if at_load { "N'" } else { "λ" },
+                s.modes_used,
+                s.modes_total,
+                est / err
+            );
+            assert!(est <= tol, "case {case} tol {tol}: estimate {est}");
+            assert!(err <= est + r_est, "case {case} tol {tol}: {err} > {est}");
+            if err > 10.0 * r_est && err > 1e-12 {
+                assert!(
+                    est <= 1e3 * err,
+                    "case {case} tol {tol}: estimate {est} ≫ {err}"
+                );
+                worst_ratio = worst_ratio.min(est / err);
+            }
+        }
+    }
+    eprintln!("smallest est/err {worst_ratio}");
 }

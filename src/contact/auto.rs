@@ -27,7 +27,9 @@
 //! exact one-term solution the results agree to ~1e−13 already at the default step (see tests and the
 //! README of the bench), against first order in h for the thesis scheme.
 //! Costs: O(N·Q·√μ_max + N²·Q) with Q ≈ 200 quadrature nodes, so fast modes (large μ) are lumped
-//! into the glassy compliance by [`super::reduce`] before they get here.
+//! into the glassy compliance by [`super::reduce`] before they get here. The exterior values (the
+//! O(N·Q·√μ) part, half the time of a 30-term solve) are shared by the step-h solve and the step-2h
+//! check of [`solve_at_lambda_checked`], whose difference gives the quadrature error estimate.
 
 use super::chebyshev::{exp_coefficients, exterior_values, sine_series, theta_w};
 use super::modes::Modes;
@@ -118,12 +120,34 @@ impl LambdaSolution {
 
 /// Solve at given λ > 0 (exact reduction; see module doc).
 pub fn solve_at_lambda(modes: &Modes, lambda: f64, q: QuadratureSettings) -> LambdaSolution {
+    solve_impl(modes, lambda, q, false).0
+}
+
+/// Solve at given λ > 0 and, from the same exterior values, with every second quadrature node
+/// (step 2h): (solution, coarse solution). The coarse one costs only its N×N assembly.
+pub fn solve_at_lambda_checked(
+    modes: &Modes,
+    lambda: f64,
+    q: QuadratureSettings,
+) -> (LambdaSolution, LambdaSolution) {
+    let (fine, coarse) = solve_impl(modes, lambda, q, true);
+    let coarse = coarse.unwrap_or_else(|| fine.clone());
+    (fine, coarse)
+}
+
+fn solve_impl(
+    modes: &Modes,
+    lambda: f64,
+    q: QuadratureSettings,
+    check: bool,
+) -> (LambdaSolution, Option<LambdaSolution>) {
     let l = 0.5 * lambda;
     let n = modes.len();
     let s_ratio = modes.compliance_ratio();
     let p1 = l / (PI * s_ratio);
     if n == 0 {
-        return finish(lambda, l, l, 0.0, vec![0.0, p1, 0.0]);
+        let s = finish(lambda, l, l, 0.0, vec![0.0, p1, 0.0]);
+        return (s.clone(), check.then_some(s));
     }
     let c: Vec<f64> = modes.b.iter().map(|b| b * l).collect();
     let mu: Vec<f64> = (0..n).map(|j| modes.kappa(j) * l).collect();
@@ -145,91 +169,138 @@ pub fn solve_at_lambda(modes: &Modes, lambda: f64, q: QuadratureSettings) -> Lam
 
     // Trapezoid nodes in v = ln σ covering σ ∈ [σ_min, σ_max]:
     // below σ_min the integrand ≤ σ_min (|H̃ₑₓₜ| ≤ 1 per unit coefficient sum), above σ_max
-    // e^{−c_min σ} < e^{−60}.
+    // e^{−c_min σ} < e^{−60}. An odd node count, so that every second node spans the same range.
     let c_min = c.iter().cloned().fold(f64::INFINITY, f64::min);
     let c_max = c.iter().cloned().fold(0.0, f64::max);
     let v_min = (-42.0_f64).min((1e-20 / c_max.max(1.0)).ln());
     let v_max = (60.0 / c_min).ln();
-    let n_nodes = ((v_max - v_min) / q.step).ceil() as usize + 1;
+    let n_nodes = (((v_max - v_min) / q.step).ceil() as usize / 2) * 2 + 1;
     let h = (v_max - v_min) / (n_nodes - 1) as f64;
     let sig: Vec<f64> = (0..n_nodes).map(|k| (v_min + k as f64 * h).exp()).collect();
     let (th, w): (Vec<f64>, Vec<f64>) = sig.iter().map(|&s| theta_w(s)).unzip();
 
-    // Exterior values of each scaled exponential component at the nodes.
-    let mut x = vec![vec![0.0; n_nodes]; n];
+    // Exterior values of each scaled exponential component at the nodes (row j), and the
+    // trapezoid weights σₖe^{−cᵢσₖ} (row i; the ends are negligible, e^{−60} resp. ≤ 1e−20).
+    let mut x = DMatrix::<f64>::zeros(n, n_nodes);
+    let mut buf = vec![0.0; n_nodes];
     for j in 0..n {
-        exterior_values(&hat[j], &th, &w, &mut x[j]);
+        exterior_values(&hat[j], &th, &w, &mut buf);
+        for k in 0..n_nodes {
+            x[(j, k)] = buf[k];
+        }
     }
-    // Ĝᵢⱼ = ∫e^{−cᵢσ}H̃ₑₓₜ[ĵ](1+σ)dσ, M₁ᵢ = ∫e^{−cᵢσ}w dσ; system B̂Â = r (module doc, divided by μⱼ)
-    let mut gmat = DMatrix::<f64>::zeros(n, n);
-    let mut m1 = vec![0.0; n];
-    let mut bmat = DMatrix::<f64>::zeros(n, n);
-    let mut r = DVector::<f64>::zeros(n);
-    let mut wq = vec![0.0; n_nodes];
+    let mut wq = DMatrix::<f64>::zeros(n, n_nodes);
     for i in 0..n {
         for k in 0..n_nodes {
-            // trapezoid weight h·σ·e^{−cσ} (end weights ½; the ends are negligible anyway)
-            let end = if k == 0 || k == n_nodes - 1 { 0.5 } else { 1.0 };
-            wq[k] = end * h * sig[k] * (-c[i] * sig[k]).exp();
-        }
-        m1[i] = wq.iter().zip(&w).map(|(a, b)| a * b).sum();
-        for j in 0..n {
-            let g: f64 = wq.iter().zip(&x[j]).map(|(a, b)| a * b).sum();
-            gmat[(i, j)] = g;
-            let cm = l * modes.b_minus_kappa(i, j); // cᵢ − μⱼ
-                                                    // Bᵢⱼ/μⱼ = Ĝ + Ĩ₀/(cμ) − 1/((c−μ)μ) = Ĝ − [c(1−Ĩ₀)/μ + Ĩ₀]/(c(c−μ))
-            bmat[(i, j)] = g - (c[i] * om[j] + i0[j]) / (c[i] * cm);
-        }
-        r[i] = p1 * ((1.0 / c[i] + 1.0 / (c[i] * c[i])) - m1[i]);
-        let scale = (0..n).map(|j| bmat[(i, j)].abs()).fold(0.0, f64::max);
-        if scale > 0.0 && scale.is_finite() {
-            for j in 0..n {
-                bmat[(i, j)] /= scale;
-            }
-            r[i] /= scale;
+            let e = c[i] * sig[k];
+            // e^{−745} underflows to 0 anyway; skip the call
+            wq[(i, k)] = if e < 745.0 { sig[k] * (-e).exp() } else { 0.0 };
         }
     }
-    // column equilibration too (columns of fast modes scale like 1/μⱼ)
-    let mut colscale = vec![1.0; n];
-    for (j, cs) in colscale.iter_mut().enumerate() {
-        let m = (0..n).map(|i| bmat[(i, j)].abs()).fold(0.0, f64::max);
-        if m > 0.0 && m.is_finite() {
-            *cs = m;
-            for i in 0..n {
-                bmat[(i, j)] /= m;
-            }
-        }
-    }
-    let mut a = bmat
-        .full_piv_lu()
-        .solve(&r)
-        .unwrap_or_else(|| DVector::zeros(n));
-    for j in 0..n {
-        a[j] /= colscale[j];
-    }
+    let ctx = Assembly {
+        modes,
+        l,
+        p1,
+        c: &c,
+        om: &om,
+        i0: &i0,
+        hat: &hat,
+        mu_max: mu.iter().cloned().fold(0.0, f64::max),
+        lambda,
+    };
+    let fine = ctx.solve(&wq, &x, &w, h);
+    let coarse = check.then(|| {
+        let keep: Vec<usize> = (0..n_nodes).step_by(2).collect();
+        let wq2 = wq.select_columns(&keep);
+        let x2 = x.select_columns(&keep);
+        let w2: Vec<f64> = keep.iter().map(|&k| w[k]).collect();
+        ctx.solve(&wq2, &x2, &w2, 2.0 * h)
+    });
+    (fine, coarse)
+}
 
-    let n_coef = hat.iter().map(|v| v.len()).max().unwrap_or(1).max(3);
-    let mut fcoef = vec![0.0; n_coef];
-    for j in 0..n {
-        for (k, v) in hat[j].iter().enumerate().skip(1) {
-            fcoef[k] += a[j] * v;
+/// The λ-dependent pieces of one solve, shared by the fine and the coarse quadrature.
+struct Assembly<'a> {
+    modes: &'a Modes,
+    l: f64,
+    p1: f64,
+    c: &'a [f64],
+    om: &'a [f64],
+    i0: &'a [f64],
+    hat: &'a [Vec<f64>],
+    mu_max: f64,
+    lambda: f64,
+}
+
+impl Assembly<'_> {
+    /// Assemble and solve the N×N system with the quadrature (weights `wq`·h, exterior values `x`,
+    /// w = e^{−θ} at the nodes).
+    fn solve(&self, wq: &DMatrix<f64>, x: &DMatrix<f64>, w: &[f64], h: f64) -> LambdaSolution {
+        let (modes, l, p1, c) = (self.modes, self.l, self.p1, self.c);
+        let n = c.len();
+        // Ĝᵢⱼ = ∫e^{−cᵢσ}H̃ₑₓₜ[ĵ](1+σ)dσ = h·Σₖ wqᵢₖ xⱼₖ, M₁ᵢ = ∫e^{−cᵢσ}w dσ
+        let gmat = (wq * x.transpose()) * h;
+        let m1: Vec<f64> = (0..n)
+            .map(|i| h * wq.row(i).iter().zip(w).map(|(a, b)| a * b).sum::<f64>())
+            .collect();
+        // system B̂Â = r (module doc, divided by μⱼ)
+        let mut bmat = DMatrix::<f64>::zeros(n, n);
+        let mut r = DVector::<f64>::zeros(n);
+        for i in 0..n {
+            for j in 0..n {
+                let cm = l * modes.b_minus_kappa(i, j); // cᵢ − μⱼ
+                                                        // Bᵢⱼ/μⱼ = Ĝ + Ĩ₀/(cμ) − 1/((c−μ)μ) = Ĝ − [c(1−Ĩ₀)/μ + Ĩ₀]/(c(c−μ))
+                bmat[(i, j)] = gmat[(i, j)] - (c[i] * self.om[j] + self.i0[j]) / (c[i] * cm);
+            }
+            r[i] = p1 * ((1.0 / c[i] + 1.0 / (c[i] * c[i])) - m1[i]);
+            let scale = (0..n).map(|j| bmat[(i, j)].abs()).fold(0.0, f64::max);
+            if scale > 0.0 && scale.is_finite() {
+                for j in 0..n {
+                    bmat[(i, j)] /= scale;
+                }
+                r[i] /= scale;
+            }
         }
+        // column equilibration too (columns of fast modes scale like 1/μⱼ)
+        let mut colscale = vec![1.0; n];
+        for (j, cs) in colscale.iter_mut().enumerate() {
+            let m = (0..n).map(|i| bmat[(i, j)].abs()).fold(0.0, f64::max);
+            if m > 0.0 && m.is_finite() {
+                *cs = m;
+                for i in 0..n {
+                    bmat[(i, j)] /= m;
+                }
+            }
+        }
+        let mut a = bmat
+            .full_piv_lu()
+            .solve(&r)
+            .unwrap_or_else(|| DVector::zeros(n));
+        for j in 0..n {
+            a[j] /= colscale[j];
+        }
+
+        let n_coef = self.hat.iter().map(|v| v.len()).max().unwrap_or(1).max(3);
+        let mut fcoef = vec![0.0; n_coef];
+        for j in 0..n {
+            for (k, v) in self.hat[j].iter().enumerate().skip(1) {
+                fcoef[k] += a[j] * v;
+            }
+        }
+        fcoef[1] += p1;
+        // β from the equation at the front edge t = 1 (no cancellation, unlike the constant-term
+        // identity (L−β)/π = p₀S + p₁Σdᵢ/cᵢ², whose two terms grow like 1/μ for slow modes):
+        // π[H̃(1) + Σᵢ Ṽᵢ(1)] = 2L − β, H̃(1) = p₁ + ΣÂⱼ(1−Ĩ₀)/μⱼ, Ṽᵢ(1) = dᵢ(ΣⱼĜᵢⱼÂⱼ + p₁M₁ᵢ).
+        let h1 = p1 + (0..n).map(|j| a[j] * self.om[j]).sum::<f64>();
+        let v1: f64 = (0..n)
+            .map(|i| {
+                let d = modes.f[i] * l;
+                d * ((0..n).map(|j| gmat[(i, j)] * a[j]).sum::<f64>() + p1 * m1[i])
+            })
+            .sum();
+        let beta = 2.0 * l - PI * (h1 + v1);
+        finish(self.lambda, l, beta, self.mu_max, fcoef)
     }
-    fcoef[1] += p1;
-    // β from the equation at the front edge t = 1 (no cancellation, unlike the constant-term
-    // identity (L−β)/π = p₀S + p₁Σdᵢ/cᵢ², whose two terms grow like 1/μ for slow modes):
-    // π[H̃(1) + Σᵢ Ṽᵢ(1)] = 2L − β, H̃(1) = p₁ + ΣÂⱼ(1−Ĩ₀)/μⱼ, Ṽᵢ(1) = dᵢ(ΣⱼĜᵢⱼÂⱼ + p₁M₁ᵢ).
-    let h1 = p1 + (0..n).map(|j| a[j] * om[j]).sum::<f64>();
-    let v1: f64 = (0..n)
-        .map(|i| {
-            let d = modes.f[i] * l;
-            d * ((0..n).map(|j| gmat[(i, j)] * a[j]).sum::<f64>() + p1 * m1[i])
-        })
-        .sum();
-    let beta = 2.0 * l - PI * (h1 + v1);
-    let _ = s_ratio;
-    let mu_max = mu.iter().cloned().fold(0.0, f64::max);
-    finish(lambda, l, beta, mu_max, fcoef)
 }
 
 fn finish(lambda: f64, l: f64, beta: f64, mu_max: f64, fcoef: Vec<f64>) -> LambdaSolution {

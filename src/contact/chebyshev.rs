@@ -71,11 +71,13 @@ pub fn theta_w(sigma: f64) -> (f64, f64) {
     ((sigma + r).ln_1p(), 1.0 / (1.0 + sigma + r))
 }
 
-/// The exterior function Σ_{n≥1} aₙwⁿ (a[0] ignored) at the points of `thetas` (θ ≥ 0, w = e^{−θ}),
+/// The exterior function Σ_{n≥1} aₙwⁿ (`a[0]` ignored) at the points of `thetas` (θ ≥ 0, w = e^{−θ}),
 /// the continuation of the finite Hilbert transform beyond the front edge t = 1.
 ///
 /// Small θ·n_max uses the Taylor series in θ with the moments Σ nᵏaₙ (all terms of one sign for the
-/// exponential components, so no cancellation); larger θ a Horner sum cut where e^{−nθ} < e^{−41}.
+/// exponential components, so no cancellation); larger θ a Horner sum cut where e^{−nθ} < e^{−41},
+/// run for eight points at once and two coefficients per step, s ← s·w² + (aₙw² + aₙ₋₁w)
+/// (independent chains: one sum at a time is bound by the latency of its multiply-add chain).
 pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
     let n_max = a.len().saturating_sub(1);
     if n_max == 0 {
@@ -84,19 +86,10 @@ pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
     }
     const K: usize = 18; // (0.5)^k/k! < 1e−17 at k = 18
     let mut moments: Option<[f64; K]> = None;
-    for ((&theta, &w), o) in thetas.iter().zip(ws).zip(out.iter_mut()) {
+    let mut horner: Vec<(usize, usize)> = Vec::new(); // (point, n_cut)
+    for (k, (&theta, o)) in thetas.iter().zip(out.iter_mut()).enumerate() {
         if theta * n_max as f64 <= 0.5 {
-            let m = moments.get_or_insert_with(|| {
-                let mut m = [0.0; K];
-                for (n, &an) in a.iter().enumerate().skip(1) {
-                    let mut p = an;
-                    for mk in m.iter_mut() {
-                        *mk += p;
-                        p *= n as f64;
-                    }
-                }
-                m
-            });
+            let m = moments.get_or_insert_with(|| taylor_moments::<K>(a));
             // Σ_k (−θ)^k/k! m_k
             let mut s = 0.0;
             let mut fac = 1.0;
@@ -108,17 +101,69 @@ pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
             }
             *o = s;
         } else {
-            let n_cut = ((41.0 / theta).ceil() as usize + 1).min(n_max);
-            let mut s = 0.0;
-            for n in (1..=n_cut).rev() {
-                s = (s + a[n]) * w;
+            horner.push((k, ((41.0 / theta).ceil() as usize + 1).min(n_max)));
+        }
+    }
+    const P: usize = 8;
+    for chunk in horner.chunks(P) {
+        let mut w = [0.0_f64; P];
+        let mut n_cut = 0;
+        for (wq, &(k, nc)) in w.iter_mut().zip(chunk) {
+            *wq = ws[k];
+            n_cut = n_cut.max(nc);
+        }
+        let mut w2 = [0.0_f64; P];
+        for q in 0..P {
+            w2[q] = w[q] * w[q];
+        }
+        let mut s = [0.0_f64; P];
+        let mut n = n_cut;
+        if n % 2 == 1 {
+            for q in 0..P {
+                s[q] = a[n] * w[q];
             }
-            *o = s;
+            n -= 1;
+        }
+        // s = Σ_{m>n} aₘw^{m−n}; two steps: s ← s·w² + aₙw² + aₙ₋₁w
+        while n >= 2 {
+            let (an, an1) = (a[n], a[n - 1]);
+            for q in 0..P {
+                s[q] = s[q] * w2[q] + (an * w2[q] + an1 * w[q]);
+            }
+            n -= 2;
+        }
+        for (q, &(k, _)) in chunk.iter().enumerate() {
+            out[k] = s[q];
         }
     }
 }
 
-/// Q′(t)/scale = √(1−t²)Σ_{k≥0} a_{k+1}U_k(t) = Σ_{n≥1} aₙ sin(nθ) at t = cos θ (a[0] ignored);
+/// The moments m_k = Σ_{n≥1} nᵏaₙ, k < K.
+fn taylor_moments<const K: usize>(a: &[f64]) -> [f64; K] {
+    let mut m = [0.0; K];
+    let mut p: Vec<f64> = a.to_vec();
+    p[0] = 0.0;
+    let nf: Vec<f64> = (0..a.len()).map(|n| n as f64).collect();
+    for mk in m.iter_mut() {
+        // four partial sums so the additions need not wait on each other
+        let mut acc = [0.0; 4];
+        let chunks = p.chunks_exact(4);
+        let rest: f64 = chunks.remainder().iter().sum();
+        for c in chunks {
+            acc[0] += c[0];
+            acc[1] += c[1];
+            acc[2] += c[2];
+            acc[3] += c[3];
+        }
+        *mk = (acc[0] + acc[1]) + (acc[2] + acc[3]) + rest;
+        for (v, n) in p.iter_mut().zip(&nf) {
+            *v *= n;
+        }
+    }
+    m
+}
+
+/// Q′(t)/scale = √(1−t²)Σ_{k≥0} a_{k+1}U_k(t) = Σ_{n≥1} aₙ sin(nθ) at t = cos θ (`a[0]` ignored);
 /// the sine form keeps the error ~ n·ε right up to the edges, where a Clenshaw sum loses ~ n²·ε.
 pub fn sine_series(a: &[f64], theta: f64) -> f64 {
     let (s1, c1) = theta.sin_cos();
@@ -172,19 +217,22 @@ fn fft_positive(re: &mut [f64], im: &mut [f64]) {
             im.swap(i, j);
         }
     }
+    // twiddles e^{2πik/P}, k < P/2, computed directly (no recurrence drift) once; stage `len`
+    // uses every (P/len)-th
+    let ang = 2.0 * std::f64::consts::PI / p as f64;
+    let tw: Vec<(f64, f64)> = (0..p / 2)
+        .map(|k| {
+            let (s, c) = (ang * k as f64).sin_cos();
+            (c, s)
+        })
+        .collect();
     let mut len = 2;
     while len <= p {
-        let ang = 2.0 * std::f64::consts::PI / len as f64;
         let half = len / 2;
-        // twiddles computed directly (no recurrence drift)
-        let tw: Vec<(f64, f64)> = (0..half)
-            .map(|k| {
-                let (s, c) = (ang * k as f64).sin_cos();
-                (c, s)
-            })
-            .collect();
+        let stride = p / len;
         for start in (0..p).step_by(len) {
-            for (k, &(wr, wi)) in tw.iter().enumerate() {
+            for k in 0..half {
+                let (wr, wi) = tw[k * stride];
                 let (a, b) = (start + k, start + k + half);
                 let xr = re[b] * wr - im[b] * wi;
                 let xi = re[b] * wi + im[b] * wr;

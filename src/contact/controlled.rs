@@ -6,22 +6,41 @@
 //!
 //! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ):
 //! - mode reduction ([`super::reduce`]): ≤ 0.3·tol, re-selected until the estimate, evaluated with
-//!   the friction of the solution itself, fits;
-//! - quadrature ([`super::auto`]): step 0.4 for tol ≥ 1e−7 (measured error ≲ 5e−11), 0.3 below
-//!   (≲ 1e−14); the estimate is the difference to a solve with 1.5× the step, which bounds the
-//!   error of the finer solve because the error falls like e^{−π²/h};
+//!   the friction of the solution itself, fits. Lumped fast modes are *corrected* to first order:
+//!   one extra solve at the final λ with the lumped mode of largest weight kept measures the gains
+//!   (g_F, g_N, g_β) of ρF/N/λ, ln N′ and β per unit lumping weight, and g·Σwᵢ is added to the
+//!   answer; the remaining error is the second-order estimate of [`super::reduce`]. At given load
+//!   the loop solves N′_lumped(λ)(1 + g_N·W(λ)) = N′, first with the model gain, then (when the
+//!   measured one moves the target) on from the λ found;
+//! - quadrature ([`super::auto`]): step h = 0.6 for tol ≥ 1e−4, 0.4 for tol ≥ 1e−7, 0.3 below
+//!   (measured errors ≤ 5e−8, 2e−11, ~1e−15: ≈ e^{−π²/h} with a constant ≤ 1 on 1–30-term
+//!   problems); the estimate is 10·e^{−π²/(2h)} times the difference to the same sum on every second
+//!   node (step 2h, from the same exterior values: no second solve). The calibration is a difference
+//!   of two solves, so its noise, amplified by Σwᵢ/w*, is added;
 //! - load loop: a safeguarded secant on ln N′(ln λ) inside the bracket [2√N′, 2√(S·N′)]
-//!   (MATH.md §3: N′ grows with λ; glassy and relaxed compliance bound it), stopped when the step is
-//!   below 0.05·tol; its λ error is the last step, converted with the local slope d ln N′/d ln λ.
+//!   (MATH.md §3: N′ grows with λ; glassy and relaxed compliance bound it), started from
+//!   λ = 2√(S_eff N′) with the model slope 2 − d ln S_eff/d ln λ and stopped when the step is below
+//!   0.05·tol; the step not taken (and a target shift by the measured gain too small to chase)
+//!   counts twice in the λ error.
+//!
+//! Measured (`cargo bench --bench contact_auto`, README table; CPU time of one thread per load
+//! point): one term 29/46/59 µs at tol 1e−3/1e−6/1e−9; 10 terms 0.12/0.46/1.3 ms; 30 terms over 24
+//! decades 0.22/0.77/1.35 ms (before the measured lumping correction: 1.7/10/51 ms), i.e. 4–6
+//! solves per load point. Estimates are ≤ tol and 2–160× the true error against tol 1e−10 solves
+//! (tests/contact_auto.rs).
 //!
 //! The reported `error_estimate` is the largest of the relative errors of ρF/N and of λ (at given
 //! load) or N′ (at given λ).
 
-use super::auto::{solve_at_lambda, LambdaSolution, QuadratureSettings};
+use super::auto::{solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings};
 use super::conditions::gap_outside;
-use super::reduce::{estimate_at, select, Reduction};
+use super::reduce::{
+    effective_compliance, lump_weight, lumped_residual, model_gains, select, slow_estimate_at,
+    unlump, Reduction,
+};
 use super::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
 
 /// Settings of the `auto` scheme.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -143,20 +162,49 @@ fn validate(terms: &[CreepTerm], tol: f64) -> Result<(), AutoError> {
     Ok(())
 }
 
+/// Trapezoid step for a tolerance: measured errors (1–30 terms) ≤ 5e−8 at h = 0.6, ≤ 2e−11 at
+/// 0.4, ~1e−15 at 0.3 (≈ e^{−π²/h}).
 fn quad_for(tol: f64) -> QuadratureSettings {
     QuadratureSettings {
-        step: if tol >= 1e-7 { 0.4 } else { 0.3 },
+        step: if tol >= 1e-4 {
+            0.6
+        } else if tol >= 1e-7 {
+            0.4
+        } else {
+            0.3
+        },
     }
 }
 
-/// Solve the reduced problem at λ and map back to the full problem's units.
-fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaSolution {
-    let mut s = solve_at_lambda(&red.modes, lambda, q);
+/// Map a solution of the reduced problem back to the full problem's units.
+fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution {
     s.load /= red.scale;
     for c in s.coefficients.iter_mut() {
         *c /= red.scale;
     }
     s
+}
+
+/// Solve the reduced problem at λ and map back to the full problem's units.
+fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaSolution {
+    unscale(red, solve_at_lambda(&red.modes, lambda, q))
+}
+
+/// As [`solve_reduced`], with the quadrature error estimate: (solution, relative error of ρF/N,
+/// relative error of N′). The trapezoid error falls like e^{−π²/h} (module doc of
+/// [`super::auto`]; measured constant ≤ 1 for h = 0.4…0.8 on 1–30-term problems), so the error at
+/// step h is about e^{−π²/(2h)} times the difference to the same sum on every second node (step
+/// 2h, no extra exterior values); we take 10 times that.
+fn solve_reduced_checked(
+    red: &Reduction,
+    lambda: f64,
+    q: QuadratureSettings,
+) -> (LambdaSolution, f64, f64) {
+    let (fine, coarse) = solve_at_lambda_checked(&red.modes, lambda, q);
+    let k = 10.0 * (-PI * PI / (2.0 * q.step)).exp();
+    let e_fr = k * rel(coarse.friction_rho, fine.friction_rho);
+    let e_ld = k * rel(coarse.load, fine.load);
+    (unscale(red, fine), e_fr, e_ld)
 }
 
 fn merge_mu(tol: f64) -> f64 {
@@ -165,6 +213,98 @@ fn merge_mu(tol: f64) -> f64 {
 
 fn budgets(tol: f64, fr_over_lambda: f64) -> (f64, f64) {
     (0.3 * tol * fr_over_lambda.abs().max(1e-300), 0.3 * tol)
+}
+
+/// Σ wᵢ·λ over the lumped modes (wᵢ ∝ 1/λ, so this is independent of λ).
+fn lumped_weight_times_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
+    red.lumped
+        .iter()
+        .map(|&i| lump_weight(&terms[i], 1.0))
+        .sum()
+}
+
+/// The measured first-order correction for the lumped modes ([`super::reduce`] module doc).
+#[derive(Debug, Clone, Copy)]
+struct Correction {
+    /// Effects per unit lumping weight: Δ(ρF/N/λ), ΔN′/N′, Δβ (the measured gains g_F, g_N, g_β).
+    gains: (f64, f64, f64),
+    /// Σwᵢ/w* of the calibration: how much the calibration solve's noise is amplified.
+    amplification: f64,
+}
+
+impl Correction {
+    /// The model's gains, before any measurement (β unknown: 0).
+    fn model(terms: &[CreepTerm], lambda: f64) -> Correction {
+        let (g_f, g_n) = model_gains(terms, lambda);
+        Correction {
+            gains: (g_f, g_n, 0.0),
+            amplification: 0.0,
+        }
+    }
+
+    /// Apply at the solution's λ: ρF/N += λ·g_F·W, N′ ×= 1 + g_N·W, β += g_β·W (W = Σwᵢ); the
+    /// pressure is scaled with N′ (the layer correction itself is not added to the profile).
+    fn apply(&self, terms: &[CreepTerm], red: &Reduction, sol: &mut LambdaSolution) {
+        let w = lumped_weight_times_lambda(terms, red) / sol.lambda;
+        if w == 0.0 {
+            return;
+        }
+        sol.friction_rho += sol.lambda * self.gains.0 * w;
+        let f = 1.0 + self.gains.1 * w;
+        sol.load *= f;
+        for c in sol.coefficients.iter_mut() {
+            *c *= f;
+        }
+        sol.beta += self.gains.2 * w;
+    }
+}
+
+/// Measure the gains at the solution's λ by one solve with the lumped mode of largest weight kept.
+/// Returns the model gains (and amplification 0) when nothing is lumped or the solve fails.
+fn calibrate(
+    terms: &[CreepTerm],
+    red: &Reduction,
+    sol: &LambdaSolution,
+    q: QuadratureSettings,
+) -> Correction {
+    let lambda = sol.lambda;
+    let model = Correction::model(terms, lambda);
+    let Some(&star) = red.lumped.iter().max_by(|&&a, &&b| {
+        lump_weight(&terms[a], lambda).total_cmp(&lump_weight(&terms[b], lambda))
+    }) else {
+        return model;
+    };
+    let w_star = lump_weight(&terms[star], lambda);
+    let with = solve_reduced(&unlump(terms, red, lambda, star), lambda, q);
+    let g = (
+        (with.friction_rho - sol.friction_rho) / lambda / w_star,
+        (with.load - sol.load) / sol.load / w_star,
+        (with.beta - sol.beta) / w_star,
+    );
+    if !(g.0.is_finite() && g.1.is_finite() && g.2.is_finite()) {
+        return model;
+    }
+    Correction {
+        gains: g,
+        amplification: lumped_weight_times_lambda(terms, red) / lambda / w_star,
+    }
+}
+
+/// Remaining lumping error after the correction (ρF/N/λ absolute, N′ relative): the second-order
+/// estimate, plus, without a measurement, the whole (model) effect twice.
+fn lumping_error(
+    terms: &[CreepTerm],
+    red: &Reduction,
+    corr: &Correction,
+    lambda: f64,
+) -> (f64, f64) {
+    let (e_fr, e_ld) = lumped_residual(terms, &red.lumped, lambda, (corr.gains.0, corr.gains.1));
+    if corr.amplification > 0.0 {
+        (e_fr, e_ld)
+    } else {
+        let w = lumped_weight_times_lambda(terms, red) / lambda;
+        (e_fr + 2.0 * corr.gains.0 * w, e_ld + 2.0 * corr.gains.1 * w)
+    }
 }
 
 /// Solve at given contact length λ > 0.
@@ -183,30 +323,42 @@ pub fn solve_auto_at_lambda(
     }
     let tol = settings.tol;
     let q = quad_for(tol);
-    // First pass: budget from a friction guess of 1e−2·λ; then from the solution's own friction.
+    // First pass: budget from a friction guess of 1e−2·λ and the model gains; then from the
+    // solution's own friction and the measured gains.
     let mut fr_guess = 1e-2;
-    let mut red;
-    let mut sol;
+    let mut corr = Correction::model(terms, lambda);
     let mut pass = 0;
-    loop {
-        let (bf, bl) = budgets(tol, fr_guess);
-        red = select(terms, lambda, bf, bl, merge_mu(tol));
-        sol = solve_reduced(&red, lambda, q);
-        let fr = sol.friction_rho / lambda;
+    let (red, sol, e_fr, e_ld, num_fr, num_ld) = loop {
         pass += 1;
-        if red.friction_over_lambda_error <= 0.3 * tol * fr.abs() || pass >= 4 {
-            break;
+        let (bf, bl) = budgets(tol, fr_guess);
+        let red = select(
+            terms,
+            lambda,
+            bf,
+            bl,
+            merge_mu(tol),
+            (corr.gains.0, corr.gains.1),
+        );
+        let (sol, num_fr, num_ld) = solve_reduced_checked(&red, lambda, q);
+        corr = calibrate(terms, &red, &sol, q);
+        let (l_fr, l_ld) = lumping_error(terms, &red, &corr, lambda);
+        let (s_fr, s_ld) = slow_estimate_at(terms, &red, lambda);
+        let (e_fr, e_ld) = (l_fr + s_fr, l_ld + s_ld);
+        let fr = sol.friction_rho / lambda
+            + corr.gains.0 * lumped_weight_times_lambda(terms, &red) / lambda;
+        if (e_fr <= 0.3 * tol * fr.abs() && e_ld <= 0.3 * tol) || pass >= 4 {
+            break (red, sol, e_fr, e_ld, num_fr, num_ld);
         }
-        fr_guess = 0.5 * fr.abs();
-    }
-    let coarse = solve_reduced(&red, lambda, QuadratureSettings { step: 1.5 * q.step });
+        fr_guess = fr.abs();
+    };
+    let mut sol = sol;
+    corr.apply(terms, &red, &mut sol);
     let fr = sol.friction_rho;
-    let num_fr = rel(coarse.friction_rho, fr);
-    let num_ld = rel(coarse.load, sol.load);
-    let friction_error = num_fr
-        + red.friction_over_lambda_error * lambda / fr.abs().max(1e-300)
-        + roundoff_floor(&sol);
-    let size_error = num_ld + red.load_error;
+    // the calibration is a difference of two solves with the same quadrature: its noise is at most
+    // twice their error, amplified by Σwᵢ/w*
+    let amp = 1.0 + 2.0 * corr.amplification;
+    let friction_error = amp * num_fr + e_fr * lambda / fr.abs().max(1e-300) + roundoff_floor(&sol);
+    let size_error = amp * num_ld + e_ld;
     Ok(package(
         terms,
         &red,
@@ -255,53 +407,101 @@ pub fn solve_auto_at_load(
     // contact time, c/(1+c); three fixed-point steps (no solves).
     let mut lam0 = lam_glassy;
     for _ in 0..3 {
-        let l = 0.5 * lam0;
-        let s_eff = 1.0
-            + terms
-                .iter()
-                .filter(|t| t.f > 0.0)
-                .map(|t| (t.f / t.b) * (t.b * l) / (1.0 + t.b * l))
-                .sum::<f64>();
-        lam0 = 2.0 * (s_eff * load).sqrt();
+        lam0 = 2.0 * (effective_compliance(terms, lam0) * load).sqrt();
     }
     let mut fr_guess = 1e-2;
+    let mut corr = Correction::model(terms, lam0);
     let mut total_iter = 0;
     let mut round = 0;
     loop {
         round += 1;
         let (bf, bl) = budgets(tol, fr_guess);
-        let red = select(terms, lam0, bf, bl, merge_mu(tol));
-        let (sol, iters, lam_err_u, slope, dfr) = load_loop(
-            &red,
-            load,
-            lam_glassy,
-            s_full,
+        let red = select(
+            terms,
             lam0,
+            bf,
+            bl,
+            merge_mu(tol),
+            (corr.gains.0, corr.gains.1),
+        );
+        let w_lambda = lumped_weight_times_lambda(terms, &red);
+        // The loop solves N′_lumped(λ)·(1 + g_N·W(λ)) = N′ with W(λ) = w_lambda/λ: first with the
+        // gain assumed, then (after measuring it at the λ found) once more from there if it moved.
+        let bracket = (
+            lam_glassy.ln() - 1e-9 - (1.0 + corr.gains.1.abs() * w_lambda / lam_glassy).ln(),
+            (lam_glassy * s_full.sqrt()).ln() + 1e-9,
+        );
+        let mut lp = load_loop(
+            &red,
+            load.ln(),
+            corr.gains.1 * w_lambda,
+            bracket,
+            Start::Guess(lam0, model_slope(terms, lam0)),
             tol,
             q,
             settings.max_iterations,
         )?;
-        total_iter += iters;
-        let lambda = sol.lambda;
-        let fr = sol.friction_rho;
-        let (e_fr, e_ld) = estimate_at(terms, &red, lambda);
-        let ok = e_fr <= 0.3 * tol * (fr / lambda).abs() && e_ld <= 0.3 * tol;
+        total_iter += lp.iterations;
+        let measured = calibrate(terms, &red, &lp.sol, q);
+        let moved = ((1.0 + measured.gains.1 * w_lambda / lp.sol.lambda)
+            / (1.0 + corr.gains.1 * w_lambda / lp.sol.lambda))
+            .ln()
+            .abs();
+        corr = measured;
+        // a target moved by less than the loop's own stopping step is not chased: its λ shift
+        // counts in the error instead (like the loop's last step)
+        let mut unchased = moved / lp.slope.abs().max(0.2);
+        if unchased >= 0.05 * tol {
+            unchased = 0.0;
+            let start = Start::Solved((lp.sol.clone(), lp.num_fr, lp.num_ld), lp.slope, lp.dfr);
+            lp = load_loop(
+                &red,
+                load.ln(),
+                corr.gains.1 * w_lambda,
+                bracket,
+                start,
+                tol,
+                q,
+                settings.max_iterations,
+            )?;
+            total_iter += lp.iterations;
+        }
+        let lambda = lp.sol.lambda;
+        let (l_fr, l_ld) = lumping_error(terms, &red, &corr, lambda);
+        let (s_fr, s_ld) = slow_estimate_at(terms, &red, lambda);
+        let (e_fr, e_ld) = (l_fr + s_fr, l_ld + s_ld);
+        let fr_l = lp.sol.friction_rho / lambda + corr.gains.0 * w_lambda / lambda;
+        let ok = e_fr <= 0.3 * tol * fr_l.abs() && e_ld <= 0.3 * tol;
         // if the next round would select the same modes it cannot do better: stop here (the
         // estimate says honestly whether the tolerance is met)
         let same = !ok && {
-            let (bf2, bl2) = budgets(tol, 0.5 * (fr / lambda).abs());
-            let next = select(terms, lambda, bf2, bl2, merge_mu(tol));
+            let (bf2, bl2) = budgets(tol, fr_l);
+            let next = select(
+                terms,
+                lambda,
+                bf2,
+                bl2,
+                merge_mu(tol),
+                (corr.gains.0, corr.gains.1),
+            );
             next.kept == red.kept && next.lumped == red.lumped && next.dropped == red.dropped
         };
         if ok || same || round >= 4 {
-            let coarse = solve_reduced(&red, lambda, QuadratureSettings { step: 1.5 * q.step });
-            // at fixed λ the coarse/fine N′ difference maps to λ through the slope
-            let num_ld = rel(coarse.load, sol.load);
-            let num_fr = rel(coarse.friction_rho, fr);
-            let slope = slope.abs().max(0.2);
-            let size_error = lam_err_u + (num_ld + e_ld) / slope;
-            let friction_error =
-                num_fr + e_fr * lambda / fr.abs().max(1e-300) + dfr.abs().max(1.0) * size_error;
+            // at fixed λ the quadrature error of N′ maps to λ through the slope
+            let amp = 1.0 + 2.0 * corr.amplification;
+            let num_ld = amp * lp.num_ld;
+            let num_fr = amp * lp.num_fr;
+            let slope = lp.slope.abs().max(0.2);
+            // the steps not taken are first-order distances to the root (slope known to better
+            // than a factor 2 from the secant): counted twice
+            let size_error = 2.0 * (lp.last_step + unchased) + (num_ld + e_ld) / slope;
+            let mut sol = lp.sol;
+            corr.apply(terms, &red, &mut sol);
+            let fr = sol.friction_rho;
+            let friction_error = num_fr
+                + e_fr * lambda / fr.abs().max(1e-300)
+                + lp.dfr.abs().max(1.0) * size_error
+                + roundoff_floor(&sol);
             return Ok(package(
                 terms,
                 &red,
@@ -313,48 +513,89 @@ pub fn solve_auto_at_load(
             ));
         }
         lam0 = lambda;
-        fr_guess = 0.5 * (fr / lambda).abs();
+        fr_guess = fr_l;
     }
 }
 
-/// Safeguarded secant on g(u) = ln N′(eᵘ) − ln N′₀ inside a sign-change bracket.
-/// Returns (solution, solves, last |Δu|, slope d ln N′/d ln λ, d ln(ρF/N)/d ln λ).
+/// The model slope d ln N′/d ln λ of N′ ≈ λ²/(4S_eff(λ)) (MATH.md §3 with the effective
+/// compliance of [`super::reduce`]): 2 − d ln S_eff/d ln λ, d S_eff/d ln λ = Σ rᵢcᵢ/(1+cᵢ)².
+fn model_slope(terms: &[CreepTerm], lambda: f64) -> f64 {
+    let l = 0.5 * lambda;
+    let d: f64 = terms
+        .iter()
+        .filter(|t| t.f > 0.0)
+        .map(|t| {
+            let c = t.b * l;
+            (t.f / t.b) * c / ((1.0 + c) * (1.0 + c))
+        })
+        .sum();
+    (2.0 - d / effective_compliance(terms, lambda)).clamp(0.5, 2.0)
+}
+
+/// Where the load loop starts: a guess of λ, or a solution already computed (with the slope
+/// d ln N′/d ln λ and d ln(ρF/N)/d ln λ known there).
+enum Start {
+    /// λ₀ and the slope d ln N′/d ln λ to start the secant with.
+    Guess(f64, f64),
+    Solved((LambdaSolution, f64, f64), f64, f64),
+}
+
+/// The load loop's answer: the (uncorrected, reduced) solution at the λ found.
+struct LoopResult {
+    sol: LambdaSolution,
+    /// Quadrature error estimates of `sol` (relative, ρF/N and N′).
+    num_fr: f64,
+    num_ld: f64,
+    /// Solves done.
+    iterations: usize,
+    /// Last |Δ ln λ|.
+    last_step: f64,
+    /// d ln N′/d ln λ.
+    slope: f64,
+    /// d ln(ρF/N)/d ln λ.
+    dfr: f64,
+}
+
+/// Safeguarded secant on g(u) = ln N′(eᵘ) + ln(1 + k·e^{−u}) − ln N′₀ inside the bracket (a, b),
+/// where k·e^{−u} = g_N·W(λ) is the lumping correction of N′ (k = g_N·Σwᵢλ, independent of λ).
 #[allow(clippy::too_many_arguments)]
 fn load_loop(
     red: &Reduction,
-    load: f64,
-    lam_glassy: f64,
-    s_full: f64,
-    lam0: f64,
+    target: f64,
+    k: f64,
+    (mut a, mut b): (f64, f64),
+    start: Start,
     tol: f64,
     q: QuadratureSettings,
     max_iter: usize,
-) -> Result<(LambdaSolution, usize, f64, f64, f64), AutoError> {
-    let target = load.ln();
-    let mut a = lam_glassy.ln() - 1e-9; // g(a) ≤ 0 (glassy bound)
-    let mut b = (lam_glassy * s_full.sqrt()).ln() + 1e-9; // g(b) ≥ 0 (relaxed bound)
-    let eval = |u: f64| -> (f64, LambdaSolution) {
-        let s = solve_reduced(red, u.exp(), q);
-        (s.load.ln() - target, s)
+) -> Result<LoopResult, AutoError> {
+    let gval = |s: &LambdaSolution| s.load.ln() + (1.0 + k / s.lambda).ln() - target;
+    let eval = |u: f64| -> (f64, (LambdaSolution, f64, f64)) {
+        let s = solve_reduced_checked(red, u.exp(), q);
+        (gval(&s.0), s)
     };
-    let mut u = lam0.ln().clamp(a, b);
-    let (mut g, mut sol) = eval(u);
-    let mut iters = 1;
+    let (mut u, mut g, (mut sol, mut num_fr, mut num_ld), mut slope, mut dfr, mut iters) =
+        match start {
+            Start::Guess(lam0, slope0) => {
+                let u = lam0.ln().clamp(a, b);
+                let (g, s) = eval(u);
+                (u, g, s, slope0, 1.0, 1)
+            }
+            Start::Solved(s, slope, dfr) => (s.0.lambda.ln(), gval(&s.0), s, slope, dfr, 0),
+        };
     let mut prev: Option<(f64, f64, f64)> = None; // (u, g, ln fr)
-    let mut slope = 2.0;
-    let mut dfr = 1.0;
     let last_step;
     loop {
         if g < 0.0 {
-            a = u;
+            a = a.max(u);
         } else {
-            b = u;
+            b = b.min(u);
         }
         if g == 0.0 {
             last_step = 0.0;
             break;
         }
-        // secant with the previous point, else slope 2 (elastic), kept inside the bracket
+        // secant with the previous point, else the last slope (2 = elastic), kept in the bracket
         let s = match prev {
             Some((up, gp, _)) if (u - up).abs() > 0.0 && (g - gp) / (u - up) > 0.0 => {
                 (g - gp) / (u - up)
@@ -363,7 +604,8 @@ fn load_loop(
         };
         slope = s;
         let mut un = u - g / s;
-        if !(un > a && un < b) {
+        // a converged secant step may land on the bracket end it starts from: no bisection then
+        if !(un > a && un < b) && (g / s).abs() >= 0.05 * tol {
             un = 0.5 * (a + b);
         }
         let step = (un - u).abs();
@@ -389,10 +631,18 @@ fn load_loop(
         u = un;
         let (gn, sn) = eval(u);
         g = gn;
-        sol = sn;
+        (sol, num_fr, num_ld) = sn;
         iters += 1;
     }
-    Ok((sol, iters, last_step, slope, dfr))
+    Ok(LoopResult {
+        sol,
+        num_fr,
+        num_ld,
+        iterations: iters,
+        last_step,
+        slope,
+        dfr,
+    })
 }
 
 fn package(

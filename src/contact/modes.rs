@@ -73,50 +73,74 @@ impl Modes {
     }
 }
 
-/// Root δ ∈ (0, gap) of φ(δ) = 1 + Σ_{i≠j} fᵢ/((bᵢ − bⱼ) − δ) − fⱼ/δ (increasing in δ), by bisection
-/// (geometric while the bracket spans more than a factor 2, arithmetic after) to full precision.
+/// Root δ ∈ (0, gap) of φ(δ) = 1 + Σ_{i≠j} fᵢ/((bᵢ − bⱼ) − δ) − fⱼ/δ (increasing in δ): Newton
+/// steps from δ₀ = fⱼ/(1 + Σ_{i≠j} fᵢ/(bᵢ − bⱼ)) (the root when δ ≪ every gap) inside a bracket that
+/// every evaluation shrinks, with a bisection step (geometric while the bracket spans more than a
+/// factor 2) whenever Newton leaves the bracket or stalls; to full precision.
 fn root_offset(f: &[f64], b: &[f64], j: usize) -> f64 {
-    let phi = |d: f64| -> f64 {
+    // φ and φ′ = fⱼ/δ² + Σ_{i≠j} fᵢ/((bᵢ − bⱼ) − δ)²
+    let phi = |d: f64| -> (f64, f64) {
         let mut s = 1.0 - f[j] / d;
+        let mut ds = f[j] / (d * d);
         for i in 0..b.len() {
             if i != j {
-                s += f[i] / ((b[i] - b[j]) - d);
+                let g = (b[i] - b[j]) - d;
+                s += f[i] / g;
+                ds += f[i] / (g * g);
             }
         }
-        s
+        (s, ds)
     };
     let mut lo = 0.0_f64;
     let mut hi = if j + 1 < b.len() {
         b[j + 1] - b[j]
     } else {
-        f.iter().sum::<f64>()
+        f.iter().sum::<f64>() // φ(hi) ≥ 0 for the last root (module doc)
     };
-    // φ(hi) ≥ 0 for the last root (see module doc); start bisection on the open interval.
-    let mut lo_pos = hi * 1e-300_f64.max(f64::MIN_POSITIVE);
-    // tiny positive lower end: φ → −∞ as δ → 0⁺
+    let denom = 1.0
+        + (0..b.len())
+            .filter(|&i| i != j)
+            .map(|i| f[i] / (b[i] - b[j]))
+            .sum::<f64>();
+    let mut d = if denom > 0.0 { f[j] / denom } else { 0.5 * hi };
+    if !(d > lo && d < hi) {
+        d = 0.5 * hi;
+    }
+    let mut prev_step = f64::INFINITY;
     for _ in 0..2000 {
-        if phi(lo_pos) < 0.0 {
-            break;
+        let (v, dv) = phi(d);
+        if v == 0.0 {
+            return d;
         }
-        lo_pos *= 1e-10;
-    }
-    lo = lo.max(lo_pos);
-    for _ in 0..400 {
-        let mid = if hi > 2.0 * lo && lo > 0.0 {
-            (lo * hi).sqrt()
+        if v < 0.0 {
+            lo = d;
         } else {
-            0.5 * (lo + hi)
+            hi = d;
+        }
+        let newton = d - v / dv;
+        let step = (newton - d).abs();
+        if step <= 2.0 * f64::EPSILON * d && newton > lo && newton < hi {
+            return newton;
+        }
+        let next = if newton > lo && newton < hi && dv.is_finite() && step < 0.5 * prev_step {
+            prev_step = step;
+            newton
+        } else {
+            prev_step = f64::INFINITY;
+            if lo > 0.0 && hi > 2.0 * lo {
+                (lo * hi).sqrt()
+            } else if lo == 0.0 && hi > 1e-300 {
+                hi * 1e-3 // φ → −∞ as δ → 0⁺: shrink towards 0 geometrically
+            } else {
+                0.5 * (lo + hi)
+            }
         };
-        if mid <= lo || mid >= hi {
-            break;
+        if next <= lo || next >= hi || next == d {
+            return d; // the bracket is down to adjacent doubles
         }
-        if phi(mid) < 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
+        d = next;
     }
-    0.5 * (lo + hi)
+    d
 }
 
 #[cfg(test)]
