@@ -18,7 +18,7 @@
 //! load) or N′ (at given λ).
 
 use super::auto::{solve_at_lambda, LambdaSolution, QuadratureSettings};
-use super::rear_gap::rear_scan;
+use super::rear_gap::contact_check;
 use super::reduce::{estimate_at, select, Reduction};
 use super::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
@@ -420,7 +420,7 @@ fn package(
     // Contact conditions outside the contact (module `rear_gap`): a scan behind the rear edge
     // (incl. around the lowest point when β < 0) and three points ahead of the front edge.
     let (min_gap_ratio, min_gap_xi) = if settings.gap_check {
-        let scan = rear_scan(&red.modes, red.scale, &sol);
+        let scan = contact_check(&red.modes, red.scale, &sol);
         if scan.min_gap_ahead_ratio < scan.min_gap_ratio {
             (scan.min_gap_ahead_ratio, f64::NAN)
         } else {
@@ -434,8 +434,9 @@ fn package(
     if min_gap_ratio < -gap_tol {
         warnings.push(format!(
             "contact condition fails: the roll penetrates the surface outside the contact (min gap \
-             / (λ²/8) = {min_gap_ratio:.3e} at ξ = {min_gap_xi:.4e}); the single-contact solution is \
-             not valid here (a second contact zone is not modelled)"
+             / (λ²/8) = {min_gap_ratio:.3e} at ξ = {min_gap_xi:.4e}); this answer is not valid. In \
+             the rear-edge scans every such case was a wrong solution, fixed by a tighter --tol \
+             (a genuine second contact zone was never found, and is not modelled)"
         ));
     }
     if sol.beta < 0.0 {
