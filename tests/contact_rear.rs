@@ -144,16 +144,16 @@ fn negative_beta_case_keeps_the_gap_open_and_says_so() {
     // f = 10, b = 0.01 at λ = 1 (mpmath: β = −1.8595…): the lowest point lies far behind the rear
     // edge, yet the surface stays below the roll: at ξ = β the gap is +8.82 of λ²/8 (rear_gap unit
     // test, confirmed by an independent quadrature to 1e−14), and near the edge it opens like
-    // |ξ|^{3/2} (7.4e−3 at ξ = −0.05 λ, so ≈ 6.6e−4 at the check's nearest point −0.01 λ).
+    // |ξ|^{3/2} (1.78e−5 at the check's nearest point, ξ = −1e−3 λ).
     let s = solve_auto_at_lambda(&[CreepTerm { f: 10.0, b: 0.01 }], 1.0, &settings(1e-6)).unwrap();
     assert!(s.solution.beta < -1.0);
     assert!(
-        s.min_gap_ratio > 0.0 && s.min_gap_ratio < 1e-3,
+        s.min_gap_ratio > 0.0 && s.min_gap_ratio < 1e-4,
         "{}",
         s.min_gap_ratio
     );
     // the smallest gap is at the point next to the edge, not around the lowest point
-    assert!((s.min_gap_xi + 1e-2).abs() < 1e-12, "{}", s.min_gap_xi);
+    assert!((s.min_gap_xi + 1e-3).abs() < 1e-12, "{}", s.min_gap_xi);
     assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
     assert!(s.warnings[0].starts_with("information: the roll's lowest point lies behind"));
     assert!(s.warnings[0].contains("gap behind stays open"));

@@ -35,8 +35,8 @@
 //! a seven-mode spectrum (c = 5e−4…5e4) agrees with a 24-point, ratio-1.4 rule to ≤ 1e−11; the Hertz
 //! case matches its closed form to 1e−12. The computed pressure's own error (~tol) comes on top.
 //!
-//! Cost (`cargo bench --bench contact_gap`, tol 1e−6, N′ = 1, shared 2-core machine): +0.40 ms per
-//! solve for one term, +23 ms for the 10-term and +36 ms for the 30-term spectrum of the bench table
+//! Cost (`cargo bench --bench contact_gap`, tol 1e−6, N′ = 1, shared 2-core machine): +0.51 ms per
+//! solve for one term, +24 ms for the 10-term and +40 ms for the 30-term spectrum of the bench table
 //! (13 706 and 22 860 Chebyshev terms: the pressure at ~250 nodes, O(nodes × terms), dominates).
 //! Hence [`contact_check`] looks at ~8 points first and runs the full [`rear_scan`] only when a gap
 //! is closed or nearly so; `AutoSettings::gap_check = false` skips it (as the pipeline does).
@@ -311,16 +311,19 @@ const BEHIND: [f64; 9] = [1e-3, 1e-2, 0.04, 0.12, 0.3, 0.6, 1.2, 2.5, 6.0];
 /// Offsets ahead of the front edge (fractions of λ).
 const AHEAD: [f64; 3] = [0.02, 0.3, 1.5];
 
-/// The check run after every `auto` solve: a quick look (gap at 1e−2, 0.1, 0.5, 2 λ behind, at β and
-/// 2β when β < 0, and at 0.05 λ, 1 λ ahead: ~8 points on a coarser rear grading), and the full
+/// The check run after every `auto` solve: a quick look (gap at 1e−3, 1e−2, 0.1, 0.5, 2 λ behind, at
+/// β and 2β when β < 0, and at 0.05 λ, 1 λ ahead: 7–9 points), and the full
 /// [`rear_scan`] only when the quick look finds a closed gap, or one below 1e−3 of λ²/8 at 0.1 λ or
 /// further behind. The kernel of
 /// eq. 3.19 behind the contact (negative arguments of h, through Ei) costs ~1.5 µs per evaluation,
 /// so the full scan costs ~(25 points × ~200 nodes × modes) evaluations: it runs only when needed.
 pub fn contact_check(modes: &Modes, scale: f64, sol: &LambdaSolution) -> RearScan {
     let lam = sol.lambda;
-    let ev = GapEvaluator::new(modes, scale, sol, 1e-2 * lam);
-    let mut behind: Vec<f64> = [1e-2, 0.1, 0.5, 2.0].iter().map(|k| -k * lam).collect();
+    let ev = GapEvaluator::new(modes, scale, sol, 1e-3 * lam);
+    let mut behind: Vec<f64> = [1e-3, 1e-2, 0.1, 0.5, 2.0]
+        .iter()
+        .map(|k| -k * lam)
+        .collect();
     if sol.beta < 0.0 {
         behind.extend([sol.beta, 2.0 * sol.beta]);
     }
