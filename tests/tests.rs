@@ -2,6 +2,8 @@
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;
+mod contact_props;
+mod contact_rear;
 mod contact_scene;
 mod contact_thesis;
 mod contact_thesis_vs_exact;

@@ -33,7 +33,7 @@
 //! load) or N′ (at given λ).
 
 use super::auto::{solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings};
-use super::conditions::gap_outside;
+use super::rear_gap::contact_check;
 use super::reduce::{
     effective_compliance, lump_weight, lumped_residual, model_gains, select, slow_estimate_at,
     unlump, Reduction,
@@ -132,9 +132,13 @@ pub struct AutoSolution {
     pub min_pressure_ratio: f64,
     /// Smallest gap outside the contact (behind the rear edge, ahead of the front edge, and around
     /// the roll's lowest point when β < 0) over the depth scale λ²/8; < 0 means the roll penetrates
-    /// the surface there (coarse check, see [`super::conditions`]).
+    /// the surface there (accurate to ~1e−10 of λ²/8 plus the solution's own error, see
+    /// [`super::rear_gap`]; NaN when the check is switched off).
     #[serde(default)]
     pub min_gap_ratio: f64,
+    /// Where the smallest gap lies (ξ, < 0 behind the rear edge, > λ ahead of the front edge).
+    #[serde(default)]
+    pub min_gap_xi: f64,
     /// The tolerance asked for.
     pub tol: f64,
     /// Human-readable warnings (validity of the model, contact conditions).
@@ -663,33 +667,62 @@ fn package(
              the contact condition Q' ≥ 0 fails"
         ));
     }
-    let lam = sol.lambda;
-    let mut xs: Vec<f64> = [-1.0, -0.05, 1.05, 1.5].iter().map(|k| k * lam).collect();
-    if sol.beta < 0.0 {
-        xs.extend([0.5, 1.0, 1.5].iter().map(|k| k * sol.beta));
-    }
-    let min_gap_ratio = if settings.gap_check {
-        gap_outside(&red.modes, red.scale, &sol, &xs)
-            .into_iter()
-            .fold(f64::INFINITY, f64::min)
+    // Contact conditions outside the contact (module `rear_gap`): a scan behind the rear edge
+    // (incl. around the lowest point when β < 0) and three points ahead of the front edge.
+    let (min_gap_ratio, min_gap_xi) = if settings.gap_check {
+        let scan = contact_check(&red.modes, red.scale, &sol);
+        if scan.min_gap_ahead_ratio < scan.min_gap_ratio {
+            (scan.min_gap_ahead_ratio, f64::NAN)
+        } else {
+            (scan.min_gap_ratio, scan.at_xi)
+        }
     } else {
-        f64::NAN
+        (f64::NAN, f64::NAN)
     };
-    if min_gap_ratio < -1e-3 {
+    // The gap is accurate to ~1e−10 of λ²/8 for the computed pressure, whose own error is ~tol.
+    let gap_tol = settings.tol.max(1e-9);
+    if min_gap_ratio < -gap_tol {
         warnings.push(format!(
-            "the roll penetrates the surface outside the contact (min gap / (λ²/8) = \
-             {min_gap_ratio:.3e}): the single-contact solution is not valid here (a moving rear \
-             edge or a second contact zone would be needed; not implemented)"
+            "contact condition fails: the roll penetrates the surface outside the contact (min gap \
+             / (λ²/8) = {min_gap_ratio:.3e} at ξ = {min_gap_xi:.4e}); this answer is not valid. In \
+             the rear-edge scans every such case was a wrong solution, fixed by a tighter --tol \
+             (a genuine second contact zone was never found, and is not modelled)"
         ));
     }
     if sol.beta < 0.0 {
+        let gap = if min_gap_ratio.is_nan() {
+            "gap behind not checked".to_string()
+        } else if min_gap_ratio >= -gap_tol {
+            format!("the gap behind stays open, min gap / (λ²/8) = {min_gap_ratio:.3e}")
+        } else {
+            "see the contact-condition warning".to_string()
+        };
         warnings.push(format!(
-            "the roll's lowest point lies behind the rear contact edge (β = {:.4e}, β/λ = {:.4e})",
+            "information: the roll's lowest point lies behind the rear contact edge (β = {:.4e}, \
+             β/λ = {:.4e}); {gap}",
             sol.beta,
             sol.beta / sol.lambda
         ));
     }
     let modes_total = terms.iter().filter(|t| t.f > 0.0).count();
+    // When every mode is lumped (or dropped) the reduced problem is elastic and ρF/N = 0 exactly;
+    // the relative estimates above are then 0/0 = NaN, which `f64::max` would silently drop. The
+    // relative error of a zero answer against a non-zero truth is exactly 1: report that.
+    let friction_error = if friction_error.is_nan() {
+        if modes_total == 0 {
+            0.0 // elastic input: ρF/N = 0 is exact
+        } else {
+            warnings.push(
+                "every creep mode was lumped or dropped: ρF/N = 0 is the elastic limit, its relative \
+                 error is 100 % (the scene lies far outside the spectrum's time range)"
+                    .to_string(),
+            );
+            1.0
+        }
+    } else {
+        friction_error
+    };
+    let size_error = if size_error.is_nan() { 1.0 } else { size_error };
     let error_estimate = friction_error.max(size_error);
     let n = sol.coefficients.len();
     AutoSolution {
@@ -713,6 +746,7 @@ fn package(
         size_error,
         min_pressure_ratio,
         min_gap_ratio,
+        min_gap_xi,
         tol: settings.tol,
         warnings,
     }

