@@ -9,7 +9,7 @@
 use super::compound_fit::CompoundFit;
 use super::error::{io, PipelineError};
 use super::fit_compound::measured_range_c;
-use super::scenes::{FrictionPoint, MapPoint, SceneSpec};
+use super::scenes::{FrictionMaps, FrictionPoint, SceneSpec};
 use crate::report::{cards, plots};
 use crate::Measurement;
 use std::f64::consts::PI;
@@ -265,7 +265,7 @@ pub fn write_report(
     fit: &CompoundFit,
     measurement: &Measurement,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
-    maps: &[Vec<MapPoint>],
+    maps: &[FrictionMaps],
     dir: &Path,
 ) -> Result<(), PipelineError> {
     std::fs::create_dir_all(dir).map_err(io(dir))?;
@@ -311,7 +311,8 @@ pub fn write_report(
     // Friction maps: CSV and, per scene, F/N against speed and against load (one curve per temperature).
     let mut map_csv = format!("# {prov}\nscene,temp_c,speed_m_s,load_n_per_m,friction\n");
     let mut map_svgs = String::new();
-    for ((spec, _), pts) in friction.iter().zip(maps) {
+    for ((spec, _), map) in friction.iter().zip(maps) {
+        let pts = &map.points;
         for p in pts {
             let _ = writeln!(
                 map_csv,

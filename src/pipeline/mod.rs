@@ -5,6 +5,7 @@ pub mod compounds;
 pub mod datasheet;
 pub mod error;
 pub mod fit_compound;
+pub mod friction_map;
 pub mod run;
 pub mod scenes;
 

@@ -97,7 +97,11 @@ fn one_compound(
             spec.clone(),
             friction_vs_temperature(&fit, spec, &settings)?,
         ));
-        maps.push(super::scenes::friction_maps(&fit, spec, &settings)?);
+        maps.push(super::scenes::friction_maps(
+            &fit,
+            spec,
+            &super::scenes::pipeline_map_settings(),
+        )?);
     }
     write_report(
         &fit,
