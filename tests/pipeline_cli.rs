@@ -121,6 +121,56 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
             map_rows.iter().all(|f| f.is_finite() && *f > 0.0),
             "{name}: {map_rows:?}"
         );
+        // PNG twins: every SVG chart has a PNG beside it, a valid PNG (signature, IHDR first, the
+        // plot size 900 × 640 of report::plots::PLOT_SIZE), linked from the datasheet.
+        let svgs: Vec<String> = std::fs::read_dir(&rep)
+            .unwrap()
+            .filter_map(|e| e.ok()?.file_name().into_string().ok())
+            .filter(|f| f.ends_with(".svg"))
+            .collect();
+        assert!(svgs.len() >= 10, "{name}: {svgs:?}");
+        for svg in &svgs {
+            let png = svg.replace(".svg", ".png");
+            let bytes = std::fs::read(rep.join(&png)).unwrap_or_default();
+            assert!(
+                bytes.len() > 33
+                    && bytes[..8] == *b"\x89PNG\r\n\x1a\n"
+                    && &bytes[12..16] == b"IHDR",
+                "{name}: {png} is not a PNG"
+            );
+            let dim = |k: usize| u32::from_be_bytes(bytes[k..k + 4].try_into().unwrap());
+            assert_eq!((dim(16), dim(20)), (900, 640), "{name}: {png}");
+            assert!(
+                html.contains(&format!("href=\"{png}\"")),
+                "{name}: link to {png}"
+            );
+        }
+        // The 2-D map: 30 × 30 speeds × loads per map temperature, every value finite and positive.
+        let grid = std::fs::read_to_string(rep.join("friction_map_2d.csv")).unwrap();
+        let grid_rows: Vec<Vec<f64>> = grid
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("scene,"))
+            .map(|l| l.split(',').skip(1).map(|v| v.parse().unwrap()).collect())
+            .collect();
+        let expected_grid: usize = scenes
+            .iter()
+            .map(|s| s["map_temps_c"].as_array().map_or(0, |a| a.len()) * 900)
+            .sum();
+        assert_eq!(grid_rows.len(), expected_grid, "{name}");
+        assert!(
+            grid_rows
+                .iter()
+                .all(|r| r[3].is_finite() && r[3] > 0.0 && r[4] > 0.0),
+            "{name}: a 2-D map value is not finite and positive"
+        );
+        for s in scenes {
+            assert!(rep
+                .join(format!(
+                    "friction_{}_map2d.png",
+                    s["name"].as_str().unwrap()
+                ))
+                .is_file());
+        }
         // Glassy and relaxed moduli of the fitted relaxation spectrum.
         let e_inf = fit["relaxation"]["modulus_inf_pa"].as_f64().unwrap();
         let e0 = e_inf
