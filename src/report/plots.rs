@@ -541,33 +541,39 @@ pub fn plot_lines(
     log_x: bool,
     path: &Path,
 ) -> Result<(), PlotError> {
-    // log x is drawn as log10 x on a linear axis labelled with 10^v
+    // Both axes are drawn in log10 on linear coordinates labelled with 10^v (so short log ranges,
+    // under a decade, still get evenly spaced tick labels); x stays linear unless `log_x`.
     let pts: Vec<Series> = series
         .iter()
         .map(|(n, p)| {
             let kept = p
                 .iter()
                 .filter(|(x, y)| x.is_finite() && y.is_finite() && *y > 0.0 && (!log_x || *x > 0.0))
-                .map(|&(x, y)| (if log_x { x.log10() } else { x }, y))
+                .map(|&(x, y)| (if log_x { x.log10() } else { x }, y.log10()))
                 .collect();
             (n.clone(), kept)
         })
         .collect();
-    let (x0, x1) = pts
-        .iter()
-        .flat_map(|s| s.1.iter().map(|p| p.0))
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
-            (a.min(x), b.max(x))
-        });
-    let yr = log_range(pts.iter().flat_map(|s| s.1.iter().map(|p| p.1)));
-    let Some(yr) = yr.filter(|_| x0.is_finite()) else {
+    let range = |f: &dyn Fn(&(f64, f64)) -> f64| {
+        pts.iter()
+            .flat_map(|s| s.1.iter().map(f))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            })
+    };
+    let ((x0, x1), (y0, y1)) = (range(&|p| p.0), range(&|p| p.1));
+    if !x0.is_finite() {
         return Err(PlotError::NoData {
             what: "line chart",
             reason: "no point with finite x and positive y",
         });
+    }
+    let padded = |a: f64, b: f64, min: f64| {
+        let pad = if b > a { 0.04 * (b - a) } else { min };
+        (a - pad, b + pad)
     };
-    let pad = if x1 > x0 { 0.03 * (x1 - x0) } else { 0.5 };
-    let xr = (x0 - pad, x1 + pad);
+    let xr = padded(x0, x1, 0.5);
+    let yr = padded(y0, y1, 0.1);
     render_to!(
         path,
         draw_lines(title, x_label, y_label, &pts, log_x, xr, yr)
@@ -591,7 +597,7 @@ fn draw_lines<DB: DrawingBackend>(
         .margin(12)
         .x_label_area_size(45)
         .y_label_area_size(80)
-        .build_cartesian_2d(xr.0..xr.1, (yr.0..yr.1).log_scale())
+        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
         .map_err(e)?;
     let x_fmt = |v: &f64| {
         if log_x {
@@ -605,7 +611,7 @@ fn draw_lines<DB: DrawingBackend>(
         .x_desc(x_label)
         .y_desc(y_label)
         .x_label_formatter(&x_fmt)
-        .y_label_formatter(&|v| format!("{v:.2e}"))
+        .y_label_formatter(&|v| format!("{:.2e}", 10f64.powf(*v)))
         .draw()
         .map_err(e)?;
     for (i, (name, p)) in series.iter().enumerate() {
