@@ -256,14 +256,17 @@ pub struct FrictionMaps {
     pub solves: usize,
 }
 
-/// Map settings of the main job: relative tolerance 1e−4 on F/N and contact length at every map
-/// point. The maps are plotted and tabulated, and the fitted compound is itself only good to about
-/// 1e−2 in friction (issue 8's end-to-end bound), so 1e−4 is invisible in both; the friction against
-/// temperature (which the ranking uses) stays on direct solves at 1e−6. `cargo bench --bench maps`
-/// prints the cost at 1e−4, 1e−5 and 1e−6.
+/// Map settings of the main job: relative tolerance 1e−3 on F/N and contact length at every map
+/// point (the interpolation estimate actually reached, typically ~5e−5 on the shipped compounds, is
+/// printed in the datasheet). The maps are plotted and tabulated, and the fitted compound is itself
+/// only good to about 1e−2 in friction (issue 8's end-to-end bound), so 1e−3 is invisible in both;
+/// the friction against temperature (which the ranking uses) stays on direct solves at 1e−6.
+/// Measured on EMS-CA (65 creep terms), one compound from raw export to datasheet: 2.0 s of CPU at
+/// 1e−4, 1.25 s at 1e−3 (the node solves dominate). `cargo bench --bench maps` prints the map cost
+/// at 1e−4, 1e−5 and 1e−6.
 pub fn pipeline_map_settings() -> MapSettings {
     MapSettings {
-        tol: 1e-4,
+        tol: 1e-3,
         ..MapSettings::default()
     }
 }
