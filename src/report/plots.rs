@@ -411,18 +411,18 @@ fn draw_shifts<DB: DrawingBackend>(
         let c = palette[i % palette.len()];
         let label = match law {
             ShiftLaw::Wlf { t_ref_c, c1, c2_k } => {
-                format!("{name}: C1 = {c1:.2}, C2 = {c2_k:.1} K, T_ref = {t_ref_c} °C")
+                format!("{name}: C1 = {c1:.2}, C2 = {c2_k:.1} K, T_ref = {t_ref_c:.2} °C")
             }
             ShiftLaw::Arrhenius {
                 t_ref_c,
                 activation_energy_j_per_mol,
             } => {
                 format!(
-                    "{name}: E_a = {:.0} kJ/mol, T_ref = {t_ref_c} °C",
+                    "{name}: E_a = {:.0} kJ/mol, T_ref = {t_ref_c:.2} °C",
                     activation_energy_j_per_mol / 1e3
                 )
             }
-            ShiftLaw::Table { t_ref_c, .. } => format!("{name}: table, T_ref = {t_ref_c} °C"),
+            ShiftLaw::Table { t_ref_c, .. } => format!("{name}: table, T_ref = {t_ref_c:.2} °C"),
         };
         chart
             .draw_series(LineSeries::new(curve.iter().copied(), c.stroke_width(2)))
