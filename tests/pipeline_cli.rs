@@ -265,6 +265,10 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
             "screenshot"
         );
         assert_eq!(u32::from_be_bytes(bytes[16..20].try_into().unwrap()), 1280);
+        eprintln!(
+            "chromium screenshot of the datasheet: {} bytes",
+            bytes.len()
+        );
     }
     // The ranking lists every compound once per scene, in increasing mean friction.
     let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();
