@@ -261,12 +261,15 @@ pub struct FrictionMaps {
 /// printed in the datasheet). The maps are plotted and tabulated, and the fitted compound is itself
 /// only good to about 1e−2 in friction (issue 8's end-to-end bound), so 1e−3 is invisible in both;
 /// the friction against temperature (which the ranking uses) stays on direct solves at 1e−6.
-/// Measured on EMS-CA (65 creep terms), one compound from raw export to datasheet: 2.0 s of CPU at
-/// 1e−4, 1.25 s at 1e−3 (the node solves dominate). `cargo bench --bench maps` prints the map cost
-/// at 1e−4, 1e−5 and 1e−6.
+/// Panels of six decades: a shipped scene's maps (two temperatures, speeds and loads) span about
+/// five decades of s, so one panel of 17 or 33 solves covers them. Measured on EMS-CA (65 creep
+/// terms), one compound from raw export to datasheet: 2.0 s of CPU at 1e−4 with four-decade
+/// panels, 1.25 s at 1e−3, 1.0 s (0.6 s wall on 2 cores) at 1e−3 with six-decade panels (the node
+/// solves dominate). `cargo bench --bench maps` prints the map cost at 1e−3 … 1e−6.
 pub fn pipeline_map_settings() -> MapSettings {
     MapSettings {
         tol: 1e-3,
+        panel_width: 6.0 * std::f64::consts::LN_10,
         ..MapSettings::default()
     }
 }
