@@ -45,6 +45,7 @@
 //! assert!(r.roll.contact_length_m > hertz(1e9 + 3e6) && r.roll.contact_length_m < hertz(3e6));
 //! ```
 
+pub mod fsutil;
 pub mod special;
 
 pub mod contact;

@@ -60,6 +60,48 @@ fn hertz_length_mm(radius_mm: f64, load_n_per_m: f64, e_pa: f64, nu: f64) -> f64
     2.0 * a2.sqrt() * 1e3
 }
 
+/// Screenshot `html` with headless Chromium if /usr/bin/chromium exists (None otherwise); waits at
+/// most 60 s.
+fn chromium_screenshot(html: &Path, out: &Path) -> Option<PathBuf> {
+    let exe = Path::new("/usr/bin/chromium");
+    if !exe.is_file() {
+        return None;
+    }
+    let png = out.join("datasheet-screenshot.png");
+    let profile = out.join("chromium-profile");
+    let mut child = Command::new(exe)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--window-size=1280,4000",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .arg(format!("--screenshot={}", png.display()))
+        .arg(format!("file://{}", html.canonicalize().unwrap().display()))
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .ok()?;
+    for _ in 0..600 {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    if child.try_wait().unwrap().is_none() {
+        let _ = child.kill();
+        panic!("chromium did not finish the screenshot in 60 s");
+    }
+    assert!(png.is_file(), "chromium made no screenshot");
+    Some(png)
+}
+
 #[test]
 fn run_on_shipped_data_then_rank_roll_and_reuse() {
     let out = temp_dir("main");
@@ -121,6 +163,56 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
             map_rows.iter().all(|f| f.is_finite() && *f > 0.0),
             "{name}: {map_rows:?}"
         );
+        // PNG twins: every SVG chart has a PNG beside it, a valid PNG (signature, IHDR first, the
+        // plot size 900 × 640 of report::plots::PLOT_SIZE), linked from the datasheet.
+        let svgs: Vec<String> = std::fs::read_dir(&rep)
+            .unwrap()
+            .filter_map(|e| e.ok()?.file_name().into_string().ok())
+            .filter(|f| f.ends_with(".svg"))
+            .collect();
+        assert!(svgs.len() >= 10, "{name}: {svgs:?}");
+        for svg in &svgs {
+            let png = svg.replace(".svg", ".png");
+            let bytes = std::fs::read(rep.join(&png)).unwrap_or_default();
+            assert!(
+                bytes.len() > 33
+                    && bytes[..8] == *b"\x89PNG\r\n\x1a\n"
+                    && &bytes[12..16] == b"IHDR",
+                "{name}: {png} is not a PNG"
+            );
+            let dim = |k: usize| u32::from_be_bytes(bytes[k..k + 4].try_into().unwrap());
+            assert_eq!((dim(16), dim(20)), (900, 640), "{name}: {png}");
+            assert!(
+                html.contains(&format!("href=\"{png}\"")),
+                "{name}: link to {png}"
+            );
+        }
+        // The 2-D map: 30 × 30 speeds × loads per map temperature, every value finite and positive.
+        let grid = std::fs::read_to_string(rep.join("friction_map_2d.csv")).unwrap();
+        let grid_rows: Vec<Vec<f64>> = grid
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("scene,"))
+            .map(|l| l.split(',').skip(1).map(|v| v.parse().unwrap()).collect())
+            .collect();
+        let expected_grid: usize = scenes
+            .iter()
+            .map(|s| s["map_temps_c"].as_array().map_or(0, |a| a.len()) * 900)
+            .sum();
+        assert_eq!(grid_rows.len(), expected_grid, "{name}");
+        assert!(
+            grid_rows
+                .iter()
+                .all(|r| r[3].is_finite() && r[3] > 0.0 && r[4] > 0.0),
+            "{name}: a 2-D map value is not finite and positive"
+        );
+        for s in scenes {
+            assert!(rep
+                .join(format!(
+                    "friction_{}_map2d.png",
+                    s["name"].as_str().unwrap()
+                ))
+                .is_file());
+        }
         // Glassy and relaxed moduli of the fitted relaxation spectrum.
         let e_inf = fit["relaxation"]["modulus_inf_pa"].as_f64().unwrap();
         let e0 = e_inf
@@ -163,6 +255,20 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
                 "{name} {scene} {t}: {lg} <= {l} <= {lr}"
             );
         }
+    }
+    // In a real browser (only where Chromium is installed; CI does not need it): the EMS-CA
+    // datasheet renders to a screenshot of the requested width.
+    if let Some(png) = chromium_screenshot(&out.join("reports/ems-ca/datasheet.html"), &out) {
+        let bytes = std::fs::read(&png).unwrap();
+        assert!(
+            bytes.len() > 24 && bytes[..8] == *b"\x89PNG\r\n\x1a\n",
+            "screenshot"
+        );
+        assert_eq!(u32::from_be_bytes(bytes[16..20].try_into().unwrap()), 1280);
+        eprintln!(
+            "chromium screenshot of the datasheet: {} bytes",
+            bytes.len()
+        );
     }
     // The ranking lists every compound once per scene, in increasing mean friction.
     let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();

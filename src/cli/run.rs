@@ -1,10 +1,13 @@
 //! `viscoroll run [DIR]`: the main job — every compound under DIR → fit file → friction in the
 //! scenes → report folder; `reports/ranking.csv` and `reports/index.html` (crate::pipeline::run).
 //!
-//! Progress: a bar on a terminal, plain log lines otherwise (stderr). `--json` prints one object
+//! Progress: a counted bar over the work units (per compound: fit, friction and maps per scene,
+//! report) on a terminal, plain log lines otherwise (stderr). `--json` prints one object
 //! (the [`crate::pipeline::RunSummary`]). Exit code 1 when any compound failed.
 
-use crate::pipeline::{run_all, FitOptions, RunOptions, SceneSet};
+use crate::pipeline::{
+    run_all, run_all_with_progress, FitOptions, ProgressEvent, RunOptions, SceneSet,
+};
 use anyhow::bail;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -51,11 +54,29 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let start = std::time::Instant::now();
     let summary = if std::io::stderr().is_terminal() {
-        let bar = indicatif::ProgressBar::new_spinner();
-        bar.set_message("compounds");
-        bar.enable_steady_tick(std::time::Duration::from_millis(120));
-        let b = bar.clone();
-        let s = run_all(&opts, &move |line: &str| b.println(line));
+        // A counted bar over the work units (per compound: fit, friction and maps per scene,
+        // report); log lines go above it.
+        let bar = indicatif::ProgressBar::new(0);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{elapsed_precise} [{bar:30}] {pos}/{len} {wide_msg}",
+            )
+            .map_err(|e| anyhow::anyhow!("progress bar template: {e}"))?
+            .progress_chars("=> "),
+        );
+        bar.enable_steady_tick(std::time::Duration::from_millis(200));
+        let (b, p) = (bar.clone(), bar.clone());
+        let s = run_all_with_progress(
+            &opts,
+            &move |line: &str| b.println(line),
+            &move |ev| match ev {
+                ProgressEvent::Total(n) => p.set_length(n),
+                ProgressEvent::Done { compound, stage } => {
+                    p.inc(1);
+                    p.set_message(format!("{compound}: {stage}"));
+                }
+            },
+        );
         bar.finish_and_clear();
         s?
     } else {

@@ -24,7 +24,6 @@ use crate::prony::{MasterPoint, PronyFit, PronyInfo, PronySettings};
 use crate::{CreepSpectrum, Measurement, ModulusKind, RelaxationSpectrum, ShiftLaw};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -278,58 +277,20 @@ impl CompoundFit {
             path: path.to_path_buf(),
             source: e,
         };
-        if !force && path.exists() {
-            return Err(CompoundFitError::Exists {
-                path: path.to_path_buf(),
-            });
-        }
-        let dir = match path.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
-        std::fs::create_dir_all(&dir).map_err(io)?;
-        let name = path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
-        let json = serde_json::to_string_pretty(self).map_err(|e| CompoundFitError::Serialize {
-            message: e.to_string(),
-        })?;
-        let result = (|| {
-            let mut f = std::fs::File::create(&tmp)?;
-            f.write_all(json.as_bytes())?;
-            f.write_all(b"\n")?;
-            f.sync_all()?;
-            drop(f);
-            if force {
-                std::fs::rename(&tmp, path)
-            } else {
-                // No-clobber: a hard link fails if `path` appeared since the check above.
-                std::fs::hard_link(&tmp, path).or_else(|e| {
-                    if e.kind() == std::io::ErrorKind::AlreadyExists {
-                        Err(e)
-                    } else {
-                        // File systems without hard links: check-then-rename.
-                        if path.exists() {
-                            Err(std::io::ErrorKind::AlreadyExists.into())
-                        } else {
-                            std::fs::rename(&tmp, path)
-                        }
-                    }
-                })
-            }
-        })();
-        let _ = std::fs::remove_file(&tmp);
-        match result {
-            Ok(()) => Ok(()),
-            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-                Err(CompoundFitError::Exists {
+        let mut json =
+            serde_json::to_string_pretty(self).map_err(|e| CompoundFitError::Serialize {
+                message: e.to_string(),
+            })?;
+        json.push('\n');
+        crate::fsutil::write_atomic_durable(path, json.as_bytes(), force).map_err(|e| {
+            if e.kind() == std::io::ErrorKind::AlreadyExists {
+                CompoundFitError::Exists {
                     path: path.to_path_buf(),
-                })
+                }
+            } else {
+                io(e)
             }
-            Err(e) => Err(io(e)),
-        }
+        })
     }
 
     /// Read a fit file, checking its format version.

@@ -9,7 +9,7 @@
 use super::compound_fit::CompoundFit;
 use super::error::{io, PipelineError};
 use super::fit_compound::measured_range_c;
-use super::scenes::{FrictionPoint, MapPoint, SceneSpec};
+use super::scenes::{FrictionMaps, FrictionPoint, SceneSpec};
 use crate::report::{cards, plots};
 use crate::Measurement;
 use std::f64::consts::PI;
@@ -18,18 +18,7 @@ use std::path::Path;
 
 /// Write `bytes` to `path` atomically (temp file in the same folder, then rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), PipelineError> {
-    let dir = path.parent().unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
-    std::fs::write(&tmp, bytes).map_err(io(&tmp))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io(path)(e)
-    })
+    crate::fsutil::write_atomic(path, bytes, true).map_err(io(path))
 }
 
 /// HTML-escape text.
@@ -63,156 +52,6 @@ pub fn tan_delta_peak(fit: &CompoundFit, freq_hz: f64) -> Option<(f64, f64)> {
     }
     let (i, t, v) = best?;
     (i > 0 && i < n).then_some((t, v))
-}
-
-/// A small line chart as SVG text: x linear, y log10 (all y > 0 drawn; others skipped).
-pub fn svg_chart(
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    series: &[(String, Vec<(f64, f64)>)],
-) -> String {
-    svg_chart_axes(title, x_label, y_label, series, false)
-}
-
-/// As [`svg_chart`], with x on a log10 axis when `log_x` (x > 0 only).
-pub fn svg_chart_axes(
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    series: &[(String, Vec<(f64, f64)>)],
-    log_x: bool,
-) -> String {
-    let fx = |x: f64| if log_x { x.log10() } else { x };
-    let series: Vec<(String, Vec<(f64, f64)>)> = series
-        .iter()
-        .map(|(n, p)| {
-            (
-                n.clone(),
-                p.iter()
-                    .filter(|(x, _)| !log_x || *x > 0.0)
-                    .map(|&(x, y)| (fx(x), y))
-                    .collect(),
-            )
-        })
-        .collect();
-    let series = &series[..];
-    const W: f64 = 720.0;
-    const H: f64 = 420.0;
-    let (l, r, t, b) = (80.0, 170.0, 40.0, 50.0);
-    let pts: Vec<(f64, f64)> = series
-        .iter()
-        .flat_map(|(_, p)| p.iter().copied())
-        .filter(|(x, y)| x.is_finite() && y.is_finite() && *y > 0.0)
-        .collect();
-    let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{W}\" height=\"{H}\" viewBox=\"0 0 {W} {H}\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"{W}\" height=\"{H}\" fill=\"white\"/>\n<text x=\"{}\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">{}</text>\n",
-        W / 2.0,
-        esc(title)
-    );
-    if pts.is_empty() {
-        s.push_str("<text x=\"40\" y=\"200\">no finite value to plot</text>\n</svg>\n");
-        return s;
-    }
-    let (x0, x1) = pts
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), p| {
-            (a.min(p.0), c.max(p.0))
-        });
-    let (y0, y1) = pts
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), p| {
-            (a.min(p.1.log10()), c.max(p.1.log10()))
-        });
-    let (x0, x1) = if x1 > x0 {
-        (x0, x1)
-    } else {
-        (x0 - 1.0, x1 + 1.0)
-    };
-    let (y0, y1) = (
-        (y0 * 10.0).floor() / 10.0 - 0.05,
-        (y1 * 10.0).ceil() / 10.0 + 0.05,
-    );
-    let px = |x: f64| l + (x - x0) / (x1 - x0) * (W - l - r);
-    let py = |y: f64| H - b - (y.log10() - y0) / (y1 - y0) * (H - t - b);
-    let _ = writeln!(
-        s,
-        "<rect x=\"{l}\" y=\"{t}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>",
-        W - l - r,
-        H - t - b
-    );
-    // y ticks at integer and half decades when the range is small, else integer decades.
-    let step = if y1 - y0 < 2.0 { 0.25 } else { 1.0 };
-    let mut k = (y0 / step).ceil() * step;
-    while k <= y1 {
-        let y = py(10f64.powf(k));
-        let _ = writeln!(
-            s,
-            "<line x1=\"{l}\" x2=\"{}\" y1=\"{y:.1}\" y2=\"{y:.1}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{:.2e}</text>",
-            W - r,
-            l - 4.0,
-            y + 4.0,
-            10f64.powf(k)
-        );
-        k += step;
-    }
-    for i in 0..=5 {
-        let xv = x0 + (x1 - x0) * i as f64 / 5.0;
-        let x = px(xv);
-        let label = if log_x {
-            format!("{:.3}", 10f64.powf(xv))
-        } else {
-            format!("{xv:.0}")
-        };
-        let _ = writeln!(
-            s,
-            "<line x1=\"{x:.1}\" x2=\"{x:.1}\" y1=\"{t}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x:.1}\" y=\"{}\" text-anchor=\"middle\">{label}</text>",
-            H - b,
-            H - b + 16.0
-        );
-    }
-    let _ = writeln!(
-        s,
-        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text><text x=\"16\" y=\"{}\" text-anchor=\"middle\" transform=\"rotate(-90 16 {})\">{}</text>",
-        (l + W - r) / 2.0,
-        H - 12.0,
-        esc(x_label),
-        (t + H - b) / 2.0,
-        (t + H - b) / 2.0,
-        esc(y_label)
-    );
-    let colours = [
-        "#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
-    ];
-    for (i, (name, p)) in series.iter().enumerate() {
-        let c = colours[i % colours.len()];
-        let d: Vec<String> = p
-            .iter()
-            .filter(|(x, y)| x.is_finite() && y.is_finite() && *y > 0.0)
-            .map(|&(x, y)| format!("{:.1},{:.1}", px(x), py(y)))
-            .collect();
-        let _ = writeln!(
-            s,
-            "<polyline fill=\"none\" stroke=\"{c}\" stroke-width=\"2\" points=\"{}\"/>",
-            d.join(" ")
-        );
-        for q in &d {
-            let (a, bb) = q.split_once(',').unwrap_or(("0", "0"));
-            let _ = writeln!(s, "<circle cx=\"{a}\" cy=\"{bb}\" r=\"3\" fill=\"{c}\"/>");
-        }
-        let ly = t + 10.0 + 18.0 * i as f64;
-        let _ = writeln!(
-            s,
-            "<line x1=\"{}\" x2=\"{}\" y1=\"{ly}\" y2=\"{ly}\" stroke=\"{c}\" stroke-width=\"2\"/><text x=\"{}\" y=\"{}\">{}</text>",
-            W - r + 8.0,
-            W - r + 28.0,
-            W - r + 32.0,
-            ly + 4.0,
-            esc(name)
-        );
-    }
-    s.push_str("</svg>\n");
-    s
 }
 
 /// A one-line provenance note (tool, version, compound, input hashes).
@@ -250,14 +89,95 @@ fn law_text(law: &crate::ShiftLaw) -> String {
     }
 }
 
+/// Draw `stem.svg` and its PNG twin `stem.png` in `dir`; returns the HTML to embed: the SVG inline
+/// and links to both files (or a note when there is nothing to plot).
 fn plot_pair<F>(dir: &Path, stem: &str, draw: F) -> Result<String, PipelineError>
 where
     F: Fn(&Path) -> Result<(), plots::PlotError>,
 {
     let svg = dir.join(format!("{stem}.svg"));
-    draw(&svg)?;
+    match draw(&svg) {
+        Ok(()) => {}
+        // nothing to draw (e.g. every solve failed): say so in the datasheet instead of failing it
+        Err(e @ plots::PlotError::NoData { .. }) => {
+            return Ok(format!(
+                "<p class=\"bad\">{}: {}</p>",
+                esc(stem),
+                esc(&e.to_string())
+            ))
+        }
+        Err(e) => return Err(e.into()),
+    }
     draw(&dir.join(format!("{stem}.png")))?;
-    std::fs::read_to_string(&svg).map_err(io(&svg))
+    let text = std::fs::read_to_string(&svg).map_err(io(&svg))?;
+    Ok(format!(
+        "<figure>{text}<figcaption><a href=\"{0}.png\">{0}.png</a> · <a href=\"{0}.svg\">{0}.svg</a></figcaption></figure>\n",
+        esc(stem)
+    ))
+}
+
+/// The 2-D map of one scene: rows of `csv`, and `friction_SCENE_map2d.{svg,png}` (one heat-map
+/// panel per map temperature); `None` when the scene has no grid.
+fn write_grid(
+    dir: &Path,
+    spec: &SceneSpec,
+    map: &FrictionMaps,
+    csv: &mut String,
+) -> Result<Option<String>, PipelineError> {
+    if map.grid.is_empty() {
+        return Ok(None);
+    }
+    for p in &map.grid {
+        let _ = writeln!(
+            csv,
+            "{},{},{},{},{:e},{:e}",
+            spec.name, p.temp_c, p.speed_m_s, p.load_n_per_m, p.friction, p.contact_length_mm
+        );
+    }
+    // the grid is speed-major within each temperature (scenes::friction_maps)
+    let mut speeds: Vec<f64> = Vec::new();
+    let mut loads: Vec<f64> = Vec::new();
+    for p in &map.grid {
+        if !speeds.contains(&p.speed_m_s) {
+            speeds.push(p.speed_m_s);
+        }
+        if !loads.contains(&p.load_n_per_m) {
+            loads.push(p.load_n_per_m);
+        }
+    }
+    let panels: Vec<plots::HeatPanel> = spec
+        .map_temps_c
+        .iter()
+        .map(|&t| plots::HeatPanel {
+            title: format!("{t} °C"),
+            z: speeds
+                .iter()
+                .map(|&v| {
+                    loads
+                        .iter()
+                        .map(|&n| {
+                            map.grid
+                                .iter()
+                                .find(|p| p.temp_c == t && p.speed_m_s == v && p.load_n_per_m == n)
+                                .map_or(f64::NAN, |p| p.friction)
+                        })
+                        .collect()
+                })
+                .collect(),
+        })
+        .collect();
+    let stem = format!("friction_{}_map2d", spec.name);
+    plot_pair(dir, &stem, |p| {
+        plots::plot_heatmaps(
+            &format!("{}: F/N over speed × load", spec.name),
+            ("speed [m/s]", "load [N/m]", "F/N"),
+            &speeds,
+            &loads,
+            &panels,
+            p,
+        )
+    })
+    .map(Some)
 }
 
 /// Write `dir/` (plots, friction.csv, datasheet.html) for one compound.
@@ -265,7 +185,7 @@ pub fn write_report(
     fit: &CompoundFit,
     measurement: &Measurement,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
-    maps: &[Vec<MapPoint>],
+    maps: &[FrictionMaps],
     dir: &Path,
 ) -> Result<(), PipelineError> {
     std::fs::create_dir_all(dir).map_err(io(dir))?;
@@ -300,18 +220,27 @@ pub fn write_report(
             )
         })
         .collect();
-    let friction_svg = svg_chart(
-        &format!("{}: rolling friction F/N against temperature", fit.compound),
-        "temperature (°C)",
-        "F/N",
-        &series,
-    );
-    write_atomic(&dir.join("friction.svg"), friction_svg.as_bytes())?;
+    let friction_svg = plot_pair(dir, "friction", |p| {
+        plots::plot_lines(
+            &format!("{}: rolling friction F/N against temperature", fit.compound),
+            "temperature [°C]",
+            "F/N",
+            &series,
+            false,
+            p,
+        )
+    })?;
 
     // Friction maps: CSV and, per scene, F/N against speed and against load (one curve per temperature).
     let mut map_csv = format!("# {prov}\nscene,temp_c,speed_m_s,load_n_per_m,friction\n");
     let mut map_svgs = String::new();
-    for ((spec, _), pts) in friction.iter().zip(maps) {
+    let mut grid_csv = format!(
+        "# {prov}\n# F/N on a speed × load grid at each map temperature (reduced-variable interpolant, relative tolerance {:e})\nscene,temp_c,speed_m_s,load_n_per_m,friction,contact_length_mm\n",
+        super::scenes::pipeline_map_settings().tol
+    );
+    let mut grid_svgs = String::new();
+    for ((spec, _), map) in friction.iter().zip(maps) {
+        let pts = &map.points;
         for p in pts {
             let _ = writeln!(
                 map_csv,
@@ -320,8 +249,8 @@ pub fn write_report(
             );
         }
         for (by_speed, list, label) in [
-            (true, &spec.map_speeds_m_s, "speed (m/s)"),
-            (false, &spec.map_loads_n_per_m, "load (N/m)"),
+            (true, &spec.map_speeds_m_s, "speed [m/s]"),
+            (false, &spec.map_loads_n_per_m, "load [N/m]"),
         ] {
             if list.is_empty() {
                 continue;
@@ -355,23 +284,28 @@ pub fn write_report(
                     (format!("{t} °C"), pts)
                 })
                 .collect();
-            let svg = svg_chart_axes(
-                &format!("{}: F/N against {label}", spec.name),
-                label,
-                "F/N",
-                &series,
-                true,
-            );
             let stem = format!(
                 "friction_{}_{}",
                 spec.name,
                 if by_speed { "speed" } else { "load" }
             );
-            write_atomic(&dir.join(format!("{stem}.svg")), svg.as_bytes())?;
-            map_svgs.push_str(&svg);
+            map_svgs.push_str(&plot_pair(dir, &stem, |p| {
+                plots::plot_lines(
+                    &format!("{}: F/N against {label}", spec.name),
+                    label,
+                    "F/N",
+                    &series,
+                    true,
+                    p,
+                )
+            })?);
+        }
+        if let Some(html) = write_grid(dir, spec, map, &mut grid_csv)? {
+            grid_svgs.push_str(&html);
         }
     }
     write_atomic(&dir.join("friction_map.csv"), map_csv.as_bytes())?;
+    write_atomic(&dir.join("friction_map_2d.csv"), grid_csv.as_bytes())?;
 
     let iso_svg = plot_pair(dir, "isotherms", |p| plots::plot_isotherms(measurement, p))?;
     let master_svg = plot_pair(dir, "master", |p| {
@@ -561,7 +495,20 @@ pub fn write_report(
     if !map_svgs.is_empty() {
         let _ = write!(
             h,
-            "<h3>Friction against speed and load</h3><p>Values in friction_map.csv.</p>{map_svgs}"
+            "<h3>Friction against speed and load</h3><p>Values in <a href=\"friction_map.csv\">friction_map.csv</a>.</p>{map_svgs}"
+        );
+    }
+    if !grid_svgs.is_empty() {
+        let _ = write!(
+            h,
+            "<h3>Friction maps: speed × load</h3><p>{n}×{n} grid per map temperature, log-spaced over the listed speeds and loads; values in <a href=\"friction_map_2d.csv\">friction_map_2d.csv</a>. All maps come from one interpolant of the dimensionless contact solution in the reduced variable s = l_g/(V·a_T) (relative tolerance {tol:e}; interpolation estimate {est}).</p>{grid_svgs}",
+            n = super::scenes::GRID_POINTS,
+            tol = super::scenes::pipeline_map_settings().tol,
+            est = maps
+                .iter()
+                .map(|m| format!("{:.1e}", m.error_estimate))
+                .collect::<Vec<_>>()
+                .join(", ")
         );
     }
 

@@ -22,6 +22,9 @@ pub enum PipelineError {
     /// The contact solve failed.
     #[error("contact: {0}")]
     Contact(#[from] crate::contact::ContactError),
+    /// A friction map could not be built.
+    #[error("friction map: {0}")]
+    Map(#[from] super::friction_map::FrictionMapError),
     /// A fit file could not be read or written.
     #[error("{0}")]
     Fit(#[from] super::compound_fit::CompoundFitError),

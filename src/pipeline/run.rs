@@ -82,13 +82,36 @@ pub type SceneFriction = Vec<(String, Vec<FrictionPoint>)>;
 /// One ranked fit: Ok((compound, points, mean F/N)) or Err((compound, error)).
 pub type RankedFit = Result<(String, Vec<FrictionPoint>, f64), (String, String)>;
 
+/// A step of the main job, for a progress display ([`run_all_with_progress`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ProgressEvent<'a> {
+    /// The number of work units: per compound, its fit, two per scene (friction against temperature,
+    /// friction maps) and its report.
+    Total(u64),
+    /// One unit done (`stage`: `fit`, `friction SCENE`, `maps SCENE`, `report`, or `skipped` for the
+    /// units a failed compound will not do).
+    Done {
+        /// The compound.
+        compound: &'a str,
+        /// What was done.
+        stage: &'a str,
+    },
+}
+
+/// Work units per compound (see [`ProgressEvent::Total`]).
+fn units_per_compound(scenes: &SceneSet) -> u64 {
+    2 + 2 * scenes.scene.len() as u64
+}
+
 fn one_compound(
     c: &CompoundInput,
     opts: &RunOptions,
+    step: &dyn Fn(&str),
 ) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
     let measurement = read_files(&c.files, &IngestOptions::default())?;
     let fit_path = opts.out_dir.join("fits").join(format!("{}.json", c.name));
     let (fit, action) = fit_or_reuse(&c.name, &measurement, &fit_path, &opts.fit, opts.force)?;
+    step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
     let mut maps = Vec::new();
@@ -97,7 +120,13 @@ fn one_compound(
             spec.clone(),
             friction_vs_temperature(&fit, spec, &settings)?,
         ));
-        maps.push(super::scenes::friction_maps(&fit, spec, &settings)?);
+        step(&format!("friction {}", spec.name));
+        maps.push(super::scenes::friction_maps(
+            &fit,
+            spec,
+            &super::scenes::pipeline_map_settings(),
+        )?);
+        step(&format!("maps {}", spec.name));
     }
     write_report(
         &fit,
@@ -106,6 +135,7 @@ fn one_compound(
         &maps,
         &opts.out_dir.join("reports").join(&c.name),
     )?;
+    step("report");
     Ok((
         fit,
         action,
@@ -119,15 +149,38 @@ pub fn run_all(
     opts: &RunOptions,
     log: &(dyn Fn(&str) + Sync),
 ) -> Result<RunSummary, PipelineError> {
+    run_all_with_progress(opts, log, &|_| {})
+}
+
+/// [`run_all`], reporting each finished work unit to `progress` (first [`ProgressEvent::Total`],
+/// then one [`ProgressEvent::Done`] per unit, from the worker threads).
+pub fn run_all_with_progress(
+    opts: &RunOptions,
+    log: &(dyn Fn(&str) + Sync),
+    progress: &(dyn Fn(ProgressEvent<'_>) + Sync),
+) -> Result<RunSummary, PipelineError> {
     let (compounds, notes) = discover(&opts.input_dir)?;
     for n in &notes {
         log(&format!("note: {n}"));
     }
+    let per = units_per_compound(&opts.scenes);
+    progress(ProgressEvent::Total(per * compounds.len() as u64));
     let outcomes: Vec<CompoundOutcome> = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();
-            let r = one_compound(c, opts);
+            let done = std::cell::Cell::new(0u64);
+            let step = |stage: &str| {
+                done.set(done.get() + 1);
+                progress(ProgressEvent::Done {
+                    compound: &c.name,
+                    stage,
+                });
+            };
+            let r = one_compound(c, opts, &step);
+            for _ in done.get()..per {
+                step("skipped");
+            }
             let seconds = start.elapsed().as_secs_f64();
             let out = match r {
                 Ok((_fit, action, friction)) => {

@@ -1,0 +1,101 @@
+//! Benchmark of the friction maps (issue 8): a map of 30 speeds × 30 loads × 10 temperatures of two
+//! shipped compounds (fitted from their raw exports in data/), from the reduced variable
+//! s = l_g/(V·a_T) (src/pipeline/friction_map.rs) at map tolerances 1e−3 (the main job's), 1e−4,
+//! 1e−5 and 1e−6.
+//!
+//! Grid: radius 66.5 mm (the shipped idler), speeds 0.5…40 m/s and loads 2…50 kN/m log-spaced,
+//! temperatures −40…50 °C every 10 K. Prints a Markdown table: wall time of the whole map
+//! (interpolant build + evaluation of the 9000 points, rayon on all threads, best of 2), node
+//! solves, panels, the range of ln s, the error estimate; and for scale the time of one direct
+//! `roll_auto` solve at 10 °C, 4 m/s, 10 kN/m at the main job's settings, times 9000.
+//! Run: `RAYON_NUM_THREADS=2 cargo bench --bench maps` (the 2-core figure).
+
+use std::path::PathBuf;
+use std::time::Instant;
+use viscoroll::contact::roll_auto::roll_auto;
+use viscoroll::contact::Scene;
+use viscoroll::pipeline::friction_map::{friction_map, MapQuery, MapSettings, ReducedProblem};
+use viscoroll::pipeline::scenes::pipeline_contact_settings;
+use viscoroll::pipeline::{fit_files, FitOptions};
+
+fn log_spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| (a.ln() + (b.ln() - a.ln()) * i as f64 / (n - 1) as f64).exp())
+        .collect()
+}
+
+fn main() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data");
+    println!(
+        "threads: {}\n\n| compound | creep terms | tol | map time (9000 points) | solves | panels | ln s range | estimate | direct roll_auto × 9000 |\n|---|---|---|---|---|---|---|---|---|",
+        rayon::current_num_threads()
+    );
+    for (name, file) in [
+        ("ems-ca", "pyvisco-ems-ca/freq_Eplexor_raw.xls"),
+        (
+            "trios-aresg2-lims",
+            "trios-aresg2-lims/frequency_sweep_tts.txt",
+        ),
+    ] {
+        let fit =
+            fit_files(name, &[root.join(file)], &FitOptions::default()).expect("shipped data fits");
+        let creep = fit.creep.clone().expect("creep spectrum");
+        let problem = ReducedProblem::new(&creep, None).expect("valid spectrum");
+        let radius_m = 0.0665;
+        let mut queries = Vec::new();
+        for k in 0..10 {
+            let a_t = 10f64.powf(fit.shift_law.log10_a_t(-40.0 + 10.0 * k as f64));
+            for &v in &log_spaced(0.5, 40.0, 30) {
+                for &n in &log_spaced(2e3, 5e4, 30) {
+                    queries.push(MapQuery {
+                        radius_m,
+                        load_n_per_m: n,
+                        speed_m_s: v,
+                        a_t,
+                    });
+                }
+            }
+        }
+        // one direct solve for scale
+        let at = creep
+            .at_temperature(&fit.shift_law, 10.0, None)
+            .expect("shift law");
+        let scene = Scene {
+            radius_m,
+            load_n_per_m: 1e4,
+            speed_m_s: 4.0,
+            poisson: None,
+        };
+        let t0 = Instant::now();
+        for _ in 0..5 {
+            roll_auto(&scene, &at.spectrum, &pipeline_contact_settings()).expect("solve");
+        }
+        let direct = t0.elapsed().as_secs_f64() / 5.0;
+        for tol in [1e-3, 1e-4, 1e-5, 1e-6] {
+            let settings = MapSettings {
+                tol,
+                ..MapSettings::default()
+            };
+            let mut best = f64::INFINITY;
+            let mut out = None;
+            for _ in 0..2 {
+                let t0 = Instant::now();
+                let r = friction_map(&problem, &queries, &settings).expect("map builds");
+                best = best.min(t0.elapsed().as_secs_f64());
+                out = Some(r);
+            }
+            let (values, curve) = out.expect("ran");
+            let (lo, hi) = curve.range();
+            println!(
+                "| {name} | {} | {tol:.0e} | {best:.2} s | {} | {} | [{lo:.1}, {hi:.1}] | {:.1e} | {:.1} ms × {} = {:.0} s |",
+                creep.terms.len(),
+                curve.solves,
+                curve.panels(),
+                curve.error_estimate,
+                direct * 1e3,
+                values.len(),
+                direct * values.len() as f64
+            );
+        }
+    }
+}
