@@ -381,7 +381,13 @@ fn roundoff_floor(sol: &LambdaSolution) -> f64 {
 }
 
 fn rel(a: f64, b: f64) -> f64 {
-    ((a - b) / b).abs()
+    // equal values (e.g. ρF/N = 0 of an all-lumped, elastic reduced problem) differ by nothing;
+    // 0/0 would give NaN and swallow the rest of the estimate
+    if a == b {
+        0.0
+    } else {
+        ((a - b) / b).abs()
+    }
 }
 
 /// Solve at given load N′ > 0 (the load loop).
