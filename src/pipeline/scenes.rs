@@ -256,19 +256,16 @@ pub struct FrictionMaps {
     pub solves: usize,
 }
 
-/// Map settings of the main job: relative tolerance 1e−3 on F/N and contact length at every map
-/// point (the interpolation estimate actually reached, typically ~5e−5 on the shipped compounds, is
-/// printed in the datasheet). The maps are plotted and tabulated, and the fitted compound is itself
-/// only good to about 1e−2 in friction (issue 8's end-to-end bound), so 1e−3 is invisible in both;
-/// the friction against temperature (which the ranking uses) stays on direct solves at 1e−6.
-/// Panels of six decades: a shipped scene's maps (two temperatures, speeds and loads) span about
-/// five decades of s, so one panel of 17 or 33 solves covers them. Measured on EMS-CA (65 creep
-/// terms), one compound from raw export to datasheet: 2.0 s of CPU at 1e−4 with four-decade
-/// panels, 1.25 s at 1e−3, 1.0 s (0.6 s wall on 2 cores) at 1e−3 with six-decade panels (the node
-/// solves dominate). `cargo bench --bench maps` prints the map cost at 1e−3 … 1e−6.
+/// Map settings of the main job: relative tolerance 1e−6 on F/N and contact length at every map
+/// point, the same as the friction against temperature and `viscoroll roll` (the interpolation
+/// estimate actually reached is printed in the datasheet). Panels of six decades: a shipped scene's
+/// maps (two temperatures, speeds and loads) span about five decades of s. Measured after the
+/// solver's lumping correction (`cargo bench --bench maps`, 2 threads): 9000 map points of EMS-CA
+/// (65 creep terms) in 0.26 s at 1e−6 (594 solves), and one compound from raw export to datasheet in
+/// 0.23–0.28 s wall (before it: 1.0 s of CPU at 1e−3).
 pub fn pipeline_map_settings() -> MapSettings {
     MapSettings {
-        tol: 1e-3,
+        tol: 1e-6,
         panel_width: 6.0 * std::f64::consts::LN_10,
         ..MapSettings::default()
     }
