@@ -35,9 +35,10 @@
 //! a seven-mode spectrum (c = 5e−4…5e4) agrees with a 24-point, ratio-1.4 rule to ≤ 1e−11; the Hertz
 //! case matches its closed form to 1e−12. The computed pressure's own error (~tol) comes on top.
 //!
-//! Cost (`cargo bench --bench contact_gap`, tol 1e−6, N′ = 1, shared 2-core machine): +0.51 ms per
-//! solve for one term, +24 ms for the 10-term and +40 ms for the 30-term spectrum of the bench table
-//! (13 706 and 22 860 Chebyshev terms: the pressure at ~250 nodes, O(nodes × terms), dominates).
+//! Cost (`cargo bench --bench contact_gap`, tol 1e−6, N′ = 1, 2-core machine): +0.39 ms per solve
+//! for one term, +1.3 ms for the 10-term and +2.0 ms for the 30-term spectrum of the bench table
+//! (56, 519 and 497 Chebyshev terms since fast modes are lumped with a measured correction; before
+//! that, 13 706 and 22 860 terms cost +24 and +40 ms: the pressure at ~250 nodes, O(nodes × terms)).
 //! Hence [`contact_check`] looks at ~8 points first and runs the full [`rear_scan`] only when a gap
 //! is closed or nearly so; `AutoSettings::gap_check = false` skips it (as the pipeline does).
 //!
