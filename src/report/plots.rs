@@ -132,6 +132,22 @@ fn log_log_chart<'a, DB: DrawingBackend>(
     Ok(chart)
 }
 
+/// The legend box of every chart: white, framed, at `position`, labels of `size` px.
+fn legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    position: SeriesLabelPosition,
+    size: u32,
+) -> Result<(), String> {
+    chart
+        .configure_series_labels()
+        .position(position)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .label_font(("sans-serif", size))
+        .draw()
+        .map_err(e)
+}
+
 /// Colour of temperature `t` within [`lo`, `hi`]: blue (cold) → red (hot).
 fn temp_colour(t: f64, lo: f64, hi: f64) -> RGBColor {
     let s = if hi > lo {
@@ -228,14 +244,7 @@ fn draw_isotherms<DB: DrawingBackend>(
             .draw_series(l.iter().map(|&p| Circle::new(p, 3, c.stroke_width(1))))
             .map_err(e)?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .draw()
-        .map_err(e)?;
+    legend(&mut chart, SeriesLabelPosition::LowerRight, 12)?;
     Ok(())
 }
 
@@ -321,14 +330,7 @@ fn draw_master<DB: DrawingBackend>(
         .map_err(e)?
         .label("loss (Prony fit)")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], red.stroke_width(2)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 14))
-        .draw()
-        .map_err(e)?;
+    legend(&mut chart, SeriesLabelPosition::UpperLeft, 14)?;
     Ok(())
 }
 
@@ -435,14 +437,7 @@ fn draw_shifts<DB: DrawingBackend>(
         .map_err(e)?
         .label("shifts found")
         .legend(|(x, y)| Circle::new((x + 8, y), 4, BLACK.filled()));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 14))
-        .draw()
-        .map_err(e)?;
+    legend(&mut chart, SeriesLabelPosition::UpperRight, 14)?;
     Ok(())
 }
 
@@ -625,14 +620,7 @@ fn draw_lines<DB: DrawingBackend>(
             .draw_series(p.iter().map(|&q| Circle::new(q, 3, c.filled())))
             .map_err(e)?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 14))
-        .draw()
-        .map_err(e)?;
+    legend(&mut chart, SeriesLabelPosition::UpperRight, 14)?;
     Ok(())
 }
 
