@@ -10,7 +10,7 @@
 //! (1/π)∫√(1−s²)U_{n−1}(s)/(t−s) ds = wⁿ (the exterior of the identity that gives Tₙ(t) inside).
 
 /// Scaled modified Bessel functions e^{−μ}Iₙ(μ), n = 0, 1, …, trimmed where they fall below
-/// 1e−18 of the largest (their sum 1 = e^{−μ}(I₀ + 2ΣIₙ) makes that an absolute 1e−18).
+/// 1e−18 of the largest of order n ≥ 1.
 pub fn scaled_bessel_i(mu: f64) -> Vec<f64> {
     if mu <= 0.0 || !mu.is_finite() {
         return vec![1.0];
@@ -49,8 +49,14 @@ pub fn scaled_bessel_i(mu: f64) -> Vec<f64> {
     for v in out.iter_mut() {
         *v /= sum;
     }
-    let peak = out.iter().cloned().fold(0.0, f64::max);
-    while out.len() > 1 && *out.last().unwrap() < 1e-18 * peak {
+    // Trim relative to the largest coefficient of order n ≥ 1, not to the constant term: the
+    // scheme removes the constant and divides the rest by μ (`auto`, Âⱼ = Aⱼμⱼ), so for μ ≪ 1,
+    // where e^{−μ}I₀ ≈ 1 ≫ e^{−μ}I₁ ≈ μ/2, a cut at 1e−18 of the constant left an error of
+    // 1e−18/μ in the divided series. At μ ≈ 4e−7 (a retardation time 1e9 times the contact time)
+    // dropping the n = 2 term at 1e−18 moved β by 4e−11 relative, ρF/N by 5.6e−7 of a slow-end
+    // friction (tests/contact_props.rs, case 28).
+    let peak = out.iter().skip(1).cloned().fold(0.0, f64::max);
+    while out.len() > 2 && *out.last().unwrap() < 1e-18 * peak {
         out.pop();
     }
     out
@@ -277,6 +283,41 @@ mod tests {
                     "mu {mu} n {n}: {got} vs {exact}"
                 );
             }
+        }
+    }
+
+    /// For μ ≪ 1 the orders n ≥ 1 are tiny beside e^{−μ}I₀ ≈ 1, and the scheme divides them by μ:
+    /// each must be accurate relative to itself and kept down to 1e−18 of order 1 (not of order 0).
+    /// Reference: the power series Iₙ(μ) = (μ/2)ⁿ Σₖ (μ²/4)ᵏ/(k!(n+k)!) (A&S 9.6.10), all terms
+    /// positive, times e^{−μ}.
+    #[test]
+    fn small_mu_orders_are_accurate_relative_to_themselves() {
+        for &mu in &[1e-10, 3e-9, 4e-7, 1e-4, 0.05] {
+            let c = scaled_bessel_i(mu);
+            let series = |n: usize| -> f64 {
+                let mut term =
+                    (0.5 * mu).powi(n as i32) / (1..=n).map(|k| k as f64).product::<f64>();
+                let mut sum = term;
+                for k in 1..30 {
+                    term *= 0.25 * mu * mu / (k as f64 * (n + k) as f64);
+                    sum += term;
+                }
+                sum * (-mu).exp()
+            };
+            for (n, &got) in c.iter().enumerate() {
+                let exact = series(n);
+                assert!(
+                    ((got - exact) / exact).abs() < 1e-13,
+                    "mu {mu} n {n}: {got:e} vs {exact:e}"
+                );
+            }
+            // trimmed exactly where the next order falls below 1e−18 of order 1
+            assert!(series(c.len() - 1) >= 1e-18 * series(1), "mu {mu}");
+            assert!(
+                series(c.len()) < 1e-18 * series(1),
+                "mu {mu}: {} orders",
+                c.len()
+            );
         }
     }
 

@@ -211,10 +211,6 @@ fn solve_reduced_checked(
     (unscale(red, fine), e_fr, e_ld)
 }
 
-fn merge_mu(tol: f64) -> f64 {
-    (1e-14 / tol).min(0.05)
-}
-
 fn budgets(tol: f64, fr_over_lambda: f64) -> (f64, f64) {
     (0.3 * tol * fr_over_lambda.abs().max(1e-300), 0.3 * tol)
 }
@@ -279,7 +275,7 @@ fn calibrate(
         return model;
     };
     let w_star = lump_weight(&terms[star], lambda);
-    let with = solve_reduced(&unlump(terms, red, lambda, star), lambda, q);
+    let with = solve_reduced(&unlump(terms, red, star), lambda, q);
     let g = (
         (with.friction_rho - sol.friction_rho) / lambda / w_star,
         (with.load - sol.load) / sol.load / w_star,
@@ -335,14 +331,7 @@ pub fn solve_auto_at_lambda(
     let (red, sol, e_fr, e_ld, num_fr, num_ld) = loop {
         pass += 1;
         let (bf, bl) = budgets(tol, fr_guess);
-        let red = select(
-            terms,
-            lambda,
-            bf,
-            bl,
-            merge_mu(tol),
-            (corr.gains.0, corr.gains.1),
-        );
+        let red = select(terms, lambda, bf, bl, (corr.gains.0, corr.gains.1));
         let (sol, num_fr, num_ld) = solve_reduced_checked(&red, lambda, q);
         corr = calibrate(terms, &red, &sol, q);
         let (l_fr, l_ld) = lumping_error(terms, &red, &corr, lambda);
@@ -426,14 +415,7 @@ pub fn solve_auto_at_load(
     loop {
         round += 1;
         let (bf, bl) = budgets(tol, fr_guess);
-        let red = select(
-            terms,
-            lam0,
-            bf,
-            bl,
-            merge_mu(tol),
-            (corr.gains.0, corr.gains.1),
-        );
+        let red = select(terms, lam0, bf, bl, (corr.gains.0, corr.gains.1));
         let w_lambda = lumped_weight_times_lambda(terms, &red);
         // The loop solves N′_lumped(λ)·(1 + g_N·W(λ)) = N′ with W(λ) = w_lambda/λ: first with the
         // gain assumed, then (after measuring it at the λ found) once more from there if it moved.
@@ -486,14 +468,7 @@ pub fn solve_auto_at_load(
         // estimate says honestly whether the tolerance is met)
         let same = !ok && {
             let (bf2, bl2) = budgets(tol, fr_l);
-            let next = select(
-                terms,
-                lambda,
-                bf2,
-                bl2,
-                merge_mu(tol),
-                (corr.gains.0, corr.gains.1),
-            );
+            let next = select(terms, lambda, bf2, bl2, (corr.gains.0, corr.gains.1));
             next.kept == red.kept && next.lumped == red.lumped && next.dropped == red.dropped
         };
         if ok || same || round >= 4 {

@@ -49,11 +49,7 @@ const C_LUMP_MIN: f64 = 30.0;
 pub struct Reduction {
     /// Indices (into the input terms) of modes kept.
     pub kept: Vec<usize>,
-    /// How many kept slow modes were merged into one (0 or ≥ 2).
-    pub merged: usize,
-    /// Merge threshold on μ used.
-    pub merge_mu: f64,
-    /// Modes in the reduced problem (merged slow modes count once).
+    /// Modes in the reduced problem.
     pub modes_used: usize,
     /// Indices of fast modes lumped into the glassy compliance.
     pub lumped: Vec<usize>,
@@ -63,7 +59,8 @@ pub struct Reduction {
     pub scale: f64,
     /// The reduced problem (f̂ = f/s for kept modes).
     pub modes: Modes,
-    /// Estimated absolute error of ρF/N divided by λ (after the first-order lumping correction).
+    /// Estimated absolute error of ρF/N divided by λ of the lumping and dropping (after the
+    /// first-order lumping correction).
     pub friction_over_lambda_error: f64,
     /// Estimated relative error of N′ at this λ (after the first-order lumping correction).
     pub load_error: f64,
@@ -140,15 +137,11 @@ pub fn lumped_residual(
 /// Select modes at contact length λ within the budgets (absolute on ρF/N/λ, relative on N′).
 ///
 /// `gains` are the first-order lumping gains (g_F, g_N) to assume (the model's, or measured).
-/// Kept slow modes with μ ≤ `merge_mu` are merged into one (see [`build`]); the caller picks
-/// `merge_mu` = min(0.05, 1e−14/tol): solving them separately would lose ~1e−16/μ relative, more than
-/// 1 % of the tolerance below that μ.
 pub fn select(
     terms: &[CreepTerm],
     lambda: f64,
     fr_budget: f64,
     load_budget: f64,
-    merge_mu: f64,
     gains: (f64, f64),
 ) -> Reduction {
     let l = 0.5 * lambda;
@@ -193,122 +186,63 @@ pub fn select(
     let kept: Vec<usize> = (0..terms.len())
         .filter(|i| terms[*i].f > 0.0 && !lumped.contains(i) && !dropped.contains(i))
         .collect();
-    let mut red = build(terms, lambda, kept, lumped, dropped, merge_mu);
-    red.friction_over_lambda_error += sum_fr;
-    red.load_error += sum_ld;
+    let mut red = build(terms, kept, lumped, dropped);
+    red.friction_over_lambda_error = sum_fr;
+    red.load_error = sum_ld;
     red
 }
 
-/// The reduced problem of a given split: s = 1 + Σ_lumped rᵢ, f̂ = f/s, kept slow modes merged.
-/// The returned estimates hold only the merge error (the caller adds lumping and dropping).
+/// The reduced problem of a given split: s = 1 + Σ_lumped rᵢ, f̂ = f/s for the kept modes.
+///
+/// Kept slow modes are solved for separately, however slow. (Until this version, kept modes with
+/// μ ≤ min(0.05, 1e−14/tol) were merged into one term F = Σf, ln B = Σf ln b/F, which matches their
+/// first-order kernel terms. It is not accurate enough: the friction effect of a slow mode is not
+/// linear in f·ln b, and the merge moved ρF/N by ~1 % of the merged modes' own effect — 5.5e−7
+/// relative in tests/contact_props.rs case 28 and in sweep cases 253 and 376, 100× their estimates
+/// — while the separate solve agreed with the sum of the modes' individual effects to 5e−9. The
+/// ill-conditioning the merge was meant to avoid did not show: with 30 slow modes kept separately,
+/// random relative perturbations of 1e−12 in fᵢ, bᵢ moved ρF/N by ≤ 7e−13.)
 pub fn build(
     terms: &[CreepTerm],
-    lambda: f64,
     kept: Vec<usize>,
     lumped: Vec<usize>,
     dropped: Vec<usize>,
-    merge_mu: f64,
 ) -> Reduction {
-    let l = 0.5 * lambda;
     let scale = 1.0 + lumped.iter().map(|&i| terms[i].f / terms[i].b).sum::<f64>();
-    // Kept slow modes (μ ≤ 0.05) are merged into one: to first order in bξ their kernel terms are
-    // fξ(1 − γ − ln b) − fξ ln|ξ| (module doc), reproduced exactly by F = Σf, ln B = Σf ln b / F.
-    // Several such modes give nearly equal columns in the reduced system (they differ by O(μ)), so
-    // solving them separately loses ~1/μ digits; merged, one well-conditioned column remains.
-    // Error: the second-order terms, O(bξ) relative to the first (and the merged mode keeps most of
-    // them, B being a weighted geometric mean of the bᵢ); we take 20·max(cᵢ, B·L) times the drop
-    // estimate of each merged mode (2· was 5× too small in tests/contact_props.rs case 33).
-    let slow_kept: Vec<usize> = kept
+    let reduced: Vec<CreepTerm> = kept
         .iter()
-        .copied()
-        .filter(|&i| {
-            let t = terms[i];
-            (1.0 + t.f / t.b) * t.b * l <= merge_mu.min(0.05)
+        .map(|&i| CreepTerm {
+            f: terms[i].f / scale,
+            b: terms[i].b,
         })
         .collect();
-    let mut merged = 0;
-    let (mut sum_fr, mut sum_ld) = (0.0, 0.0);
-    let mut reduced: Vec<CreepTerm> = Vec::new();
-    if slow_kept.len() >= 2 {
-        let fs: f64 = slow_kept.iter().map(|&i| terms[i].f).sum();
-        let lnb: f64 = slow_kept
-            .iter()
-            .map(|&i| terms[i].f * terms[i].b.ln())
-            .sum::<f64>()
-            / fs;
-        let c_merged = lnb.exp() * l;
-        for &i in &slow_kept {
-            let t = terms[i];
-            if let Some((e_fr, e_ld)) = slow_estimate(&t, l) {
-                let k = 20.0 * (t.b * l).max(c_merged);
-                sum_fr += k * e_fr;
-                sum_ld += k * e_ld;
-            }
-        }
-        merged = slow_kept.len();
-        reduced.push(CreepTerm {
-            f: fs / scale,
-            b: lnb.exp(),
-        });
-    }
-    reduced.extend(
-        kept.iter()
-            .filter(|i| merged == 0 || !slow_kept.contains(i))
-            .map(|&i| CreepTerm {
-                f: terms[i].f / scale,
-                b: terms[i].b,
-            }),
-    );
-    let modes_used = reduced.len();
     Reduction {
-        merge_mu: merge_mu.min(0.05),
+        modes_used: reduced.len(),
         kept,
-        merged,
-        modes_used,
         lumped,
         dropped,
         scale,
         modes: Modes::new(&reduced),
-        friction_over_lambda_error: sum_fr,
-        load_error: sum_ld,
+        friction_over_lambda_error: 0.0,
+        load_error: 0.0,
     }
 }
 
 /// The same split with lumped mode `i` kept instead (the calibration solve of the correction).
-pub fn unlump(terms: &[CreepTerm], red: &Reduction, lambda: f64, i: usize) -> Reduction {
+pub fn unlump(terms: &[CreepTerm], red: &Reduction, i: usize) -> Reduction {
     let mut kept = red.kept.clone();
     kept.push(i);
     kept.sort_unstable();
     let lumped = red.lumped.iter().copied().filter(|&j| j != i).collect();
-    build(
-        terms,
-        lambda,
-        kept,
-        lumped,
-        red.dropped.clone(),
-        red.merge_mu,
-    )
+    build(terms, kept, lumped, red.dropped.clone())
 }
 
-/// Re-evaluate the error estimates of the dropped and merged slow modes of a selection at another
-/// λ (the lumped modes' error comes from the measured correction, see [`super::controlled`]).
+/// Re-evaluate the error estimates of the dropped slow modes of a selection at another λ (the
+/// lumped modes' error comes from the measured correction, see [`super::controlled`]).
 pub fn slow_estimate_at(terms: &[CreepTerm], red: &Reduction, lambda: f64) -> (f64, f64) {
     let l = 0.5 * lambda;
     let mut fr = 0.0;
     let mut ld = 0.0;
-    // merged slow modes: second-order estimate as in `build`
-    if red.merged >= 2 {
-        for &i in &red.kept {
-            let t = &terms[i];
-            let (c, r) = (t.b * l, t.f / t.b);
-            let mu = (1.0 + r) * c;
-            if mu <= red.merge_mu {
-                let k = 20.0 * c.max(red.modes.b[0] * l);
-                fr += k * 0.6 * r * c * (1.0 + (1.0 / c).ln());
-                ld += k * 2.0 * r * c * mu * (2.0 + (1.0 / mu).ln());
-            }
-        }
-    }
     let s_eff = effective_compliance(terms, lambda);
     for &i in &red.dropped {
         let t = &terms[i];
