@@ -23,7 +23,7 @@
 //!   the measured/model ratio once known). With it a tolerance of 1e−6 lumps every mode with
 //!   c ≳ 3·10³ instead of c ≳ 10⁷ (the expansion of a mode costs ~√(83(1+r)c) Chebyshev terms):
 //!   on the benchmark's 30-term spectrum (24 decades, J∞/J_g = 1e3) 12 of 30 modes are lumped at
-//!   tol 1e−6 (10 at 1e−9, 14 at 1e−3) and the answer costs 0.77 ms instead of 10 ms (CPU, README).
+//!   tol 1e−6 (10 at 1e−9, 14 at 1e−3) and the answer costs 0.64 ms instead of 10 ms (CPU, README).
 //!   Without the correction the modes beyond the hard cap c = 1e7 alone had cost that spectrum a
 //!   true error of 4.5e−8 in ρF/N, whatever the tolerance.
 //! - **Slow modes (μᵢ = (1+rᵢ)cᵢ ≪ 1) are dropped.** Over the contact time they creep by only
@@ -33,6 +33,10 @@
 //!   safety factor 2, per mode in isolation. Within a spectrum the friction law is an upper bound
 //!   (~700× on the benchmark's 30-term spectrum: other modes add compliance), but the N′ effect is
 //!   first order in c there, so `drop_estimate` adds rᵢcᵢ/S_eff (see its doc).
+//!   An exact law behind this (tests/contact_props.rs): as c → 0 the ln b part of the kernel term
+//!   is linear in ξ and only shifts β, by (fᵢN′/2)·ln bᵢ, leaving pressure, λ and N′ alone; the
+//!   friction law above overstates that shift ~2·S_eff times (a sharper drop estimate would need
+//!   the size of the remaining −fᵢξ ln|ξ| part, not measured yet).
 //!
 //! Fast modes are lumped from the fastest down while the second-order estimate stays inside 0.7 of
 //! the budgets (only c ≥ 30, where the first-order law holds); slow modes (μ ≤ 0.05) are dropped
