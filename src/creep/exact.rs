@@ -31,7 +31,7 @@
 //! is weak (Jⱼ ∝ g²) and its time, stored to 1 ulp, is known to ε/g of the gap, so the split of strength
 //! between the pair moves by up to ~ε/g (measured 4.7e-12 of E(ρᵢ) for g = 1e-4) while their sum and
 //! the functions do not. Plain-double evaluation of h lost this much on every function too (6.5e-12),
-//! hence the double-double sums in [`PoleSeries::h`].
+//! hence the double-double sums in `PoleSeries::h`.
 //!
 //! Degenerate input, handled explicitly:
 //! - E∞ = 0 (a fluid): [`CreepError::Fluid`]. Its creep function has a flow term t/η₀ (eq. 2.11) that a

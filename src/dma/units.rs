@@ -36,7 +36,7 @@ pub enum FreqUnit {
 pub enum TempUnit {
     /// Degree Celsius.
     Celsius,
-    /// Kelvin: T[°C] = T[K] − 273.15.
+    /// Kelvin: T(°C) = T(K) − 273.15.
     Kelvin,
 }
 

@@ -624,7 +624,7 @@ fn draw_lines<DB: DrawingBackend>(
     Ok(())
 }
 
-/// One panel of a heat map: its title and z[i][j] at (x[i], y[j]).
+/// One panel of a heat map: its title and z\[i\]\[j\] at (x\[i\], y\[j\]).
 #[derive(Debug, Clone)]
 pub struct HeatPanel {
     /// Panel title (e.g. the temperature).

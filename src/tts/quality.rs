@@ -1,7 +1,7 @@
 //! Quality figures of a master curve (MATH.md §6), each with a stated bound and a flag:
 //!
 //! - **Overlap residual**: RMS mismatch (log10 units) of each isotherm's overlaps after shifting
-//!   (computed by the global shift refinement, [`super::shift`]).
+//!   (computed by the global shift refinement, `super::shift`).
 //! - **van Gurp–Palmen**: the phase angle δ = atan(E″/E′) against log10 |E*| needs no horizontal
 //!   shift; for a thermorheologically simple material the isotherms fall on one curve (van Gurp &
 //!   Palmen, Rheol. Bull. 67 (1998) 5). Measured here as the RMS difference in δ (degrees) between
