@@ -108,6 +108,25 @@ fn check_case(spec: &CreepSpectrum, scene: &Scene, label: &str) -> Outcome {
         .warnings
         .iter()
         .any(|w| w.starts_with("contact condition fails"));
+    // an answer outside its tolerance says so, and only then
+    for (s, tol) in [(&a, 1e-6), (&b, 1e-10)] {
+        let said = s
+            .auto
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("tolerance not reached"));
+        let zero = s
+            .auto
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("every creep mode"));
+        assert_eq!(
+            said,
+            s.auto.solution.error_estimate.unwrap() > tol && !zero,
+            "{label}: {:?}",
+            s.auto.warnings
+        );
+    }
     let o = Outcome {
         estimate_ok: e_fr <= est + est_b && e_l <= est + est_b,
         flagged,

@@ -690,7 +690,8 @@ fn package(
     // When every mode is lumped (or dropped) the reduced problem is elastic and ρF/N = 0 exactly;
     // the relative estimates above are then 0/0 = NaN, which `f64::max` would silently drop. The
     // relative error of a zero answer against a non-zero truth is exactly 1: report that.
-    let friction_error = if friction_error.is_nan() {
+    let zero_answer = friction_error.is_nan();
+    let friction_error = if zero_answer {
         if modes_total == 0 {
             0.0 // elastic input: ρF/N = 0 is exact
         } else {
@@ -706,6 +707,25 @@ fn package(
     };
     let size_error = if size_error.is_nan() { 1.0 } else { size_error };
     let error_estimate = friction_error.max(size_error);
+    if error_estimate > settings.tol && !zero_answer {
+        let floor = roundoff_floor(&sol);
+        let why = if floor >= 0.5 * error_estimate {
+            format!(
+                "ρF/N is only {:.1e} of the contact length, and its round-off alone (ρF/N = L − β + …, \
+                 a difference of O(λ) terms) is {floor:.1e} relative",
+                sol.friction_rho / sol.lambda
+            )
+        } else {
+            "the rest of the estimate comes from the mode reduction, which lumps modes with \
+             c = bλ/2 > 1e7 whatever the tolerance (their effect is corrected to first order and \
+             its remainder estimated)"
+                .to_string()
+        };
+        warnings.push(format!(
+            "tolerance not reached: estimated relative error {error_estimate:.1e} > tol {:.0e}; {why}",
+            settings.tol
+        ));
+    }
     let n = sol.coefficients.len();
     AutoSolution {
         solution: DimensionlessSolution {
