@@ -19,9 +19,9 @@ use viscoroll::contact::Scene;
 use viscoroll::creep::{CreepSpectrum, RetardationTerm};
 
 /// Cases of properties 1–3 in CI (each is two solves, tol 1e−6 and 1e−10).
-const CI_CASES: usize = 60;
+const CI_CASES: usize = 400;
 /// Cases of property 4 in CI (each is ~25 solves at tol 1e−6).
-const CI_LIMITS: usize = 6;
+const CI_LIMITS: usize = 40;
 
 struct Rng(u64);
 impl Rng {
@@ -358,14 +358,18 @@ fn friction_vanishes_at_both_speed_limits_with_the_asymptotic_slopes() {
 }
 
 #[test]
-#[ignore = "larger sweep (minutes in release); run with --ignored --nocapture"]
+#[ignore = "larger sweep (about 2 min in release); run with --ignored --nocapture"]
 fn sweep() {
-    let (bad_est, flagged, bad_other) = run_cases(0xB16_5EED, 400);
-    eprintln!(
-        "400 cases: {} estimate failures {bad_est:?}, {flagged} flagged, {bad_other} other",
-        bad_est.len()
-    );
-    run_limits(0xB16_5EED + 1, 40);
+    let mut bad_other = 0;
+    for seed in [0xB16_5EED, 0xC0FF_EE01] {
+        let (bad_est, flagged, other) = run_cases(seed, 2000);
+        eprintln!(
+            "seed {seed:#x}, 2000 cases: {} estimate failures {bad_est:?}, {flagged} flagged, {other} other",
+            bad_est.len()
+        );
+        bad_other += other + bad_est.len();
+        run_limits(seed + 1, 100);
+    }
     assert_eq!(bad_other, 0);
 }
 
@@ -375,25 +379,30 @@ fn beyond_the_lumping_cap_the_corrected_friction_follows_the_slow_limit() {
     // C_MAX). The reduced problem is elastic, and the friction comes entirely from the first-order
     // lumping correction (controlled.rs), which is the slow-end asymptote ρF/N ∝ 1/c ∝ V. Check it
     // against that limit: a tenfold slower speed gives a tenfold smaller friction. The remaining
-    // terms are O(1/c) ≤ 1e−6 relative (c > 1e7), so 1e−4 leaves a wide margin.
+    // terms are O(1/c) ≤ 1e−6 relative (c > 1e7), so 1e−4 leaves a wide margin. At 1e−16·l₀/τ_max
+    // (c > 1e15) the calibration cannot keep the mode it measures with (its expansion would need
+    // ~1e9 Chebyshev terms; a random slow-end scene once asked for 13 GB and was killed), so it
+    // keeps a probe of the same compliance (controlled.rs, `calibrate`): same law, same checks.
     let mut rng = Rng(0x5EED_0044);
     let (spec, _, _) = random_spectrum(&mut rng);
     let scene = random_scene(&mut rng);
     let tau_max = spec.terms.iter().map(|t| t.tau_s).fold(0.0, f64::max);
     let l0 = friction(&spec, &scene, 1.0).roll.contact_length_m;
-    let v1 = 1e-8 * l0 / tau_max;
-    let a = friction(&spec, &scene, v1);
-    let b = friction(&spec, &scene, 0.1 * v1);
-    eprintln!(
-        "V {v1:.3e}: F/N {:.6e} est {:?} modes {}; V/10: F/N {:.6e}",
-        a.roll.friction, a.auto.solution.error_estimate, a.auto.modes_used, b.roll.friction
-    );
-    assert_eq!(a.auto.modes_used, 0);
-    assert!(a.roll.friction > 0.0);
-    let ratio = a.roll.friction / b.roll.friction;
-    assert!((ratio / 10.0 - 1.0).abs() < 1e-4, "ratio {ratio}");
-    let est = a.auto.solution.error_estimate.unwrap();
-    assert!(est.is_finite() && est <= 1e-3, "estimate {est}");
+    for slow in [1e-8, 1e-16] {
+        let v1 = slow * l0 / tau_max;
+        let a = friction(&spec, &scene, v1);
+        let b = friction(&spec, &scene, 0.1 * v1);
+        eprintln!(
+            "V {v1:.3e}: F/N {:.6e} est {:?} modes {}; V/10: F/N {:.6e}",
+            a.roll.friction, a.auto.solution.error_estimate, a.auto.modes_used, b.roll.friction
+        );
+        assert_eq!(a.auto.modes_used, 0);
+        assert!(a.roll.friction > 0.0);
+        let ratio = a.roll.friction / b.roll.friction;
+        assert!((ratio / 10.0 - 1.0).abs() < 1e-4, "ratio {ratio}");
+        let est = a.auto.solution.error_estimate.unwrap();
+        assert!(est.is_finite() && est <= 1e-3, "estimate {est}");
+    }
 }
 
 /// The estimate on measured compounds over the whole reduced variable s = l_g/(V·a_T) (a scene's

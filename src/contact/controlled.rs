@@ -231,6 +231,8 @@ struct Correction {
     gains: (f64, f64, f64),
     /// Σwᵢ/w* of the calibration: how much the calibration solve's noise is amplified.
     amplification: f64,
+    /// c of the probe the calibration kept in place of a mode too fast to solve for (∞: none).
+    c_probe: f64,
 }
 
 impl Correction {
@@ -240,6 +242,7 @@ impl Correction {
         Correction {
             gains: (g_f, g_n, 0.0),
             amplification: 0.0,
+            c_probe: f64::INFINITY,
         }
     }
 
@@ -260,8 +263,21 @@ impl Correction {
     }
 }
 
+/// Largest μ = (1 + rᵢ)cᵢ of the mode the calibration solves for: its front layer needs ~√(83μ)
+/// Chebyshev terms (module [`super::chebyshev`]), ≈ 2.9e4 here.
+const MU_CALIBRATION_MAX: f64 = 1e7;
+
 /// Measure the gains at the solution's λ by one solve with the lumped mode of largest weight kept.
 /// Returns the model gains (and amplification 0) when nothing is lumped or the solve fails.
+///
+/// A mode lumped because it lies beyond the cap of [`super::reduce::select`] can be far too fast
+/// to solve for: in a random slow-end scene (V = 2e−4 m/s, 5 modes) every mode had c > 1e7 and
+/// keeping the largest-weight one asked for 13 GB of Chebyshev coefficients. When its
+/// μ = (1 + rᵢ)cᵢ exceeds [`MU_CALIBRATION_MAX`] the calibration keeps a probe instead: a mode of
+/// the same compliance rᵢ at c_p = max(100, μ_max/(1 + rᵢ)). Lumped, probe and mode are the same
+/// problem (only rᵢ enters the scale s), so the probe kept minus the mode lumped is the probe's own
+/// layer effect g·w_p, w_p = rᵢ/c_p; its second-order error ∝ 1/c_p is counted by taking c_p
+/// into the c_min of the remainder estimate ([`Correction::c_probe`]).
 fn calibrate(
     terms: &[CreepTerm],
     red: &Reduction,
@@ -275,6 +291,25 @@ fn calibrate(
     }) else {
         return model;
     };
+    let l = 0.5 * lambda;
+    let t = terms[star];
+    let r = t.f / t.b;
+    let weight = lumped_weight_times_lambda(terms, red) / lambda;
+    let (probe_terms, c_probe);
+    let terms = if (1.0 + r) * t.b * l <= MU_CALIBRATION_MAX {
+        c_probe = f64::INFINITY;
+        terms
+    } else {
+        let c = (MU_CALIBRATION_MAX / (1.0 + r)).max(100.0);
+        let mut p = terms.to_vec();
+        p[star] = CreepTerm {
+            f: r * c / l,
+            b: c / l,
+        };
+        probe_terms = p;
+        c_probe = c;
+        &probe_terms[..]
+    };
     let w_star = lump_weight(&terms[star], lambda);
     let with = solve_reduced(&unlump(terms, red, star), lambda, q);
     let g = (
@@ -287,7 +322,8 @@ fn calibrate(
     }
     Correction {
         gains: g,
-        amplification: lumped_weight_times_lambda(terms, red) / lambda / w_star,
+        amplification: weight / w_star,
+        c_probe,
     }
 }
 
@@ -299,7 +335,13 @@ fn lumping_error(
     corr: &Correction,
     lambda: f64,
 ) -> (f64, f64) {
-    let (e_fr, e_ld) = lumped_residual(terms, &red.lumped, lambda, (corr.gains.0, corr.gains.1));
+    let (e_fr, e_ld) = lumped_residual(
+        terms,
+        &red.lumped,
+        lambda,
+        (corr.gains.0, corr.gains.1),
+        corr.c_probe,
+    );
     if corr.amplification > 0.0 {
         (e_fr, e_ld)
     } else {
@@ -351,23 +393,28 @@ pub fn solve_auto_at_lambda(
     // the calibration is a difference of two solves with the same quadrature: its noise is at most
     // twice their error, amplified by Σwᵢ/w*
     let amp = 1.0 + 2.0 * corr.amplification;
-    let friction_error = amp * num_fr + e_fr * lambda / fr.abs().max(1e-300) + roundoff_floor(&sol);
+    let floor = roundoff_floor(&sol, &red, &corr);
+    let friction_error = amp * num_fr + e_fr * lambda / fr.abs().max(1e-300) + floor;
     let size_error = amp * num_ld + e_ld;
     Ok(package(
         terms,
         &red,
         sol,
         0,
-        friction_error,
+        (friction_error, floor),
         size_error,
         settings,
     ))
 }
 
-/// Round-off floor of ρF/N = L − β + L·F₂/(2F₁) (eq. in `auto`'s module doc): a difference of
-/// O(λ) terms, so its absolute error is a few ε·(λ + |β|), large relative to a small friction.
-fn roundoff_floor(sol: &LambdaSolution) -> f64 {
-    8.0 * f64::EPSILON * (sol.lambda + sol.beta.abs()) / sol.friction_rho.abs().max(1e-300)
+/// Relative round-off floor of the corrected ρF/N. Each solve's ρF/N = L − β + L·F₂/(2F₁) (eq. in
+/// `auto`'s module doc) is a difference of O(λ) terms, so its absolute error is a few ε·(λ + |β|):
+/// once for the reduced solve (none when every mode is lumped or dropped: the elastic solve gives
+/// β = L and F₂ = 0 exactly), and for the lumping correction twice (the calibration is a difference
+/// of two solves) times its amplification Σwᵢ/w*. Large relative to a small friction.
+fn roundoff_floor(sol: &LambdaSolution, red: &Reduction, corr: &Correction) -> f64 {
+    let solves = if red.modes_used > 0 { 1.0 } else { 0.0 } + 2.0 * corr.amplification;
+    8.0 * f64::EPSILON * solves * (sol.lambda + sol.beta.abs()) / sol.friction_rho.abs().max(1e-300)
 }
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -484,16 +531,17 @@ pub fn solve_auto_at_load(
             let mut sol = lp.sol;
             corr.apply(terms, &red, &mut sol);
             let fr = sol.friction_rho;
+            let floor = roundoff_floor(&sol, &red, &corr);
             let friction_error = num_fr
                 + e_fr * lambda / fr.abs().max(1e-300)
                 + lp.dfr.abs().max(1.0) * size_error
-                + roundoff_floor(&sol);
+                + floor;
             return Ok(package(
                 terms,
                 &red,
                 sol,
                 total_iter,
-                friction_error,
+                (friction_error, floor),
                 size_error,
                 settings,
             ));
@@ -636,7 +684,7 @@ fn package(
     red: &Reduction,
     sol: LambdaSolution,
     iterations: usize,
-    friction_error: f64,
+    (friction_error, floor): (f64, f64),
     size_error: f64,
     settings: &AutoSettings,
 ) -> AutoSolution {
@@ -708,7 +756,6 @@ fn package(
     let size_error = if size_error.is_nan() { 1.0 } else { size_error };
     let error_estimate = friction_error.max(size_error);
     if error_estimate > settings.tol && !zero_answer {
-        let floor = roundoff_floor(&sol);
         let why = if floor >= 0.5 * error_estimate {
             format!(
                 "ρF/N is only {:.1e} of the contact length, and its round-off alone (ρF/N = L − β + …, \

@@ -116,12 +116,14 @@ fn drop_estimate(t: &CreepTerm, l: f64, s_eff: f64) -> Option<(f64, f64)> {
 }
 
 /// Second-order estimate 2·g·Σwᵢ/c_min of the corrected lumping error of `lumped` (module doc),
-/// with gains (g_F, g_N): (ρF/N/λ error, relative N′ error).
+/// with gains (g_F, g_N): (ρF/N/λ error, relative N′ error). c_min is the smallest c of the lumped
+/// modes and `c_probe` (the calibration's probe mode, `f64::INFINITY` for none).
 pub fn lumped_residual(
     terms: &[CreepTerm],
     lumped: &[usize],
     lambda: f64,
     gains: (f64, f64),
+    c_probe: f64,
 ) -> (f64, f64) {
     if lumped.is_empty() {
         return (0.0, 0.0);
@@ -131,7 +133,7 @@ pub fn lumped_residual(
     let c_min = lumped
         .iter()
         .map(|&i| terms[i].b * l)
-        .fold(f64::INFINITY, f64::min);
+        .fold(c_probe, f64::min);
     (
         2.0 * gains.0.abs() * w / c_min,
         2.0 * gains.1.abs() * w / c_min,
@@ -160,13 +162,13 @@ pub fn select(
     let mut lumped: Vec<usize> = Vec::new();
     for &i in &fast {
         lumped.push(i);
-        let (e_fr, e_ld) = lumped_residual(terms, &lumped, lambda, gains);
+        let (e_fr, e_ld) = lumped_residual(terms, &lumped, lambda, gains, f64::INFINITY);
         if terms[i].b * l <= C_MAX && (e_fr > 0.7 * fr_budget || e_ld > 0.7 * load_budget) {
             lumped.pop();
             break;
         }
     }
-    let (mut sum_fr, mut sum_ld) = lumped_residual(terms, &lumped, lambda, gains);
+    let (mut sum_fr, mut sum_ld) = lumped_residual(terms, &lumped, lambda, gains, f64::INFINITY);
     // Slow modes, cheapest first, within what is left.
     let s_eff = effective_compliance(terms, lambda);
     let mut slow: Vec<(f64, usize, f64, f64)> = Vec::new();
