@@ -27,7 +27,7 @@
 //! point): one term 22/32/40 µs at tol 1e−3/1e−6/1e−9; 10 terms 0.09/0.32/1.1 ms; 30 terms over 24
 //! decades 0.17/0.64/1.6 ms (before the measured lumping correction: 1.7/10/51 ms), i.e. 4–6
 //! solves per load point. Estimates are ≤ tol and 2–1600× the true error against tol 1e−10 solves
-//! (tests/contact_auto.rs); over 460 random spectra and scenes and the measured TRIOS and EMS-CA
+//! (tests/contact_auto.rs); over 4400 random spectra and scenes and the measured TRIOS and EMS-CA
 //! spectra over ln s = −48…8 no estimate misses (tests/contact_props.rs).
 //!
 //! The reported `error_estimate` is the largest of the relative errors of ρF/N and of λ (at given
