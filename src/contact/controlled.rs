@@ -36,8 +36,8 @@
 use super::auto::{solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings};
 use super::rear_gap::contact_check;
 use super::reduce::{
-    effective_compliance, lump_weight, lumped_residual, model_gains, select, slow_estimate_at,
-    unlump, Reduction,
+    calibration_mode, effective_compliance, lump_weight, lumped_residual, model_gains, select,
+    slow_estimate_at, unlump, Reduction,
 };
 use super::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
@@ -231,8 +231,6 @@ struct Correction {
     gains: (f64, f64, f64),
     /// Σwᵢ/w* of the calibration: how much the calibration solve's noise is amplified.
     amplification: f64,
-    /// c of the probe the calibration kept in place of a mode too fast to solve for (∞: none).
-    c_probe: f64,
 }
 
 impl Correction {
@@ -242,7 +240,6 @@ impl Correction {
         Correction {
             gains: (g_f, g_n, 0.0),
             amplification: 0.0,
-            c_probe: f64::INFINITY,
         }
     }
 
@@ -263,21 +260,11 @@ impl Correction {
     }
 }
 
-/// Largest μ = (1 + rᵢ)cᵢ of the mode the calibration solves for: its front layer needs ~√(83μ)
-/// Chebyshev terms (module [`super::chebyshev`]), ≈ 2.9e4 here.
-const MU_CALIBRATION_MAX: f64 = 1e7;
-
-/// Measure the gains at the solution's λ by one solve with the lumped mode of largest weight kept.
-/// Returns the model gains (and amplification 0) when nothing is lumped or the solve fails.
-///
-/// A mode lumped because it lies beyond the cap of [`super::reduce::select`] can be far too fast
-/// to solve for: in a random slow-end scene (V = 2e−4 m/s, 5 modes) every mode had c > 1e7 and
-/// keeping the largest-weight one asked for 13 GB of Chebyshev coefficients. When its
-/// μ = (1 + rᵢ)cᵢ exceeds [`MU_CALIBRATION_MAX`] the calibration keeps a probe instead: a mode of
-/// the same compliance rᵢ at c_p = max(100, μ_max/(1 + rᵢ)). Lumped, probe and mode are the same
-/// problem (only rᵢ enters the scale s), so the probe kept minus the mode lumped is the probe's own
-/// layer effect g·w_p, w_p = rᵢ/c_p; its second-order error ∝ 1/c_p is counted by taking c_p
-/// into the c_min of the remainder estimate ([`Correction::c_probe`]).
+/// Measure the gains at the solution's λ by one solve with the lumped mode of largest weight kept,
+/// or the probe that stands in for it when it is too fast to solve for
+/// ([`super::reduce::calibration_mode`]): the probe kept minus the mode lumped is the probe's own
+/// layer effect g·w_p, w_p = rᵢ/c_p. Returns the model gains (and amplification 0) when nothing is
+/// lumped or the solve fails.
 fn calibrate(
     terms: &[CreepTerm],
     red: &Reduction,
@@ -286,29 +273,23 @@ fn calibrate(
 ) -> Correction {
     let lambda = sol.lambda;
     let model = Correction::model(terms, lambda);
-    let Some(&star) = red.lumped.iter().max_by(|&&a, &&b| {
-        lump_weight(&terms[a], lambda).total_cmp(&lump_weight(&terms[b], lambda))
-    }) else {
+    let Some((star, c_probe)) = calibration_mode(terms, &red.lumped, lambda) else {
         return model;
     };
-    let l = 0.5 * lambda;
-    let t = terms[star];
-    let r = t.f / t.b;
     let weight = lumped_weight_times_lambda(terms, red) / lambda;
-    let (probe_terms, c_probe);
-    let terms = if (1.0 + r) * t.b * l <= MU_CALIBRATION_MAX {
-        c_probe = f64::INFINITY;
-        terms
-    } else {
-        let c = (MU_CALIBRATION_MAX / (1.0 + r)).max(100.0);
+    let probe_terms;
+    let terms = if c_probe.is_finite() {
+        let l = 0.5 * lambda;
+        let r = terms[star].f / terms[star].b;
         let mut p = terms.to_vec();
         p[star] = CreepTerm {
-            f: r * c / l,
-            b: c / l,
+            f: r * c_probe / l,
+            b: c_probe / l,
         };
         probe_terms = p;
-        c_probe = c;
         &probe_terms[..]
+    } else {
+        terms
     };
     let w_star = lump_weight(&terms[star], lambda);
     let with = solve_reduced(&unlump(terms, red, star), lambda, q);
@@ -323,7 +304,6 @@ fn calibrate(
     Correction {
         gains: g,
         amplification: weight / w_star,
-        c_probe,
     }
 }
 
@@ -335,13 +315,7 @@ fn lumping_error(
     corr: &Correction,
     lambda: f64,
 ) -> (f64, f64) {
-    let (e_fr, e_ld) = lumped_residual(
-        terms,
-        &red.lumped,
-        lambda,
-        (corr.gains.0, corr.gains.1),
-        corr.c_probe,
-    );
+    let (e_fr, e_ld) = lumped_residual(terms, &red.lumped, lambda, (corr.gains.0, corr.gains.1));
     if corr.amplification > 0.0 {
         (e_fr, e_ld)
     } else {

@@ -115,19 +115,47 @@ fn drop_estimate(t: &CreepTerm, l: f64, s_eff: f64) -> Option<(f64, f64)> {
     slow_estimate(t, l).map(|(fr, ld)| (fr, ld + (t.f / t.b) * t.b * l / s_eff))
 }
 
+/// Largest μ = (1 + rᵢ)cᵢ of a mode the lumping calibration solves for: its front layer needs
+/// ~√(83μ) ≈ 2.9e4 Chebyshev terms (module [`super::chebyshev`]).
+pub const MU_CALIBRATION_MAX: f64 = 1e7;
+
+/// The mode the lumping calibration measures with ([`super::controlled`]): the lumped mode of
+/// largest weight, and the c of the probe that stands in for it when its μ = (1 + rᵢ)cᵢ exceeds
+/// [`MU_CALIBRATION_MAX`] (`f64::INFINITY`: none): c_p = max(100, μ_max/(1 + rᵢ)). A mode lumped
+/// beyond the cap of [`select`] can be far too fast to solve for (c ≈ 1e15 in a random slow-end
+/// scene, 13 GB of coefficients); lumped, the probe and the mode are the same problem (only rᵢ
+/// enters the scale s).
+pub fn calibration_mode(
+    terms: &[CreepTerm],
+    lumped: &[usize],
+    lambda: f64,
+) -> Option<(usize, f64)> {
+    let &star = lumped.iter().max_by(|&&a, &&b| {
+        lump_weight(&terms[a], lambda).total_cmp(&lump_weight(&terms[b], lambda))
+    })?;
+    let t = terms[star];
+    let r = t.f / t.b;
+    let c_probe = if (1.0 + r) * t.b * 0.5 * lambda <= MU_CALIBRATION_MAX {
+        f64::INFINITY
+    } else {
+        (MU_CALIBRATION_MAX / (1.0 + r)).max(100.0)
+    };
+    Some((star, c_probe))
+}
+
 /// Second-order estimate 2·g·Σwᵢ/c_min of the corrected lumping error of `lumped` (module doc),
 /// with gains (g_F, g_N): (ρF/N/λ error, relative N′ error). c_min is the smallest c of the lumped
-/// modes and `c_probe` (the calibration's probe mode, `f64::INFINITY` for none).
+/// modes and of the calibration's probe ([`calibration_mode`]), whose own second-order error
+/// enters the measured gain.
 pub fn lumped_residual(
     terms: &[CreepTerm],
     lumped: &[usize],
     lambda: f64,
     gains: (f64, f64),
-    c_probe: f64,
 ) -> (f64, f64) {
-    if lumped.is_empty() {
+    let Some((_, c_probe)) = calibration_mode(terms, lumped, lambda) else {
         return (0.0, 0.0);
-    }
+    };
     let l = 0.5 * lambda;
     let w: f64 = lumped.iter().map(|&i| lump_weight(&terms[i], lambda)).sum();
     let c_min = lumped
@@ -162,13 +190,13 @@ pub fn select(
     let mut lumped: Vec<usize> = Vec::new();
     for &i in &fast {
         lumped.push(i);
-        let (e_fr, e_ld) = lumped_residual(terms, &lumped, lambda, gains, f64::INFINITY);
+        let (e_fr, e_ld) = lumped_residual(terms, &lumped, lambda, gains);
         if terms[i].b * l <= C_MAX && (e_fr > 0.7 * fr_budget || e_ld > 0.7 * load_budget) {
             lumped.pop();
             break;
         }
     }
-    let (mut sum_fr, mut sum_ld) = lumped_residual(terms, &lumped, lambda, gains, f64::INFINITY);
+    let (mut sum_fr, mut sum_ld) = lumped_residual(terms, &lumped, lambda, gains);
     // Slow modes, cheapest first, within what is left.
     let s_eff = effective_compliance(terms, lambda);
     let mut slow: Vec<(f64, usize, f64, f64)> = Vec::new();
