@@ -1,7 +1,7 @@
 //! Mode reduction of the `auto` scheme: which retardation modes a scene needs.
 //!
 //! Input: creep terms (fᵢ, bᵢ), the contact length λ and error budgets; output: [`Reduction`] (kept,
-//! lumped and dropped modes, the rescaled problem and the estimated errors).
+//! lumped and dropped modes and the rescaled problem; their errors: [`lumped_residual`], [`slow_estimate_at`]).
 //!
 //! With L = λ/2, cᵢ = bᵢL (contact half-time over τᵢ), rᵢ = fᵢ/bᵢ = Jᵢ/J_g:
 //! - **Fast modes (cᵢ ≫ 1) are lumped into the glassy compliance.** For bξ → ∞ the kernel term
@@ -63,11 +63,6 @@ pub struct Reduction {
     pub scale: f64,
     /// The reduced problem (f̂ = f/s for kept modes).
     pub modes: Modes,
-    /// Estimated absolute error of ρF/N divided by λ of the lumping and dropping (after the
-    /// first-order lumping correction).
-    pub friction_over_lambda_error: f64,
-    /// Estimated relative error of N′ at this λ (after the first-order lumping correction).
-    pub load_error: f64,
 }
 
 /// Lumping weight wᵢ = rᵢ/cᵢ = fᵢ/(bᵢ²L) of a fast mode (module doc).
@@ -220,10 +215,7 @@ pub fn select(
     let kept: Vec<usize> = (0..terms.len())
         .filter(|i| terms[*i].f > 0.0 && !lumped.contains(i) && !dropped.contains(i))
         .collect();
-    let mut red = build(terms, kept, lumped, dropped);
-    red.friction_over_lambda_error = sum_fr;
-    red.load_error = sum_ld;
-    red
+    build(terms, kept, lumped, dropped)
 }
 
 /// The reduced problem of a given split: s = 1 + Σ_lumped rᵢ, f̂ = f/s for the kept modes.
@@ -257,8 +249,6 @@ pub fn build(
         dropped,
         scale,
         modes: Modes::new(&reduced),
-        friction_over_lambda_error: 0.0,
-        load_error: 0.0,
     }
 }
 
