@@ -12,6 +12,7 @@ mod dma_quirks;
 mod dma_real;
 mod dma_xlsx;
 mod fit_cli;
+mod golden_outputs;
 mod ingest_cli;
 mod known_truth;
 mod master_cli;
