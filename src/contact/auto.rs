@@ -31,8 +31,9 @@
 //! O(N·Q·√μ) part, half the time of a 30-term solve) are shared by the step-h solve and the step-2h
 //! check of [`solve_at_lambda_checked`], whose difference gives the quadrature error estimate.
 
-use super::chebyshev::{exp_coefficients, exterior_values, sine_series, theta_w};
+use super::chebyshev::{exp_coefficients, exterior_values, theta_w};
 use super::modes::Modes;
+use crate::special::chebyshev::{sine_series, sine_series_grid};
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::PI;
 
@@ -88,7 +89,7 @@ impl LambdaSolution {
     /// point within 30 layer widths of the front edge (at most ~40 of them, log-spaced).
     pub fn profile(&self, n_uniform: usize) -> (Vec<f64>, Vec<f64>, f64) {
         let l = 0.5 * self.lambda;
-        let grid = super::chebyshev::sine_series_grid(&self.coefficients);
+        let grid = sine_series_grid(&self.coefficients);
         let m = grid.len() - 1;
         let min_ratio = {
             let pmax = grid.iter().map(|g| g.1).fold(0.0, f64::max);

@@ -57,9 +57,9 @@
 //! with compliance (1 + f/b) (N′ → λ²/(4(1+f/b))). bλ → 0 at fixed f/b: the creep term vanishes
 //! (∫γ ln|ξ+ζ| → (f/b)·O(bλ·ln bλ)), Hertz with the glassy compliance.
 
-use super::bessel::{one_minus_one_plus_c_i0, scaled_bessel_i_orders};
-use super::quadrature::Integrator;
 use super::{CreepTerm, DimensionlessSolution};
+use crate::special::gauss_legendre::Integrator;
+use crate::special::{one_minus_one_plus_c_i0, scaled_bessel_i};
 use thiserror::Error;
 
 /// Bad input to the exact one-term solution, or a load that could not be bracketed.
@@ -105,7 +105,7 @@ pub const MAX_KAPPA_LAMBDA: f64 = 1e9;
 /// Smallest bλ accepted (the solution is then Hertz to about (f/b)·bλ·ln(1/bλ) anyway).
 pub const MIN_B_LAMBDA: f64 = 1e-250;
 
-/// Relative cut of the Bessel series Ĩₙ(c) (terms below it are dropped; see [`scaled_bessel_i_orders`]).
+/// Relative cut of the Bessel series Ĩₙ(c) (terms below it are dropped; relative to the largest order ≥ 1; see [`scaled_bessel_i`]).
 const SERIES_CUT: f64 = 1e-19;
 /// Relative tolerance of the adaptive quadratures (integrands are positive and analytic).
 const QUAD_TOL: f64 = 1e-15;
@@ -178,7 +178,7 @@ fn solve_with_cut(term: CreepTerm, lambda: f64, cut: f64) -> OneTermExact {
     let kappa = b + f;
     let c = 0.5 * kappa * lambda;
     let p = 0.5 * b * lambda;
-    let i_n = scaled_bessel_i_orders(c, cut);
+    let i_n = scaled_bessel_i(c, cut);
     let i0 = i_n[0];
     let i1 = i_n.get(1).copied().unwrap_or(0.0);
     let i2 = i_n.get(2).copied().unwrap_or(0.0);
@@ -336,7 +336,7 @@ pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, Cont
         if m.abs() <= tol || fb == 0.0 {
             break;
         }
-        (d, e) = super::brent::brent_step((a, b, c), (fa, fb, fc), m, tol, (d, e), true);
+        (d, e) = crate::special::brent::brent_step((a, b, c), (fa, fb, fc), m, tol, (d, e), true);
         a = b;
         fa = fb;
         b += if d.abs() > tol { d } else { tol.copysign(m) };

@@ -2,8 +2,8 @@
 //! Goodier & Loutzenheiser figures, and an independent residual check of thesis eq. 3.25 by direct
 //! quadrature with the closed-form kernel (crate::special::kernel_bracket).
 use super::exact::*;
-use super::quadrature::Integrator;
 use super::CreepTerm;
+use crate::special::gauss_legendre::Integrator;
 use crate::special::kernel_bracket;
 use std::f64::consts::PI;
 

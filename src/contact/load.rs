@@ -170,7 +170,7 @@ where
         if solves.get() >= settings.max_solves {
             return Err(stop_err(solves.get()));
         }
-        (d, e) = super::brent::brent_step(
+        (d, e) = crate::special::brent::brent_step(
             (a, b, c),
             (fa, fb, fc),
             m,

@@ -9,12 +9,9 @@
 
 use serde::{Deserialize, Serialize};
 
-mod bessel;
-mod brent;
 pub mod exact;
 #[cfg(test)]
 mod exact_tests;
-mod quadrature;
 
 pub use exact::{one_term_at_lambda, one_term_at_load, ContactExactError, OneTermExact};
 

@@ -48,6 +48,7 @@
 
 use crate::contact::controlled::{solve_auto_at_load, AutoError, AutoSettings};
 use crate::contact::CreepTerm;
+use crate::special::chebyshev::{clenshaw, lobatto_coefficients};
 use crate::{CreepSpectrum, ModulusKind};
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -293,37 +294,6 @@ pub struct ReducedCurve {
     pub node_tol: f64,
 }
 
-/// Coefficients c_j of p(t) = Σ c_j T_j(t) interpolating `v` at the Lobatto points (DCT-I).
-fn cheb_coefficients(v: &[f64]) -> Vec<f64> {
-    let n = v.len() - 1;
-    (0..=n)
-        .map(|j| {
-            let mut s = 0.0;
-            for (k, &vk) in v.iter().enumerate() {
-                let w = if k == 0 || k == n { 0.5 } else { 1.0 };
-                s += w * vk * (PI * (j * k) as f64 / n as f64).cos();
-            }
-            let c = 2.0 * s / n as f64;
-            if j == 0 || j == n {
-                0.5 * c
-            } else {
-                c
-            }
-        })
-        .collect()
-}
-
-/// Clenshaw evaluation of Σ c_j T_j(t).
-fn clenshaw(c: &[f64], t: f64) -> f64 {
-    let (mut b1, mut b2) = (0.0, 0.0);
-    for &cj in c.iter().skip(1).rev() {
-        let b0 = 2.0 * t * b1 - b2 + cj;
-        b2 = b1;
-        b1 = b0;
-    }
-    t * b1 - b2 + c[0]
-}
-
 /// Error estimate of a Chebyshev interpolant from its coefficients: twice the sum of the last
 /// quarter of them (see the module doc).
 fn tail(c: &[f64]) -> f64 {
@@ -444,8 +414,8 @@ impl ReducedCurve {
             }
             let mut next = Vec::new();
             for (q, (phi_v, lambda_v)) in pending.iter().zip(filled) {
-                let phi = cheb_coefficients(&phi_v);
-                let lambda = cheb_coefficients(&lambda_v);
+                let phi = lobatto_coefficients(&phi_v);
+                let lambda = lobatto_coefficients(&lambda_v);
                 let estimate = tail(&phi).max(tail(&lambda));
                 if estimate <= budget {
                     done.push(Panel {

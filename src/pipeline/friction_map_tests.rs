@@ -200,7 +200,7 @@ fn chebyshev_interpolation_is_exact_for_polynomials_and_estimates_exp() {
     // T₃ sampled at the 17 Lobatto points has coefficients δ_j3 (to rounding).
     let n = 16;
     let t: Vec<f64> = (0..=n).map(|k| (PI * k as f64 / n as f64).cos()).collect();
-    let c = cheb_coefficients(
+    let c = lobatto_coefficients(
         &t.iter()
             .map(|&x| 4.0 * x * x * x - 3.0 * x)
             .collect::<Vec<_>>(),
@@ -212,7 +212,7 @@ fn chebyshev_interpolation_is_exact_for_polynomials_and_estimates_exp() {
     // e^{4x} on [−1, 1]: the degree-16 interpolant's true error (≈ 2·I₁₇(4) ≈ 1e−9, the first
     // neglected coefficient, c_j = 2I_j(4)) is below the estimate Σ_{j≥12}|c_j| ≈ 2I₁₂(4) ≈ 2e−5.
     let f = |x: f64| (4.0 * x).exp();
-    let c = cheb_coefficients(&t.iter().map(|&x| f(x)).collect::<Vec<_>>());
+    let c = lobatto_coefficients(&t.iter().map(|&x| f(x)).collect::<Vec<_>>());
     let est = tail(&c);
     let err = (0..=1000)
         .map(|k| -1.0 + 2.0 * k as f64 / 1000.0)
