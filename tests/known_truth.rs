@@ -15,8 +15,7 @@
 //! `cargo test --test tests known_truth -- --nocapture`.
 
 use std::path::PathBuf;
-use viscoroll::contact::controlled::AutoSettings;
-use viscoroll::contact::roll_auto::roll_auto;
+use viscoroll::contact::{roll, AutoSettings, ContactSettings, Scheme};
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet};
 use viscoroll::pipeline::{fit_files, FitOptions};
@@ -34,11 +33,15 @@ const TEMPS_C: [f64; 11] = [
 /// Contact tolerance of both sides: the auto scheme's error control bounds the relative error of
 /// F/N by `tol`; 1e-4 is 200× below the 2 % target (and 500× below 5 %), so the solver contributes
 /// at most 0.01 % + 0.01 % to a difference, while costing a fraction of the default 1e-6.
-fn contact_settings() -> AutoSettings {
-    AutoSettings {
-        tol: 1e-4,
-        gap_check: false,
-        ..AutoSettings::default()
+fn contact_settings() -> ContactSettings {
+    ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            tol: 1e-4,
+            gap_check: false,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     }
 }
 
@@ -189,22 +192,20 @@ fn evaluate(
             let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
             let scene = spec.scene();
             for p in &got {
-                let truth = roll_auto(
+                let truth = roll(
                     &scene,
                     &shifted(&true_creep, compound.law.log10_a_t(p.temp_c)),
                     &settings,
                 )
                 .unwrap()
-                .roll
                 .friction;
                 // The fitted spectrum with the true shifts: the error of the spectrum alone.
-                let spec_only = roll_auto(
+                let spec_only = roll(
                     &scene,
                     &shifted(&fit_creep, true_shift(p.temp_c)),
                     &settings,
                 )
                 .unwrap()
-                .roll
                 .friction;
                 // A failed solve (NaN) counts as an infinite error.
                 let err = (p.friction / truth - 1.0).abs();

@@ -271,6 +271,8 @@ mod tests {
             n: 0,
             iterations: 0,
             error_estimate: None,
+            auto: None,
+            warnings: Vec::new(),
         }
     }
 

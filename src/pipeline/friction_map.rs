@@ -46,7 +46,8 @@
 //! 4.9e−9. With the estimate from the last quarter alone (no factor 2) the worst error was 1.4× the
 //! estimate, still inside the tolerance thanks to the half-tolerance budget; the factor 2 covers it.
 
-use crate::contact::controlled::{solve_auto_at_load, AutoError, AutoSettings};
+use crate::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+use crate::contact::ContactError;
 use crate::contact::CreepTerm;
 use crate::special::chebyshev::{clenshaw, lobatto_coefficients};
 use crate::{CreepSpectrum, ModulusKind};
@@ -75,7 +76,7 @@ pub enum FrictionMapError {
         /// The reduced variable s = l_g/(V·a_T) in s.
         s_s: f64,
         /// The solver's error.
-        source: AutoError,
+        source: ContactError,
     },
     /// The friction at a node is not positive (ln φ undefined).
     #[error("friction ρF/N = {phi:e} at reduced time s = {s_s:e} s is not > 0; the map cannot be interpolated in ln F/N")]
@@ -236,7 +237,7 @@ impl ReducedProblem {
         let s_s = x.exp();
         let sol = solve_auto_at_load(&self.terms(s_s), 0.25, settings)
             .map_err(|source| FrictionMapError::Solve { s_s, source })?;
-        let d = &sol.solution;
+        let d = &sol;
         Ok(ReducedSolution {
             friction_rho: d.friction_rho,
             lambda: d.lambda,

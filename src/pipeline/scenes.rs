@@ -9,9 +9,8 @@ use super::compound_fit::CompoundFit;
 use super::error::{io, PipelineError};
 use super::fit_compound::measured_range_c;
 use super::friction_map::{friction_map, MapQuery, MapSettings, MapValue, ReducedProblem};
-use crate::contact::controlled::AutoSettings;
-use crate::contact::roll_auto::roll_auto;
 use crate::contact::Scene;
+use crate::contact::{roll, AutoSettings, Body, ContactSettings, Scheme};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -58,6 +57,7 @@ impl SceneSpec {
             load_n_per_m: self.load_n_per_m,
             speed_m_s: self.speed_m_s,
             poisson: self.poisson,
+            body: Body::HalfSpace,
         }
     }
 }
@@ -170,10 +170,14 @@ pub struct FrictionPoint {
 /// n = 200 would be about 100× slower per load point and only accurate to ~1e-3 in λ. The exterior
 /// gap check is off: it only reports, never changes the friction, and costs more than the solve for
 /// few modes (it made the shipped run 2.2 s instead of 0.9 s); `viscoroll roll` still runs it.
-pub fn pipeline_contact_settings() -> AutoSettings {
-    AutoSettings {
-        gap_check: false,
-        ..AutoSettings::default()
+pub fn pipeline_contact_settings() -> ContactSettings {
+    ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            gap_check: false,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     }
 }
 
@@ -182,7 +186,7 @@ pub fn pipeline_contact_settings() -> AutoSettings {
 pub fn friction_vs_temperature(
     fit: &CompoundFit,
     spec: &SceneSpec,
-    settings: &AutoSettings,
+    settings: &ContactSettings,
 ) -> Result<Vec<FrictionPoint>, PipelineError> {
     let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
@@ -206,7 +210,7 @@ pub fn friction_vs_temperature(
                 Ok(a) => a,
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
-            match roll_auto(&scene, &at.spectrum, settings).map(|r| r.roll) {
+            match roll(&scene, &at.spectrum, settings) {
                 Ok(sol) => FrictionPoint {
                     temp_c: t,
                     log10_a_t: at.log10_a_t,

@@ -9,7 +9,7 @@
 //! # Math
 //! Off the contact the surface displacement is still eq. 3.19 with v(0) = 0,
 //! ρv(ξ) = s∫₀^λ Q′(ξ′)[K̂(−ξ′) − K̂(ξ−ξ′)]dξ′, K̂(x) = ln|x| + Σᵢ (f̂ᵢ/bᵢ)h(bᵢx) (MATH.md §2; with
-//! fast modes lumped Q′K = Q′·sK̂, module [`super::reduce`]), and the roll sits at depth ξβ − ξ²/2
+//! fast modes lumped Q′K = Q′·sK̂, module [`super::auto::reduction`]), and the roll sits at depth ξβ − ξ²/2
 //! (eq. 3.22), so g(ξ) = ρv(ξ) − (ξβ − ξ²/2) must be ≥ 0. The two parts of K̂ are integrated apart:
 //!
 //! - **Elastic part, in closed form.** With ξ′ = L(1+s), L = λ/2, Q′ = √(1−s²)ΣFₙU_{n−1}(s) and, for
@@ -57,7 +57,7 @@
 //! 400 random scenes) were wrong solutions of the solver at tol 1e−6 (a re-solve at tol 1e−10 gives
 //! another λ and an open gap; tests/data/rear_gap_wrong_solution_case.json): the check flags them.
 
-use super::auto::LambdaSolution;
+use super::auto::at_lambda::LambdaSolution;
 use super::chebyshev::theta_w;
 use super::modes::Modes;
 use crate::special::chebyshev::{clenshaw, first_kind_coefficients, sine_series};
@@ -392,10 +392,10 @@ pub fn rear_scan(modes: &Modes, scale: f64, sol: &LambdaSolution) -> RearScan {
 
 #[cfg(test)]
 mod tests {
+    use super::super::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use super::super::exact::one_term_at_lambda;
+    use super::super::kernel::Kernel;
     use super::*;
-    use crate::contact::auto::{solve_at_lambda, QuadratureSettings};
-    use crate::contact::exact::one_term_at_lambda;
-    use crate::contact::kernel::Kernel;
     use crate::contact::CreepTerm;
     use crate::special::gauss_legendre::Integrator;
 
