@@ -1,4 +1,5 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod auto_vs_richardson;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;
