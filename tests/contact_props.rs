@@ -9,9 +9,12 @@
 //! 3. friction ≥ 0 (dissipation cannot be negative);
 //! 4. friction → 0 at both speed limits, with the slopes of the known asymptotics.
 //!
-//! A seeded generator (SplitMix64) makes every run see the same cases. CI runs `CI_CASES` cases of
-//! 1–3 and `CI_LIMITS` of 4; the larger sweep is `#[ignore]`d:
-//! `cargo test --release --test tests contact_props::sweep -- --ignored --nocapture`.
+//! A seeded generator (SplitMix64) draws the cases from the run's seed (tests/seed.rs): a fresh one
+//! on every run unless `VISCOROLL_SEED` is set, printed at the start of each test so that a failure
+//! can be replayed. CI runs `CI_CASES` cases of 1–3 and `CI_LIMITS` of 4; the larger sweep is
+//! `#[ignore]`d: `cargo test --release --test tests contact_props::sweep -- --ignored --nocapture`.
+//! The regression tests that need one particular case (`a_slow_mode_only_shifts_beta…`: CI case 28
+//! of the former fixed seed 0x5EED_0004; the lumping-cap test) keep their fixed seeds.
 
 use viscoroll::contact::{
     roll, AutoDiagnostics, AutoSettings, Body, ContactSettings, DimensionlessSolution,
@@ -187,7 +190,9 @@ fn run_cases(seed: u64, cases: usize) -> (Vec<usize>, usize, usize) {
 
 #[test]
 fn estimate_confirmed_pressure_and_friction_non_negative() {
-    let (bad_est, flagged, bad_other) = run_cases(0x5EED_0004, CI_CASES);
+    let seed =
+        crate::seed::seed("contact_props::estimate_confirmed_pressure_and_friction_non_negative");
+    let (bad_est, flagged, bad_other) = run_cases(seed, CI_CASES);
     eprintln!(
         "{CI_CASES} cases: estimate failures {bad_est:?}, {flagged} flagged, {bad_other} other"
     );
@@ -366,14 +371,20 @@ fn run_limits(seed: u64, cases: usize) {
 
 #[test]
 fn friction_vanishes_at_both_speed_limits_with_the_asymptotic_slopes() {
-    run_limits(0x5EED_0044, CI_LIMITS);
+    run_limits(
+        crate::seed::seed(
+            "contact_props::friction_vanishes_at_both_speed_limits_with_the_asymptotic_slopes",
+        ),
+        CI_LIMITS,
+    );
 }
 
 #[test]
 #[ignore = "larger sweep (about 2 min in release); run with --ignored --nocapture"]
 fn sweep() {
     let mut bad_other = 0;
-    for seed in [0xB16_5EED, 0xC0FF_EE01] {
+    let base = crate::seed::seed("contact_props::sweep");
+    for seed in [base, base ^ 0xC0FF_EE01] {
         let (bad_est, flagged, other) = run_cases(seed, 2000);
         eprintln!(
             "seed {seed:#x}, 2000 cases: {} estimate failures {bad_est:?}, {flagged} flagged, {other} other",

@@ -55,7 +55,8 @@ pub fn friction_vs_temperature(
                 resistance_n_per_m: f64::NAN,
                 contact_length_mm: f64::NAN,
                 extrapolated,
-                error: Some(e),
+                error: Some(crate::results::cap_line(&e)),
+                warnings: vec![],
             };
             // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
             let at = match fit_spectrum_at(fit, t) {
@@ -65,14 +66,20 @@ pub fn friction_vs_temperature(
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
             match roll(&scene, &at.spectrum, settings) {
-                Ok(sol) => FrictionPoint {
+                Ok(r) => FrictionPoint {
                     temp_c: t,
                     log10_a_t: at.log10_a_t,
-                    friction: sol.friction,
-                    resistance_n_per_m: sol.resistance_n_per_m,
-                    contact_length_mm: sol.contact_length_m * 1e3,
+                    friction: r.friction,
+                    resistance_n_per_m: r.resistance_n_per_m,
+                    contact_length_mm: r.contact_length_m * 1e3,
                     extrapolated: at.extrapolated,
                     error: None,
+                    warnings: r
+                        .dimensionless
+                        .warnings
+                        .iter()
+                        .map(|w| crate::results::cap_line(w))
+                        .collect(),
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }
