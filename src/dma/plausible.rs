@@ -59,7 +59,8 @@ pub fn warnings(m: &Measurement) -> Vec<String> {
     if let Some(e) = median(points().map(|p| p.storage_pa).collect()) {
         let (lo, hi) = POLYMER_MODULUS_PA;
         if e < lo {
-            let factor = if e < lo * 1e-3 {
+            // A rubber's E′ is ≥ 1e5 Pa: below 10 Pa it is MPa read as Pa, above most likely kPa.
+            let factor = if e < 10.0 {
                 "10⁶ (MPa read as Pa?)"
             } else {
                 "10³ (kPa read as Pa?)"
