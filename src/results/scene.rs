@@ -6,7 +6,7 @@
 //! Input: TOML text; output: checked [`SceneSet`]s (every number finite and in its physical range,
 //! errors naming the scene and key). The pipeline fills the result types; the report writes them.
 
-use crate::contact::Scene;
+use crate::contact::{Body, Scene};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use thiserror::Error;
@@ -75,6 +75,7 @@ impl SceneSpec {
             load_n_per_m: self.load_n_per_m,
             speed_m_s: self.speed_m_s,
             poisson: self.poisson,
+            body: Body::HalfSpace,
         }
     }
 }
