@@ -6,16 +6,20 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 pub mod checks;
+pub mod column_map;
 pub mod columns;
 pub mod detect;
 pub mod eplexor;
 pub mod error;
 pub mod generic;
 pub mod isotherms;
+pub mod mode_evidence;
 pub mod proteus;
 mod read;
+pub mod reptate;
 pub mod rheocompass;
 pub mod shiftfactors;
+pub mod steps;
 pub mod table;
 pub mod text;
 pub mod trios;
@@ -23,6 +27,7 @@ pub mod units;
 pub mod xls_guard;
 
 pub use checks::{CheckSettings, Flag, Issue, Severity, Summary};
+pub use column_map::ColumnMap;
 pub use columns::ColumnInfo;
 pub use detect::Format;
 pub use eplexor::read_eplexor_shiftlist;

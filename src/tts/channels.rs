@@ -6,7 +6,10 @@
 //! - `storage`: log10 E′ alone, the default criterion;
 //! - `weighted`: the joint channels each divided by its own scatter (docs/MATH.md §6): maximum
 //!   likelihood with an unknown variance per channel, so a channel that cannot be superposed (an
-//!   instrument resonance in E″, a secondary relaxation) gives way to the one that can.
+//!   instrument resonance in E″, a secondary relaxation) gives way to the one that can. With the
+//!   slope-weighted criterion each isotherm also weighs each channel by its share of the
+//!   information, I_c = (median |d log M_c/d log f| / σ_c)² / Σ I: where E′ is flat (a plateau),
+//!   its residuals say nothing about the shift and only add noise, so E″ carries it.
 
 use super::clean::Clean;
 use super::settings::{MasterSettings, ShiftCriterion, ShiftSource, VerticalShift};
@@ -26,6 +29,8 @@ pub(super) struct Channels {
     pub channel_scatter_log10: Vec<f64>,
     /// Whether tan δ is compared.
     pub use_tan: bool,
+    /// Per isotherm, the channel that carried its shift (slope-weighted criterion only).
+    pub carried: Vec<Option<String>>,
 }
 
 impl Channels {
@@ -86,7 +91,7 @@ impl Channels {
                 joint
                     .iter()
                     .map(|p| {
-                        Prepared::new(
+                        let q = Prepared::new(
                             p.x.clone(),
                             (0..2)
                                 .map(|c| {
@@ -97,12 +102,29 @@ impl Channels {
                                         .collect()
                                 })
                                 .collect(),
-                        )
+                        );
+                        if settings.criterion == ShiftCriterion::SlopeWeighted {
+                            q.with_weights(information_shares(p, &channel_scatter_log10))
+                        } else {
+                            q
+                        }
                     })
                     .collect()
             } else {
                 Vec::new()
             };
+        let carried = weighted
+            .iter()
+            .map(|p| {
+                let w = &p.weights;
+                (w.len() == 2).then(|| if w[0] >= w[1] { "E′" } else { "E″" }.to_string())
+            })
+            .collect::<Vec<_>>();
+        let carried = if carried.iter().any(Option::is_some) {
+            carried
+        } else {
+            vec![None; iso.len()]
+        };
         Channels {
             joint,
             tan,
@@ -110,6 +132,7 @@ impl Channels {
             weighted,
             channel_scatter_log10,
             use_tan,
+            carried,
         }
     }
 
@@ -124,5 +147,19 @@ impl Channels {
         } else {
             &self.joint
         }
+    }
+}
+
+/// Each channel's share of the information about the shift in one isotherm: I_c =
+/// (median |d log M_c/d log f| / σ_c)², normalised to sum 1 (equal shares if both are flat).
+fn information_shares(p: &Prepared, scatter: &[f64]) -> Vec<f64> {
+    let info: Vec<f64> = (0..scatter.len())
+        .map(|c| (p.median_abs_slope(c) / scatter[c]).powi(2))
+        .collect();
+    let total: f64 = info.iter().sum();
+    if total > 0.0 && total.is_finite() {
+        info.iter().map(|i| i / total).collect()
+    } else {
+        vec![1.0 / scatter.len() as f64; scatter.len()]
     }
 }
