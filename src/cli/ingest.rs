@@ -14,7 +14,7 @@ use std::path::PathBuf;
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// DMA export files (EPLEXOR .xls/.xlsx, TRIOS LIMS or text, RheoCompass CSV, Proteus ASCII,
-    /// generic CSV/TSV/text).
+    /// RepTate .osc, generic CSV/TSV/text).
     #[arg(required = true)]
     pub files: Vec<PathBuf>,
     /// Write the Measurement JSON here (atomically).
@@ -24,7 +24,7 @@ pub struct Args {
     #[arg(long)]
     pub force: bool,
     /// Reader to use instead of detecting it: eplexor, trios-lims, trios-text, rheocompass, proteus,
-    /// generic.
+    /// reptate, generic.
     #[arg(long)]
     pub format: Option<String>,
     /// Unit of modulus columns that have none in the file: Pa, kPa, MPa, GPa.
