@@ -14,6 +14,7 @@ pub mod error;
 pub mod generic;
 pub mod isotherms;
 pub mod mode_evidence;
+pub mod plausible;
 pub mod proteus;
 mod read;
 pub mod reptate;
@@ -25,6 +26,7 @@ pub mod text;
 pub mod trios;
 pub mod units;
 pub mod xls_guard;
+pub mod xlsx_guard;
 
 pub use checks::{CheckSettings, Flag, Issue, Severity, Summary};
 pub use column_map::ColumnMap;

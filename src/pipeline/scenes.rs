@@ -1,13 +1,12 @@
 //! A compound's friction in the scenes ([`friction_vs_temperature`], [`friction_maps`]).
 //!
 //! Input: a [`SceneSpec`] (crate::results::scene) and a [`CompoundFit`]; output: [`FrictionPoint`]s, one per temperature, from
-//! the contact stage's error-controlled load solve (crate::contact::roll_auto, thesis eq. 3.12 for F/N) on the creep
+//! the contact stage's error-controlled load solve (crate::contact::roll, thesis eq. 3.12 for F/N) on the creep
 //! spectrum shifted to each temperature (MATH.md §6).
 
 use super::error::PipelineError;
 use super::friction_map::{friction_map, MapQuery, MapSettings, MapValue, ReducedProblem};
-use crate::contact::controlled::AutoSettings;
-use crate::contact::roll_auto::roll_auto;
+use crate::contact::{roll, AutoSettings, ContactSettings, Scheme};
 use crate::results::CompoundFit;
 use rayon::prelude::*;
 
@@ -22,10 +21,14 @@ pub use crate::results::scene::{
 /// n = 200 would be about 100× slower per load point and only accurate to ~1e-3 in λ. The exterior
 /// gap check is off: it only reports, never changes the friction, and costs more than the solve for
 /// few modes (it made the shipped run 2.2 s instead of 0.9 s); `viscoroll roll` still runs it.
-pub fn pipeline_contact_settings() -> AutoSettings {
-    AutoSettings {
-        gap_check: false,
-        ..AutoSettings::default()
+pub fn pipeline_contact_settings() -> ContactSettings {
+    ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            gap_check: false,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     }
 }
 
@@ -34,7 +37,7 @@ pub fn pipeline_contact_settings() -> AutoSettings {
 pub fn friction_vs_temperature(
     fit: &CompoundFit,
     spec: &SceneSpec,
-    settings: &AutoSettings,
+    settings: &ContactSettings,
 ) -> Result<Vec<FrictionPoint>, PipelineError> {
     let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
@@ -52,21 +55,28 @@ pub fn friction_vs_temperature(
                 resistance_n_per_m: f64::NAN,
                 contact_length_mm: f64::NAN,
                 extrapolated,
-                error: Some(e),
+                error: Some(crate::results::cap_line(&e)),
+                warnings: vec![],
             };
             let at = match creep.at_temperature(&fit.shift_law, t, range) {
                 Ok(a) => a,
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
-            match roll_auto(&scene, &at.spectrum, settings).map(|r| r.roll) {
-                Ok(sol) => FrictionPoint {
+            match roll(&scene, &at.spectrum, settings) {
+                Ok(r) => FrictionPoint {
                     temp_c: t,
                     log10_a_t: at.log10_a_t,
-                    friction: sol.friction,
-                    resistance_n_per_m: sol.resistance_n_per_m,
-                    contact_length_mm: sol.contact_length_m * 1e3,
+                    friction: r.friction,
+                    resistance_n_per_m: r.resistance_n_per_m,
+                    contact_length_mm: r.contact_length_m * 1e3,
                     extrapolated: at.extrapolated,
                     error: None,
+                    warnings: r
+                        .dimensionless
+                        .warnings
+                        .iter()
+                        .map(|w| crate::results::cap_line(w))
+                        .collect(),
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }
