@@ -12,6 +12,7 @@ mod dma_errors;
 mod dma_quirks;
 mod dma_real;
 mod dma_xlsx;
+mod docs_links;
 mod fit_cli;
 mod fits_outside;
 mod fuzz_inputs;

@@ -6,7 +6,7 @@
 //! Q′(ξ) anywhere on the contact) or a [`DimensionlessSolution`] with scheme `exact`. This is the
 //! library's reference for every test of the general (piecewise-linear) solver.
 //!
-//! # Derivation (MATH.md §3, written out; symbols as in the thesis)
+//! # Derivation (docs/MATH.md §3, written out; symbols as in the thesis)
 //! Problem: Q′ ≥ 0 on 0 ≤ ξ ≤ λ, zero at both edges, and β with
 //! ∫₀^λ Q′(ξ′)[K(−ξ′) − K(ξ−ξ′)]dξ′ = ξβ − ξ²/2 (eq. 3.25), K(ξ) = ln|ξ| + ∫₀^∞ γ(ζ) ln|ξ+ζ| dζ
 //! (eq. 3.19). At ξ = 0 both sides vanish, so eq. 3.25 is equivalent to its ξ-derivative

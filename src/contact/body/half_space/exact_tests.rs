@@ -18,7 +18,7 @@ fn rel(a: f64, b: f64) -> f64 {
 
 #[test]
 fn goodier_loutzenheiser_case() {
-    // Goodier & Loutzenheiser (via thesis Table 1 / MATH.md §1): f = 10, b = 1, λ = 1 gives
+    // Goodier & Loutzenheiser (via thesis Table 1 / docs/MATH.md §1): f = 10, b = 1, λ = 1 gives
     // β/λ ≈ 0.1952 and ρF/N ≈ 0.4308; the issue asks for agreement within 0.5 %.
     let s = one_term_at_lambda(t(10.0, 1.0), 1.0).unwrap();
     assert!(
@@ -35,7 +35,7 @@ fn goodier_loutzenheiser_case() {
 
 #[test]
 fn hertz_when_f_is_zero() {
-    // f = 0: λ = 2√N′, β = λ/2, friction 0, Q′ = (1/π)√(ξ(λ−ξ)) (MATH.md §3), to rounding.
+    // f = 0: λ = 2√N′, β = λ/2, friction 0, Q′ = (1/π)√(ξ(λ−ξ)) (docs/MATH.md §3), to rounding.
     for &lam in &[1e-4, 1.0, 37.0] {
         let s = one_term_at_lambda(t(0.0, 2.5), lam).unwrap();
         assert!(rel(s.load, lam * lam / 4.0) < 1e-15);
@@ -114,7 +114,7 @@ fn relaxed_limit_when_b_lambda_tends_to_infinity() {
 /// Left side of eq. 3.25, ∫₀^λ Q′(t)[K(−t) − K(ξ−t)]dt, by adaptive Gauss–Legendre quadrature with
 /// panels graded geometrically toward the log singularities (t = 0, ξ) and the square-root edges (t = λ)
 /// and the front-edge layer; K(x) = ln|x| + (f/b)·h(bx) with h the closed-form kernel bracket
-/// (MATH.md §2; constants cancel in the difference).
+/// (docs/MATH.md §2; constants cancel in the difference).
 fn lhs_3_25(s: &OneTermExact, xi: f64) -> f64 {
     let CreepTerm { f, b } = s.term;
     let lam = s.lambda;
