@@ -14,8 +14,6 @@
 pub mod auto;
 pub mod chebyshev;
 pub mod exact;
-#[cfg(test)]
-mod exact_tests;
 pub mod kernel;
 pub mod modes;
 pub mod rear_gap;
