@@ -13,6 +13,7 @@ mod dma_formats;
 mod dma_quirks;
 mod dma_real;
 mod dma_xlsx;
+mod docs_links;
 mod fit_cli;
 mod fits_outside;
 mod fuzz_inputs;

@@ -1,7 +1,7 @@
 //! `viscoroll roll`: one dimensional scene, a rigid roll on a half-space with a given creep spectrum
 //! (JSON, the serde form of [`crate::CreepSpectrum`]) → friction, contact length, offset, pressure.
 //! A fit file (`fits/NAME.json`, [`crate::pipeline::CompoundFit`]) is accepted too, with `--temp-c T`:
-//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, MATH.md §6);
+//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, docs/MATH.md §6);
 //! a T outside the measured temperatures is allowed and flagged (`extrapolated`, and a warning).
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,

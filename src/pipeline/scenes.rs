@@ -2,7 +2,7 @@
 //!
 //! Input: a [`SceneSpec`] (crate::results::scene) and a [`CompoundFit`]; output: [`FrictionPoint`]s, one per temperature, from
 //! the contact stage's error-controlled load solve (crate::contact::roll, thesis eq. 3.12 for F/N) on the creep
-//! spectrum shifted to each temperature (MATH.md §6).
+//! spectrum shifted to each temperature (docs/MATH.md §6).
 
 use super::error::PipelineError;
 use super::roll_fit::fit_spectrum_at;

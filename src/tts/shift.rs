@@ -1,4 +1,4 @@
-//! Automatic horizontal shifting (MATH.md §6): input the isotherms prepared in log–log
+//! Automatic horizontal shifting (docs/MATH.md §6): input the isotherms prepared in log–log
 //! ([`Prepared`]: x = log10 f, one or more channels y = log10 E′, log10 E″ or log10 tan δ, each with
 //! a clamped cubic spline), output log10 a_T of each isotherm relative to a reference isotherm.
 //!

@@ -7,7 +7,7 @@
 //!
 //! # Why one variable suffices (exact)
 //! A scene (R, N*, V) on J(t) = J_g + Σᵢ Jᵢ(1 − e^(−t/(a_T τᵢ))) at temperature T (the shift acts on
-//! the times only, MATH.md §6) is made dimensionless in [`crate::contact::scene`] with
+//! the times only, docs/MATH.md §6) is made dimensionless in [`crate::contact::scene`] with
 //! T_c = l_g/V, l_g = 2√(2RCN*/π) the glassy Hertz length, C = (1−ν)/μ₀ (thesis eq. 3.8, 3.24):
 //!
 //! - bᵢ = T_c/(a_T τᵢ) = s/τᵢ and fᵢ = (Jᵢ/J_g)·bᵢ with the **reduced variable s = l_g/(V·a_T)** (s),

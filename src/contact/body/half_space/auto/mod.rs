@@ -19,7 +19,7 @@
 //!   node (step 2h, from the same exterior values: no second solve). The calibration is a difference
 //!   of two solves, so its noise, amplified by Σwᵢ/w*, is added;
 //! - load loop: a safeguarded secant on ln N′(ln λ) inside the bracket [2√N′, 2√(S·N′)]
-//!   (MATH.md §3: N′ grows with λ; glassy and relaxed compliance bound it), started from
+//!   (docs/MATH.md §3: N′ grows with λ; glassy and relaxed compliance bound it), started from
 //!   λ = 2√(S_eff N′) with the model slope 2 − d ln S_eff/d ln λ and stopped when the step is below
 //!   0.05·tol; the step not taken (and a target shift by the measured gain too small to chase)
 //!   counts twice in the λ error.
