@@ -19,6 +19,7 @@ mod master_cli;
 mod master_real;
 mod pipeline_cli;
 mod prony_ems_ca;
+mod prony_terms;
 mod report_plots;
 mod special_functions;
 mod spectra_cards;
