@@ -19,7 +19,7 @@
 //! From a relaxation spectrum to the rolling friction of one scene:
 //!
 //! ```
-//! use viscoroll::contact::{controlled::AutoSettings, roll_auto::roll_auto, Scene};
+//! use viscoroll::contact::{roll, Body, ContactSettings, Scene};
 //! use viscoroll::creep::relaxation_to_creep;
 //! use viscoroll::prony::{RelaxationSpectrum, RelaxationTerm};
 //! use viscoroll::ModulusKind;
@@ -36,16 +36,24 @@
 //! assert!((creep.compliance_glassy_per_pa * (1e9 + 3e6) - 1.0).abs() < 1e-12);
 //!
 //! // A 100 mm roll under 2 kN/m at 1 m/s.
-//! let scene = Scene { radius_m: 0.1, load_n_per_m: 2000.0, speed_m_s: 1.0, poisson: None };
-//! let r = roll_auto(&scene, &creep, &AutoSettings::default()).unwrap();
+//! let scene = Scene {
+//!     radius_m: 0.1,
+//!     load_n_per_m: 2000.0,
+//!     speed_m_s: 1.0,
+//!     poisson: None,
+//!     body: Body::HalfSpace,
+//! };
+//! // The default scheme is `auto` (error-controlled, tolerance 1e-6).
+//! let r = roll(&scene, &creep, &ContactSettings::default()).unwrap();
 //! // Dissipation makes the friction positive; the contact lies between the glassy and relaxed
 //! // Hertz lengths l = 2√(4RN(1−ν²)/(πE)).
 //! let hertz = |e: f64| 2.0 * (4.0 * 0.1 * 2000.0 * 0.75 / (std::f64::consts::PI * e)).sqrt();
-//! assert!(r.roll.friction > 0.0);
-//! assert!(r.roll.contact_length_m > hertz(1e9 + 3e6) && r.roll.contact_length_m < hertz(3e6));
+//! assert!(r.friction > 0.0);
+//! assert!(r.contact_length_m > hertz(1e9 + 3e6) && r.contact_length_m < hertz(3e6));
 //! ```
 
 pub mod fsutil;
+pub mod material;
 pub mod special;
 
 pub mod contact;
@@ -54,6 +62,7 @@ pub mod dma;
 pub mod pipeline;
 pub mod prony;
 pub mod report;
+pub mod results;
 pub mod tts;
 
 pub mod testdata;
@@ -62,29 +71,5 @@ pub mod cli;
 
 pub use creep::CreepSpectrum;
 pub use dma::Measurement;
+pub use material::{ModulusKind, ShiftLaw};
 pub use prony::RelaxationSpectrum;
-pub use tts::ShiftLaw;
-
-/// Which modulus a spectrum or a measurement describes.
-///
-/// Tensile (Young's) data E and shear data G are related by E = 2(1+ν)G for an isotropic material
-/// with Poisson's ratio ν; the ratio is always stated, never guessed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize, Default)]
-#[serde(rename_all = "snake_case")]
-pub enum ModulusKind {
-    /// Young's modulus E (tension, compression, bending).
-    #[default]
-    Tensile,
-    /// Shear modulus G.
-    Shear,
-}
-
-impl ModulusKind {
-    /// Factor that converts a modulus of this kind into the tensile modulus: E = factor · M.
-    pub fn to_tensile_factor(self, poisson: f64) -> f64 {
-        match self {
-            ModulusKind::Tensile => 1.0,
-            ModulusKind::Shear => 2.0 * (1.0 + poisson),
-        }
-    }
-}

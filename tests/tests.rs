@@ -1,4 +1,5 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod auto_vs_richardson;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;
@@ -12,15 +13,21 @@ mod dma_quirks;
 mod dma_real;
 mod dma_xlsx;
 mod fit_cli;
+mod fits_outside;
+mod fuzz_inputs;
 mod golden_outputs;
 mod ingest_cli;
 mod known_truth;
 mod master_cli;
 mod master_real;
+mod physical_units;
 mod pipeline_cli;
+mod pipeline_hardening;
 mod prony_ems_ca;
 mod prony_terms;
+mod reference;
 mod report_plots;
+mod seed;
 mod special_functions;
 mod spectra_cards;
 mod spectra_cli;

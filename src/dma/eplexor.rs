@@ -11,7 +11,7 @@ use super::error::DmaError;
 use super::table::{Block, Cell, Loc, RawFile, Row};
 use super::text::{self, Decimal};
 use super::units::TempUnit;
-use crate::ShiftLaw;
+use crate::material::ShiftLaw;
 use calamine::{open_workbook_auto_from_rs, Data, Range, Reader, Sheets};
 use std::io::Cursor;
 
@@ -29,6 +29,12 @@ fn open(file: &str, bytes: &[u8]) -> Result<Book, DmaError> {
     // compound-file reader); turn that into an error instead of letting user input crash the program.
     if super::detect::is_ole2(bytes) {
         super::xls_guard::check(bytes).map_err(|reason| DmaError::Excel {
+            file: file.into(),
+            reason,
+        })?;
+    }
+    if super::detect::is_zip(bytes) {
+        super::xlsx_guard::check(bytes).map_err(|reason| DmaError::Excel {
             file: file.into(),
             reason,
         })?;

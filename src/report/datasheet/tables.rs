@@ -1,0 +1,152 @@
+//! The CSV tables of a compound's report folder: `friction.csv` (one row per scene and temperature),
+//! `friction_map.csv` (F/N against speed and load) and `friction_map_2d.csv` (the speed × load grid).
+//!
+//! Input: the friction points and maps of each scene; output: CSV text (crate::report::csv_text).
+//! Numbers are printed in their shortest round-trip form (`{:e}`), so a value read back is the value
+//! computed.
+
+use crate::report::csv_text::csv_text;
+use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
+
+/// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated,
+/// error, and `note` (every flag of the row: failure, extrapolation, contact validity). The
+/// compound's own flags (`flags`: why its fit is not trusted) come first as `#` lines and, when there
+/// are any, lead every row's note with `fit not trusted`.
+pub fn friction_csv(
+    prov: &str,
+    flags: &[String],
+    friction: &[(SceneSpec, Vec<FrictionPoint>)],
+) -> String {
+    let untrusted = !flags.is_empty();
+    let rows = friction.iter().flat_map(|(spec, pts)| {
+        pts.iter().map(move |p| {
+            vec![
+                spec.name.clone(),
+                p.temp_c.to_string(),
+                format!("{:e}", p.friction),
+                format!("{:e}", p.resistance_n_per_m),
+                format!("{:e}", p.contact_length_mm),
+                format!("{:.6}", p.log10_a_t),
+                p.extrapolated.to_string(),
+                p.error.as_deref().unwrap_or("").replace(['\r', '\n'], " "),
+                match (untrusted, p.note()) {
+                    (false, n) => n,
+                    (true, n) if n.is_empty() => "fit not trusted".to_string(),
+                    (true, n) => format!("fit not trusted; {n}"),
+                },
+            ]
+        })
+    });
+    let mut comments = vec![prov.to_string()];
+    comments.extend(flags.iter().map(|f| format!("not trusted: {f}")));
+    csv_text(
+        &comments,
+        &[
+            "scene",
+            "temp_c",
+            "friction",
+            "resistance_n_per_m",
+            "contact_length_mm",
+            "log10_a_t",
+            "extrapolated",
+            "error",
+            "note",
+        ],
+        rows,
+    )
+}
+
+/// `friction_map.csv`: F/N against the listed speeds and loads at every map temperature.
+pub fn map_csv(prov: &str, scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
+    let rows = scenes.iter().flat_map(|(spec, map)| {
+        map.points.iter().map(move |p| {
+            vec![
+                spec.name.clone(),
+                p.temp_c.to_string(),
+                p.speed_m_s.to_string(),
+                p.load_n_per_m.to_string(),
+                format!("{:e}", p.friction),
+            ]
+        })
+    });
+    csv_text(
+        &[prov.to_string()],
+        &["scene", "temp_c", "speed_m_s", "load_n_per_m", "friction"],
+        rows,
+    )
+}
+
+/// `friction_map_2d.csv`: F/N and contact length on the speed × load grid.
+pub fn grid_csv(prov: &str, tol: f64, scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
+    let rows = scenes.iter().flat_map(|(spec, map)| {
+        map.grid.iter().map(move |p| {
+            vec![
+                spec.name.clone(),
+                p.temp_c.to_string(),
+                p.speed_m_s.to_string(),
+                p.load_n_per_m.to_string(),
+                format!("{:e}", p.friction),
+                format!("{:e}", p.contact_length_mm),
+            ]
+        })
+    });
+    csv_text(
+        &[
+            prov.to_string(),
+            format!("F/N on a speed × load grid at each map temperature (reduced-variable interpolant, relative tolerance {tol:e})"),
+        ],
+        &[
+            "scene",
+            "temp_c",
+            "speed_m_s",
+            "load_n_per_m",
+            "friction",
+            "contact_length_mm",
+        ],
+        rows,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_flag_of_a_point_reaches_the_note_column() {
+        let spec = crate::results::SceneSet::shipped().scene[0].clone();
+        let p = |extrapolated: bool, error: Option<&str>, warnings: Vec<String>| FrictionPoint {
+            temp_c: 20.0,
+            log10_a_t: 0.0,
+            friction: if error.is_some() { f64::NAN } else { 1e-3 },
+            resistance_n_per_m: 10.0,
+            contact_length_mm: 1.0,
+            extrapolated,
+            error: error.map(str::to_string),
+            warnings,
+        };
+        let pts = vec![
+            p(false, None, vec![]),
+            p(
+                true,
+                None,
+                vec!["contact length / radius = 0.570, results lose validity".into()],
+            ),
+            p(false, Some("no root, bracket [1, 2]"), vec![]),
+        ];
+        let text = friction_csv("prov", &["prony_rms out of bound".into()], &[(spec, pts)]);
+        assert!(text.contains("# not trusted: prony_rms out of bound"));
+        let body: String = text
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(body.as_bytes())
+            .records()
+            .map(|r| r.unwrap())
+            .collect();
+        assert_eq!(&rows[0][8], "fit not trusted");
+        assert!(rows[1][8].contains("extrapolated") && rows[1][8].contains("0.570"));
+        assert!(rows[2][8].contains("failed: no root, bracket [1, 2]"));
+        assert_eq!(&rows[2][7], "no root, bracket [1, 2]");
+    }
+}
