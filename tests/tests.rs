@@ -13,6 +13,7 @@ mod dma_quirks;
 mod dma_real;
 mod dma_xlsx;
 mod fit_cli;
+mod fit_exports;
 mod fits_outside;
 mod fuzz_inputs;
 mod golden_outputs;
