@@ -97,12 +97,12 @@ fn wlf_from_fit(fit: &crate::pipeline::CompoundFit) -> Result<(ShiftLaw, f64), S
     let ShiftLaw::Wlf { c1, c2_k, .. } = law else {
         return Err("the fitted law is not WLF".into());
     };
-    if !(rms <= WLF_RMS_BOUND) {
+    if rms.is_nan() || rms > WLF_RMS_BOUND {
         return Err(format!(
             "the WLF fit (C1 = {c1:.4}, C2 = {c2_k:.4} K) misses the shifts by {rms:.3} decade RMS (bound {WLF_RMS_BOUND})"
         ));
     }
-    if !(c2_k <= WLF_C2_MAX_K) {
+    if c2_k.is_nan() || c2_k > WLF_C2_MAX_K {
         return Err(format!(
             "the WLF fit is degenerate (C1 = {c1:.4}, C2 = {c2_k:.4} K > {WLF_C2_MAX_K} K)"
         ));
