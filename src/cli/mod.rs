@@ -17,6 +17,7 @@ mod output;
 mod rank;
 mod roll;
 mod run;
+mod spectrum_input;
 
 use clap::{Parser, Subcommand};
 
