@@ -1,4 +1,4 @@
-//! Prony term control (MATH.md §5): from a dense non-negative spectrum on the fixed grid to the fewest
+//! Prony term control (docs/MATH.md §5): from a dense non-negative spectrum on the fixed grid to the fewest
 //! terms, at free positions, that reach a target accuracy — and the trade table of terms against the
 //! RMS log10 errors of E′ and E″ on the way.
 //!
