@@ -33,9 +33,10 @@ pub struct Args {
     /// terms that reach it. Default: the errors of the dense grid fit (fewer terms, no less accurate).
     #[arg(long, value_name = "E1[,E2]")]
     pub target_rms: Option<String>,
-    /// Keep the dense grid fit (no term reduction).
-    #[arg(long, conflicts_with_all = ["max_terms", "target_rms"])]
-    pub no_reduce: bool,
+    /// Reduce the dense grid fit to the fewest terms at free positions that are no less accurate
+    /// against the data (implied by --max-terms and --target-rms; default: the dense grid fit).
+    #[arg(long)]
+    pub reduce: bool,
     /// Print the trade table of terms against RMS log10 E′ and E″ on stderr.
     #[arg(long)]
     pub trade: bool,
@@ -68,7 +69,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let mut options = FitOptions::default();
     options.master.tref_c = args.tref;
     options.prony.max_terms = args.max_terms;
-    options.prony.reduce_terms = !args.no_reduce;
+    options.prony.reduce_terms =
+        args.reduce || args.max_terms.is_some() || args.target_rms.is_some();
     if let Some(t) = &args.target_rms {
         options.prony.target_rms_log10 = Some(parse_target(t)?);
     }

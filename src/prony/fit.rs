@@ -160,7 +160,8 @@ pub fn fit_prony(
     let dense_terms = spectrum.terms.len();
     let dense_rms = [errors.rms_storage, errors.rms_loss];
     let mut reduction = None;
-    if settings.reduce_terms {
+    if settings.reduce_terms || settings.max_terms.is_some() || settings.target_rms_log10.is_some()
+    {
         // Default target: the dense fit's own errors (no worse in either modulus).
         let target = settings.target_rms_log10.unwrap_or(dense_rms);
         let control = TermControl {
