@@ -59,6 +59,7 @@ pub mod chebyshev;
 pub mod controlled;
 pub mod error;
 pub mod kernel;
+pub mod layer;
 pub mod load;
 pub mod modes;
 pub mod reduce;
