@@ -54,6 +54,7 @@ pub mod dma;
 pub mod pipeline;
 pub mod prony;
 pub mod report;
+pub mod results;
 pub mod tts;
 
 pub mod testdata;

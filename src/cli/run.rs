@@ -5,9 +5,7 @@
 //! report) on a terminal, plain log lines otherwise (stderr). `--json` prints one object
 //! (the [`crate::pipeline::RunSummary`]). Exit code 1 when any compound failed.
 
-use crate::pipeline::{
-    run_all, run_all_with_progress, FitOptions, ProgressEvent, RunOptions, SceneSet,
-};
+use crate::pipeline::{run_all, run_all_with_progress, ProgressEvent, RunOptions};
 use anyhow::bail;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -38,20 +36,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if !args.dir.is_dir() {
         bail!("{} is not a folder", args.dir.display());
     }
-    let scenes = match &args.scenes {
-        Some(p) => SceneSet::read(p)?,
-        None if args.dir.join("scenes.toml").is_file() => {
-            SceneSet::read(&args.dir.join("scenes.toml"))?
-        }
-        None => SceneSet::shipped(),
-    };
-    let opts = RunOptions {
-        input_dir: args.dir.clone(),
-        out_dir: args.out.clone(),
-        scenes,
-        force: args.force,
-        fit: FitOptions::default(),
-    };
+    let opts = RunOptions::for_folder(&args.dir, &args.out, args.scenes.as_deref(), args.force)?;
     let start = std::time::Instant::now();
     let summary = if std::io::stderr().is_terminal() {
         // A counted bar over the work units (per compound: fit, friction and maps per scene,

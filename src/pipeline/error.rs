@@ -27,13 +27,13 @@ pub enum PipelineError {
     Map(#[from] super::friction_map::FrictionMapError),
     /// A fit file could not be read or written.
     #[error("{0}")]
-    Fit(#[from] super::compound_fit::CompoundFitError),
-    /// A plot could not be drawn.
-    #[error("plot: {0}")]
-    Plot(#[from] crate::report::plots::PlotError),
-    /// An FEA card could not be written.
-    #[error("FEA card: {0}")]
-    Card(String),
+    Fit(#[from] crate::results::CompoundFitError),
+    /// A report file could not be written.
+    #[error("{0}")]
+    Report(#[from] crate::report::ReportError),
+    /// A scenes file could not be read or is not valid.
+    #[error("{0}")]
+    Scene(#[from] crate::results::SceneError),
     /// A scenes or compounds file is not valid.
     #[error("{path}: {message}")]
     Config {

@@ -6,10 +6,10 @@
 //! MATH.md §4 (crate::creep::exact). Reuse rule: same SHA-256 of every input (as a multiset, paths
 //! ignored), same settings, same tool version.
 
-use super::compound_fit::{CompoundFit, QualityFigure, TtsSummary};
 use super::error::{io, PipelineError};
 use crate::dma::{read_files, sha256_hex, IngestOptions};
 use crate::prony::{fit_prony, MasterPoint as PronyPoint, PronySettings};
+use crate::results::{CompoundFit, QualityFigure, TtsSummary};
 use crate::tts::{build_master_curve, LawChoice, MasterSettings, ShiftCriterion};
 use std::path::{Path, PathBuf};
 
@@ -197,10 +197,8 @@ pub fn fit_or_reuse(
     Ok((fit, action))
 }
 
-/// The measured temperature range (°C) of a fit, for flagging extrapolation.
+/// The measured temperature range (°C) of a fit, for flagging extrapolation
+/// ([`CompoundFit::measured_range_c`]).
 pub fn measured_range_c(fit: &CompoundFit) -> Option<(f64, f64)> {
-    let t = &fit.measurement.temps_nominal_c;
-    let lo = t.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = t.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
+    fit.measured_range_c()
 }

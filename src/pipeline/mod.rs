@@ -1,16 +1,22 @@
 //! Stage `pipeline`: the main job, from a folder of DMA exports to fits and reports.
+//!
+//! Input: a folder of exports (or a `compounds.toml`), a [`SceneSet`] and an output folder; output:
+//! fit files, friction in the scenes, and the reports (written by crate::report), plus a
+//! [`RunSummary`]. The result types live one floor down, in crate::results.
 
-pub mod compound_fit;
 pub mod compounds;
-pub mod datasheet;
 pub mod error;
 pub mod fit_compound;
 pub mod friction_map;
 pub mod run;
 pub mod scenes;
 
-pub use compound_fit::CompoundFit;
+/// The fit file's types (crate::results::compound_fit), at their former path.
+pub use crate::results::compound_fit;
+pub use crate::results::CompoundFit;
 pub use error::PipelineError;
 pub use fit_compound::{fit_files, fit_measurement, fit_or_reuse, FitOptions};
-pub use run::{run_all, run_all_with_progress, ProgressEvent, RunOptions, RunSummary};
+pub use run::{
+    run_all, run_all_with_progress, CompoundOutcome, ProgressEvent, RunOptions, RunSummary,
+};
 pub use scenes::{SceneSet, SceneSpec};

@@ -1,4 +1,21 @@
-//! Stage `report`: plots, datasheets, friction maps, rankings and FEA export cards.
+//! Stage `report`: everything the user reads — a compound's report folder (datasheet, plots,
+//! friction tables), the ranking, the index page, plots and FEA export cards.
+//!
+//! Input: the saved results ([`crate::results`]): fits, friction points and maps, run outcomes;
+//! output: files, each written atomically through [`write_file`] (the crate's one atomic writer,
+//! [`crate::fsutil`]). CSV goes through the csv crate ([`csv_text`]). Imports only downward
+//! (results and the stages); the pipeline calls it.
 
 pub mod cards;
+pub mod csv_text;
+pub mod datasheet;
+pub mod error;
+pub mod html;
+pub mod index;
 pub mod plots;
+pub mod ranking;
+
+pub use datasheet::write_report;
+pub use error::{write_file, ReportError};
+pub use index::index_html;
+pub use ranking::{ranked, ranking_csv};

@@ -293,6 +293,15 @@ impl CompoundFit {
         })
     }
 
+    /// The measured temperature range (°C): lowest and highest nominal isotherm temperature;
+    /// `None` without isotherms. Temperatures outside it extrapolate the shift law.
+    pub fn measured_range_c(&self) -> Option<(f64, f64)> {
+        let t = &self.measurement.temps_nominal_c;
+        let lo = t.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = t.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
+    }
+
     /// Read a fit file, checking its format version.
     pub fn read(path: &Path) -> Result<Self, CompoundFitError> {
         let text = std::fs::read_to_string(path).map_err(|e| CompoundFitError::Io {

@@ -1,0 +1,132 @@
+//! The friction-map plots of a datasheet: per scene, F/N against speed and against load (one curve
+//! per map temperature), and the speed × load heat maps (`friction_SCENE_map2d`).
+//!
+//! Input: a scene and its [`FrictionMaps`]; output: SVG/PNG files and the HTML that embeds them.
+
+use crate::report::error::ReportError;
+use crate::report::html::plot_pair;
+use crate::report::plots;
+use crate::results::{FrictionMaps, SceneSpec};
+use std::path::Path;
+
+/// F/N against the listed speeds (at the scene's load) and loads (at the scene's speed), one plot
+/// each, one curve per map temperature.
+pub fn speed_and_load_plots(
+    dir: &Path,
+    spec: &SceneSpec,
+    map: &FrictionMaps,
+) -> Result<String, ReportError> {
+    let mut html = String::new();
+    for (by_speed, list, label) in [
+        (true, &spec.map_speeds_m_s, "speed [m/s]"),
+        (false, &spec.map_loads_n_per_m, "load [N/m]"),
+    ] {
+        if list.is_empty() {
+            continue;
+        }
+        let series: Vec<(String, Vec<(f64, f64)>)> = spec
+            .map_temps_c
+            .iter()
+            .map(|&t| {
+                let pts: Vec<(f64, f64)> = map
+                    .points
+                    .iter()
+                    .filter(|p| {
+                        p.temp_c == t
+                            && if by_speed {
+                                p.load_n_per_m == spec.load_n_per_m && list.contains(&p.speed_m_s)
+                            } else {
+                                p.speed_m_s == spec.speed_m_s && list.contains(&p.load_n_per_m)
+                            }
+                    })
+                    .map(|p| {
+                        let x = if by_speed {
+                            p.speed_m_s
+                        } else {
+                            p.load_n_per_m
+                        };
+                        (x, p.friction)
+                    })
+                    .collect();
+                (format!("{t} °C"), pts)
+            })
+            .collect();
+        let stem = format!(
+            "friction_{}_{}",
+            spec.name,
+            if by_speed { "speed" } else { "load" }
+        );
+        html.push_str(&plot_pair(dir, &stem, |p| {
+            plots::plot_lines(
+                &format!("{}: F/N against {label}", spec.name),
+                label,
+                "F/N",
+                &series,
+                true,
+                p,
+            )
+        })?);
+    }
+    Ok(html)
+}
+
+/// Distinct values in first-seen order (the grid is speed-major within each temperature).
+fn distinct(values: impl Iterator<Item = f64>) -> Vec<f64> {
+    let mut v: Vec<f64> = Vec::new();
+    for x in values {
+        if !v.contains(&x) {
+            v.push(x);
+        }
+    }
+    v
+}
+
+/// The heat maps of the speed × load grid (`friction_SCENE_map2d.{svg,png}`, one panel per map
+/// temperature); `None` when the scene has no grid.
+pub fn grid_plot(
+    dir: &Path,
+    spec: &SceneSpec,
+    map: &FrictionMaps,
+) -> Result<Option<String>, ReportError> {
+    if map.grid.is_empty() {
+        return Ok(None);
+    }
+    // The axes have at most GRID_POINTS values each, so `distinct` is cheap.
+    let speeds = distinct(map.grid.iter().map(|p| p.speed_m_s));
+    let loads = distinct(map.grid.iter().map(|p| p.load_n_per_m));
+    let panels: Vec<plots::HeatPanel> = spec
+        .map_temps_c
+        .iter()
+        .map(|&t| {
+            let at_t: Vec<_> = map.grid.iter().filter(|p| p.temp_c == t).collect();
+            plots::HeatPanel {
+                title: format!("{t} °C"),
+                z: speeds
+                    .iter()
+                    .map(|&v| {
+                        loads
+                            .iter()
+                            .map(|&n| {
+                                at_t.iter()
+                                    .find(|p| p.speed_m_s == v && p.load_n_per_m == n)
+                                    .map_or(f64::NAN, |p| p.friction)
+                            })
+                            .collect()
+                    })
+                    .collect(),
+            }
+        })
+        .collect();
+    let stem = format!("friction_{}_map2d", spec.name);
+    plot_pair(dir, &stem, |p| {
+        plots::plot_heatmaps(
+            &format!("{}: F/N over speed × load", spec.name),
+            ("speed [m/s]", "load [N/m]", "F/N"),
+            &speeds,
+            &loads,
+            &panels,
+            p,
+        )
+    })
+    .map(Some)
+}

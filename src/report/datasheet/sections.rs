@@ -1,0 +1,259 @@
+//! The HTML sections of a datasheet, one function each, in page order: source files, test
+//! conditions, shift factors, quality flags, tan δ, rolling friction, Prony series, creep spectrum,
+//! FEA cards. Each takes the fit (and what else it shows) and returns HTML text.
+
+use super::tan_delta::{tan_delta_at, tan_delta_peak};
+use crate::report::cards;
+use crate::report::html::esc;
+use crate::results::{CompoundFit, FrictionPoint, SceneSpec};
+use crate::ShiftLaw;
+use std::fmt::Write as _;
+
+/// A shift law in words.
+pub fn law_text(law: &ShiftLaw) -> String {
+    match law {
+        ShiftLaw::Wlf { t_ref_c, c1, c2_k } => {
+            format!("WLF: T_ref = {t_ref_c:.2} °C, C1 = {c1:.3}, C2 = {c2_k:.2} K")
+        }
+        ShiftLaw::Arrhenius {
+            t_ref_c,
+            activation_energy_j_per_mol,
+        } => format!(
+            "Arrhenius: T_ref = {t_ref_c:.2} °C, E_a = {:.1} kJ/mol",
+            activation_energy_j_per_mol / 1e3
+        ),
+        ShiftLaw::Table { t_ref_c, points } => {
+            format!("table of {} shifts, T_ref = {t_ref_c:.2} °C", points.len())
+        }
+    }
+}
+
+/// Source files with format and SHA-256.
+pub fn sources(fit: &CompoundFit) -> String {
+    let mut h = String::from(
+        "<h2>Source files</h2><table><tr><th>file</th><th>format</th><th>SHA-256</th></tr>",
+    );
+    for s in &fit.measurement.sources {
+        let _ = write!(
+            h,
+            "<tr><td class=\"l\">{}</td><td class=\"l\">{}</td><td class=\"l\"><code>{}</code></td></tr>",
+            esc(&s.path),
+            esc(&s.format),
+            esc(&s.sha256)
+        );
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// Mode, Poisson's ratio, counts and ranges of the measurement, and the ingest warnings.
+pub fn test_conditions(fit: &CompoundFit) -> String {
+    let m = &fit.measurement;
+    let (tlo, thi) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
+    let mut h = format!(
+        "<h2>Test conditions</h2><table><tr><th>mode</th><th>Poisson's ratio</th><th>isotherms</th><th>points</th><th>temperatures (°C)</th><th>frequencies (Hz)</th></tr><tr><td class=\"l\">{:?}</td><td>{}</td><td>{}</td><td>{}</td><td>{tlo:.1} … {thi:.1}</td><td>{:.3} … {:.3}</td></tr></table>",
+        m.kind, m.poisson, m.n_isotherms, m.n_points, m.freq_min_hz, m.freq_max_hz
+    );
+    if !m.warnings.is_empty() {
+        let _ = write!(
+            h,
+            "<details><summary>{} ingest warnings</summary><ul>{}</ul></details>",
+            m.warnings.len(),
+            m.warnings
+                .iter()
+                .map(|w| format!("<li>{}</li>", esc(w)))
+                .collect::<String>()
+        );
+    }
+    h
+}
+
+/// The law used, both fitted laws with their RMS, and the shift-factor plot.
+pub fn shift_factors(fit: &CompoundFit, shift_svg: &str) -> String {
+    let mut h = format!(
+        "<h2>Shift factors</h2><p>Law used: {}.</p><ul>",
+        esc(&law_text(&fit.shift_law))
+    );
+    if let Some(t) = &fit.tts {
+        for l in t.wlf.iter().chain(t.arrhenius.iter()) {
+            let _ = write!(h, "<li>{}</li>", esc(&law_text(l)));
+        }
+        for (n, r) in &t.law_rms_log10 {
+            let _ = write!(h, "<li>RMS of the shifts about {n}: {r:.3} (log10)</li>");
+        }
+    }
+    let _ = write!(h, "</ul>{shift_svg}");
+    h
+}
+
+/// The quality figures against their bounds, and the master curve's flags and warnings.
+pub fn quality(fit: &CompoundFit) -> String {
+    let mut h = String::from(
+        "<h2>Quality flags</h2><table><tr><th>figure</th><th>value</th><th>bound</th><th>flag</th></tr>",
+    );
+    for q in &fit.quality {
+        let _ = write!(
+            h,
+            "<tr><td class=\"l\">{}</td><td>{:.4} {}</td><td>{}</td><td class=\"l{}\">{}</td></tr>",
+            esc(&q.name),
+            q.value,
+            esc(&q.unit),
+            q.bound.map(|b| format!("{b}")).unwrap_or_default(),
+            if q.flagged { " bad" } else { "" },
+            if q.flagged { "out of bound" } else { "ok" }
+        );
+    }
+    h.push_str("</table>");
+    if let Some(t) = &fit.tts {
+        if !t.flags.is_empty() || !t.warnings.is_empty() {
+            let _ = write!(
+                h,
+                "<details><summary>{} master-curve flags and warnings</summary><ul>{}</ul></details>",
+                t.flags.len() + t.warnings.len(),
+                t.flags
+                    .iter()
+                    .chain(&t.warnings)
+                    .map(|w| format!("<li>{}</li>", esc(w)))
+                    .collect::<String>()
+            );
+        }
+    }
+    h
+}
+
+/// The tan δ peak at 1 Hz (T_g) and tan δ at 0 and 60 °C, 10 Hz.
+pub fn tan_delta(fit: &CompoundFit) -> String {
+    let mut h = String::from("<h2>tan δ</h2><table><tr><th>quantity</th><th>value</th></tr>");
+    match tan_delta_peak(fit, 1.0) {
+        Some((t, v)) => {
+            let _ = write!(h, "<tr><td class=\"l\">tan δ peak at 1 Hz (T<sub>g</sub>)</td><td>{v:.3} at {t:.1} °C</td></tr>");
+        }
+        None => h.push_str("<tr><td class=\"l\">tan δ peak at 1 Hz (T<sub>g</sub>)</td><td>not inside the measured temperatures</td></tr>"),
+    }
+    for tc in [0.0, 60.0] {
+        let out = fit
+            .measured_range_c()
+            .is_some_and(|(a, b)| tc < a || tc > b);
+        let _ = write!(
+            h,
+            "<tr><td class=\"l\">tan δ at {tc} °C, 10 Hz</td><td>{:.4}{}</td></tr>",
+            tan_delta_at(fit, tc, 10.0),
+            if out { " (extrapolated)" } else { "" }
+        );
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// The scenes, the friction plot and the table of F/N per scene and temperature with its notes.
+pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str) -> String {
+    let mut h = String::from("<h2>Rolling friction</h2><table><tr><th>scene</th><th>radius (mm)</th><th>load (N/m)</th><th>speed (m/s)</th><th>description</th></tr>");
+    for (s, _) in friction {
+        let _ = write!(
+            h,
+            "<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"l\">{}</td></tr>",
+            esc(&s.name),
+            s.roll_radius_mm,
+            s.load_n_per_m,
+            s.speed_m_s,
+            esc(&s.description)
+        );
+    }
+    let _ = write!(h, "</table>{friction_svg}<table><tr><th>scene</th><th>T (°C)</th><th>F/N</th><th>F* (N/m)</th><th>contact (mm)</th><th>note</th></tr>");
+    for (s, pts) in friction {
+        for p in pts {
+            let note = match (&p.error, p.extrapolated) {
+                (Some(e), _) => esc(e),
+                (None, true) => "extrapolated shift law".into(),
+                _ => String::new(),
+            };
+            let _ = write!(
+                h,
+                "<tr><td class=\"l\">{}</td><td>{}</td><td>{:.4e}</td><td>{:.4}</td><td>{:.3}</td><td class=\"l\">{note}</td></tr>",
+                esc(&s.name),
+                p.temp_c,
+                p.friction,
+                p.resistance_n_per_m,
+                p.contact_length_mm
+            );
+        }
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// The relaxation spectrum's Prony terms.
+pub fn prony(fit: &CompoundFit) -> String {
+    let r = &fit.relaxation;
+    let mut h = format!(
+        "<h2>Prony series (relaxation, {:?}, at T_ref)</h2><p>E∞ = {:.4e} Pa, {} terms; RMS log10 error E′ {:.4}, E″ {:.4}.</p><table><tr><th>i</th><th>τ<sub>i</sub> (s)</th><th>E<sub>i</sub> (Pa)</th></tr>",
+        r.kind, r.modulus_inf_pa, r.terms.len(), fit.prony_info.rms_log10_storage, fit.prony_info.rms_log10_loss
+    );
+    for (i, t) in r.terms.iter().enumerate() {
+        let _ = write!(
+            h,
+            "<tr><td>{}</td><td>{:.4e}</td><td>{:.4e}</td></tr>",
+            i + 1,
+            t.tau_s,
+            t.modulus_pa
+        );
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// The creep spectrum's terms (empty when the fit has none).
+pub fn creep(fit: &CompoundFit) -> String {
+    let Some(c) = &fit.creep else {
+        return String::new();
+    };
+    let mut h = format!(
+        "<h2>Creep spectrum (exact conversion, at T_ref)</h2><p>J_g = {:.4e} 1/Pa.</p><table><tr><th>j</th><th>τ<sub>j</sub> (s)</th><th>J<sub>j</sub> (1/Pa)</th></tr>",
+        c.compliance_glassy_per_pa
+    );
+    for (i, t) in c.terms.iter().enumerate() {
+        let _ = write!(
+            h,
+            "<tr><td>{}</td><td>{:.4e}</td><td>{:.4e}</td></tr>",
+            i + 1,
+            t.tau_s,
+            t.compliance_per_pa
+        );
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// Abaqus, ANSYS and LS-DYNA cards with the WLF law when there is one (a card that cannot be
+/// written says why).
+pub fn fea_cards(fit: &CompoundFit) -> String {
+    let wlf = fit
+        .tts
+        .as_ref()
+        .and_then(|t| t.wlf.as_ref())
+        .or(match fit.shift_law {
+            ShiftLaw::Wlf { .. } => Some(&fit.shift_law),
+            _ => None,
+        });
+    let opts = cards::CardOptions::default();
+    let mut h = String::from("<h2>FEA cards</h2>");
+    for (name, text) in [
+        ("Abaqus", cards::abaqus(&fit.relaxation, wlf, &opts)),
+        ("ANSYS", cards::ansys(&fit.relaxation, wlf, &opts)),
+        ("LS-DYNA", cards::lsdyna(&fit.relaxation, wlf, &opts)),
+    ] {
+        match text {
+            Ok(t) => {
+                let _ = write!(h, "<h3>{name}</h3><pre>{}</pre>", esc(&t));
+            }
+            Err(e) => {
+                let _ = write!(
+                    h,
+                    "<h3>{name}</h3><p class=\"bad\">{}</p>",
+                    esc(&e.to_string())
+                );
+            }
+        }
+    }
+    h
+}

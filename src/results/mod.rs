@@ -1,0 +1,18 @@
+//! Results as plain serde data, the floor below `pipeline` and `report`: the fit file of a compound
+//! ([`CompoundFit`]), the scenes and what a compound does in them ([`scene`]), and the outcome of the
+//! main job ([`RunSummary`]).
+//!
+//! Input: what the stages hand on (measurement, shift law, Prony fit, creep spectrum, contact
+//! solutions); output: types that are saved, read back and written into reports. Imports only the
+//! stages below it (dma, tts, prony, creep, contact's `Scene`).
+
+pub mod compound_fit;
+pub mod outcome;
+pub mod scene;
+
+pub use compound_fit::{
+    CompoundFit, CompoundFitError, FitSettings, InputHash, MeasurementSummary, Provenance,
+    QualityFigure, TtsSummary, COMPOUND_FIT_FORMAT_VERSION,
+};
+pub use outcome::{CompoundOutcome, RunSummary};
+pub use scene::{FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec};
