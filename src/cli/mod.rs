@@ -13,6 +13,7 @@ mod master;
 mod output;
 mod rank;
 mod roll;
+mod roll_cover;
 mod run;
 
 use clap::{Parser, Subcommand};

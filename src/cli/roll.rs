@@ -49,6 +49,13 @@ pub struct Args {
     /// Relative tolerance on friction and contact length for `--scheme auto` (1e-12 … 0.1).
     #[arg(long, default_value_t = 1e-6)]
     pub tol: f64,
+    /// Rubber cover thickness in mm on a rigid carcass (absent: a half-space).
+    #[arg(long, allow_negative_numbers = true)]
+    pub cover_mm: Option<f64>,
+    /// Body: `auto` (default with a cover: the cheapest within --tol of the layer), `half-space`,
+    /// `layer` (bonded to a rigid carcass) or `winkler` (uniaxial columns, as conveyor design tools).
+    #[arg(long)]
+    pub model: Option<String>,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -116,6 +123,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         speed_m_s: args.speed_m_s,
         poisson: args.poisson,
     };
+    if args.cover_mm.is_some() || args.model.is_some() {
+        return super::roll_cover::run(&args, &scene, &spectrum, shifted.as_ref(), warnings);
+    }
     if !matches!(args.scheme.as_str(), "auto" | "thesis") {
         anyhow::bail!("--scheme `{}` is not known (auto, thesis)", args.scheme);
     }

@@ -7,6 +7,7 @@
 use super::error::PipelineError;
 use super::friction_map::{friction_map, MapQuery, MapSettings, MapValue, ReducedProblem};
 use crate::contact::controlled::AutoSettings;
+use crate::contact::layer::{roll_cover, ModelChoice};
 use crate::contact::roll_auto::roll_auto;
 use crate::results::CompoundFit;
 use rayon::prelude::*;
@@ -53,20 +54,50 @@ pub fn friction_vs_temperature(
                 contact_length_mm: f64::NAN,
                 extrapolated,
                 error: Some(e),
+                model: String::new(),
+                model_reason: String::new(),
+                warnings: Vec::new(),
             };
             let at = match creep.at_temperature(&fit.shift_law, t, range) {
                 Ok(a) => a,
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
-            match roll_auto(&scene, &at.spectrum, settings).map(|r| r.roll) {
-                Ok(sol) => FrictionPoint {
+            if let Some(h_mm) = spec.cover_thickness_mm {
+                // A cover: the body chosen and solved by contact::layer (auto, same tolerance).
+                return match roll_cover(
+                    &scene,
+                    &at.spectrum,
+                    Some(h_mm * 1e-3),
+                    ModelChoice::Auto,
+                    settings.tol,
+                ) {
+                    Ok(r) => FrictionPoint {
+                        temp_c: t,
+                        log10_a_t: at.log10_a_t,
+                        friction: r.roll.friction,
+                        resistance_n_per_m: r.roll.resistance_n_per_m,
+                        contact_length_mm: r.roll.contact_length_m * 1e3,
+                        extrapolated: at.extrapolated,
+                        error: None,
+                        model: r.model.name().to_string(),
+                        model_reason: r.reason,
+                        warnings: r.warnings,
+                    },
+                    Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
+                };
+            }
+            match roll_auto(&scene, &at.spectrum, settings) {
+                Ok(r) => FrictionPoint {
                     temp_c: t,
                     log10_a_t: at.log10_a_t,
-                    friction: sol.friction,
-                    resistance_n_per_m: sol.resistance_n_per_m,
-                    contact_length_mm: sol.contact_length_m * 1e3,
+                    friction: r.roll.friction,
+                    resistance_n_per_m: r.roll.resistance_n_per_m,
+                    contact_length_mm: r.roll.contact_length_m * 1e3,
                     extrapolated: at.extrapolated,
                     error: None,
+                    model: "half-space".into(),
+                    model_reason: String::new(),
+                    warnings: r.auto.warnings,
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }
@@ -111,6 +142,9 @@ pub fn friction_maps(
     let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
     })?;
+    if let Some(h_mm) = spec.cover_thickness_mm {
+        return Ok(covered_maps(fit, creep, spec, h_mm, settings.tol));
+    }
     let problem = ReducedProblem::new(creep, spec.poisson)?;
     let (speeds, loads) = (
         log_grid(&spec.map_speeds_m_s),
@@ -191,6 +225,74 @@ pub fn friction_maps(
         solves,
         tol: settings.tol,
     })
+}
+
+/// Friction maps of a covered scene: the listed speeds and loads at each map temperature, each solved
+/// directly on the body `auto` chooses (contact::layer::roll_cover at `tol`, floored at 1e−5 for the
+/// layer). The two-reduced-variable interpolant (speed and h/l_g) of the half-space maps is not built
+/// for covers yet, so the 2-D grid stays empty; `error_estimate` is the largest point estimate
+/// (the body's own and, where auto chose a cheaper body, its estimated difference from the layer).
+fn covered_maps(
+    fit: &CompoundFit,
+    creep: &crate::CreepSpectrum,
+    spec: &SceneSpec,
+    h_mm: f64,
+    tol: f64,
+) -> FrictionMaps {
+    let mut jobs = Vec::new();
+    for &t in &spec.map_temps_c {
+        for &v in &spec.map_speeds_m_s {
+            jobs.push((t, v, spec.load_n_per_m));
+        }
+        for &n in &spec.map_loads_n_per_m {
+            jobs.push((t, spec.speed_m_s, n));
+        }
+    }
+    let solved: Vec<(MapPoint, f64)> = jobs
+        .par_iter()
+        .map(|&(t, v, n)| {
+            let scene = crate::contact::Scene {
+                radius_m: spec.roll_radius_mm * 1e-3,
+                load_n_per_m: n,
+                speed_m_s: v,
+                poisson: spec.poisson,
+            };
+            let r = creep
+                .at_temperature(&fit.shift_law, t, None)
+                .ok()
+                .and_then(|at| {
+                    roll_cover(
+                        &scene,
+                        &at.spectrum,
+                        Some(h_mm * 1e-3),
+                        ModelChoice::Auto,
+                        tol,
+                    )
+                    .ok()
+                });
+            let p = MapPoint {
+                temp_c: t,
+                speed_m_s: v,
+                load_n_per_m: n,
+                friction: r.as_ref().map_or(f64::NAN, |r| r.roll.friction),
+                contact_length_mm: r
+                    .as_ref()
+                    .map_or(f64::NAN, |r| r.roll.contact_length_m * 1e3),
+            };
+            let e = r.map_or(0.0, |r| {
+                r.error_estimate.max(r.model_error_estimate.unwrap_or(0.0))
+            });
+            (p, e)
+        })
+        .collect();
+    let error_estimate = solved.iter().map(|s| s.1).fold(0.0, f64::max);
+    FrictionMaps {
+        solves: solved.len(),
+        points: solved.into_iter().map(|s| s.0).collect(),
+        grid: Vec::new(),
+        error_estimate,
+        tol,
+    }
 }
 
 /// Mean friction over the temperatures that solved (NaN if none did).

@@ -29,12 +29,31 @@ pub fn ranking_csv(outcomes: &[CompoundOutcome], scenes: &SceneSet) -> String {
     for spec in &scenes.scene {
         let temps: Vec<String> = spec.temps_c.iter().map(|t| t.to_string()).collect();
         for (i, (o, f)) in ranked(outcomes, &spec.name).iter().enumerate() {
+            // The bodies solved and the points' warnings (cover validity, …) of this scene.
+            let pts = o
+                .friction
+                .iter()
+                .filter(|(s, _)| *s == spec.name)
+                .flat_map(|(_, p)| p);
+            let mut models: Vec<&str> = Vec::new();
+            let mut warnings: Vec<String> = Vec::new();
+            for p in pts {
+                if !p.model.is_empty() && !models.contains(&p.model.as_str()) {
+                    models.push(&p.model);
+                }
+                for w in &p.warnings {
+                    let w = format!("{} °C: {w}", p.temp_c);
+                    warnings.push(w);
+                }
+            }
             rows.push(vec![
                 spec.name.clone(),
                 (i + 1).to_string(),
                 o.compound.clone(),
                 format!("{f:e}"),
                 temps.join(" "),
+                models.join(" "),
+                warnings.join("; ").replace(['\r', '\n'], " "),
             ]);
         }
     }
@@ -43,7 +62,15 @@ pub fn ranking_csv(outcomes: &[CompoundOutcome], scenes: &SceneSet) -> String {
             "viscoroll {}: compounds ranked by temperature-averaged rolling friction F/N per scene (lowest first)",
             env!("CARGO_PKG_VERSION")
         )],
-        &["scene", "rank", "compound", "mean_friction", "temps_c"],
+        &[
+            "scene",
+            "rank",
+            "compound",
+            "mean_friction",
+            "temps_c",
+            "model",
+            "warnings",
+        ],
         rows,
     )
 }

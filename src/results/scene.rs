@@ -56,6 +56,10 @@ pub struct SceneSpec {
     /// Poisson's ratio (default: the spectrum's).
     #[serde(default)]
     pub poisson: Option<f64>,
+    /// Thickness in mm of a rubber cover bonded to a rigid carcass; absent: a half-space. The body
+    /// solved is chosen by `contact::layer::roll_cover` (`auto`: the cheapest within tolerance).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cover_thickness_mm: Option<f64>,
     /// Temperatures in °C of the friction maps (each solve costs; keep it short).
     #[serde(default)]
     pub map_temps_c: Vec<f64>,
@@ -143,6 +147,14 @@ impl SceneSet {
                     )));
                 }
             }
+            if let Some(h) = s.cover_thickness_mm {
+                if !(h.is_finite() && h > 0.0) {
+                    return Err(cfg(format!(
+                        "{} must be finite and > 0 (omit it for a half-space), got {h}",
+                        at("cover_thickness_mm")
+                    )));
+                }
+            }
             s.scene().validate().map_err(|e| cfg(at(&e.to_string())))?;
         }
         Ok(set)
@@ -182,6 +194,19 @@ pub struct FrictionPoint {
     /// Why the solve failed, if it did.
     #[serde(default)]
     pub error: Option<String>,
+    /// The body solved (`half-space`, `layer`, `winkler-constrained`, …; contact::layer::BodyModel).
+    #[serde(default = "half_space_name")]
+    pub model: String,
+    /// Why that body (empty for a scene without a cover).
+    #[serde(default)]
+    pub model_reason: String,
+    /// Validity and solver warnings of this point (cover indentation, contact length against R, …).
+    #[serde(default)]
+    pub warnings: Vec<String>,
+}
+
+fn half_space_name() -> String {
+    "half-space".into()
 }
 
 /// Points per axis of the 2-D (speed × load) map, log-spaced over the listed speeds and loads.

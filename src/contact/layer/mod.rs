@@ -14,11 +14,13 @@
 pub mod collocation;
 pub mod compliance;
 pub mod kernel;
+pub mod roll_cover;
 pub mod winkler;
 
 pub use collocation::{LayerAnswer, LayerSettings};
 pub use compliance::WinklerColumns;
 pub use kernel::LayerKernel;
+pub use roll_cover::{roll_cover, CoverRoll, ModelChoice};
 pub use winkler::{Winkler, WinklerAnswer};
 
 use super::error::ContactError;
@@ -36,6 +38,8 @@ pub enum BodyModel {
     Layer,
     /// Winkler foundation of uniaxial columns (conveyor design tools).
     Winkler,
+    /// Winkler foundation of laterally constrained columns (the thin compressible layer's limit).
+    WinklerConstrained,
 }
 
 impl BodyModel {
@@ -45,6 +49,7 @@ impl BodyModel {
             BodyModel::HalfSpace => "half-space",
             BodyModel::Layer => "layer",
             BodyModel::Winkler => "winkler",
+            BodyModel::WinklerConstrained => "winkler-constrained",
         }
     }
 }
@@ -98,7 +103,10 @@ pub fn winkler_at_load(
     let w = Winkler::new(terms, columns, thickness, poisson)?;
     let a = w.at_load(load, settings)?;
     Ok(BodyAnswer {
-        model: BodyModel::Winkler,
+        model: match columns {
+            WinklerColumns::Uniaxial => BodyModel::Winkler,
+            WinklerColumns::Constrained => BodyModel::WinklerConstrained,
+        },
         error_estimate: 0.0,
         min_pressure_ratio: a.min_pressure_ratio,
         min_gap_ratio: a.min_gap_ratio,

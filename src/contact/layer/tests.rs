@@ -311,3 +311,74 @@ fn issue_figures_conveyor_idler() {
     );
     assert!(rel(fw, 0.0058) < 0.05 / 5.8 && w.warnings.is_empty());
 }
+
+/// The criterion table of the README (issue 14 item 4): relative difference of the half-space and of
+/// the constrained Winkler foundation from the layer, against h/λ. Same n on both sides of each
+/// comparison. `cargo test --release --lib criterion_table -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn criterion_table() {
+    let load = 0.25;
+    let cases: Vec<(&str, Vec<CreepTerm>)> = vec![
+        ("elastic", vec![]),
+        ("1 term b=0.01 f/b=100", vec![CreepTerm { f: 1.0, b: 0.01 }]),
+        ("1 term b=1 f/b=100", vec![CreepTerm { f: 100.0, b: 1.0 }]),
+        ("1 term b=100 f/b=100", vec![CreepTerm { f: 1e4, b: 100.0 }]),
+        ("example spectrum, idler scene", {
+            let text = std::fs::read_to_string(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/data/spectra/example_creep.json"
+            ))
+            .unwrap();
+            let spec: CreepSpectrum = serde_json::from_str(&text).unwrap();
+            let scene = Scene {
+                radius_m: 0.0665,
+                load_n_per_m: 10_000.0,
+                speed_m_s: 4.0,
+                poisson: None,
+            };
+            scene.dimensionless(&spec).unwrap().terms
+        }),
+    ];
+    println!("| spectrum | ν | h/λ_layer | half-space vs layer (λ, ρF/N) | constrained Winkler vs layer (λ, ρF/N) |");
+    println!("|---|---|---|---|---|");
+    for (name, terms) in &cases {
+        for nu in [0.5, 0.3] {
+            let n0 = 64;
+            let hs = thesis_at_load(terms, load, n0);
+            for hr in [0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0] {
+                let h = hr * hs.lambda;
+                // n resolving h; the half-space at the same n
+                let n = ((8.0 / hr) as usize).clamp(n0, 400);
+                let l = layer_n(terms, load, h, nu, n);
+                let hsn = if n == n0 {
+                    hs.clone()
+                } else {
+                    thesis_at_load(terms, load, n)
+                };
+                let d_hs = (
+                    rel(hsn.lambda, l.lambda),
+                    rel(hsn.friction_rho, l.friction_rho),
+                );
+                let w = Winkler::new(terms, WinklerColumns::Constrained, h, nu)
+                    .ok()
+                    .map(|w| w.at_load(load, &LoadSettings::default()).unwrap().solution);
+                let d_w = w
+                    .map(|w| {
+                        format!(
+                            "{:.1e}, {:.1e}",
+                            rel(w.lambda, l.lambda),
+                            rel(w.friction_rho, l.friction_rho)
+                        )
+                    })
+                    .unwrap_or_else(|| "rigid".into());
+                println!(
+                    "| {name} | {nu} | {:.3} | {:.1e}, {:.1e} | {d_w} |",
+                    h / l.lambda,
+                    d_hs.0,
+                    d_hs.1
+                );
+            }
+        }
+    }
+}

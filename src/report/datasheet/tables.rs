@@ -8,7 +8,8 @@
 use crate::report::csv_text::csv_text;
 use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
 
-/// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated, error.
+/// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated, error,
+/// the body solved (`model`) and the point's warnings (`; `-separated).
 pub fn friction_csv(prov: &str, friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> String {
     let rows = friction.iter().flat_map(|(spec, pts)| {
         pts.iter().map(move |p| {
@@ -21,6 +22,8 @@ pub fn friction_csv(prov: &str, friction: &[(SceneSpec, Vec<FrictionPoint>)]) ->
                 format!("{:.6}", p.log10_a_t),
                 p.extrapolated.to_string(),
                 p.error.as_deref().unwrap_or("").replace(['\r', '\n'], " "),
+                p.model.clone(),
+                p.warnings.join("; ").replace(['\r', '\n'], " "),
             ]
         })
     });
@@ -35,6 +38,8 @@ pub fn friction_csv(prov: &str, friction: &[(SceneSpec, Vec<FrictionPoint>)]) ->
             "log10_a_t",
             "extrapolated",
             "error",
+            "model",
+            "warnings",
         ],
         rows,
     )
