@@ -30,6 +30,11 @@ pub fn pipeline_contact_settings() -> AutoSettings {
     }
 }
 
+/// Tolerance of the covered scenes' solves in the main job: the bonded layer's collocation is first
+/// order in λ (Richardson-extrapolated) and costs 20–100 ms per point at 1e−3 against 0.2–0.7 s at
+/// 1e−4 (`cargo bench --bench contact_layer`); its measured errors at 1e−3 are 3e−6…3e−4 in ρF/N.
+pub const COVER_TOL: f64 = 1e-3;
+
 /// Friction of `fit` at every temperature of `spec` (parallel over temperatures). A failed solve
 /// gives a point with `error` set, not an error: the other temperatures still count.
 pub fn friction_vs_temperature(
@@ -143,7 +148,13 @@ pub fn friction_maps(
         compound: fit.compound.clone(),
     })?;
     if let Some(h_mm) = spec.cover_thickness_mm {
-        return Ok(covered_maps(fit, creep, spec, h_mm, settings.tol));
+        return Ok(covered_maps(
+            fit,
+            creep,
+            spec,
+            h_mm,
+            settings.tol.max(COVER_TOL),
+        ));
     }
     let problem = ReducedProblem::new(creep, spec.poisson)?;
     let (speeds, loads) = (
@@ -228,8 +239,7 @@ pub fn friction_maps(
 }
 
 /// Friction maps of a covered scene: the listed speeds and loads at each map temperature, each solved
-/// directly on the body `auto` chooses (contact::layer::roll_cover at `tol`, floored at 1e−5 for the
-/// layer). The two-reduced-variable interpolant (speed and h/l_g) of the half-space maps is not built
+/// directly on the body `auto` chooses (contact::layer::roll_cover at `tol`, [`COVER_TOL`] in the main job). The two-reduced-variable interpolant (speed and h/l_g) of the half-space maps is not built
 /// for covers yet, so the 2-D grid stays empty; `error_estimate` is the largest point estimate
 /// (the body's own and, where auto chose a cheaper body, its estimated difference from the layer).
 fn covered_maps(

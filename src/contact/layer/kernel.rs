@@ -180,17 +180,23 @@ impl LayerKernel {
             };
             let c = -w * delta;
             if log {
+                // z_j = e^{ijkΔ} − 1 by the recurrence z_{j+1} = z_j·e^{ikΔ} + (e^{ikΔ} − 1), whose
+                // terms do not cancel (no trigonometric call per j; kX ≤ 1 here).
+                let (rs, rc) = (k * delta).sin_cos();
+                let sh = (0.5 * k * delta).sin();
+                let (er, ei) = (-2.0 * sh * sh, rs); // e^{ikΔ} − 1
+                let (mut zr, mut zi) = (0.0_f64, 0.0_f64);
                 for j in 0..=m {
-                    let th = k * delta * j as f64;
-                    let (s, co) = th.sin_cos();
-                    // s²e^{iθ} − 1 = (s² − 1)e^{iθ} + (e^{iθ} − 1), e^{iθ} − 1 = −2sin²(θ/2) + i sin θ.
-                    let sh = (0.5 * th).sin();
-                    let re = s2m1 * co - 2.0 * sh * sh;
-                    let im = s2m1 * s + s;
+                    // s²e^{iθ} − 1 = (s² − 1)(1 + z) + z
+                    let re = s2m1 * (1.0 + zr) + zr;
+                    let im = s2m1 * zi + zi;
                     a[m + j] += c * (pr * re - pi * im);
                     if j > 0 {
                         a[m - j] += c * (pr * re + pi * im);
                     }
+                    let nr = zr * rc - zi * rs + er;
+                    zi = zr * rs + zi * rc + ei;
+                    zr = nr;
                 }
             } else {
                 let (rs, rc) = (k * delta).sin_cos();

@@ -382,3 +382,70 @@ fn criterion_table() {
         }
     }
 }
+
+#[test]
+fn layer_error_estimate_is_honoured() {
+    // Random spectra (1–6 terms, rates over 12 decades around the contact time, J∞/J_g up to 1e3),
+    // h/λ from 0.3 to 30, ν from 0 to ½; the answer at tol 1e−3 against a reference at tol 2e−5
+    // (n up to 1024): its true error (≤ reference error + difference) must lie within its estimate.
+    // A deterministic generator (an LCG) keeps the cases reproducible.
+    let mut state: u64 = 0x2545F4914F6CDD1D;
+    let mut u = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let load = 0.25;
+    let mut worst: f64 = 0.0;
+    for case in 0..6 {
+        let m = 1 + (u() * 6.0) as usize;
+        let ratio = 10f64.powf(1.0 + 2.0 * u());
+        let terms: Vec<CreepTerm> = (0..m)
+            .map(|_| {
+                let b = 10f64.powf(-6.0 + 12.0 * u());
+                CreepTerm {
+                    f: (ratio - 1.0) / m as f64 * b,
+                    b,
+                }
+            })
+            .collect();
+        let hr = 10f64.powf(-0.5 + 2.0 * u());
+        let nu = 0.5 * u();
+        let lambda0 = lambda_guess(load, 1e9, nu) * (1.0 + ratio).powf(0.25);
+        let h = hr * lambda0;
+        let a = layer_at_load(
+            &terms,
+            load,
+            h,
+            nu,
+            &LayerSettings {
+                tol: 1e-3,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let r = layer_at_load(
+            &terms,
+            load,
+            h,
+            nu,
+            &LayerSettings {
+                tol: 2e-5,
+                n_max: 1024,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let err = rel(a.solution.lambda, r.solution.lambda)
+            .max(rel(a.solution.friction_rho, r.solution.friction_rho));
+        eprintln!(
+            "case {case}: {m} terms, ratio {ratio:.0}, h/λ {:.2}, ν {nu:.2}: err {err:.1e} ≤ est {:.1e} (n {}), reference est {:.1e} (n {})",
+            h / r.solution.lambda, a.error_estimate, a.solution.n, r.error_estimate, r.solution.n
+        );
+        assert!(err <= a.error_estimate + r.error_estimate, "case {case}");
+        assert!(a.error_estimate <= 1e-3 || !a.warnings.is_empty());
+        worst = worst.max(err / a.error_estimate);
+    }
+    eprintln!("worst error/estimate {worst:.2}");
+}

@@ -147,10 +147,10 @@ impl Winkler {
             let (d0, d1) = self.parts(s);
             (d0 + a * d1) / self.c_w
         };
+        let qs: Vec<f64> = nodes.iter().map(|&(s, _)| q(s)).collect();
         let (mut i0, mut i1) = (0.0, 0.0);
         let mut samples: Vec<(f64, f64)> = Vec::with_capacity(nodes.len() + 2);
-        for &(s, w) in &nodes {
-            let v = q(s);
+        for (&(s, w), &v) in nodes.iter().zip(&qs) {
             i0 += w * v;
             i1 += w * v * (lambda - s - beta);
             samples.push((lambda - s, v));
@@ -169,7 +169,8 @@ impl Winkler {
             .map(|(_, &b)| {
                 nodes
                     .iter()
-                    .map(|&(s, w)| w * (-b * (lambda - s)).exp() * q(s))
+                    .zip(&qs)
+                    .map(|(&(s, w), &v)| w * (-b * (lambda - s)).exp() * v)
                     .sum()
             })
             .collect();
@@ -255,11 +256,14 @@ fn moments(k: f64, s: f64) -> (f64, f64) {
     if x < 1.0 {
         // m_p = p!·s^{p+1}·Σₙ(−x)ⁿ/(n+p+1)!
         let (mut t1, mut t2) = (0.5, 1.0 / 6.0); // 1/(n+2)!, 1/(n+3)! at n = 0
-        let (mut s1, mut s2) = (0.0, 0.0);
-        let mut pw = 1.0;
+        let (mut s1, mut s2) = (0.0_f64, 0.0_f64);
+        let mut pw = 1.0_f64;
         for n in 0..30 {
             s1 += pw * t1;
             s2 += pw * t2;
+            if pw.abs() * t1 < 1e-18 * s1.abs() {
+                break;
+            }
             pw *= -x;
             t1 /= (n + 3) as f64;
             t2 /= (n + 4) as f64;
