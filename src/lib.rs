@@ -46,6 +46,7 @@
 //! ```
 
 pub mod fsutil;
+pub mod material;
 pub mod special;
 
 pub mod contact;
@@ -63,29 +64,5 @@ pub mod cli;
 
 pub use creep::CreepSpectrum;
 pub use dma::Measurement;
+pub use material::{ModulusKind, ShiftLaw};
 pub use prony::RelaxationSpectrum;
-pub use tts::ShiftLaw;
-
-/// Which modulus a spectrum or a measurement describes.
-///
-/// Tensile (Young's) data E and shear data G are related by E = 2(1+ν)G for an isotropic material
-/// with Poisson's ratio ν; the ratio is always stated, never guessed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize, Default)]
-#[serde(rename_all = "snake_case")]
-pub enum ModulusKind {
-    /// Young's modulus E (tension, compression, bending).
-    #[default]
-    Tensile,
-    /// Shear modulus G.
-    Shear,
-}
-
-impl ModulusKind {
-    /// Factor that converts a modulus of this kind into the tensile modulus: E = factor · M.
-    pub fn to_tensile_factor(self, poisson: f64) -> f64 {
-        match self {
-            ModulusKind::Tensile => 1.0,
-            ModulusKind::Shear => 2.0 * (1.0 + poisson),
-        }
-    }
-}

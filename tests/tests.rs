@@ -1,4 +1,5 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod auto_vs_richardson;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;
@@ -17,8 +18,10 @@ mod ingest_cli;
 mod known_truth;
 mod master_cli;
 mod master_real;
+mod physical_units;
 mod pipeline_cli;
 mod prony_ems_ca;
+mod reference;
 mod report_plots;
 mod special_functions;
 mod spectra_cards;

@@ -21,8 +21,9 @@ pub struct Args {
     #[arg(long, allow_hyphen_values = true)]
     pub tref: Option<f64>,
     /// Horizontal shifts: `auto`, `wlf:C1,C2` (C2 in K, at --tref), `arrhenius:EA` (J/mol, at
-    /// --tref), or a file: a JSON shift law, or a table of `T_C,log10_aT` rows (CSV or
-    /// whitespace; header and unit rows skipped).
+    /// --tref), or a file: a JSON shift law, or a table with a name row (`T_C,log10_aT`, or `T,log_aT`
+    /// over a unit row `C,-`; comma, semicolon, tab or white space), referred to the row with
+    /// log10 aT = 0, else to --tref.
     #[arg(long, default_value = "auto")]
     pub shift: String,
     /// Vertical shift b_T: `fitted` (from the residual offset; horizontal then from tan δ) or
@@ -195,26 +196,23 @@ fn parse_shift(spec: &str, tref: Option<f64>) -> anyhow::Result<ShiftSource> {
         }
         let c1 = parse_number(parts[0], "C1")?;
         let c2_k = parse_number(parts[1], "C2")?;
-        if c1 <= 0.0 || c2_k <= 0.0 {
-            bail!("--shift wlf:C1,C2 needs C1 > 0 and C2 > 0 K, got C1 = {c1}, C2 = {c2_k}");
-        }
         let t_ref_c = need_tref("wlf:C1,C2")?;
-        return Ok(ShiftSource::Given {
-            law: ShiftLaw::Wlf { t_ref_c, c1, c2_k },
-        });
+        let law = ShiftLaw::Wlf { t_ref_c, c1, c2_k };
+        law.validate().with_context(|| {
+            format!("--shift wlf:C1,C2 needs C1 > 0 and C2 > 0 K, got C1 = {c1}, C2 = {c2_k}")
+        })?;
+        return Ok(ShiftSource::Given { law });
     }
     if let Some(rest) = spec.strip_prefix("arrhenius:") {
         let ea = parse_number(rest, "EA")?;
-        if ea <= 0.0 {
-            bail!("--shift arrhenius:EA needs EA > 0 J/mol, got {ea}");
-        }
         let t_ref_c = need_tref("arrhenius:EA")?;
-        return Ok(ShiftSource::Given {
-            law: ShiftLaw::Arrhenius {
-                t_ref_c,
-                activation_energy_j_per_mol: ea,
-            },
-        });
+        let law = ShiftLaw::Arrhenius {
+            t_ref_c,
+            activation_energy_j_per_mol: ea,
+        };
+        law.validate()
+            .with_context(|| format!("--shift arrhenius:EA needs EA > 0 J/mol, got {ea}"))?;
+        return Ok(ShiftSource::Given { law });
     }
     let path = Path::new(spec);
     if !path.exists() {
@@ -223,46 +221,19 @@ fn parse_shift(spec: &str, tref: Option<f64>) -> anyhow::Result<ShiftSource> {
     let text = std::fs::read_to_string(path)
         .with_context(|| format!("cannot read shift file {}", path.display()))?;
     let law = if text.trim_start().starts_with('{') {
-        serde_json::from_str::<ShiftLaw>(&text)
-            .with_context(|| format!("{} is not a shift-law JSON", path.display()))?
+        let law = serde_json::from_str::<ShiftLaw>(&text)
+            .with_context(|| format!("{} is not a shift-law JSON", path.display()))?;
+        law.validate()
+            .with_context(|| format!("shift law {}", path.display()))?;
+        law
     } else {
-        parse_table(&text).with_context(|| format!("shift table {}", path.display()))?
+        crate::dma::shiftfactors::shift_table_from_bytes(
+            &path.display().to_string(),
+            text.as_bytes(),
+            tref,
+        )?
     };
     Ok(ShiftSource::Given { law })
-}
-
-/// Rows of two numbers (T in °C, log10 a_T), separated by commas, semicolons or white space;
-/// other rows (header, units) are skipped.
-fn parse_table(text: &str) -> anyhow::Result<ShiftLaw> {
-    let mut points: Vec<(f64, f64)> = Vec::new();
-    for line in text.lines() {
-        let line = line.trim_start_matches('\u{feff}');
-        let fields: Vec<&str> = line
-            .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
-            .filter(|f| !f.is_empty())
-            .collect();
-        if fields.len() < 2 {
-            continue;
-        }
-        if let (Ok(t), Ok(a)) = (fields[0].parse::<f64>(), fields[1].parse::<f64>()) {
-            if t.is_finite() && a.is_finite() {
-                points.push((t, a));
-            }
-        }
-    }
-    if points.len() < 2 {
-        bail!("fewer than 2 rows of (T in °C, log10 a_T)");
-    }
-    points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    if points.windows(2).any(|w| w[0].0 == w[1].0) {
-        bail!("a temperature appears twice");
-    }
-    let t_ref_c = points
-        .iter()
-        .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
-        .map(|p| p.0)
-        .unwrap_or(0.0);
-    Ok(ShiftLaw::Table { t_ref_c, points })
 }
 
 fn summary(m: &MasterCurve) {

@@ -457,7 +457,7 @@ fn dd_div(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ModulusKind;
+    use crate::material::ModulusKind;
 
     fn relax(e_inf: f64, terms: &[(f64, f64)]) -> RelaxationSpectrum {
         RelaxationSpectrum {
@@ -569,7 +569,7 @@ mod tests {
     fn shifting_commutes_with_conversion() {
         // Scaling every time by a_T scales every root by 1/a_T and leaves strengths unchanged, so
         // convert-then-shift equals shift-then-convert to rounding (a few ε).
-        let law = crate::ShiftLaw::Wlf {
+        let law = crate::material::ShiftLaw::Wlf {
             t_ref_c: 25.0,
             c1: 13.5,
             c2_k: 141.19,

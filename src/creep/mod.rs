@@ -4,7 +4,7 @@
 //!
 //! Input: [`crate::RelaxationSpectrum`]; output: [`CreepSpectrum`].
 
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 use serde::{Deserialize, Serialize};
 
 /// One retardation term of a creep spectrum: Jⱼ(1 − e^(−t/τⱼ)).
@@ -31,7 +31,7 @@ pub struct CreepSpectrum {
     #[serde(default)]
     pub kind: ModulusKind,
     /// Poisson's ratio ν used to convert between tensile and shear (rubber: 0.5).
-    #[serde(default = "default_poisson")]
+    #[serde(default = "crate::material::default_poisson")]
     pub poisson: f64,
     /// Glassy (instantaneous) compliance J_g = J(0) in 1/Pa.
     pub compliance_glassy_per_pa: f64,
@@ -39,18 +39,14 @@ pub struct CreepSpectrum {
     pub terms: Vec<RetardationTerm>,
 }
 
-pub(crate) fn default_poisson() -> f64 {
-    0.5
-}
-
 pub mod error;
 pub mod exact;
 pub mod park_schapery;
 pub mod spectrum;
 
+pub use crate::material::AtTemperature;
 pub use error::CreepError;
 pub use exact::{creep_to_relaxation, relaxation_to_creep, ExactInfo};
 pub use park_schapery::{
     park_schapery, ParkSchaperyInfo, ParkSchaperySettings, ParkSchaperyVariant,
 };
-pub use spectrum::AtTemperature;

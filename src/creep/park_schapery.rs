@@ -36,6 +36,7 @@
 
 use super::error::CreepError;
 use super::{CreepSpectrum, RetardationTerm};
+use crate::material::MaterialError;
 use crate::prony::RelaxationSpectrum;
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
@@ -136,11 +137,12 @@ pub fn park_schapery(
         Some(v) => {
             for (i, &t) in v.iter().enumerate() {
                 if !(t.is_finite() && t > 0.0) {
-                    return Err(CreepError::InvalidValue {
+                    return Err(MaterialError::InvalidValue {
                         field: format!("retardation_times_s[{i}]"),
                         value: t,
                         expected: "a finite time > 0 in s",
-                    });
+                    }
+                    .into());
                 }
             }
             v.clone()
@@ -281,8 +283,8 @@ pub fn park_schapery(
 mod tests {
     use super::*;
     use crate::creep::relaxation_to_creep;
+    use crate::material::ModulusKind;
     use crate::prony::RelaxationTerm;
-    use crate::ModulusKind;
 
     #[test]
     fn kernel_tends_to_eq_2_19_and_matches_eq_2_22() {

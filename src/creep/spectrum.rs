@@ -1,70 +1,18 @@
 //! Evaluation of a [`CreepSpectrum`] (thesis eq. 2.12): J(t), J′(ω), J″(ω), J∞; validation; the spectrum
 //! at another temperature through a [`ShiftLaw`]; tensile ↔ shear conversion.
 //!
-//! Input and output: [`CreepSpectrum`] (plain serde type of `creep/mod.rs`). Also holds [`AtTemperature`],
-//! the result of shifting any spectrum to a temperature (shared with [`crate::RelaxationSpectrum`]).
+//! Input and output: [`CreepSpectrum`] (plain serde type of `creep/mod.rs`); shifting gives an
+//! [`AtTemperature`] (of [`crate::material`], shared with [`crate::RelaxationSpectrum`]).
 //!
 //! Conventions: J*(ω) = J′(ω) − iJ″(ω) = 1/E*(ω) with E* = E′ + iE″ (so J″ ≥ 0), and for one term
 //! Jⱼ(1 − e^(−t/τⱼ)) ↔ Jⱼ/(1 + iωτⱼ). Time–temperature superposition: a time at temperature T equals
 //! a_T times the time at T_ref, so every τ is multiplied by a_T (MATH.md §6).
 
-use super::error::{check_poisson, check_positive, CreepError};
+use super::error::CreepError;
 use super::{CreepSpectrum, RetardationTerm};
-use crate::{ModulusKind, ShiftLaw};
-use serde::{Deserialize, Serialize};
-
-/// A spectrum moved to a temperature by a shift law.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct AtTemperature<S> {
-    /// The spectrum at `temp_c` (all times multiplied by a_T).
-    pub spectrum: S,
-    /// The temperature in °C.
-    pub temp_c: f64,
-    /// log10 a_T used.
-    pub log10_a_t: f64,
-    /// True when `temp_c` lies outside the measured temperature range given by the caller: the shift
-    /// law is then extrapolated and the result deserves caution.
-    pub extrapolated: bool,
-}
-
-/// log10 a_T at `temp_c`, finite, and whether it is an extrapolation beyond `measured_range_c`.
-pub(crate) fn shift_at(
-    law: &ShiftLaw,
-    temp_c: f64,
-    measured_range_c: Option<(f64, f64)>,
-) -> Result<(f64, bool), CreepError> {
-    if !temp_c.is_finite() {
-        return Err(CreepError::InvalidValue {
-            field: "temp_c".into(),
-            value: temp_c,
-            expected: "a finite temperature in °C",
-        });
-    }
-    let log10_a_t = law.log10_a_t(temp_c);
-    // 10^±300 keeps every shifted time a normal double for τ between 1e-8 and 1e8 s.
-    if !log10_a_t.is_finite() || log10_a_t.abs() > 300.0 {
-        return Err(CreepError::ShiftUndefined { temp_c, log10_a_t });
-    }
-    let extrapolated = match measured_range_c {
-        Some((lo, hi)) => temp_c < lo.min(hi) || temp_c > lo.max(hi),
-        None => false,
-    };
-    Ok((log10_a_t, extrapolated))
-}
-
-/// (1/(1+x²), x²/(1+x²), x/(1+x²)) for x = ωτ ≥ 0, each to full relative precision and without
-/// overflow (x up to 1e308).
-#[inline]
-pub(crate) fn debye(x: f64) -> (f64, f64, f64) {
-    if x <= 1.0 {
-        let d = 1.0 + x * x;
-        (1.0 / d, x * x / d, x / d)
-    } else {
-        let y = 1.0 / x;
-        let d = 1.0 + y * y;
-        (y * y / d, 1.0 / d, y / d)
-    }
-}
+use crate::material::{
+    check_poisson, check_positive, debye, shift_at, AtTemperature, ModulusKind, ShiftLaw,
+};
 
 impl CreepSpectrum {
     /// Glassy compliance J_g = J(0) in 1/Pa.
@@ -232,7 +180,12 @@ mod tests {
         let expected = 2.0 * 10f64.powf(-13.5 * 25.0 / (141.19 + 25.0));
         assert!((s.spectrum.terms[0].tau_s / expected - 1.0).abs() < 1e-14);
         let e = one_term().at_temperature(&law, 25.0 - 200.0, None);
-        assert!(matches!(e, Err(CreepError::ShiftUndefined { .. })));
+        assert!(matches!(
+            e,
+            Err(CreepError::Material(
+                crate::material::MaterialError::ShiftUndefined { .. }
+            ))
+        ));
     }
 
     #[test]

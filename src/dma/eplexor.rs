@@ -11,7 +11,7 @@ use super::error::DmaError;
 use super::table::{Block, Cell, Loc, RawFile, Row};
 use super::text::{self, Decimal};
 use super::units::TempUnit;
-use crate::ShiftLaw;
+use crate::material::ShiftLaw;
 use calamine::{open_workbook_auto_from_rs, Data, Range, Reader, Sheets};
 use std::io::Cursor;
 

@@ -1,7 +1,7 @@
 //! Stage `dma` (ingest): readers for instrument exports, unit and locale handling, splitting into
 //! isothermal sweeps and data checks → [`Measurement`].
 
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -29,7 +29,7 @@ pub use eplexor::read_eplexor_shiftlist;
 pub use error::DmaError;
 pub use isotherms::SplitSettings;
 pub use read::{read_bytes, read_files, sha256_hex, IngestOptions};
-pub use shiftfactors::read_shift_factors;
+pub use shiftfactors::{read_shift_factors, read_shift_table};
 
 /// serde: a NaN written as `null` by serde_json reads back as NaN (flagged points are kept).
 fn f64_or_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {

@@ -112,12 +112,12 @@ pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
     if let Some(mode) = raw.metadata.get("MODE") {
         let l = mode.to_lowercase();
         let kind = if l.contains("shear") {
-            Some(crate::ModulusKind::Shear)
+            Some(crate::material::ModulusKind::Shear)
         } else if ["tension", "tensile", "bending", "compression", "cantilever"]
             .iter()
             .any(|w| l.contains(w))
         {
-            Some(crate::ModulusKind::Tensile)
+            Some(crate::material::ModulusKind::Tensile)
         } else {
             None
         };

@@ -13,7 +13,7 @@ use super::error::DmaError;
 use super::table::{cell_from_text, Block, Loc, RawFile, Row};
 use super::text::{self, Delimiter};
 use super::units;
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 
 const RESULT: &[&str] = &["result:", "ergebnis:", "résultat:", "resultat:"];
 const INTERVAL_DATA: &[&str] = &[

@@ -1,23 +1,45 @@
-//! A table of shift factors written as text (pyvisco's `*_shift_factors.csv`: a `T,log_aT` name row,
-//! a `C, -` unit row) → [`ShiftLaw::Table`]. The reference temperature is the one whose log a_T is 0.
+//! The one reader of shift-factor tables written as text → [`ShiftLaw::Table`]: a name row with a
+//! temperature column and a log a_T column (pyvisco's `*_shift_factors.csv`: `T,log_aT` over a
+//! `C, -` unit row; or units in the names: `T_C,log10_aT`, `T [K]`), comma, semicolon, tab or
+//! white space. The temperature unit comes from the file, never guessed. The reference temperature
+//! is the one whose log a_T is 0, else the one the caller states.
 
 use super::error::DmaError;
 use super::table::{Cell, Loc};
 use super::units::TempUnit;
-use crate::ShiftLaw;
+use crate::material::ShiftLaw;
 
-/// Read a shift-factor table: a temperature column (with its unit) and a `log_aT` column.
+/// Read a shift-factor table: a temperature column (with its unit) and a `log_aT` column; the
+/// reference temperature is the row with log a_T = 0.
 pub fn read_shift_factors(path: &std::path::Path) -> Result<ShiftLaw, DmaError> {
+    read_shift_table(path, None)
+}
+
+/// [`read_shift_factors`] with a stated reference temperature (°C) for a table that has no row
+/// with log a_T = 0 (a row at 0 wins when both exist and must then agree with it).
+pub fn read_shift_table(
+    path: &std::path::Path,
+    t_ref_c: Option<f64>,
+) -> Result<ShiftLaw, DmaError> {
     let file = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|source| DmaError::Io {
         file: file.clone(),
         source,
     })?;
-    shift_factors_from_bytes(&file, &bytes)
+    shift_table_from_bytes(&file, &bytes, t_ref_c)
 }
 
 /// [`read_shift_factors`] on bytes already read.
 pub fn shift_factors_from_bytes(file: &str, bytes: &[u8]) -> Result<ShiftLaw, DmaError> {
+    shift_table_from_bytes(file, bytes, None)
+}
+
+/// [`read_shift_table`] on bytes already read.
+pub fn shift_table_from_bytes(
+    file: &str,
+    bytes: &[u8],
+    t_ref_c: Option<f64>,
+) -> Result<ShiftLaw, DmaError> {
     let text = super::text::decode(bytes).text;
     let raw = super::generic::read(file, &text)?;
     let block = &raw.blocks[0];
@@ -39,6 +61,9 @@ pub fn shift_factors_from_bytes(file: &str, bytes: &[u8]) -> Result<ShiftLaw, Dm
         .ok_or_else(|| missing("temperature", "T, Temp, Temperature"))?;
     let ia = find(&[
         "log at",
+        "log10at",
+        "log a",
+        "log10 a",
         "log a t",
         "log10 at",
         "log10 a t",
@@ -80,14 +105,30 @@ pub fn shift_factors_from_bytes(file: &str, bytes: &[u8]) -> Result<ShiftLaw, Dm
         points.push((tu.to_celsius(get(it)?), get(ia)?));
     }
     points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let t_ref_c = points
-        .iter()
-        .find(|p| p.1 == 0.0)
-        .map(|p| p.0)
-        .ok_or_else(|| DmaError::Structure {
-            file: file.into(),
-            location: loc.clone(),
-            message: "no row with log a_T = 0, so the reference temperature is unknown".into(),
-        })?;
+    let structure = |message: String| DmaError::Structure {
+        file: file.into(),
+        location: loc.clone(),
+        message,
+    };
+    if points.len() < 2 {
+        return Err(structure("fewer than 2 rows of (T, log a_T)".into()));
+    }
+    if let Some(w) = points.windows(2).find(|w| w[0].0 == w[1].0) {
+        return Err(structure(format!(
+            "the temperature {} °C appears twice",
+            w[0].0
+        )));
+    }
+    let zero_row = points.iter().find(|p| p.1 == 0.0).map(|p| p.0);
+    let t_ref_c =
+        match (zero_row, t_ref_c) {
+            (Some(z), _) => z,
+            (None, Some(t)) => t,
+            (None, None) => return Err(structure(
+                "no row with log a_T = 0, so the reference temperature is unknown (state it, e.g. \
+                 `viscoroll master --tref`)"
+                    .into(),
+            )),
+        };
     Ok(ShiftLaw::Table { t_ref_c, points })
 }

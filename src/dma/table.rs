@@ -85,7 +85,7 @@ pub struct RawFile {
     /// The tables.
     pub blocks: Vec<Block>,
     /// Tensile or shear when the format (not a column name) says so: e.g. a rotational rheometer.
-    pub mode_hint: Option<(crate::ModulusKind, String)>,
+    pub mode_hint: Option<(crate::material::ModulusKind, String)>,
 }
 
 /// Turn a text field into a cell.

@@ -14,7 +14,7 @@ use super::generic::metadata_line;
 use super::table::{cell_from_text, Block, Loc, RawFile, Row};
 use super::text::{self, Decimal, Delimiter};
 use super::units::{self, TempUnit};
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 
 /// Set temperature written in a step name: the last `(… <number> °C)` or `<number> °C`.
 pub fn temperature_in_name(name: &str) -> Option<f64> {

@@ -46,7 +46,7 @@ use super::{
     LambdaCandidate, PronyError, PronyInfo, PronySettings, RelaxationSpectrum, RelaxationTerm,
     WeightRule,
 };
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
     DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus,

@@ -11,7 +11,7 @@
 //! ω is the angular frequency in rad/s (ω = 2πf). These free functions serve the fit and the plots;
 //! they do not replace spectrum methods owned by the `creep`/spectra stage.
 
-use crate::RelaxationSpectrum;
+use crate::prony::RelaxationSpectrum;
 
 /// Storage kernel (ωρ)²/(1+(ωρ)²) of one Maxwell element; `w_rho` = ωρ (dimensionless).
 #[inline]
@@ -41,8 +41,8 @@ pub fn dynamic_moduli_pa(spectrum: &RelaxationSpectrum, omega_rad_s: f64) -> (f6
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::material::ModulusKind;
     use crate::prony::RelaxationTerm;
-    use crate::ModulusKind;
 
     #[test]
     fn single_maxwell_element_limits_and_peak() {

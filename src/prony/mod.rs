@@ -3,7 +3,7 @@
 //!
 //! Input: a master curve; output: [`RelaxationSpectrum`].
 
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 use serde::{Deserialize, Serialize};
 
 mod error;
@@ -40,7 +40,7 @@ pub struct RelaxationSpectrum {
     #[serde(default)]
     pub kind: ModulusKind,
     /// Poisson's ratio ν used to convert between tensile and shear (rubber: 0.5).
-    #[serde(default = "crate::creep::default_poisson")]
+    #[serde(default = "crate::material::default_poisson")]
     pub poisson: f64,
     /// Equilibrium (relaxed, long-time) modulus E∞ in Pa.
     pub modulus_inf_pa: f64,

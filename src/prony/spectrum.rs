@@ -2,17 +2,17 @@
 //! instantaneous modulus E₀; validation; the spectrum at another temperature through a [`ShiftLaw`];
 //! tensile ↔ shear conversion.
 //!
-//! Input and output: [`RelaxationSpectrum`] (plain serde type of `prony/mod.rs`). Errors are the creep
-//! stage's [`CreepError`], the first consumer that needs the spectrum to be admissible.
+//! Input and output: [`RelaxationSpectrum`] (plain serde type of `prony/mod.rs`). Errors are the shared
+//! [`MaterialError`] of the ground floor (the creep stage wraps it in its own error).
 //!
 //! Formulas (generalised Maxwell model, one term Eᵢe^(−t/ρᵢ) ↔ Eᵢ iωρᵢ/(1 + iωρᵢ)):
 //! E′(ω) = E∞ + Σ Eᵢω²ρᵢ²/(1 + ω²ρᵢ²), E″(ω) = Σ Eᵢωρᵢ/(1 + ω²ρᵢ²), E₀ = E(0) = E∞ + Σ Eᵢ.
 
-use crate::creep::error::{check_poisson, check_positive, CreepError};
-use crate::creep::spectrum::{debye, shift_at};
-use crate::creep::AtTemperature;
+use crate::material::{
+    check_poisson, check_positive, debye, shift_at, AtTemperature, MaterialError, ModulusKind,
+    ShiftLaw,
+};
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
-use crate::{ModulusKind, ShiftLaw};
 
 impl RelaxationSpectrum {
     /// Instantaneous (glassy) modulus E₀ = E(0) = E∞ + Σ Eᵢ in Pa.
@@ -66,7 +66,7 @@ impl RelaxationSpectrum {
 
     /// Check that the spectrum is admissible: E∞ ≥ 0, Eᵢ ≥ 0, ρᵢ > 0, all finite, E₀ > 0,
     /// ν in (−1, 0.5]. (E∞ = 0, a fluid, is admissible here; the creep conversion rejects it.)
-    pub fn validate(&self) -> Result<(), CreepError> {
+    pub fn validate(&self) -> Result<(), MaterialError> {
         check_poisson(self.poisson)?;
         check_positive(|| "modulus_inf_pa".into(), self.modulus_inf_pa, true)?;
         for (i, r) in self.terms.iter().enumerate() {
@@ -88,7 +88,7 @@ impl RelaxationSpectrum {
         law: &ShiftLaw,
         temp_c: f64,
         measured_range_c: Option<(f64, f64)>,
-    ) -> Result<AtTemperature<RelaxationSpectrum>, CreepError> {
+    ) -> Result<AtTemperature<RelaxationSpectrum>, MaterialError> {
         let (log10_a_t, extrapolated) = shift_at(law, temp_c, measured_range_c)?;
         let a_t = 10f64.powf(log10_a_t);
         let mut spectrum = self.clone();

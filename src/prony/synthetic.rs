@@ -6,7 +6,7 @@
 
 use super::kernel::dynamic_moduli_pa;
 use super::{MasterPoint, RelaxationSpectrum, RelaxationTerm};
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 use std::f64::consts::PI;
 
 /// A rubber-like spectrum at the given relaxation times: E∞ = 1 MPa and a Gaussian bump in log10 ρ

@@ -13,7 +13,7 @@
 
 use super::error::TtsError;
 use super::shift::golden_min;
-use super::{ShiftLaw, GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};
+use crate::material::{ShiftLaw, GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};
 use serde::{Deserialize, Serialize};
 
 /// One temperature's shift factor beside a law's value.

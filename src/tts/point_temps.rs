@@ -12,8 +12,8 @@
 //! per K² with the universal constants) and |T_p − T_i| ≤ 1.5 K it is below 0.015 decade, and the
 //! deviations from the isotherm's *mean* temperature are smaller than from the nominal one.
 
-use super::master::TemperatureBasis;
-use crate::Measurement;
+use super::settings::TemperatureBasis;
+use crate::dma::Measurement;
 
 /// d log10 a_T/dT (per K) at each temperature of `shifts` ((T in °C, log10 a_T), any order), from
 /// the parabola through the point and its two neighbours in temperature (three-point derivative on
@@ -76,7 +76,7 @@ pub fn correct_point_temperatures(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ShiftLaw;
+    use crate::material::ShiftLaw;
 
     #[test]
     fn three_point_slopes_are_exact_on_a_parabola() {
@@ -176,7 +176,7 @@ mod tests {
                 encoding: String::new(),
                 columns: vec![],
             }],
-            kind: crate::ModulusKind::Tensile,
+            kind: crate::material::ModulusKind::Tensile,
             poisson: 0.5,
             isotherms,
             warnings: vec![],

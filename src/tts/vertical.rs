@@ -8,7 +8,7 @@
 //!   problem, v_ref = 0). The horizontal shifts then come from tan δ, which b_T does not change.
 
 use super::shift::{overlap_points, residual, Prepared};
-use super::ZERO_CELSIUS_K;
+use crate::material::ZERO_CELSIUS_K;
 use nalgebra::{DMatrix, DVector};
 
 /// log10 b_T = log10(T/T_ref) (kelvin), the constant-density entropic factor.

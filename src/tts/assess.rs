@@ -1,0 +1,122 @@
+//! Fifth phase of the master curve: the quality figures of each isotherm at its final shifts — the
+//! overlap mismatch, E″ alone at those shifts, van Gurp–Palmen and the local Kramers–Kronig rule
+//! ([`super::quality`]) — their flags against the bounds, and the summary [`MasterQuality`].
+
+use super::channels::Channels;
+use super::clean::Clean;
+use super::horizontal::Horizontal;
+use super::master::{IsothermShift, MasterQuality};
+use super::quality::{kramers_kronig_local, van_gurp_palmen};
+use super::settings::{MasterSettings, VerticalShift};
+use super::shift::{overlap_rms, Prepared};
+
+/// The shift and quality figures of every isotherm, and their summary.
+pub(super) fn assess(
+    iso: &[Clean],
+    ch: &Channels,
+    h: &Horizontal,
+    log_b: &[f64],
+    settings: &MasterSettings,
+) -> (Vec<IsothermShift>, MasterQuality) {
+    let n = iso.len();
+    let (reach, min_pts) = (settings.pair_reach, settings.min_overlap_points);
+    let (shifts, overlap) = (&h.shifts, &h.overlap);
+    let loss_only: Vec<Prepared> = ch
+        .joint
+        .iter()
+        .map(|p| Prepared::new(p.x.clone(), vec![p.channels[1].0.clone()]))
+        .collect();
+    let loss_overlap = overlap_rms(&loss_only, shifts, reach, min_pts);
+    let vgp = van_gurp_palmen(
+        &ch.joint,
+        &if settings.vertical == VerticalShift::Fitted {
+            log_b.to_vec()
+        } else {
+            vec![0.0; n]
+        },
+    );
+    let bounds = settings.bounds;
+    let mut flags_all = Vec::new();
+    let mut isotherms = Vec::with_capacity(n);
+    for (i, c) in iso.iter().enumerate() {
+        let kk = kramers_kronig_local(&ch.joint[i]);
+        let mut flags = Vec::new();
+        if let Some(o) = overlap[i] {
+            if o > bounds.overlap_rms_max_log10 {
+                flags.push(format!(
+                    "overlap RMS {o:.3} > {} (log10)",
+                    bounds.overlap_rms_max_log10
+                ));
+            }
+        } else {
+            flags.push("overlaps no other isotherm".to_string());
+        }
+        if let Some(o) = loss_overlap[i] {
+            if o > bounds.overlap_rms_max_log10 {
+                flags.push(format!(
+                    "E″ alone overlap RMS {o:.3} > {} (log10) at these shifts",
+                    bounds.overlap_rms_max_log10
+                ));
+            }
+        }
+        if let Some(v) = vgp[i] {
+            if v > bounds.vgp_rms_max_deg {
+                flags.push(format!(
+                    "van Gurp–Palmen RMS {v:.2}° > {}°",
+                    bounds.vgp_rms_max_deg
+                ));
+            }
+        }
+        if let Some(k) = kk {
+            if k.abs() > bounds.kk_max_abs_log10_ratio {
+                flags.push(format!(
+                    "Kramers–Kronig: median log10((π/2)dE′/dlnω / E″) = {k:.2}, |·| > {}",
+                    bounds.kk_max_abs_log10_ratio
+                ));
+            }
+        }
+        for f in &flags {
+            flags_all.push(format!("{:.2} °C: {f}", c.temp));
+        }
+        isotherms.push(IsothermShift {
+            measurement_index: c.index,
+            temp_nominal_c: c.nominal,
+            temp_c: c.temp,
+            log10_a_t: shifts[i],
+            log10_a_t_std: h.std_err[i],
+            log10_b_t: log_b[i],
+            points_used: c.x.len(),
+            points_dropped: c.dropped,
+            overlap_rms_log10: overlap[i],
+            loss_overlap_rms_log10: loss_overlap[i],
+            vgp_rms_deg: vgp[i],
+            kk_median_log10_ratio: kk,
+            flags,
+        });
+    }
+    let max_of = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, f64::max);
+    let ov: Vec<f64> = overlap.iter().flatten().copied().collect();
+    let quality = MasterQuality {
+        bounds,
+        overlap_rms_max_log10: max_of(&mut ov.iter().copied()),
+        overlap_rms_log10: if ov.is_empty() {
+            0.0
+        } else {
+            (ov.iter().map(|v| v * v).sum::<f64>() / ov.len() as f64).sqrt()
+        },
+        loss_overlap_rms_max_log10: max_of(&mut loss_overlap.iter().flatten().copied()),
+        vgp_rms_max_deg: max_of(&mut vgp.iter().flatten().copied()),
+        kk_max_abs_log10_ratio: max_of(
+            &mut isotherms
+                .iter()
+                .filter_map(|s| s.kk_median_log10_ratio.map(f64::abs)),
+        ),
+        thermorheologically_simple: vgp.iter().flatten().all(|&v| v <= bounds.vgp_rms_max_deg),
+        global_iterations: h.iterations,
+        channel_scatter_log10: ch.channel_scatter_log10.clone(),
+        point_temperature_correction_max_log10: 0.0,
+        point_temperature_passes: 0,
+        flags: flags_all,
+    };
+    (isotherms, quality)
+}

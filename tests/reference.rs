@@ -1,0 +1,203 @@
+//! Hand-written physical references for the tests that check friction in SI units (issue 19).
+//!
+//! Nothing here calls the project's scene conversion (`contact::scene`), its friction maps or its
+//! relaxation → creep conversion: the standard linear solid's creep function, the thesis' §3.2
+//! dimensionless groups and Hertz's line contact are written out again below, from the thesis and
+//! textbook formulas, so that a wrong factor in the project's own conversion cannot cancel out.
+//! The only library call is the exact one-term solution of the dimensionless problem
+//! (`viscoroll::contact::exact`, checked to 1e-14 against a 30-digit mpmath evaluation in
+//! src/contact/exact_tests.rs), which has no units in it.
+//!
+//! Standard linear solid (SLS). Relaxation M(t) = M∞ + (M₀ − M∞)e^(−t/τ_r) (M = E tensile or G shear).
+//! Its creep compliance (Laplace: s·M̄(s)·s·J̄(s) = 1, one pole) is
+//! J(t) = J_g + J₁(1 − e^(−t/τ_c)), J_g = 1/M₀, J_g + J₁ = 1/M∞, τ_c = τ_r·M₀/M∞ (Ferry,
+//! *Viscoelastic Properties of Polymers*, ch. 3; Tschoegl 1989 §3.4).
+//!
+//! Dimensionless groups (thesis §3.2, eq. 3.8, 3.20–3.24), with the thesis' own choice T = τ₁ = τ_c:
+//! μ₀ the glassy shear modulus (E₀/(2(1+ν)) for tensile data), ξ = x/(VT), ρ = R/(VT),
+//! Q′ = ρ·((1−ν)/μ₀)·q/π, N′ = ρ·((1−ν)/μ₀)·(2/π)·N*/(VT), f = (J₁/J_g)(T/τ_c) = J₁/J_g, b = T/τ_c = 1,
+//! F/N = (ρF/N)/ρ, contact length l = λ·VT, offset of the contact's centre ahead of the lowest point
+//! (λ/2 − β)·VT.
+//!
+//! Hertz line contact (Johnson, *Contact Mechanics*, 1985, §4.3, eq. 4.45 and 4.46; plane strain):
+//! half-width a = √(4N*R/(πE*)), peak pressure p₀ = 2N*/(πa), E* = E/(1−ν²) for a rigid roll.
+
+use std::f64::consts::PI;
+use viscoroll::contact::exact::{one_term_at_load, OneTermExact};
+use viscoroll::contact::CreepTerm;
+
+/// Which modulus the SLS is given in.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Kind {
+    /// Young's modulus E.
+    Tensile,
+    /// Shear modulus G.
+    Shear,
+}
+
+/// A standard linear solid (see the module docs), moduli in Pa, times in s.
+#[derive(Debug, Clone, Copy)]
+pub struct Sls {
+    pub kind: Kind,
+    pub poisson: f64,
+    /// Glassy (instantaneous) modulus M₀.
+    pub glassy_pa: f64,
+    /// Relaxed (equilibrium) modulus M∞.
+    pub relaxed_pa: f64,
+    /// Relaxation time τ_r.
+    pub tau_relax_s: f64,
+}
+
+impl Sls {
+    /// Retardation (creep) time τ_c = τ_r·M₀/M∞.
+    pub fn tau_creep_s(&self) -> f64 {
+        self.tau_relax_s * self.glassy_pa / self.relaxed_pa
+    }
+
+    /// J₁ = 1/M∞ − 1/M₀.
+    pub fn creep_strength_per_pa(&self) -> f64 {
+        1.0 / self.relaxed_pa - 1.0 / self.glassy_pa
+    }
+
+    /// Glassy shear modulus μ₀: G₀, or E₀/(2(1+ν)).
+    pub fn glassy_shear_pa(&self, poisson: f64) -> f64 {
+        match self.kind {
+            Kind::Shear => self.glassy_pa,
+            Kind::Tensile => self.glassy_pa / (2.0 * (1.0 + poisson)),
+        }
+    }
+
+    /// Plane-strain modulus E* = E/(1−ν²) = 2G/(1−ν) of the glassy (`glassy`) or relaxed material.
+    pub fn plane_strain_pa(&self, glassy: bool) -> f64 {
+        let m = if glassy {
+            self.glassy_pa
+        } else {
+            self.relaxed_pa
+        };
+        match self.kind {
+            Kind::Tensile => m / (1.0 - self.poisson * self.poisson),
+            Kind::Shear => 2.0 * m / (1.0 - self.poisson),
+        }
+    }
+
+    /// The creep-spectrum JSON that `viscoroll roll` reads (README, "Creep spectrum JSON").
+    pub fn creep_json(&self) -> String {
+        format!(
+            r#"{{"kind": "{}", "poisson": {:e}, "compliance_glassy_per_pa": {:e},
+ "terms": [{{"compliance_per_pa": {:e}, "tau_s": {:e}}}]}}"#,
+            match self.kind {
+                Kind::Tensile => "tensile",
+                Kind::Shear => "shear",
+            },
+            self.poisson,
+            1.0 / self.glassy_pa,
+            self.creep_strength_per_pa(),
+            self.tau_creep_s()
+        )
+    }
+}
+
+/// A scene in SI units.
+#[derive(Debug, Clone, Copy)]
+pub struct SceneSi {
+    pub radius_m: f64,
+    pub load_n_per_m: f64,
+    pub speed_m_s: f64,
+}
+
+/// What a roll on the SLS gives, in SI units.
+#[derive(Debug, Clone)]
+pub struct Expected {
+    /// F*/N*.
+    pub friction: f64,
+    /// Contact length l in m.
+    pub contact_length_m: f64,
+    /// (λ/2 − β)·VT in m.
+    pub offset_m: f64,
+    /// Largest contact pressure in Pa.
+    pub peak_pressure_pa: f64,
+    /// The dimensionless solution at T = τ_c.
+    pub sol: OneTermExact,
+    /// V·T in m.
+    pub vt_m: f64,
+    /// q/Q′ = π/(ρ·C) in Pa.
+    pub pressure_scale_pa: f64,
+}
+
+impl Expected {
+    /// The contact pressure in Pa at x (m, from the roll's lowest point, positive toward the front
+    /// edge): ξ = x/(VT) + β.
+    pub fn pressure_pa(&self, x_m: f64) -> f64 {
+        self.pressure_scale_pa * self.sol.pressure(x_m / self.vt_m + self.sol.beta)
+    }
+}
+
+/// The exact answer for `sls` (its retardation time multiplied by `a_t`, a shift factor) in `scene`,
+/// by the thesis' scaling with T = τ_c·a_T (module docs).
+pub fn exact_sls(sls: &Sls, scene: &SceneSi, a_t: f64) -> Expected {
+    let nu = sls.poisson;
+    let t = sls.tau_creep_s() * a_t;
+    let vt = scene.speed_m_s * t;
+    let rho = scene.radius_m / vt;
+    let c = (1.0 - nu) / sls.glassy_shear_pa(nu);
+    let load = rho * c * (2.0 / PI) * scene.load_n_per_m / vt;
+    let term = CreepTerm {
+        f: sls.creep_strength_per_pa() * sls.glassy_pa,
+        b: 1.0,
+    };
+    let sol = one_term_at_load(term, load).expect("exact one-term solution");
+    // Largest Q′: a fine scan, then golden-section refinement around the best sample (Q′ is smooth
+    // and has one maximum on the contact).
+    let m = 4000;
+    let (mut best, mut best_q) = (0usize, 0.0f64);
+    for i in 1..m {
+        let q = sol.pressure(sol.lambda * i as f64 / m as f64);
+        if q > best_q {
+            best = i;
+            best_q = q;
+        }
+    }
+    let (mut lo, mut hi) = (
+        sol.lambda * (best - 1) as f64 / m as f64,
+        sol.lambda * (best + 1) as f64 / m as f64,
+    );
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..80 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if sol.pressure(x1) > sol.pressure(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    let q_max = sol.pressure(0.5 * (lo + hi)).max(best_q);
+    Expected {
+        friction: sol.friction_rho / rho,
+        contact_length_m: sol.lambda * vt,
+        offset_m: (0.5 * sol.lambda - sol.beta) * vt,
+        peak_pressure_pa: PI * q_max / (rho * c),
+        sol,
+        vt_m: vt,
+        pressure_scale_pa: PI / (rho * c),
+    }
+}
+
+/// Hertz line contact of a rigid roll on an elastic half-space of plane-strain modulus `e_star`:
+/// (contact length 2a, peak pressure p₀) in (m, Pa).
+pub fn hertz(scene: &SceneSi, e_star: f64) -> (f64, f64) {
+    let a = (4.0 * scene.load_n_per_m * scene.radius_m / (PI * e_star)).sqrt();
+    (2.0 * a, 2.0 * scene.load_n_per_m / (PI * a))
+}
+
+/// Relative difference a/b − 1.
+pub fn rel(a: f64, b: f64) -> f64 {
+    a / b - 1.0
+}
+
+/// A fresh temporary folder for one test (removed by the caller).
+pub fn temp_dir(tag: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("viscoroll-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
