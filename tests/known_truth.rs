@@ -16,9 +16,10 @@
 
 use std::path::PathBuf;
 use viscoroll::contact::controlled::AutoSettings;
+use viscoroll::contact::layer::{roll_cover, ModelChoice};
 use viscoroll::contact::roll_auto::roll_auto;
 use viscoroll::creep::relaxation_to_creep;
-use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet};
+use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet, COVER_TOL};
 use viscoroll::pipeline::{fit_files, FitOptions};
 use viscoroll::testdata::realistic::{
     dma_csv, dma_rows, realistic_compounds, DmaProtocol, RealisticCompound,
@@ -189,23 +190,26 @@ fn evaluate(
             let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
             let scene = spec.scene();
             for p in &got {
-                let truth = roll_auto(
-                    &scene,
-                    &shifted(&true_creep, compound.law.log10_a_t(p.temp_c)),
-                    &settings,
-                )
-                .unwrap()
-                .roll
-                .friction;
+                // On the scene's body: a covered scene as the pipeline solves it (auto body choice
+                // at COVER_TOL), the others on the half-space.
+                let friction_on = |sp: &viscoroll::CreepSpectrum| match spec.cover_thickness_mm {
+                    Some(h_mm) => {
+                        roll_cover(
+                            &scene,
+                            sp,
+                            Some(h_mm * 1e-3),
+                            ModelChoice::Auto,
+                            settings.tol.max(COVER_TOL),
+                        )
+                        .unwrap()
+                        .roll
+                        .friction
+                    }
+                    None => roll_auto(&scene, sp, &settings).unwrap().roll.friction,
+                };
+                let truth = friction_on(&shifted(&true_creep, compound.law.log10_a_t(p.temp_c)));
                 // The fitted spectrum with the true shifts: the error of the spectrum alone.
-                let spec_only = roll_auto(
-                    &scene,
-                    &shifted(&fit_creep, true_shift(p.temp_c)),
-                    &settings,
-                )
-                .unwrap()
-                .roll
-                .friction;
+                let spec_only = friction_on(&shifted(&fit_creep, true_shift(p.temp_c)));
                 // A failed solve (NaN) counts as an infinite error.
                 let err = (p.friction / truth - 1.0).abs();
                 errs.push(if err.is_finite() { err } else { f64::INFINITY });

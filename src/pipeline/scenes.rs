@@ -68,13 +68,13 @@ pub fn friction_vs_temperature(
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
             if let Some(h_mm) = spec.cover_thickness_mm {
-                // A cover: the body chosen and solved by contact::layer (auto, same tolerance).
+                // A cover: the body chosen and solved by contact::layer (auto, at COVER_TOL).
                 return match roll_cover(
                     &scene,
                     &at.spectrum,
                     Some(h_mm * 1e-3),
                     ModelChoice::Auto,
-                    settings.tol,
+                    settings.tol.max(COVER_TOL),
                 ) {
                     Ok(r) => FrictionPoint {
                         temp_c: t,

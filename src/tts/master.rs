@@ -311,8 +311,8 @@ mod roundtrip_tests {
     // spectrum and a known WLF law must give that law back.
 
     use super::*;
-    use crate::tts::{rereference_wlf, ShiftCriterion};
     use crate::testdata::{broad_spectrum, log_spaced, synthetic_measurement, SyntheticSettings};
+    use crate::tts::{rereference_wlf, ShiftCriterion};
 
     /// WLF used to generate the data: C₁ = 10, C₂ = 150 K at 20 °C; isotherms −40…80 °C every 10 K,
     /// so neighbours overlap by 1.3 decades (cold end) to 2.6 decades (warm end) of their 3 decades.

@@ -194,7 +194,14 @@ pub fn roll_cover(
             match chosen {
                 Some(c) => c,
                 None => {
-                    let a = layer_at_load(&p.terms, p.load, h, nu, &layer_settings)?;
+                    let mut a = layer_at_load(&p.terms, p.load, h, nu, &layer_settings)?;
+                    if tol < LAYER_TOL_FLOOR {
+                        a.warnings.push(format!(
+                            "tolerance not reached: the bonded layer is solved to {LAYER_TOL_FLOOR:.0e} \
+                             (estimate {:.1e}), not to tol {tol:.0e} (first-order collocation; finer costs seconds)",
+                            a.error_estimate
+                        ));
+                    }
                     CoverRoll {
                         roll: p.to_dimensional(scene.load_n_per_m, a.solution),
                         model: BodyModel::Layer,
