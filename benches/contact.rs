@@ -17,11 +17,12 @@
 use std::time::{Duration, Instant};
 use viscoroll::contact::{
     one_term_at_lambda, one_term_at_load, solve_at_lambda, solve_at_load, ContactSettings,
-    CreepTerm, DimensionlessSolution,
+    CreepTerm, DimensionlessSolution, Scheme,
 };
 
 fn settings(n: usize) -> ContactSettings {
     ContactSettings {
+        scheme: Scheme::Thesis,
         n,
         ..Default::default()
     }

@@ -11,8 +11,8 @@
 //! Run: `cargo bench --bench contact_auto` (single-threaded; prints a Markdown table).
 
 use std::time::Instant;
-use viscoroll::contact::controlled::{solve_auto_at_load, AutoSettings};
-use viscoroll::contact::{one_term_at_load, solve_at_load, ContactSettings, CreepTerm};
+use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+use viscoroll::contact::{one_term_at_load, solve_at_load, ContactSettings, CreepTerm, Scheme};
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
     if n == 1 {
@@ -86,13 +86,14 @@ fn main() {
             let e = one_term_at_load(terms[0], load).unwrap();
             (e.friction_rho, e.lambda)
         } else {
-            (reference.solution.friction_rho, reference.solution.lambda)
+            (reference.friction_rho, reference.lambda)
         };
         // thesis scheme errors against n (computed once per spectrum)
         let mut thesis: Vec<(usize, f64, f64)> = Vec::new();
         let mut n = 10;
         while n <= 1280 {
             let settings = ContactSettings {
+                scheme: Scheme::Thesis,
                 n,
                 ..Default::default()
             };
@@ -108,8 +109,8 @@ fn main() {
                 ..Default::default()
             };
             let (s, wall, t) = time_it(|| solve_auto_at_load(&terms, load, &settings).unwrap());
-            let e_fr = ((s.solution.friction_rho - fr_ref) / fr_ref).abs();
-            let e_l = ((s.solution.lambda - lam_ref) / lam_ref).abs();
+            let e_fr = ((s.friction_rho - fr_ref) / fr_ref).abs();
+            let e_l = ((s.lambda - lam_ref) / lam_ref).abs();
             let th = thesis.iter().find(|(_, e, _)| *e <= e_fr.max(1e-15));
             let (tn, tt) = match th {
                 Some((n, _, t)) => (format!("{n}"), format!("{:.3} ms", t * 1e3)),
@@ -125,9 +126,9 @@ fn main() {
                 "| {name} | {tol:.0e} | {} | {} | {}/{} | {e_fr:.1e} | {e_l:.1e} | {:.1e} | {tn} | {tt} |",
                 micros(t),
                 micros(wall),
-                s.modes_used,
-                s.modes_total,
-                s.solution.error_estimate.unwrap()
+                s.auto.as_ref().unwrap().modes_used,
+                s.auto.as_ref().unwrap().modes_total,
+                s.error_estimate.unwrap()
             );
         }
         if terms.len() == 1 {
@@ -141,9 +142,9 @@ fn main() {
         }
         println!(
             "| {name}: reference tol 1e-10 | | | | {}/{} | | | {:.1e} | | |",
-            reference.modes_used,
-            reference.modes_total,
-            reference.solution.error_estimate.unwrap()
+            reference.auto.as_ref().unwrap().modes_used,
+            reference.auto.as_ref().unwrap().modes_total,
+            reference.error_estimate.unwrap()
         );
     }
 }

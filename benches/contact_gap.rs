@@ -4,7 +4,7 @@
 //! Run: `cargo bench --bench contact_gap` (single-threaded; prints a Markdown table).
 
 use std::time::Instant;
-use viscoroll::contact::controlled::{solve_auto_at_load, AutoSettings};
+use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
 use viscoroll::contact::CreepTerm;
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
@@ -44,7 +44,7 @@ fn main() {
             ..Default::default()
         };
         let first = solve_auto_at_load(&terms, 1.0, &on).unwrap();
-        let (used, n_coef) = (first.modes_used, first.solution.n);
+        let (used, n_coef) = (first.auto.as_ref().unwrap().modes_used, first.n);
         let t_off = time_it(|| {
             solve_auto_at_load(&terms, 1.0, &off).unwrap();
         });

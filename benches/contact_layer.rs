@@ -1,4 +1,4 @@
-//! Speed/accuracy table of the bodies of issue 14: the bonded layer (collocation, `contact::layer`),
+//! Speed/accuracy table of the bodies of issue 14: the bonded layer (collocation, `contact::body::layer`),
 //! the uniaxial and constrained Winkler foundations (closed form) and the half-space (`auto`).
 //!
 //! Scope: time per load point (N′ = 1/4, load loop included) and the relative error of ρF/N and λ
@@ -10,8 +10,10 @@
 //! Run: `cargo bench --bench contact_layer` (single thread; prints a Markdown table).
 
 use std::time::Instant;
-use viscoroll::contact::controlled::{solve_auto_at_load, AutoSettings};
-use viscoroll::contact::layer::{layer_at_load, winkler_at_load, LayerSettings, WinklerColumns};
+use viscoroll::contact::body::layer::{
+    layer_at_load, winkler_at_load, LayerSettings, WinklerColumns,
+};
+use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
 use viscoroll::contact::load::LoadSettings;
 use viscoroll::contact::CreepTerm;
 
@@ -71,7 +73,7 @@ fn main() {
         )
         .unwrap();
         for hr in [0.3, 3.0] {
-            let h = hr * hs.solution.lambda;
+            let h = hr * hs.lambda;
             let nu = 0.5;
             let reference = layer_at_load(
                 &terms,
@@ -145,8 +147,8 @@ fn main() {
             println!(
                 "| {name} | {hr} | {nu} | half-space (model error) | 1e-6 | {} | — | {:.1e} | {:.1e} | — |",
                 ms(t),
-                rel(a.solution.friction_rho, rf),
-                rel(a.solution.lambda, rl)
+                rel(a.friction_rho, rf),
+                rel(a.lambda, rl)
             );
         }
     }

@@ -12,8 +12,8 @@
 
 use std::path::PathBuf;
 use std::time::Instant;
-use viscoroll::contact::roll_auto::roll_auto;
 use viscoroll::contact::Scene;
+use viscoroll::contact::{roll, Body};
 use viscoroll::pipeline::friction_map::{friction_map, MapQuery, MapSettings, ReducedProblem};
 use viscoroll::pipeline::scenes::pipeline_contact_settings;
 use viscoroll::pipeline::{fit_files, FitOptions};
@@ -65,10 +65,11 @@ fn main() {
             load_n_per_m: 1e4,
             speed_m_s: 4.0,
             poisson: None,
+            body: Body::HalfSpace,
         };
         let t0 = Instant::now();
         for _ in 0..5 {
-            roll_auto(&scene, &at.spectrum, &pipeline_contact_settings()).expect("solve");
+            roll(&scene, &at.spectrum, &pipeline_contact_settings()).expect("solve");
         }
         let direct = t0.elapsed().as_secs_f64() / 5.0;
         for tol in [1e-3, 1e-4, 1e-5, 1e-6] {

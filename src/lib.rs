@@ -19,7 +19,7 @@
 //! From a relaxation spectrum to the rolling friction of one scene:
 //!
 //! ```
-//! use viscoroll::contact::{controlled::AutoSettings, roll_auto::roll_auto, Scene};
+//! use viscoroll::contact::{roll, Body, ContactSettings, Scene};
 //! use viscoroll::creep::relaxation_to_creep;
 //! use viscoroll::prony::{RelaxationSpectrum, RelaxationTerm};
 //! use viscoroll::ModulusKind;
@@ -36,13 +36,20 @@
 //! assert!((creep.compliance_glassy_per_pa * (1e9 + 3e6) - 1.0).abs() < 1e-12);
 //!
 //! // A 100 mm roll under 2 kN/m at 1 m/s.
-//! let scene = Scene { radius_m: 0.1, load_n_per_m: 2000.0, speed_m_s: 1.0, poisson: None };
-//! let r = roll_auto(&scene, &creep, &AutoSettings::default()).unwrap();
+//! let scene = Scene {
+//!     radius_m: 0.1,
+//!     load_n_per_m: 2000.0,
+//!     speed_m_s: 1.0,
+//!     poisson: None,
+//!     body: Body::HalfSpace,
+//! };
+//! // The default scheme is `auto` (error-controlled, tolerance 1e-6).
+//! let r = roll(&scene, &creep, &ContactSettings::default()).unwrap();
 //! // Dissipation makes the friction positive; the contact lies between the glassy and relaxed
 //! // Hertz lengths l = 2√(4RN(1−ν²)/(πE)).
 //! let hertz = |e: f64| 2.0 * (4.0 * 0.1 * 2000.0 * 0.75 / (std::f64::consts::PI * e)).sqrt();
-//! assert!(r.roll.friction > 0.0);
-//! assert!(r.roll.contact_length_m > hertz(1e9 + 3e6) && r.roll.contact_length_m < hertz(3e6));
+//! assert!(r.friction > 0.0);
+//! assert!(r.contact_length_m > hertz(1e9 + 3e6) && r.contact_length_m < hertz(3e6));
 //! ```
 
 pub mod fsutil;

@@ -4,17 +4,25 @@
 //! References for the one-term cases: the independent exact solution of `contact::exact` and its
 //! mpmath table (tests/data/exact_one_term_reference.csv).
 
-use viscoroll::contact::controlled::{
-    solve_auto_at_lambda, solve_auto_at_load, AutoSettings, AutoSolution,
+use viscoroll::contact::{
+    one_term_at_load, roll, solve_at_lambda, solve_at_load, AutoDiagnostics, AutoSettings, Body,
+    ContactSettings, CreepTerm, DimensionlessSolution, Scene, Scheme,
 };
-use viscoroll::contact::roll_auto::roll_auto;
-use viscoroll::contact::{one_term_at_load, CreepTerm, Scene};
 use viscoroll::creep::{CreepSpectrum, RetardationTerm};
 
-fn settings(tol: f64) -> AutoSettings {
-    AutoSettings {
-        tol,
-        ..AutoSettings::default()
+/// The `auto` diagnostics of an answer (every solve here uses the `auto` scheme).
+fn diag(s: &DimensionlessSolution) -> &AutoDiagnostics {
+    s.auto.as_ref().expect("auto diagnostics")
+}
+
+fn settings(tol: f64) -> ContactSettings {
+    ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            tol,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     }
 }
 
@@ -34,17 +42,17 @@ impl Rng {
     }
 }
 
-fn check_conditions(s: &AutoSolution, tol: f64) {
-    let d = &s.solution;
+fn check_conditions(s: &DimensionlessSolution, tol: f64) {
+    let d = &s;
     for v in [d.lambda, d.beta, d.load, d.friction_rho] {
         assert!(v.is_finite(), "non-finite result {d:?}");
     }
     assert!(d.pressure.iter().all(|p| p.is_finite()));
     // contact condition Q′ ≥ 0 within the tolerance (relative to the peak)
     assert!(
-        s.min_pressure_ratio >= -tol,
+        diag(&s).min_pressure_ratio >= -tol,
         "min Q'/max Q' = {}",
-        s.min_pressure_ratio
+        diag(&s).min_pressure_ratio
     );
     // dissipation cannot be negative
     assert!(d.friction_rho >= 0.0, "friction {}", d.friction_rho);
@@ -67,8 +75,8 @@ fn one_term_exact_at_lambda_one_against_mpmath() {
     {
         let v: Vec<f64> = line.split(',').map(|x| x.trim().parse().unwrap()).collect();
         let (term, lambda) = (CreepTerm { f: v[0], b: v[1] }, v[2]);
-        let s = solve_auto_at_lambda(&[term], lambda, &settings(1e-9)).unwrap();
-        let d = &s.solution;
+        let s = solve_at_lambda(&[term], lambda, &settings(1e-9)).unwrap();
+        let d = &s;
         let errs = [
             rel(d.beta, v[3]),
             rel(d.load, v[4]),
@@ -83,9 +91,9 @@ fn one_term_exact_at_lambda_one_against_mpmath() {
             "{term:?}: {errs:?} > {est}"
         );
         assert!(
-            s.min_pressure_ratio >= -1e-9,
+            diag(&s).min_pressure_ratio >= -1e-9,
             "{term:?}: {}",
-            s.min_pressure_ratio
+            diag(&s).min_pressure_ratio
         );
         seen += 1;
     }
@@ -98,8 +106,8 @@ fn one_term_at_given_load_over_eight_decades_of_speed() {
     let term = CreepTerm { f: 10.0, b: 1.0 };
     for k in 0..=16 {
         let load = 10f64.powi(k - 8);
-        let s = solve_auto_at_load(&[term], load, &settings(1e-9)).unwrap();
-        let d = &s.solution;
+        let s = solve_at_load(&[term], load, &settings(1e-9)).unwrap();
+        let d = &s;
         // reference: the exact solution at the same load (contact::exact, ≤ 1e−10)
         let r = one_term_at_load(term, load).unwrap();
         let errs = [
@@ -152,17 +160,18 @@ fn random_spectra_and_scenes_estimate_confirmed_by_tighter_solve() {
             load_n_per_m: 10f64.powf(6.0 * rng.next()),
             speed_m_s: 10f64.powf(-6.0 + 9.0 * rng.next()),
             poisson: None,
+            body: Body::HalfSpace,
         };
-        let a = roll_auto(&scene, &spec, &settings(1e-6)).unwrap();
-        let b = roll_auto(&scene, &spec, &settings(1e-9)).unwrap();
-        check_conditions(&a.auto, 1e-6);
-        check_conditions(&b.auto, 1e-9);
-        let est = a.auto.solution.error_estimate.unwrap();
-        let e_fr = rel(a.roll.friction, b.roll.friction);
-        let e_l = rel(a.roll.contact_length_m, b.roll.contact_length_m);
+        let a = roll(&scene, &spec, &settings(1e-6)).unwrap();
+        let b = roll(&scene, &spec, &settings(1e-9)).unwrap();
+        check_conditions(&a.dimensionless, 1e-6);
+        check_conditions(&b.dimensionless, 1e-9);
+        let est = a.dimensionless.error_estimate.unwrap();
+        let e_fr = rel(a.friction, b.friction);
+        let e_l = rel(a.contact_length_m, b.contact_length_m);
         eprintln!(
             "case {case}: n {n} ratio {ratio:.1e} modes {}/{} fr {:.3e} err {e_fr:.1e} {e_l:.1e} est {est:.1e} ({:.1e} {:.1e}) lumped {} dropped {} tol-ok {}",
-            a.auto.modes_used, a.auto.modes_total, a.roll.friction, a.auto.friction_error, a.auto.size_error, a.auto.modes_lumped, a.auto.modes_dropped, est <= 1e-6
+            diag(&a.dimensionless).modes_used, diag(&a.dimensionless).modes_total, a.friction, diag(&a.dimensionless).friction_error, diag(&a.dimensionless).size_error, diag(&a.dimensionless).modes_lumped, diag(&a.dimensionless).modes_dropped, est <= 1e-6
         );
         // the estimate (plus the tighter solve's own ≤ 1e−9) bounds the observed differences
         assert!(e_fr <= est + 1e-9 && e_l <= est + 1e-9, "case {case}");
@@ -182,11 +191,9 @@ fn friction_vanishes_at_both_speed_limits() {
             load_n_per_m: 1e3,
             speed_m_s: v,
             poisson: None,
+            body: Body::HalfSpace,
         };
-        roll_auto(&scene, &spec, &settings(1e-6))
-            .unwrap()
-            .roll
-            .friction
+        roll(&scene, &spec, &settings(1e-6)).unwrap().friction
     };
     let mid = (-6..=3).map(|k| fr(10f64.powi(k))).fold(0.0, f64::max);
     // τ spans [1e−12, 1e12] s and the contact is ~1e−4…1e−2 m long: below V ≈ 1e−16 m/s every mode
@@ -280,14 +287,14 @@ fn negative_beta_is_detected_and_the_outside_gap_checked() {
     // f = 10, b = 0.01 at λ = 1: β = −1.8595… (mpmath table), the lowest point lies behind the rear
     // edge. The solver warns and evaluates the gap around it (computed value ≈ +1.7e−3 of λ²/8:
     // the slowly recovering surface stays below the roll, so the single contact is consistent).
-    let s = solve_auto_at_lambda(&[CreepTerm { f: 10.0, b: 0.01 }], 1.0, &settings(1e-6)).unwrap();
-    assert!(s.solution.beta < 0.0);
+    let s = solve_at_lambda(&[CreepTerm { f: 10.0, b: 0.01 }], 1.0, &settings(1e-6)).unwrap();
+    assert!(s.beta < 0.0);
     assert!(s.warnings.iter().any(|w| w.contains("behind the rear")));
-    assert!(s.min_gap_ratio.is_finite());
+    assert!(diag(&s).min_gap_ratio.is_finite());
     // Hertz-like case: gap open everywhere outside, no warnings
-    let s = solve_auto_at_lambda(&[CreepTerm { f: 10.0, b: 1.0 }], 1.0, &settings(1e-6)).unwrap();
+    let s = solve_at_lambda(&[CreepTerm { f: 10.0, b: 1.0 }], 1.0, &settings(1e-6)).unwrap();
     assert!(
-        s.min_gap_ratio > 0.0 && s.warnings.is_empty(),
+        diag(&s).min_gap_ratio > 0.0 && s.warnings.is_empty(),
         "{:?}",
         s.warnings
     );
@@ -308,11 +315,12 @@ fn whole_range_of_scenes_converges_without_nan() {
                     load_n_per_m: n,
                     speed_m_s: v,
                     poisson: None,
+                    body: Body::HalfSpace,
                 };
-                let a = roll_auto(&scene, &spec, &settings(1e-4))
+                let a = roll(&scene, &spec, &settings(1e-4))
                     .unwrap_or_else(|e| panic!("V {v} N {n} R {r}: {e}"));
-                check_conditions(&a.auto, 1e-4);
-                assert!(a.roll.friction.is_finite() && a.roll.contact_length_m > 0.0);
+                check_conditions(&a.dimensionless, 1e-4);
+                assert!(a.friction.is_finite() && a.contact_length_m > 0.0);
             }
         }
     }
@@ -333,8 +341,8 @@ fn bench_spectrum(n: usize, decades: f64) -> Vec<CreepTerm> {
 }
 
 /// Relative errors (ρF/N, λ or N′) of `s` against the reference `r`.
-fn errors(s: &AutoSolution, r: &AutoSolution, at_load: bool) -> (f64, f64) {
-    let (a, b) = (&s.solution, &r.solution);
+fn errors(s: &DimensionlessSolution, r: &DimensionlessSolution, at_load: bool) -> (f64, f64) {
+    let (a, b) = (s, r);
     let size = if at_load {
         rel(a.lambda, b.lambda)
     } else {
@@ -349,11 +357,11 @@ fn errors(s: &AutoSolution, r: &AutoSolution, at_load: bool) -> (f64, f64) {
 fn bench_spectra_honour_tol_and_the_estimate_bounds_the_error() {
     for (n, decades) in [(10, 12.0), (30, 24.0)] {
         let terms = bench_spectrum(n, decades);
-        let reference = solve_auto_at_load(&terms, 1.0, &settings(1e-10)).unwrap();
-        let r_est = reference.solution.error_estimate.unwrap();
+        let reference = solve_at_load(&terms, 1.0, &settings(1e-10)).unwrap();
+        let r_est = reference.error_estimate.unwrap();
         for tol in [1e-3, 1e-6, 1e-9] {
-            let s = solve_auto_at_load(&terms, 1.0, &settings(tol)).unwrap();
-            let est = s.solution.error_estimate.unwrap();
+            let s = solve_at_load(&terms, 1.0, &settings(tol)).unwrap();
+            let est = s.error_estimate.unwrap();
             let (e_fr, e_l) = errors(&s, &reference, true);
             eprintln!(
                 "{n} terms tol {tol:e}: est {est:.2e} err {e_fr:.2e} {e_l:.2e} (ref est {r_est:.1e}) est/err {:.0}",
@@ -393,23 +401,23 @@ fn estimate_bounds_the_true_error_on_random_spectra() {
         let x = 10f64.powf(-2.0 + 5.0 * rng.next());
         let solve = |tol: f64| {
             if at_load {
-                solve_auto_at_load(&terms, x, &settings(tol)).unwrap()
+                solve_at_load(&terms, x, &settings(tol)).unwrap()
             } else {
-                solve_auto_at_lambda(&terms, x, &settings(tol)).unwrap()
+                solve_at_lambda(&terms, x, &settings(tol)).unwrap()
             }
         };
         let reference = solve(1e-10);
-        let r_est = reference.solution.error_estimate.unwrap();
+        let r_est = reference.error_estimate.unwrap();
         for tol in [1e-3, 1e-6] {
             let s = solve(tol);
-            let est = s.solution.error_estimate.unwrap();
+            let est = s.error_estimate.unwrap();
             let (e_fr, e_s) = errors(&s, &reference, at_load);
             let err = e_fr.max(e_s);
             eprintln!(
                 "case {case} ({n} terms, ratio {ratio:.1e}, {} {x:.2e}) tol {tol:e}: modes {}/{} est {est:.2e} err {e_fr:.2e} {e_s:.2e} ref est {r_est:.1e} est/err {:.0}",
                 if at_load { "N'" } else { "λ" },
-                s.modes_used,
-                s.modes_total,
+                diag(&s).modes_used,
+                diag(&s).modes_total,
                 est / err
             );
             assert!(est <= tol, "case {case} tol {tol}: estimate {est}");

@@ -149,11 +149,17 @@ fn contact_bad_arguments() {
         &["contact", "--creep", "10:1", "--lambda", "1", "--rho", "0"],
         "--rho",
     );
-    one_line_error(
-        &[
-            "contact", "--creep", "10:1", "--lambda", "1", "--scheme", "magic",
-        ],
-        "--scheme",
+    // An unknown scheme is a usage error (exit code 2, like every argument clap rejects), one line
+    // that names the option and the schemes known.
+    let out = run(&[
+        "contact", "--creep", "10:1", "--lambda", "1", "--scheme", "magic",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--scheme") && err.contains("thesis, exact, auto"),
+        "{err}"
     );
 }
 

@@ -3,12 +3,13 @@
 //! vanishes at both ends like V and 1/V).
 
 use std::f64::consts::PI;
-use viscoroll::contact::{roll, ContactError, ContactSettings, Scene};
+use viscoroll::contact::{roll, Body, ContactError, ContactSettings, Scene, Scheme};
 use viscoroll::creep::RetardationTerm;
 use viscoroll::{CreepSpectrum, ModulusKind};
 
 fn settings(n: usize) -> ContactSettings {
     ContactSettings {
+        scheme: Scheme::Thesis,
         n,
         ..Default::default()
     }
@@ -45,6 +46,7 @@ fn elastic_scene_is_hertz() {
         load_n_per_m: 2000.0,
         speed_m_s: 5.0,
         poisson: Some(0.3),
+        body: Body::HalfSpace,
     };
     let n = 160;
     let s = roll(&scene, &spectrum, &settings(n)).unwrap();
@@ -83,6 +85,7 @@ fn shear_and_tensile_spectra_agree() {
         load_n_per_m: 1000.0,
         speed_m_s: 0.3,
         poisson: Some(nu),
+        body: Body::HalfSpace,
     };
     let a = roll(&scene, &t, &settings(60)).unwrap();
     let b = roll(&scene, &s, &settings(60)).unwrap();
@@ -110,6 +113,7 @@ fn speed_limits_of_a_standard_linear_solid() {
                     load_n_per_m: 2000.0,
                     speed_m_s: v,
                     poisson: None,
+                    body: Body::HalfSpace,
                 },
                 &spectrum,
                 &settings(n),
@@ -171,6 +175,7 @@ fn bad_scenes_name_the_field() {
         load_n_per_m: 10.0,
         speed_m_s: 1.0,
         poisson: None,
+        body: Body::HalfSpace,
     };
     match roll(&bad, &spectrum, &settings(20)) {
         Err(ContactError::BadValue { field, .. }) => assert_eq!(field, "radius_m"),
@@ -181,6 +186,7 @@ fn bad_scenes_name_the_field() {
         load_n_per_m: 10.0,
         speed_m_s: 1.0,
         poisson: Some(0.7),
+        body: Body::HalfSpace,
     };
     assert!(matches!(
         roll(&bad, &spectrum, &settings(20)),
@@ -193,6 +199,7 @@ fn bad_scenes_name_the_field() {
         load_n_per_m: 10.0,
         speed_m_s: 1.0,
         poisson: None,
+        body: Body::HalfSpace,
     };
     assert!(roll(&ok, &s, &settings(20))
         .unwrap_err()

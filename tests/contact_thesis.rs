@@ -2,13 +2,13 @@
 //! against n, a 10-term spectrum over eight decades of λ and of speed, and the load loop where the
 //! thesis' secant fails.
 
+use viscoroll::contact::half_space::{kernel::Kernel, thesis};
 use viscoroll::contact::load::thesis_secant;
-use viscoroll::contact::{
-    solve_at_lambda, solve_at_load, thesis, ContactSettings, CreepTerm, Kernel,
-};
+use viscoroll::contact::{solve_at_lambda, solve_at_load, ContactSettings, CreepTerm, Scheme};
 
 fn settings(n: usize) -> ContactSettings {
     ContactSettings {
+        scheme: Scheme::Thesis,
         n,
         ..Default::default()
     }

@@ -8,6 +8,7 @@ use viscoroll::contact::{
 
 fn settings(n: usize) -> ContactSettings {
     ContactSettings {
+        scheme: Scheme::Thesis,
         n,
         ..Default::default()
     }

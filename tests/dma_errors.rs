@@ -338,7 +338,8 @@ fn seeds() -> Vec<(&'static str, Vec<u8>)> {
 
 proptest! {
     // 200 random inputs per property keep the run well under a second.
-    #![proptest_config(ProptestConfig { cases: 200, .. ProptestConfig::default() })]
+    // The run's seed (tests/seed.rs), printed so that a failure can be replayed.
+    #![proptest_config(ProptestConfig { cases: 200, rng_seed: proptest::test_runner::RngSeed::Fixed(crate::seed::seed("dma_errors::never_panic")), .. ProptestConfig::default() })]
 
     #[test]
     fn random_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..400)) {
@@ -365,7 +366,7 @@ proptest! {
 proptest! {
     // Each case parses a 95 kB workbook (~0.1 s in the test profile): 40 cases keep this short;
     // for a longer hunt: raise `cases` (run with cases = 1000 once before merging).
-    #![proptest_config(ProptestConfig { cases: 40, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 40, rng_seed: proptest::test_runner::RngSeed::Fixed(crate::seed::seed("dma_errors::excel")), .. ProptestConfig::default() })]
 
     // calamine 0.31 allocates rows × cols of a damaged cell address or DIMENSIONS record at once (an
     // abort, not a panic): dma::xls_guard refuses those first; this found the case.

@@ -7,17 +7,23 @@
 //! `pipeline::fit_files` and `pipeline::scenes::friction_vs_temperature`) at the shipped scenes
 //! (data/scenes.toml) at −40 … +60 °C every 10 K. The reference is computed independently of every
 //! fitted quantity: the true spectrum converted exactly to creep (crate::creep::exact, MATH.md §4),
-//! shifted by the true WLF law, through the same contact solver at the same tolerance.
+//! shifted by the true WLF law, through the same contact solver at the same tolerance. At −40, 10
+//! and 60 °C in both scenes that true friction is also computed by an independent path (issue 19):
+//! the thesis scheme with Richardson's extrapolation (n = 640/1280) at the contact length found,
+//! with the thesis' §3.2 scaling written out in tests/reference.rs; it must give back the load and
+//! the friction, so the truth no longer rests on the solver it checks.
 //!
 //! Acceptance (the issue's figures): per compound, median relative friction error ≤ 2 %, worst ≤ 5 %
 //! over both scenes × 11 temperatures, for three compounds; the fourth is a stress case with a
-//! looser worst-case bound (see [`bounds`]). The table and a stage-by-stage breakdown print with
+//! looser worst-case bound (see [`bounds`]). With the default seed every stage's figure is also held
+//! to about 2–3× what it measures ([`tight_bounds`]). The table and a stage-by-stage breakdown print with
 //! `cargo test --test tests known_truth -- --nocapture`.
 
+use crate::reference::{friction_at_length, SceneSi};
+use rayon::prelude::*;
 use std::path::PathBuf;
-use viscoroll::contact::controlled::AutoSettings;
-use viscoroll::contact::layer::{roll_cover, ModelChoice};
-use viscoroll::contact::roll_auto::roll_auto;
+use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
+use viscoroll::contact::{roll, AutoSettings, ContactSettings, Scheme};
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet, COVER_TOL};
 use viscoroll::pipeline::{fit_files, FitOptions};
@@ -35,11 +41,15 @@ const TEMPS_C: [f64; 11] = [
 /// Contact tolerance of both sides: the auto scheme's error control bounds the relative error of
 /// F/N by `tol`; 1e-4 is 200× below the 2 % target (and 500× below 5 %), so the solver contributes
 /// at most 0.01 % + 0.01 % to a difference, while costing a fraction of the default 1e-6.
-fn contact_settings() -> AutoSettings {
-    AutoSettings {
-        tol: 1e-4,
-        gap_check: false,
-        ..AutoSettings::default()
+fn contact_settings() -> ContactSettings {
+    ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            tol: 1e-4,
+            gap_check: false,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     }
 }
 
@@ -70,14 +80,42 @@ fn median(v: &mut [f64]) -> f64 {
     }
 }
 
-/// Per compound: (name, median, worst relative friction error) over both shipped scenes at
-/// [`TEMPS_C`]; with `verbose` the stage-by-stage table is printed.
+/// Temperatures (°C) at which the true friction is also computed by the independent path
+/// ([`friction_at_length`]: the thesis scheme with Richardson's extrapolation and the §3.2 scaling
+/// written out in tests/reference.rs), in both scenes: the glassy end, the middle, the rubbery end.
+const CHECK_TEMPS_C: [f64; 3] = [-40.0, 10.0, 60.0];
+
+/// One compound's figures, stage by stage (all relative errors as fractions).
+#[derive(Debug, Clone, Default)]
+struct Figures {
+    name: String,
+    /// Median and worst |F/N fit / F/N true − 1| over both scenes × [`TEMPS_C`].
+    median: f64,
+    worst: f64,
+    /// Largest |fitted log a_T − true log a_T| over [`TEMPS_C`], decades.
+    shift: f64,
+    /// Largest |log10 fitted/true| of E′ and of E″ inside the measured reduced window.
+    storage: f64,
+    loss: f64,
+    /// Worst |F/N of the fitted spectrum with the true shifts / F/N true − 1|.
+    spectrum: f64,
+    /// Worst |F/N true (auto, as the pipeline solves) / F/N independent − 1| at [`CHECK_TEMPS_C`].
+    contact: f64,
+    /// Worst |N′ independent at the auto contact length / N′ − 1| there.
+    contact_load: f64,
+    /// Worst |F/N fit / F/N independent − 1| there.
+    end_to_end: f64,
+}
+
+/// Per compound: the [`Figures`] over both shipped scenes at [`TEMPS_C`]; with `verbose` the
+/// stage-by-stage table is printed.
 fn evaluate(
     compounds: &[RealisticCompound],
     protocol: &DmaProtocol,
     options: &FitOptions,
     verbose: bool,
-) -> Vec<(String, f64, f64)> {
+    independent: bool,
+) -> Vec<Figures> {
     let dir = std::env::temp_dir().join(format!(
         "viscoroll-truth-{}-{}",
         std::process::id(),
@@ -157,6 +195,15 @@ fn evaluate(
             (e1, e2)
         };
         let (win1, win2) = moduli_err(f_lo.log10(), f_hi.log10());
+        let mut fig = Figures {
+            name: compound.name.clone(),
+            shift: shift_err.iter().map(|(_, e)| e.abs()).fold(0.0, f64::max),
+            storage: win1,
+            loss: win2,
+            ..Figures::default()
+        };
+        // (scene, true spectrum at T, true F/N and contact length from auto, fitted F/N, T)
+        let mut checks = Vec::new();
         let (lo1, lo2) = moduli_err(f_lo.log10() - 1.0, f_lo.log10());
         let (hi1, hi2) = moduli_err(f_hi.log10(), f_hi.log10() + 1.0);
         say!(
@@ -190,26 +237,43 @@ fn evaluate(
             let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
             let scene = spec.scene();
             for p in &got {
+                let true_at_t = shifted(&true_creep, compound.law.log10_a_t(p.temp_c));
                 // On the scene's body: a covered scene as the pipeline solves it (auto body choice
                 // at COVER_TOL), the others on the half-space.
-                let friction_on = |sp: &viscoroll::CreepSpectrum| match spec.cover_thickness_mm {
+                let on_body = |sp: &CreepSpectrum| match spec.cover_thickness_mm {
                     Some(h_mm) => {
                         roll_cover(
                             &scene,
                             sp,
                             Some(h_mm * 1e-3),
                             ModelChoice::Auto,
-                            settings.tol.max(COVER_TOL),
+                            settings.auto.tol.max(COVER_TOL),
                         )
                         .unwrap()
                         .roll
-                        .friction
                     }
-                    None => roll_auto(&scene, sp, &settings).unwrap().roll.friction,
+                    None => roll(&scene, sp, &settings).unwrap(),
                 };
-                let truth = friction_on(&shifted(&true_creep, compound.law.log10_a_t(p.temp_c)));
+                let truth_roll = on_body(&true_at_t);
+                let truth = truth_roll.friction;
+                // The independent path is the half-space's: covered scenes are not checked there.
+                if independent
+                    && spec.cover_thickness_mm.is_none()
+                    && CHECK_TEMPS_C.contains(&p.temp_c)
+                {
+                    checks.push((
+                        scene,
+                        true_at_t,
+                        truth,
+                        truth_roll.contact_length_m,
+                        p.friction,
+                        p.temp_c,
+                        spec.name.clone(),
+                    ));
+                }
                 // The fitted spectrum with the true shifts: the error of the spectrum alone.
-                let spec_only = friction_on(&shifted(&fit_creep, true_shift(p.temp_c)));
+                let spec_only = on_body(&shifted(&fit_creep, true_shift(p.temp_c))).friction;
+                fig.spectrum = fig.spectrum.max((spec_only / truth - 1.0).abs());
                 // A failed solve (NaN) counts as an infinite error.
                 let err = (p.friction / truth - 1.0).abs();
                 errs.push(if err.is_finite() { err } else { f64::INFINITY });
@@ -226,29 +290,84 @@ fn evaluate(
                 );
             }
         }
-        let worst = errs.iter().copied().fold(0.0, f64::max);
-        let med = median(&mut errs);
-        summary.push((compound.name.clone(), med, worst));
+        // The independent path, in parallel (each point ≈ 1 s: two thesis solves, n = 640, 1280).
+        let checked: Vec<(f64, f64, f64, String)> = checks
+            .par_iter()
+            .map(|(scene, spectrum, truth, length, fitted, t, name)| {
+                let si = SceneSi {
+                    radius_m: scene.radius_m,
+                    load_n_per_m: scene.load_n_per_m,
+                    speed_m_s: scene.speed_m_s,
+                };
+                let (independent, load_err) =
+                    friction_at_length(spectrum, spectrum.poisson, &si, *length);
+                (
+                    truth / independent - 1.0,
+                    load_err,
+                    fitted / independent - 1.0,
+                    format!(
+                        "{name:<15} {t:>6} {independent:>11.4e} {truth:>11.4e} {:>+10.2e} {load_err:>+10.2e} {:>+9.3}",
+                        truth / independent - 1.0,
+                        100.0 * (fitted / independent - 1.0)
+                    ),
+                )
+            })
+            .collect();
+        say!(
+            verbose,
+            "independent truth (thesis scheme, Richardson 640/1280, §3.2 scaling in the test):\n\
+             {:<15} {:>6} {:>11} {:>11} {:>10} {:>10} {:>9}",
+            "scene",
+            "T °C",
+            "F/N indep.",
+            "F/N auto",
+            "auto err",
+            "N′ err",
+            "fit err %"
+        );
+        for (c, l, e, line) in &checked {
+            say!(verbose, "{line}");
+            fig.contact = fig.contact.max(c.abs());
+            fig.contact_load = fig.contact_load.max(l.abs());
+            fig.end_to_end = fig.end_to_end.max(e.abs());
+        }
+        fig.worst = errs.iter().copied().fold(0.0, f64::max);
+        fig.median = median(&mut errs);
+        summary.push(fig);
     }
     let _ = std::fs::remove_dir_all(&dir);
     summary
 }
 
-fn print_summary(summary: &[(String, f64, f64)]) {
-    println!("\ncompound         median %   worst %");
-    for (n, m, w) in summary {
-        println!("{n:<15} {:>9.3} {:>9.3}", 100.0 * m, 100.0 * w);
+fn print_summary(summary: &[Figures]) {
+    println!(
+        "\ncompound         median %   worst %  shift dec  E′ log10  E″ log10  spec %  contact  N′ err  end-to-end %"
+    );
+    for f in summary {
+        println!(
+            "{:<15} {:>9.3} {:>9.3} {:>10.4} {:>9.4} {:>9.4} {:>7.3} {:>8.1e} {:>7.1e} {:>13.3}",
+            f.name,
+            100.0 * f.median,
+            100.0 * f.worst,
+            f.shift,
+            f.storage,
+            f.loss,
+            100.0 * f.spectrum,
+            f.contact,
+            f.contact_load,
+            100.0 * f.end_to_end
+        );
     }
 }
 
-/// Bounds (median, worst) on the relative friction error of a compound: the issue's acceptance
-/// figures, 2 % and 5 %, for the three compounds whose glass transition lies below the comparison
-/// range. The fourth, `high-tg-tread`, is the stress case: glassy at −40 °C in both scenes (its
-/// friction there is 44–47× below its value at +60 °C). Its worst case depends on the noise draw:
-/// 0.35–6.4 % over the default and 10 other seeds (`known_truth_other_seeds`); with the default
-/// seed it is at −40 °C and comes from the fitted E″ above the scene's frequencies, towards the top
-/// of the reduced window (the coldest isotherms), not from the shift (0.003 decade there). Its
-/// median (≤ 0.35 % over those seeds) is held to 2 % and its worst to 10 %.
+/// Acceptance bounds (median, worst) on the relative friction error of a compound, for any noise
+/// seed: the issue's figures, 2 % and 5 %, for the three compounds whose glass transition lies below
+/// the comparison range. The fourth, `high-tg-tread`, is the stress case: glassy at −40 °C in both
+/// scenes (its friction there is 44–47× below its value at +60 °C). Its worst case depends on the
+/// noise draw: 0.35–6.4 % over the default and 10 other seeds (`known_truth_other_seeds`); with the
+/// default seed it is at −40 °C and comes from the fitted E″ above the scene's frequencies, towards
+/// the top of the reduced window (the coldest isotherms), not from the shift (0.003 decade there).
+/// Its median (≤ 0.35 % over those seeds) is held to 2 % and its worst to 10 %.
 fn bounds(compound: &str) -> (f64, f64) {
     if compound == "high-tg-tread" {
         (0.02, 0.10)
@@ -257,15 +376,88 @@ fn bounds(compound: &str) -> (f64, f64) {
     }
 }
 
-fn failures(summary: &[(String, f64, f64)]) -> Vec<String> {
+fn failures(summary: &[Figures]) -> Vec<String> {
     summary
         .iter()
-        .filter(|(n, m, w)| {
-            let (bm, bw) = bounds(n);
-            !(*m <= bm && *w <= bw)
+        .filter(|f| {
+            let (bm, bw) = bounds(&f.name);
+            !(f.median <= bm && f.worst <= bw)
         })
-        .map(|(n, m, w)| format!("{n}: median {:.2} %, worst {:.2} %", 100.0 * m, 100.0 * w))
+        .map(|f| {
+            format!(
+                "{}: median {:.2} %, worst {:.2} %",
+                f.name,
+                100.0 * f.median,
+                100.0 * f.worst
+            )
+        })
         .collect()
+}
+
+/// Bounds of the default seed, stage by stage, per compound: about 2–3× what each measures (in
+/// the comment beside them, as measured on this commit), so that a change in any stage that moves
+/// its figure by that much fails here. Order: median, worst (|F/N fit/true − 1|), shift (largest
+/// |Δ log a_T|, decades), E′ and E″ (largest |log10 fit/true| in the measured reduced window),
+/// spectrum (worst error of the fitted spectrum with the true shifts), contact (auto at tol 1e−4
+/// against the independent path: ρF/N, then N′ at auto's contact length), end to end (fit against
+/// the independent path at [`CHECK_TEMPS_C`]).
+///
+/// The contact bounds lie below the solver's tolerance 1e−4: its answers are measured 2–66× better
+/// than its estimate (README), here 3.6e−6…7.7e−6 in F/N and 4.9e−6…2.5e−5 in N′, part of which is
+/// the reference's own error (≈ 3e−6, tests/auto_vs_richardson.rs). A lumping-correction gain 20 %
+/// off or a 0.1 % error in the coupling of the auto scheme's modes moves them past the bounds
+/// (issue 19). A solver change that moves them within its tolerance needs the bound re-measured.
+fn tight_bounds(compound: &str) -> [f64; 9] {
+    match compound {
+        // 0.69 %, 1.29 %, 0.029, 0.012, 0.065, 1.48 %, 7.7e-6, 2.5e-5, 1.29 %
+        "nr-br-idler" => [0.016, 0.03, 0.07, 0.03, 0.15, 0.035, 2e-5, 6e-5, 0.03],
+        // 0.34 %, 0.81 %, 0.033, 0.0095, 0.033, 0.93 %, 5.3e-6, 1.8e-5, 0.81 %
+        "nr-tread" => [0.008, 0.02, 0.08, 0.025, 0.08, 0.022, 1.5e-5, 4.5e-5, 0.02],
+        // 0.20 %, 0.71 %, 0.018, 0.0039, 0.012, 0.75 %, 3.6e-6, 4.9e-6, 0.71 %
+        "sbr-tread" => [0.005, 0.018, 0.045, 0.01, 0.03, 0.019, 1e-5, 1.5e-5, 0.018],
+        // 0.20 %, 4.70 %, 0.012, 0.0032, 0.081, 4.54 %, 5.2e-6, 8.3e-6, 4.70 % (worst: the
+        // stress case's glassy end, bound 2.1× as the acceptance bound 10 %)
+        "high-tg-tread" => [0.005, 0.10, 0.03, 0.008, 0.2, 0.1, 1.5e-5, 2e-5, 0.1],
+        _ => [0.0; 9],
+    }
+}
+
+fn tight_failures(summary: &[Figures]) -> Vec<String> {
+    let mut bad = Vec::new();
+    for f in summary {
+        let b = tight_bounds(&f.name);
+        let got = [
+            f.median,
+            f.worst,
+            f.shift,
+            f.storage,
+            f.loss,
+            f.spectrum,
+            f.contact,
+            f.contact_load,
+            f.end_to_end,
+        ];
+        let names = [
+            "median",
+            "worst",
+            "shift",
+            "E′",
+            "E″",
+            "spectrum",
+            "contact",
+            "contact N′",
+            "end to end",
+        ];
+        for k in 0..9 {
+            if !(got[k] <= b[k]) {
+                bad.push(format!(
+                    "{}: {} {:.3e} > {:.1e}",
+                    f.name, names[k], got[k], b[k]
+                ));
+            }
+        }
+    }
+    bad
 }
 
 #[test]
@@ -275,6 +467,7 @@ fn friction_from_synthetic_exports_matches_the_true_spectrum() {
         &DmaProtocol::default(),
         &FitOptions::default(),
         true,
+        true,
     );
     print_summary(&summary);
     // At least three compounds held to the issue's figures.
@@ -282,15 +475,18 @@ fn friction_from_synthetic_exports_matches_the_true_spectrum() {
     assert!(
         summary
             .iter()
-            .filter(|(n, _, _)| bounds(n) == (0.02, 0.05))
+            .filter(|f| bounds(&f.name) == (0.02, 0.05))
             .count()
             >= 3
     );
     let bad = failures(&summary);
     assert!(bad.is_empty(), "{bad:?}");
+    let bad = tight_failures(&summary);
+    assert!(bad.is_empty(), "{bad:#?}");
 }
 
-/// The same with 10 other noise and drift seeds (about 25 s in release):
+/// The same with 10 other noise and drift seeds, against the issue's acceptance figures only and
+/// without the independent contact check (about 25 s in release):
 /// `cargo test --release --test tests known_truth_other_seeds -- --ignored --nocapture`.
 #[test]
 #[ignore = "seed sweep, ~25 s in release; run on demand"]
@@ -304,6 +500,7 @@ fn known_truth_other_seeds() {
                 ..DmaProtocol::default()
             },
             &FitOptions::default(),
+            false,
             false,
         );
         println!("\nseed {seed}");

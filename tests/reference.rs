@@ -23,8 +23,8 @@
 //! half-width a = √(4N*R/(πE*)), peak pressure p₀ = 2N*/(πa), E* = E/(1−ν²) for a rigid roll.
 
 use std::f64::consts::PI;
-use viscoroll::contact::exact::{one_term_at_load, OneTermExact};
 use viscoroll::contact::CreepTerm;
+use viscoroll::contact::{one_term_at_load, OneTermExact};
 
 /// Which modulus the SLS is given in.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -200,4 +200,73 @@ pub fn temp_dir(tag: &str) -> std::path::PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
+}
+
+/// The thesis scheme with Richardson's extrapolation R = 2X(1280) − X(640) at a given contact
+/// length, through `viscoroll contact` (an independent discretisation: piecewise-linear
+/// collocation, closed-form kernel, no mode reduction). Returns (N′, ρF/N) of R.
+pub fn thesis_richardson(creep_arg: &str, lambda: f64) -> (f64, f64) {
+    let solve = |n: usize| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+            .args([
+                "contact",
+                "--creep",
+                creep_arg,
+                "--lambda",
+                &format!("{lambda:e}"),
+                "--n",
+                &n.to_string(),
+                "--json",
+            ])
+            .output()
+            .expect("binary runs");
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        (
+            v["load"].as_f64().unwrap(),
+            v["friction_rho"].as_f64().unwrap(),
+        )
+    };
+    let (l1, f1) = solve(640);
+    let (l2, f2) = solve(1280);
+    (2.0 * l2 - l1, 2.0 * f2 - f1)
+}
+
+/// Rolling friction of a tensile or shear creep spectrum J(t) = J_g + ΣJᵢ(1 − e^(−t/τᵢ)) in a scene,
+/// checked at a given contact length `contact_length_m` by [`thesis_richardson`], with the thesis'
+/// §3.2 scaling written out (T = l/V, so λ = 1): ρ = R/l, C = (1−ν)/μ₀ (μ₀ = 1/(2(1+ν)J_g) for
+/// tensile compliances, 1/J_g for shear), N′ = ρ·C·(2/π)·N*/l, fᵢ = (Jᵢ/J_g)(T/τᵢ), bᵢ = T/τᵢ.
+/// Returns (F/N of R, N′ of R over the scene's N′ − 1): the second is 0 when the contact length is
+/// the right one for the load (N′ grows like λ² near it).
+pub fn friction_at_length(
+    spectrum: &viscoroll::CreepSpectrum,
+    poisson: f64,
+    scene: &SceneSi,
+    contact_length_m: f64,
+) -> (f64, f64) {
+    let jg = spectrum.compliance_glassy_per_pa;
+    let mu0 = match spectrum.kind {
+        viscoroll::ModulusKind::Tensile => 1.0 / (2.0 * (1.0 + poisson) * jg),
+        viscoroll::ModulusKind::Shear => 1.0 / jg,
+    };
+    let c = (1.0 - poisson) / mu0;
+    let l = contact_length_m;
+    let t = l / scene.speed_m_s;
+    let rho = scene.radius_m / l;
+    let load = rho * c * (2.0 / PI) * scene.load_n_per_m / l;
+    let creep_arg = spectrum
+        .terms
+        .iter()
+        .map(|term| {
+            let b = t / term.tau_s;
+            format!("{:e}:{:e}", term.compliance_per_pa / jg * b, b)
+        })
+        .collect::<Vec<_>>()
+        .join(",");
+    let (load_r, friction_rho_r) = thesis_richardson(&creep_arg, 1.0);
+    (friction_rho_r / rho, load_r / load - 1.0)
 }

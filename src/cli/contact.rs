@@ -4,7 +4,7 @@
 //! `--json` prints one object: `lambda`, `beta`, `beta_over_lambda`, `load` (N′), `friction_rho` (ρ·F/N),
 //! `friction` (F/N, only with `--rho`), `n`, `scheme`, `iterations`, `xi`, `pressure`, `creep` (the terms).
 
-use crate::contact::{self, ContactSettings, CreepTerm, Scheme};
+use crate::contact::{self, AutoSettings, ContactSettings, CreepTerm, Scheme};
 use anyhow::{bail, Context};
 
 /// Arguments of `viscoroll contact`.
@@ -25,8 +25,8 @@ pub struct Args {
     /// Discretisation: `thesis` (piecewise-linear collocation, `--n` intervals), `exact` (one creep
     /// term only; the pressure is then sampled at n + 1 points) or `auto` (error-controlled
     /// Chebyshev–exponential scheme, `--tol`).
-    #[arg(long, default_value = "thesis")]
-    pub scheme: String,
+    #[arg(long, default_value_t = Scheme::Thesis)]
+    pub scheme: Scheme,
     /// Relative tolerance on ρF/N and λ for `--scheme auto` (1e-12 … 0.1).
     #[arg(long, default_value_t = 1e-6)]
     pub tol: f64,
@@ -77,17 +77,18 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             bail!("--rho must be finite and > 0, got {rho}");
         }
     }
-    let scheme = match args.scheme.as_str() {
-        "thesis" => Scheme::Thesis,
-        "exact" => Scheme::Exact,
-        "auto" => return run_auto(&args, &terms),
-        other => bail!("--scheme `{other}` is not known (thesis, exact, auto)"),
-    };
     let settings = ContactSettings {
-        scheme,
+        scheme: args.scheme,
         n: args.n,
-        ..Default::default()
+        auto: AutoSettings {
+            tol: args.tol,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     };
+    if args.scheme == Scheme::Auto {
+        return run_auto(&args, &terms, &settings);
+    }
     let sol = match (args.lambda, args.load) {
         (Some(lambda), None) => {
             if !(lambda.is_finite() && lambda > 0.0) {
@@ -157,18 +158,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 
 /// `--scheme auto`: the error-controlled solver; JSON adds `error_estimate`, `modes_used`,
 /// `modes_total`, `modes_lumped`, `modes_dropped`, `min_pressure_ratio`, `tol`, `warnings`.
-fn run_auto(args: &Args, terms: &[CreepTerm]) -> anyhow::Result<()> {
-    use crate::contact::controlled::{solve_auto_at_lambda, solve_auto_at_load, AutoSettings};
-    let settings = AutoSettings {
-        tol: args.tol,
-        ..Default::default()
-    };
+fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> anyhow::Result<()> {
     let sol = match (args.lambda, args.load) {
-        (Some(lambda), None) => solve_auto_at_lambda(terms, lambda, &settings)?,
-        (None, Some(load)) => solve_auto_at_load(terms, load, &settings)?,
+        (Some(lambda), None) => contact::solve_at_lambda(terms, lambda, settings)?,
+        (None, Some(load)) => contact::solve_at_load(terms, load, settings)?,
         _ => bail!("give exactly one of --lambda and --load"),
     };
-    let d = &sol.solution;
+    let d = &sol;
+    let Some(diag) = d.auto.as_ref() else {
+        bail!("the auto scheme returned no diagnostics");
+    };
     let friction = args.rho.map(|rho| d.friction_rho / rho);
     if args.json {
         let mut obj = serde_json::to_value(&sol)?;
@@ -183,10 +182,10 @@ fn run_auto(args: &Args, terms: &[CreepTerm]) -> anyhow::Result<()> {
         eprintln!(
             "scheme auto  tol = {:e}  modes used {}/{} (lumped {}, dropped {})  load solves = {}",
             args.tol,
-            sol.modes_used,
-            sol.modes_total,
-            sol.modes_lumped,
-            sol.modes_dropped,
+            diag.modes_used,
+            diag.modes_total,
+            diag.modes_lumped,
+            diag.modes_dropped,
             d.iterations
         );
         eprintln!("lambda           = {:.12}", d.lambda);
@@ -201,8 +200,8 @@ fn run_auto(args: &Args, terms: &[CreepTerm]) -> anyhow::Result<()> {
             "error estimate   = {:.3e}",
             d.error_estimate.unwrap_or(f64::NAN)
         );
-        eprintln!("min Q'/max Q'    = {:.3e}", sol.min_pressure_ratio);
-        for w in &sol.warnings {
+        eprintln!("min Q'/max Q'    = {:.3e}", diag.min_pressure_ratio);
+        for w in &d.warnings {
             eprintln!("warning: {w}");
         }
     }

@@ -1,8 +1,11 @@
 //! Command-line interface: clap subcommands, one file each; error reporting and exit codes.
 //!
 //! Every computing command takes `--json` and then prints exactly one JSON object on stdout; human
-//! text goes to stderr. Exit codes: 0 success, 1 bad input or a failed computation, 2 unexpected
-//! error (including usage errors reported by clap).
+//! text goes to stderr. A failure prints one message on stderr — the error and its causes, each
+//! once — and with `--json` also one object `{"error": …, "kind": …}` on stdout, with the same exit
+//! code. Exit codes ([`EXIT_CODES`]): 0 success, 1 bad input or a failed computation, 2 usage error
+//! (clap's full message, with its "a similar argument exists" tips), 3 `run` finished but some
+//! results are not trusted.
 
 mod contact;
 mod convert;
@@ -18,9 +21,37 @@ mod run;
 
 use clap::{Parser, Subcommand};
 
+/// The exit codes, as printed by `--help`.
+pub const EXIT_CODES: &str = "Exit codes: 0 success; 1 bad input or a failed computation (for `run`: \
+some compound failed, or the folder holds none); 2 usage error; 3 `run` finished, but some results \
+are not trusted (a fit out of its quality bounds, or a friction that could not be computed: listed \
+apart in ranking.csv and index.html). With --json a failure also prints {\"error\": …, \"kind\": …} \
+on stdout.";
+
+/// An error that ends the program with its own exit code (the message is printed as usual).
+#[derive(Debug)]
+pub struct Exit {
+    /// The exit code.
+    pub code: i32,
+    /// `kind` in the JSON error object.
+    pub kind: &'static str,
+    /// The message.
+    pub message: String,
+    /// What the command found anyway (e.g. the run summary), printed with `--json` under `detail`.
+    pub detail: Option<serde_json::Value>,
+}
+
+impl std::fmt::Display for Exit {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Exit {}
+
 /// viscoroll: from DMA measurements of a rubber compound to its rolling loss.
 #[derive(Debug, Parser)]
-#[command(name = "viscoroll", version, about, long_about = None)]
+#[command(name = "viscoroll", version, about, long_about = None, after_help = EXIT_CODES)]
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -48,10 +79,69 @@ enum Command {
     Rank(rank::Args),
 }
 
+impl Command {
+    /// Whether the command was asked for JSON output.
+    fn json(&self) -> bool {
+        match self {
+            Command::Contact(a) => a.json,
+            Command::Roll(a) => a.json,
+            Command::Convert(a) => a.json,
+            Command::Export(a) => a.json,
+            Command::Ingest(a) => a.json,
+            Command::Master(a) => a.json,
+            Command::Fit(a) => a.json,
+            Command::Run(a) => a.json,
+            Command::Rank(a) => a.json,
+        }
+    }
+}
+
+/// The message of an error and its causes, each cause once: a cause whose text the message already
+/// holds (an error that prints its source, `ingest: X` over `X`) is not repeated.
+pub fn error_text(e: &anyhow::Error) -> String {
+    let mut text = String::new();
+    for cause in e.chain() {
+        let c = cause.to_string();
+        if text.contains(&c) {
+            continue;
+        }
+        if !text.is_empty() {
+            text.push_str(": ");
+        }
+        text.push_str(&c);
+    }
+    crate::results::cap_line(&text)
+}
+
+/// Report a failure: the message on stderr; with `json`, one JSON object on stdout too
+/// (`{"error", "kind", "exit_code"}`, and `detail` when the command has one).
+fn fail(
+    json: bool,
+    code: i32,
+    kind: &str,
+    message: &str,
+    detail: Option<&serde_json::Value>,
+) -> i32 {
+    eprintln!("viscoroll: {message}");
+    if json {
+        let mut obj = serde_json::json!({"error": message, "kind": kind, "exit_code": code});
+        if let Some(d) = detail {
+            obj["detail"] = d.clone();
+        }
+        println!("{obj}");
+    }
+    code
+}
+
 /// Parse the command line, run the command, report an error once; returns the exit code.
 pub fn run() -> i32 {
     quiet_broken_pipe();
-    let cli = match Cli::try_parse() {
+    run_with(std::env::args_os().collect())
+}
+
+/// [`run`] on given arguments (the first is the program name).
+pub fn run_with(args: Vec<std::ffi::OsString>) -> i32 {
+    let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
         Err(e) if !e.use_stderr() => {
             // --help and --version: clap's own text on stdout.
@@ -59,15 +149,15 @@ pub fn run() -> i32 {
             return 0;
         }
         Err(e) => {
-            // A usage error: one line (clap's first line, which names the argument and value),
-            // then where to read more. Exit code 2.
-            let text = e.to_string();
-            let first = text.lines().next().unwrap_or("bad arguments");
-            let first = first.trim_start_matches("error: ");
-            eprintln!("viscoroll: {first} (see `viscoroll --help`)");
-            return 2;
+            // A usage error: clap's whole message (what is wrong, the missing arguments, its
+            // "a similar argument exists" tip, the usage line). Exit code 2.
+            let json = args.iter().any(|a| a == "--json");
+            let text = e.render().to_string();
+            let text = text.trim_end().trim_start_matches("error: ");
+            return fail(json, 2, "usage", text, None);
         }
     };
+    let json = cli.command.json();
     let result: anyhow::Result<()> = match cli.command {
         Command::Contact(args) => contact::run(args),
         Command::Roll(args) => roll::run(args),
@@ -81,10 +171,16 @@ pub fn run() -> i32 {
     };
     match result {
         Ok(()) => 0,
-        Err(e) => {
-            eprintln!("viscoroll: {e:#}");
-            1
-        }
+        Err(e) => match e.downcast_ref::<Exit>() {
+            Some(x) => fail(
+                json,
+                x.code,
+                x.kind,
+                &crate::results::cap_line(&x.message),
+                x.detail.as_ref(),
+            ),
+            None => fail(json, 1, "error", &error_text(&e), None),
+        },
     }
 }
 
@@ -104,4 +200,25 @@ fn quiet_broken_pipe() {
         }
         default_hook(info);
     }));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(Debug, thiserror::Error)]
+    #[error("ingest: {0}")]
+    struct Outer(#[from] Inner);
+
+    #[derive(Debug, thiserror::Error)]
+    #[error("file.csv: no data")]
+    struct Inner;
+
+    #[test]
+    fn a_cause_already_in_the_message_is_not_repeated() {
+        let e = anyhow::Error::new(Outer(Inner));
+        assert_eq!(error_text(&e), "ingest: file.csv: no data");
+        let e = anyhow::Error::new(Inner).context("reading fit files");
+        assert_eq!(error_text(&e), "reading fit files: file.csv: no data");
+    }
 }

@@ -1,15 +1,21 @@
 //! `viscoroll rank FIT.json… [--scene NAME]`: compounds ordered by predicted rolling friction in a
-//! scene — the temperature-averaged F/N and a table per temperature.
+//! scene — the temperature-averaged F/N (measured temperatures only unless `--allow-extrapolation`)
+//! and a table per temperature; compounds not trusted (fit out of bounds, a failed temperature) are
+//! listed apart, never ranked.
 //!
-//! `--json` prints one object: `scene`, `ranking` [{`rank`, `compound`, `mean_friction`,
-//! `friction`: [{`temp_c`, `friction`, `extrapolated`, …}]}], `failed` [{`compound`, `error`}].
+//! `--json` prints one object: `scene`, `ranking` [{`rank`, `compound`, `mean_friction`, `standing`,
+//! `friction`: [{`temp_c`, `friction`, `extrapolated`, …}]}], `apart` [{`compound`,
+//! `mean_friction`, `reasons`}], `failed` [{`compound`, `error`}]. Exit 1 when a fit failed, 3 when
+//! some compound is not trusted.
 
+use super::Exit;
 use crate::pipeline::{CompoundFit, SceneSet};
 use anyhow::{bail, Context};
 use std::path::PathBuf;
 
 /// Arguments of `viscoroll rank`.
 #[derive(Debug, clap::Args)]
+#[command(after_help = super::EXIT_CODES)]
 pub struct Args {
     /// Fit files (fits/NAME.json).
     #[arg(required = true)]
@@ -20,6 +26,9 @@ pub struct Args {
     /// Scenes TOML [default: the shipped scenes].
     #[arg(long)]
     pub scenes: Option<PathBuf>,
+    /// Average extrapolated temperatures too (marked *).
+    #[arg(long)]
+    pub allow_extrapolation: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -45,53 +54,99 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     for p in &args.fits {
         fits.push(CompoundFit::read(p).with_context(|| "reading fit files")?);
     }
-    let results = crate::pipeline::run::rank_fits(&fits, &spec);
-    let mut ranking = Vec::new();
-    let mut failed = Vec::new();
+    let results = crate::pipeline::run::rank_fits(&fits, &spec, args.allow_extrapolation);
+    let (mut ranking, mut apart, mut failed) = (Vec::new(), Vec::new(), Vec::new());
     for r in &results {
         match r {
-            Ok((c, pts, m)) => ranking.push(serde_json::json!({
-                "rank": ranking.len() + 1, "compound": c, "mean_friction": m, "friction": pts,
+            Ok((c, pts, s)) if s.trusted() => ranking.push(serde_json::json!({
+                "rank": ranking.len() + 1, "compound": c, "mean_friction": s.mean_friction,
+                "standing": s, "friction": pts,
+            })),
+            Ok((c, _, s)) => apart.push(serde_json::json!({
+                "compound": c, "mean_friction": s.mean_friction, "reasons": s.untrusted,
             })),
             Err((c, e)) => failed.push(serde_json::json!({"compound": c, "error": e})),
         }
     }
-    if args.json {
-        println!(
-            "{}",
-            serde_json::json!({"scene": spec, "ranking": ranking, "failed": failed})
-        );
+    let obj =
+        serde_json::json!({"scene": spec, "ranking": ranking, "apart": apart, "failed": failed});
+    if !args.json {
+        print_table(&spec, &results);
+    }
+    if failed.is_empty() && apart.is_empty() {
+        if args.json {
+            println!("{obj}");
+        }
+        return Ok(());
+    }
+    let (code, kind, message) = if !failed.is_empty() {
+        (
+            1,
+            "compounds_failed",
+            format!("{} of {} compounds failed", failed.len(), results.len()),
+        )
     } else {
-        eprintln!(
-            "scene {}: R = {} mm, {} N/m, {} m/s; lowest rolling friction first",
-            spec.name, spec.roll_radius_mm, spec.load_n_per_m, spec.speed_m_s
+        (
+            3,
+            "untrusted_results",
+            format!(
+                "{} of {} compounds are not trusted and were listed apart",
+                apart.len(),
+                results.len()
+            ),
+        )
+    };
+    Err(Exit {
+        code,
+        kind,
+        message,
+        detail: Some(obj),
+    }
+    .into())
+}
+
+/// The human table on stderr: ranked compounds with F/N per temperature, then the others.
+fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run::RankedFit]) {
+    eprintln!(
+        "scene {}: R = {} mm, {} N/m, {} m/s; lowest rolling friction first",
+        spec.name, spec.roll_radius_mm, spec.load_n_per_m, spec.speed_m_s
+    );
+    let mut head = format!("{:>4} {:<24} {:>11}", "rank", "compound", "mean F/N");
+    for t in &spec.temps_c {
+        head.push_str(&format!(" {:>10}", format!("{t} °C")));
+    }
+    eprintln!("{head}");
+    let mut rank = 0;
+    for (c, pts, s) in results.iter().filter_map(|r| r.as_ref().ok()) {
+        let label = if s.trusted() {
+            rank += 1;
+            rank.to_string()
+        } else {
+            "–".to_string()
+        };
+        let mut line = format!(
+            "{label:>4} {:<24} {:>11.4e}",
+            c,
+            s.mean_friction.unwrap_or(f64::NAN)
         );
-        let oks: Vec<_> = results.iter().filter_map(|r| r.as_ref().ok()).collect();
-        let mut head = format!("{:>4} {:<24} {:>11}", "rank", "compound", "mean F/N");
-        for t in &spec.temps_c {
-            head.push_str(&format!(" {:>10}", format!("{t} °C")));
+        for p in pts {
+            line.push_str(&format!(
+                " {:>9.3e}{}",
+                p.friction,
+                if p.extrapolated { "*" } else { " " }
+            ));
         }
-        eprintln!("{head}");
-        for (i, (c, pts, m)) in oks.iter().enumerate() {
-            let mut line = format!("{:>4} {:<24} {:>11.4e}", i + 1, c, m);
-            for p in pts {
-                line.push_str(&format!(
-                    " {:>9.3e}{}",
-                    p.friction,
-                    if p.extrapolated { "*" } else { " " }
-                ));
-            }
-            eprintln!("{line}");
-        }
-        if oks.iter().any(|(_, p, _)| p.iter().any(|p| p.extrapolated)) {
-            eprintln!("* shift law extrapolated beyond the measured temperatures");
-        }
-        for (c, e) in results.iter().filter_map(|r| r.as_ref().err()) {
-            eprintln!("{c}: failed: {e}");
-        }
+        eprintln!("{line}");
     }
-    if !failed.is_empty() {
-        bail!("{} of {} compounds failed", failed.len(), results.len());
+    eprintln!("* shift law extrapolated beyond the measured temperatures (averaged only with --allow-extrapolation)");
+    for (c, _, s) in results
+        .iter()
+        .filter_map(|r| r.as_ref().ok())
+        .filter(|(_, _, s)| !s.trusted())
+    {
+        eprintln!("{c}: not ranked: {}", s.untrusted.join("; "));
     }
-    Ok(())
+    for (c, e) in results.iter().filter_map(|r| r.as_ref().err()) {
+        eprintln!("{c}: failed: {e}");
+    }
 }

@@ -8,9 +8,7 @@
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
 //! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
 
-use crate::contact::controlled::AutoSettings;
-use crate::contact::roll_auto::roll_auto;
-use crate::contact::{self, ContactSettings, Scene};
+use crate::contact::{self, AutoSettings, Body, ContactSettings, Scene, Scheme};
 use crate::creep::AtTemperature;
 use crate::pipeline::fit_compound::measured_range_c;
 use crate::pipeline::CompoundFit;
@@ -43,9 +41,10 @@ pub struct Args {
     /// Number of intervals of the thesis scheme.
     #[arg(long, default_value_t = 200)]
     pub n: usize,
-    /// Discretisation: `auto` (error-controlled, default) or `thesis` (piecewise linear, `--n`).
-    #[arg(long, default_value = "auto")]
-    pub scheme: String,
+    /// Discretisation: `auto` (error-controlled, default), `thesis` (piecewise linear, `--n`) or
+    /// `exact` (one creep term only).
+    #[arg(long, default_value_t = Scheme::Auto)]
+    pub scheme: Scheme,
     /// Relative tolerance on friction and contact length for `--scheme auto` (1e-12 … 0.1).
     #[arg(long, default_value_t = 1e-6)]
     pub tol: f64,
@@ -122,32 +121,24 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         load_n_per_m: args.load_n_per_m,
         speed_m_s: args.speed_m_s,
         poisson: args.poisson,
+        body: Body::HalfSpace,
     };
     if args.cover_mm.is_some() || args.model.is_some() {
         return super::roll_cover::run(&args, &scene, &spectrum, shifted.as_ref(), warnings);
     }
-    if !matches!(args.scheme.as_str(), "auto" | "thesis") {
-        anyhow::bail!("--scheme `{}` is not known (auto, thesis)", args.scheme);
-    }
-    let mut auto_info = None;
-    let sol = if args.scheme == "auto" {
-        let settings = AutoSettings {
+    let settings = ContactSettings {
+        scheme: args.scheme,
+        n: args.n,
+        auto: AutoSettings {
             tol: args.tol,
-            ..Default::default()
-        };
-        let r = roll_auto(&scene, &spectrum, &settings)
-            .with_context(|| format!("{}", args.spectrum.display()))?;
-        auto_info = Some(r.auto);
-        r.roll
-    } else {
-        let settings = ContactSettings {
-            n: args.n,
-            ..Default::default()
-        };
-        contact::roll(&scene, &spectrum, &settings)
-            .with_context(|| format!("{}", args.spectrum.display()))?
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     };
+    let sol = contact::roll(&scene, &spectrum, &settings)
+        .with_context(|| format!("{}", args.spectrum.display()))?;
     let d = &sol.dimensionless;
+    let auto_info = d.auto.as_ref();
     if args.json {
         let mut obj = serde_json::json!({
             "friction": sol.friction,
@@ -184,10 +175,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             obj["modes_lumped"] = serde_json::json!(a.modes_lumped);
             obj["modes_dropped"] = serde_json::json!(a.modes_dropped);
             obj["min_pressure_ratio"] = serde_json::json!(a.min_pressure_ratio);
-            // Temperature warnings first, then the solver's.
-            let all: Vec<&String> = warnings.iter().chain(a.warnings.iter()).collect();
-            obj["warnings"] = serde_json::json!(all);
         }
+        // Temperature warnings first, then the solver's.
+        let all: Vec<&String> = warnings.iter().chain(d.warnings.iter()).collect();
+        obj["warnings"] = serde_json::json!(all);
         println!("{obj}");
     } else {
         if let Some(a) = &shifted {
@@ -236,9 +227,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 a.modes_lumped,
                 a.modes_dropped
             );
-            for w in &a.warnings {
-                eprintln!("warning: {w}");
-            }
+        }
+        for w in &d.warnings {
+            eprintln!("warning: {w}");
         }
     }
     for w in &warnings {

@@ -1,5 +1,5 @@
 //! `viscoroll roll … --cover-mm H [--model auto|half-space|layer|winkler]`: the scene on a rubber cover
-//! of thickness H bonded to a rigid carcass ([`crate::contact::layer::roll_cover`]).
+//! of thickness H bonded to a rigid carcass ([`crate::contact::body::layer::roll_cover`]).
 //!
 //! `--json` prints the fields of `roll` plus `model` (the body solved), `model_reason`,
 //! `model_error_estimate` (when `auto` chose a cheaper body than the layer: its estimated relative
@@ -7,7 +7,7 @@
 //! `min_pressure_ratio`, `min_gap_ratio` and `warnings` (solver, contact checks, validity).
 
 use super::roll::Args;
-use crate::contact::layer::{roll_cover, ModelChoice};
+use crate::contact::body::layer::{roll_cover, ModelChoice};
 use crate::contact::Scene;
 use crate::creep::AtTemperature;
 use crate::CreepSpectrum;

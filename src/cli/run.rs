@@ -2,19 +2,21 @@
 //! scenes → report folder; `reports/ranking.csv` and `reports/index.html` (crate::pipeline::run).
 //!
 //! Progress: a counted bar over the work units (per compound: fit, friction and maps per scene,
-//! report) on a terminal, plain log lines otherwise (stderr). `--json` prints one object
-//! (the [`crate::pipeline::RunSummary`]). Exit code 1 when any compound failed.
+//! report) on a terminal, plain log lines otherwise (stderr). `--json` prints one object: the
+//! [`crate::pipeline::RunSummary`] on success, else the error object with the summary as `detail`.
+//! Exit codes: 0 all trusted, 1 a compound failed (or none found), 3 finished with untrusted results.
 
-use crate::pipeline::{run_all, run_all_with_progress, ProgressEvent, RunOptions};
-use anyhow::bail;
+use super::Exit;
+use crate::pipeline::{run_all, run_all_with_progress, ProgressEvent, RunOptions, RunStatus};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
 /// Arguments of `viscoroll run`.
 #[derive(Debug, clap::Args)]
+#[command(after_help = super::EXIT_CODES)]
 pub struct Args {
     /// Folder of compounds: `compounds.toml` if present, else one compound per sub-folder and per
-    /// export file.
+    /// export file (or measurement JSON written by `viscoroll ingest`).
     #[arg(default_value = "data")]
     pub dir: PathBuf,
     /// Scenes TOML [default: DIR/scenes.toml if present, else the shipped scenes].
@@ -26,65 +28,97 @@ pub struct Args {
     /// Replace fit files made from other inputs or settings.
     #[arg(long)]
     pub force: bool,
+    /// Reference temperature of the master curves in °C [default: the middle isotherm's]; a
+    /// compound's `tref_c` in compounds.toml wins.
+    #[arg(long, value_name = "C", allow_negative_numbers = true)]
+    pub tref: Option<f64>,
+    /// Rank on every temperature that computed, extrapolated ones included (marked) [default:
+    /// measured temperatures only].
+    #[arg(long)]
+    pub allow_extrapolation: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
 }
 
+/// Run with a counted progress bar on stderr (log lines go above it).
+fn run_with_bar(opts: &RunOptions) -> anyhow::Result<crate::pipeline::RunSummary> {
+    let bar = indicatif::ProgressBar::new(0);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{elapsed_precise} [{bar:30}] {pos}/{len} {wide_msg}",
+        )
+        .map_err(|e| anyhow::anyhow!("progress bar template: {e}"))?
+        .progress_chars("=> "),
+    );
+    bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    let (b, p) = (bar.clone(), bar.clone());
+    let s = run_all_with_progress(
+        opts,
+        &move |line: &str| b.println(line),
+        &move |ev| match ev {
+            ProgressEvent::Total(n) => p.set_length(n),
+            ProgressEvent::Done { compound, stage } => {
+                p.inc(1);
+                p.set_message(format!("{compound}: {stage}"));
+            }
+        },
+    );
+    bar.finish_and_clear();
+    Ok(s?)
+}
+
 /// Run `viscoroll run`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    if !args.dir.is_dir() {
-        bail!("{} is not a folder", args.dir.display());
-    }
-    let opts = RunOptions::for_folder(&args.dir, &args.out, args.scenes.as_deref(), args.force)?;
+    let mut opts = RunOptions::for_folder(&args.dir, &args.out, args.scenes.as_deref(), args.tref)?;
+    opts.force = args.force;
+    opts.allow_extrapolation = args.allow_extrapolation;
     let start = std::time::Instant::now();
     let summary = if std::io::stderr().is_terminal() {
-        // A counted bar over the work units (per compound: fit, friction and maps per scene,
-        // report); log lines go above it.
-        let bar = indicatif::ProgressBar::new(0);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{elapsed_precise} [{bar:30}] {pos}/{len} {wide_msg}",
-            )
-            .map_err(|e| anyhow::anyhow!("progress bar template: {e}"))?
-            .progress_chars("=> "),
-        );
-        bar.enable_steady_tick(std::time::Duration::from_millis(200));
-        let (b, p) = (bar.clone(), bar.clone());
-        let s = run_all_with_progress(
-            &opts,
-            &move |line: &str| b.println(line),
-            &move |ev| match ev {
-                ProgressEvent::Total(n) => p.set_length(n),
-                ProgressEvent::Done { compound, stage } => {
-                    p.inc(1);
-                    p.set_message(format!("{compound}: {stage}"));
-                }
-            },
-        );
-        bar.finish_and_clear();
-        s?
+        run_with_bar(&opts)?
     } else {
         run_all(&opts, &|line: &str| eprintln!("{line}"))?
     };
-    let secs = start.elapsed().as_secs_f64();
-    let failed = summary.failures();
-    eprintln!(
-        "{} compounds ({} failed) in {secs:.2} s; see {} and {}",
+    let (n, failed, untrusted) = (
         summary.compounds.len(),
-        failed,
+        summary.failures(),
+        summary.untrusted(),
+    );
+    eprintln!(
+        "{n} compounds ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
+        start.elapsed().as_secs_f64(),
         summary.index_html.display(),
         summary.ranking_csv.display()
     );
-    if args.json {
-        println!("{}", serde_json::to_string(&summary)?);
+    let (code, kind, message) = match summary.status() {
+        RunStatus::AllGood => {
+            if args.json {
+                println!("{}", serde_json::to_string(&summary)?);
+            }
+            return Ok(());
+        }
+        RunStatus::Failures => (
+            1,
+            "compounds_failed",
+            format!(
+                "{failed} of {n} compounds failed (listed in {})",
+                summary.index_html.display()
+            ),
+        ),
+        RunStatus::Untrusted => (
+            3,
+            "untrusted_results",
+            format!(
+                "finished, but {untrusted} of {n} compounds have results that are not trusted (listed apart, with reasons, in {})",
+                summary.index_html.display()
+            ),
+        ),
+    };
+    Err(Exit {
+        code,
+        kind,
+        message,
+        detail: Some(serde_json::to_value(&summary)?),
     }
-    if failed > 0 {
-        bail!(
-            "{failed} of {} compounds failed (listed in {})",
-            summary.compounds.len(),
-            summary.index_html.display()
-        );
-    }
-    Ok(())
+    .into())
 }

@@ -1,6 +1,7 @@
-//! Errors of the `contact` stage: bad input (named field and value) and failed computations
-//! (singular system, unbracketed load). Outcomes that are data (iterations, error estimates) live in
-//! [`super::DimensionlessSolution`], not here.
+//! Errors of the `contact` stage, one type for every body and scheme: bad input (named field and
+//! value), input outside a scheme's range, and failed computations (singular system, unbracketed
+//! load, load loop not converged). Outcomes that are data (iterations, error estimates, warnings)
+//! live in [`super::DimensionlessSolution`], not here.
 
 use thiserror::Error;
 
@@ -17,6 +18,32 @@ pub enum ContactError {
         expected: &'static str,
         /// The value found.
         value: f64,
+    },
+    /// A creep term is not usable (f ≥ 0 and b > 0, both finite, are needed).
+    #[error(
+        "creep term {index}: strength f = {f} and rate b = {b}; need f >= 0 and b > 0, both finite"
+    )]
+    BadTerm {
+        /// Index of the term.
+        index: usize,
+        /// Its f.
+        f: f64,
+        /// Its b.
+        b: f64,
+    },
+    /// A quantity lies outside the range a scheme is set up for.
+    #[error("{quantity} = {value:e} is outside the {scheme} scheme's range ({bound} {limit:e})")]
+    OutOfRange {
+        /// The scheme.
+        scheme: &'static str,
+        /// The quantity, as a formula (`(b + f)*lambda`).
+        quantity: &'static str,
+        /// Its value.
+        value: f64,
+        /// "at most" or "at least".
+        bound: &'static str,
+        /// The limit.
+        limit: f64,
     },
     /// The number of intervals is too small (or absurdly large).
     #[error("number of intervals n must be between {min} and {max}, got {n}")]
@@ -53,7 +80,7 @@ pub enum ContactError {
         /// N′ at `lambda_hi`.
         load_hi: f64,
     },
-    /// The load iteration did not reach its tolerance.
+    /// The load iteration did not reach its tolerance (`residual` NaN when the loop does not track it).
     #[error(
         "load iteration did not converge in {iterations} solves: lambda in [{lambda_lo}, {lambda_hi}], \
          relative load error {residual:e}"
@@ -71,9 +98,6 @@ pub enum ContactError {
     /// A scheme not available for this input (e.g. the exact one for several terms).
     #[error("{0}")]
     Unsupported(String),
-    /// The exact one-term solution refused its input.
-    #[error("exact scheme: {0}")]
-    Exact(#[from] super::exact::ContactExactError),
 }
 
 /// Check that `value` is finite and > 0.

@@ -170,7 +170,7 @@ where
         if solves.get() >= settings.max_solves {
             return Err(stop_err(solves.get()));
         }
-        (d, e) = super::brent::brent_step(
+        (d, e) = crate::special::brent::brent_step(
             (a, b, c),
             (fa, fb, fc),
             m,
@@ -271,6 +271,8 @@ mod tests {
             n: 0,
             iterations: 0,
             error_estimate: None,
+            auto: None,
+            warnings: Vec::new(),
         }
     }
 

@@ -1,22 +1,19 @@
-//! Stage `contact`: a rigid cylinder rolling steadily on a viscoelastic half-space (thesis ch. 3–4).
+//! Stage `contact`: a rigid cylinder rolling steadily on a viscoelastic body (thesis ch. 3–4).
 //!
-//! Input: a [`crate::CreepSpectrum`] (+ shift law and temperature) and a dimensional scene; output: the
-//! contact solution (pressure, contact length, offset, rolling-friction coefficient).
+//! Input: a [`crate::CreepSpectrum`] (already at the scene's temperature) and a dimensional
+//! [`Scene`] (roll, load, speed, and the [`Body`] it rolls on), with [`ContactSettings`] (the
+//! [`Scheme`]: thesis, exact or auto); output: the [`RollSolution`] (pressure, contact length,
+//! offset, rolling-friction coefficient, error estimate and warnings) or a [`ContactError`].
+//!
+//! Layout: [`scene`] (to and from the dimensionless problem, [`roll`]), [`settings`], [`error`],
+//! [`load`] (the load loop of the thesis scheme), [`body`] (the seam: one enum, one dispatch;
+//! [`body::half_space`] holds the half-space kernel, modes, reduction and the three schemes).
 //!
 //! Dimensionless problem (thesis §3.2, eq. 3.25): lengths in units of V·T, contact on 0 ≤ ξ ≤ λ with the
 //! front (leading) edge at ξ = λ, creep function γ(ζ) = Σᵢ fᵢ e^(−bᵢζ) (eq. 3.7), unknown pressure Q′(ξ)
 //! and offset β, load N′ = 2∫Q′dξ (eq. 3.24), friction ρ·F/N = ∫Q′(ξ−β)dξ / ∫Q′dξ.
 
 use serde::{Deserialize, Serialize};
-
-mod bessel;
-mod brent;
-pub mod exact;
-#[cfg(test)]
-mod exact_tests;
-mod quadrature;
-
-pub use exact::{one_term_at_lambda, one_term_at_load, ContactExactError, OneTermExact};
 
 /// One term fᵢ e^(−bᵢζ) of the dimensionless creep function γ(ζ) (thesis eq. 3.7–3.8):
 /// fᵢ = (Jᵢ/J_g)(T/τᵢ), bᵢ = T/τᵢ.
@@ -52,25 +49,46 @@ pub struct DimensionlessSolution {
     /// Estimated relative error of friction and λ, when the scheme gives one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error_estimate: Option<f64>,
+    /// Diagnostics of the `auto` scheme (mode counts, error parts, contact checks); `None` for the
+    /// others. Flattened in JSON.
+    #[serde(flatten)]
+    pub auto: Option<AutoDiagnostics>,
+    /// Warnings for the user (validity of the model, contact conditions, tolerance not reached).
+    #[serde(default)]
+    pub warnings: Vec<String>,
 }
 
-pub mod auto;
-pub mod chebyshev;
-pub mod controlled;
+pub mod body;
 pub mod error;
-pub mod kernel;
-pub mod layer;
 pub mod load;
-pub mod modes;
-pub mod reduce;
 pub mod scene;
-pub mod solve;
-pub mod thesis;
+pub mod settings;
 
+pub use body::half_space;
+pub use body::half_space::auto::{AutoDiagnostics, AutoSettings};
+pub use body::half_space::exact::{one_term_at_lambda, one_term_at_load, OneTermExact};
+pub use body::Body;
 pub use error::ContactError;
-pub use kernel::Kernel;
 pub use load::LoadSettings;
 pub use scene::{roll, DimensionlessScene, RollSolution, Scene};
-pub use solve::{solve_at_lambda, solve_at_load, ContactSettings, Scheme};
-pub mod rear_gap;
-pub mod roll_auto;
+pub use settings::{ContactSettings, Scheme};
+
+/// Solve the dimensionless problem on the half-space at contact length λ (the scheme of
+/// `settings`). For another body use [`body::solve_at_lambda`] with a [`DimensionlessScene`].
+pub fn solve_at_lambda(
+    terms: &[CreepTerm],
+    lambda: f64,
+    settings: &ContactSettings,
+) -> Result<DimensionlessSolution, ContactError> {
+    half_space::solve_at_lambda(terms, lambda, settings)
+}
+
+/// Solve the dimensionless problem on the half-space at load N′ (the scheme of `settings`,
+/// `iterations` = solves made). For another body use [`body::solve_at_load`].
+pub fn solve_at_load(
+    terms: &[CreepTerm],
+    load: f64,
+    settings: &ContactSettings,
+) -> Result<DimensionlessSolution, ContactError> {
+    half_space::solve_at_load(terms, load, settings)
+}

@@ -1,5 +1,5 @@
 //! Dimensional scenes: a rigid roll of radius R (m) rolling at speed V (m/s) under a load N* per unit
-//! width (N/m) on a half-space with creep compliance J(t) = J_g + Σⱼ Jⱼ(1 − e^(−t/τⱼ)), to and from the
+//! width (N/m) on a body ([`Body`], the half-space by default) with creep compliance J(t) = J_g + Σⱼ Jⱼ(1 − e^(−t/τⱼ)), to and from the
 //! dimensionless problem of thesis §3.2 (MATH.md §1).
 //!
 //! Input: [`Scene`] + [`CreepSpectrum`]; output: [`DimensionlessScene`] (creep terms fᵢ, bᵢ, N′, ρ and
@@ -18,8 +18,9 @@
 //! bᵢ = l_g/(Vτᵢ) is the time to cross the glassy contact in units of τᵢ: the terms that matter at this
 //! speed have bᵢ ≈ 1, the others act as (nearly) glassy (bᵢ ≪ 1) or relaxed (bᵢ ≫ 1) springs.
 
+use super::body::{self, Body};
 use super::error::{non_negative, positive, ContactError};
-use super::solve::{solve_at_load, ContactSettings};
+use super::settings::ContactSettings;
 use super::{CreepTerm, DimensionlessSolution};
 use crate::{CreepSpectrum, ModulusKind};
 use serde::{Deserialize, Serialize};
@@ -34,9 +35,12 @@ pub struct Scene {
     pub load_n_per_m: f64,
     /// Rolling speed V in m/s (> 0).
     pub speed_m_s: f64,
-    /// Poisson's ratio ν of the half-space, in [0, 0.5]; `None`: the spectrum's (default 0.5).
+    /// Poisson's ratio ν of the body, in [0, 0.5]; `None`: the spectrum's (default 0.5).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub poisson: Option<f64>,
+    /// What the roll rolls on (default: the half-space, also when absent from JSON).
+    #[serde(default)]
+    pub body: Body,
 }
 
 /// The dimensionless problem of a scene and the scales to go back.
@@ -93,7 +97,7 @@ impl Scene {
         if let Some(nu) = self.poisson {
             check_poisson(nu)?;
         }
-        Ok(())
+        self.body.validate()
     }
 
     /// The dimensionless problem of this scene on `spectrum` (see the module doc for T).
@@ -178,15 +182,29 @@ impl DimensionlessScene {
     }
 }
 
-/// Solve one scene at its load (the load loop of [`super::load`]).
+/// Solve one scene at its load: on its body ([`body::solve_at_load`], the one dispatch point) with
+/// the scheme of `settings`.
+///
+/// Validity: eq. 3.22 replaces the roll by the parabola −(x−b)²/(2R). Over the contact the circle
+/// departs from it by x⁴/(8R³) against x²/(2R), a relative (x/R)²/4; at the contact ends x ≈ l/2,
+/// so a warning is added when (l/(2R))²/4 > 1e−3, i.e. l/R > 0.126 (the half-space assumption
+/// fails at the same order).
 pub fn roll(
     scene: &Scene,
     spectrum: &CreepSpectrum,
     settings: &ContactSettings,
 ) -> Result<RollSolution, ContactError> {
     let problem = scene.dimensionless(spectrum)?;
-    let sol = solve_at_load(&problem.terms, problem.load, settings)?;
-    Ok(problem.to_dimensional(scene.load_n_per_m, sol))
+    let sol = body::solve_at_load(&scene.body, &problem, settings)?;
+    let mut roll = problem.to_dimensional(scene.load_n_per_m, sol);
+    let l_over_r = roll.contact_length_m / scene.radius_m;
+    if l_over_r > 0.126 {
+        roll.dimensionless.warnings.push(format!(
+            "contact length / radius = {l_over_r:.3}: the parabolic roll profile (eq. 3.22) is off by \
+             more than 0.1 % at the contact ends; results lose validity"
+        ));
+    }
+    Ok(roll)
 }
 
 fn check_poisson(nu: f64) -> Result<f64, ContactError> {

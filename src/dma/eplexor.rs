@@ -33,6 +33,12 @@ fn open(file: &str, bytes: &[u8]) -> Result<Book, DmaError> {
             reason,
         })?;
     }
+    if super::detect::is_zip(bytes) {
+        super::xlsx_guard::check(bytes).map_err(|reason| DmaError::Excel {
+            file: file.into(),
+            reason,
+        })?;
+    }
     let owned = bytes.to_vec();
     let opened = std::panic::catch_unwind(move || open_workbook_auto_from_rs(Cursor::new(owned)));
     match opened {

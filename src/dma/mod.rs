@@ -12,6 +12,7 @@ pub mod eplexor;
 pub mod error;
 pub mod generic;
 pub mod isotherms;
+pub mod plausible;
 pub mod proteus;
 mod read;
 pub mod rheocompass;
@@ -21,6 +22,7 @@ pub mod text;
 pub mod trios;
 pub mod units;
 pub mod xls_guard;
+pub mod xlsx_guard;
 
 pub use checks::{CheckSettings, Flag, Issue, Severity, Summary};
 pub use columns::ColumnInfo;

@@ -1,19 +1,52 @@
 //! Which compounds a folder holds ([`discover`]): an explicit `compounds.toml`, or one compound per
 //! sub-folder and per export file at the top level.
 //!
-//! Input: a folder; output: [`CompoundInput`]s (name + files) and notes on what was skipped.
+//! Input: a folder; output: [`CompoundInput`]s (name, files, per-compound settings) and notes on
+//! what was skipped or renamed. Names become file names under the output folder, so they are
+//! sanitised ([`sanitise_name`]: no separators, no leading dot, no `..`) and made unique.
+//!
+//! `compounds.toml` (each `[[compound]]`; every key but `name` and `files` optional):
+//! ```toml
+//! [[compound]]
+//! name = "lsr"
+//! files = ["lsr/*.txt"]          # `*` within the last path component
+//! format = "trios-text"           # reader, as `ingest --format`
+//! mode = "shear"                  # tensile or shear, when the file does not say
+//! poisson = 0.49
+//! modulus_unit = "MPa"            # units the file does not state
+//! freq_unit = "Hz"
+//! temp_unit = "°C"
+//! tref_c = 20.0                   # reference temperature of the master curve
+//! prony = { terms_per_decade = 1.5 }   # keys of the Prony settings (fit file `settings.prony`)
+//! ```
 
 use super::error::{io, PipelineError};
+use crate::dma::IngestOptions;
+use crate::prony::PronySettings;
+use crate::ModulusKind;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
-/// One compound to run: its name and the exports that make its measurement.
-#[derive(Debug, Clone, PartialEq)]
+/// One compound to run: its name, the exports that make its measurement, and its settings.
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct CompoundInput {
-    /// Name (file stem or folder name, or as listed).
+    /// Name (file stem or folder name, or as listed), sanitised.
     pub name: String,
-    /// The export files.
+    /// The export files (or measurement JSON files written by `viscoroll ingest`).
     pub files: Vec<PathBuf>,
+    /// Per-compound settings from `compounds.toml`.
+    pub settings: CompoundSettings,
+}
+
+/// Per-compound settings of `compounds.toml`, resolved.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct CompoundSettings {
+    /// Reader options (format, mode, Poisson's ratio, units).
+    pub ingest: Option<IngestOptions>,
+    /// Reference temperature of the master curve in °C.
+    pub tref_c: Option<f64>,
+    /// Prony settings.
+    pub prony: Option<PronySettings>,
 }
 
 #[derive(Deserialize)]
@@ -27,10 +60,171 @@ struct Listing {
 struct ListedCompound {
     name: String,
     files: Vec<String>,
+    #[serde(default)]
+    format: Option<String>,
+    #[serde(default)]
+    mode: Option<String>,
+    #[serde(default)]
+    poisson: Option<f64>,
+    #[serde(default)]
+    modulus_unit: Option<String>,
+    #[serde(default)]
+    freq_unit: Option<String>,
+    #[serde(default)]
+    temp_unit: Option<String>,
+    #[serde(default)]
+    tref_c: Option<f64>,
+    #[serde(default)]
+    prony: Option<toml::Table>,
 }
 
-/// File extensions taken as DMA exports when there is no listing.
-const EXPORT_EXTENSIONS: [&str; 6] = ["txt", "csv", "tsv", "dat", "xls", "xlsx"];
+impl ListedCompound {
+    /// The settings, each checked (the message names the key).
+    fn settings(&self) -> Result<CompoundSettings, String> {
+        use crate::dma::units::{FreqUnit, ModulusUnit, TempUnit};
+        let mut o = IngestOptions::default();
+        let mut any = false;
+        if let Some(f) = &self.format {
+            o.format = Some(f.parse().map_err(|e| format!("format: {e}"))?);
+            any = true;
+        }
+        if let Some(m) = &self.mode {
+            o.mode = Some(match m.to_ascii_lowercase().as_str() {
+                "tensile" | "tension" | "e" => ModulusKind::Tensile,
+                "shear" | "g" => ModulusKind::Shear,
+                _ => return Err(format!("mode `{m}`: expected tensile or shear")),
+            });
+            any = true;
+        }
+        if let Some(p) = self.poisson {
+            if !(p > -1.0 && p <= 0.5) {
+                return Err(format!("poisson = {p}: must lie in (−1, 0.5]"));
+            }
+            o.poisson = p;
+            any = true;
+        }
+        if let Some(u) = &self.modulus_unit {
+            o.modulus_unit = Some(ModulusUnit::parse(u).ok_or_else(|| {
+                format!(
+                    "modulus_unit `{u}`: expected one of {}",
+                    crate::dma::units::MODULUS_UNITS
+                )
+            })?);
+            any = true;
+        }
+        if let Some(u) = &self.freq_unit {
+            o.freq_unit = Some(FreqUnit::parse(u).ok_or_else(|| {
+                format!(
+                    "freq_unit `{u}`: expected one of {}",
+                    crate::dma::units::FREQ_UNITS
+                )
+            })?);
+            any = true;
+        }
+        if let Some(u) = &self.temp_unit {
+            o.temp_unit = Some(TempUnit::parse(u).ok_or_else(|| {
+                format!(
+                    "temp_unit `{u}`: expected one of {}",
+                    crate::dma::units::TEMP_UNITS
+                )
+            })?);
+            any = true;
+        }
+        if let Some(t) = self.tref_c {
+            if !(t.is_finite() && (-273.15..=1000.0).contains(&t)) {
+                return Err(format!(
+                    "tref_c = {t}: must be a temperature in °C in [−273.15, 1000]"
+                ));
+            }
+        }
+        let prony = match &self.prony {
+            None => None,
+            Some(table) => {
+                // The listed keys over the defaults, so a partial table is enough.
+                let mut v = serde_json::to_value(PronySettings::default())
+                    .map_err(|e| format!("prony: {e}"))?;
+                let over = serde_json::to_value(table).map_err(|e| format!("prony: {e}"))?;
+                if let (Some(base), Some(over)) = (v.as_object_mut(), over.as_object()) {
+                    for (k, x) in over {
+                        if !base.contains_key(k) {
+                            return Err(format!("prony: unknown key `{k}`"));
+                        }
+                        base.insert(k.clone(), x.clone());
+                    }
+                }
+                Some(serde_json::from_value(v).map_err(|e| format!("prony: {e}"))?)
+            }
+        };
+        Ok(CompoundSettings {
+            ingest: any.then_some(o),
+            tref_c: self.tref_c,
+            prony,
+        })
+    }
+}
+
+/// File extensions taken as DMA exports when there is no listing (`json`: a measurement written by
+/// `viscoroll ingest`).
+const EXPORT_EXTENSIONS: [&str; 8] = ["txt", "csv", "tsv", "dat", "xls", "xlsx", "osc", "json"];
+
+/// Longest compound name kept, in bytes.
+const MAX_NAME_BYTES: usize = 100;
+
+/// A compound name safe as a file name inside the output folder: letters, digits, `-`, `_`, `.`
+/// and `+` kept, anything else (separators, spaces, control characters) replaced by `_`; runs of
+/// dots shortened to one (no `..`), no leading dot (no hidden file), at most 100 bytes, never empty.
+pub fn sanitise_name(raw: &str) -> String {
+    let mut s: String = raw
+        .chars()
+        .map(|c| {
+            if c.is_alphanumeric() || matches!(c, '-' | '_' | '.' | '+') {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    while s.contains("..") {
+        s = s.replace("..", ".");
+    }
+    while s.starts_with('.') {
+        s.remove(0);
+    }
+    if s.len() > MAX_NAME_BYTES {
+        let mut end = MAX_NAME_BYTES;
+        while !s.is_char_boundary(end) {
+            end -= 1;
+        }
+        s.truncate(end);
+    }
+    if s.is_empty() {
+        s.push_str("compound");
+    }
+    s
+}
+
+/// Sanitise every name and make them unique (case-insensitively, for case-insensitive file systems)
+/// with `-2`, `-3`, …; a note for each name that changed.
+fn settle_names(compounds: &mut [CompoundInput], notes: &mut Vec<String>) {
+    let mut seen: Vec<String> = Vec::new();
+    for c in compounds.iter_mut() {
+        let base = sanitise_name(&c.name);
+        let mut name = base.clone();
+        let mut k = 2;
+        while seen.contains(&name.to_lowercase()) {
+            name = format!("{base}-{k}");
+            k += 1;
+        }
+        if name != c.name {
+            notes.push(crate::results::cap_line(&format!(
+                "compound {:?} is named {name} in the outputs",
+                c.name
+            )));
+            c.name = name.clone();
+        }
+        seen.push(name.to_lowercase());
+    }
+}
 
 fn is_export(path: &Path) -> bool {
     let name = path
@@ -101,11 +295,17 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 }
                 files.extend(got);
             }
+            let settings = c.settings().map_err(|message| PipelineError::Config {
+                path: listing.clone(),
+                message: format!("compound {:?}: {message}", c.name),
+            })?;
             out.push(CompoundInput {
                 name: c.name,
                 files,
+                settings,
             });
         }
+        settle_names(&mut out, &mut notes);
         return Ok((out, notes));
     }
     let mut out = Vec::new();
@@ -132,17 +332,20 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 out.push(CompoundInput {
                     name: dir_name,
                     files,
+                    ..CompoundInput::default()
                 });
             }
         } else if is_export(&p) {
             out.push(CompoundInput {
                 name,
                 files: vec![p],
+                ..CompoundInput::default()
             });
         } else {
             notes.push(format!("{}: not a DMA export, skipped", p.display()));
         }
     }
+    settle_names(&mut out, &mut notes);
     Ok((out, notes))
 }
 
@@ -160,5 +363,73 @@ mod tests {
         // data/dmasuite-tensile holds 22 isotherm files T0.txt … T105.txt (plus its LICENSE).
         assert_eq!(c[1].files.len(), 22);
         assert!(c.iter().all(|c| c.files.iter().all(|f| f.is_file())));
+    }
+
+    #[test]
+    fn names_are_sanitised_and_unique() {
+        assert_eq!(sanitise_name("../../etc/passwd"), "_._etc_passwd");
+        assert_eq!(sanitise_name("/abs/path"), "_abs_path");
+        assert_eq!(sanitise_name(".."), "compound");
+        assert_eq!(sanitise_name("a\\b:c d"), "a_b_c_d");
+        assert_eq!(sanitise_name("EPDM 70+"), "EPDM_70+");
+        assert_eq!(sanitise_name(&"é".repeat(80)).len(), 100);
+        let mut c = vec![
+            CompoundInput {
+                name: "a/b".into(),
+                ..Default::default()
+            },
+            CompoundInput {
+                name: "a_b".into(),
+                ..Default::default()
+            },
+            CompoundInput {
+                name: "A_B".into(),
+                ..Default::default()
+            },
+        ];
+        let mut notes = vec![];
+        settle_names(&mut c, &mut notes);
+        let names: Vec<&str> = c.iter().map(|c| c.name.as_str()).collect();
+        assert_eq!(names, ["a_b", "a_b-2", "A_B-3"]);
+        assert_eq!(notes.len(), 3, "{notes:?}");
+    }
+
+    #[test]
+    fn listed_settings_are_checked_and_a_partial_prony_table_fills_from_defaults() {
+        let dir = std::env::temp_dir().join(format!("viscoroll-listing-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("compounds.toml"),
+            "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\nmode = \"shear\"\npoisson = 0.45\ntref_c = 20\nprony = { terms_per_decade = 1.5 }\n",
+        )
+        .unwrap();
+        let (c, _) = discover(&dir).unwrap();
+        let s = &c[0].settings;
+        assert_eq!(s.tref_c, Some(20.0));
+        let ingest = s.ingest.as_ref().unwrap();
+        assert_eq!(
+            (ingest.mode, ingest.poisson),
+            (Some(ModulusKind::Shear), 0.45)
+        );
+        let p = s.prony.as_ref().unwrap();
+        assert_eq!(p.terms_per_decade, 1.5);
+        assert_eq!(p.max_iter, PronySettings::default().max_iter);
+        for bad in [
+            "poisson = 0.7",
+            "mode = \"bend\"",
+            "prony = { nope = 1 }",
+            "tref_c = 1e9",
+        ] {
+            std::fs::write(
+                dir.join("compounds.toml"),
+                format!("[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\n{bad}\n"),
+            )
+            .unwrap();
+            let e = discover(&dir).unwrap_err().to_string();
+            let key = bad.split(' ').next().unwrap();
+            assert!(e.contains(key), "{bad}: {e}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

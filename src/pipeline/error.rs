@@ -56,6 +56,44 @@ pub enum PipelineError {
         /// The fit file.
         path: PathBuf,
     },
+    /// A setting is not valid (names the field).
+    #[error("{field}: {message}")]
+    Setting {
+        /// The option or key.
+        field: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// The measurement holds values no polymer DMA can give.
+    #[error("implausible data: {message}")]
+    Implausible {
+        /// The compound.
+        compound: String,
+        /// What is impossible, and where.
+        message: String,
+    },
+    /// The input is not a folder.
+    #[error("{path} is not a folder")]
+    NotAFolder {
+        /// The path given.
+        path: PathBuf,
+    },
+    /// The input folder holds no compound to run.
+    #[error("{path}: no DMA export or compound found{}", if notes.is_empty() { String::new() } else { format!(" ({notes})") })]
+    NoCompounds {
+        /// The folder.
+        path: PathBuf,
+        /// What was skipped there.
+        notes: String,
+    },
+    /// The computation of a compound stopped on an internal error (a bug; the other compounds run on).
+    #[error("internal error while computing {compound}: {message} (please report it)")]
+    Internal {
+        /// The compound.
+        compound: String,
+        /// The panic's message.
+        message: String,
+    },
     /// A fit file has no creep spectrum.
     #[error("{compound}: the fit has no creep spectrum")]
     NoCreep {

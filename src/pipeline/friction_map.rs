@@ -46,8 +46,10 @@
 //! 4.9e−9. With the estimate from the last quarter alone (no factor 2) the worst error was 1.4× the
 //! estimate, still inside the tolerance thanks to the half-tolerance budget; the factor 2 covers it.
 
-use crate::contact::controlled::{solve_auto_at_load, AutoError, AutoSettings};
+use crate::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+use crate::contact::ContactError;
 use crate::contact::CreepTerm;
+use crate::special::chebyshev::{clenshaw, lobatto_coefficients};
 use crate::{CreepSpectrum, ModulusKind};
 use rayon::prelude::*;
 use std::f64::consts::PI;
@@ -74,7 +76,7 @@ pub enum FrictionMapError {
         /// The reduced variable s = l_g/(V·a_T) in s.
         s_s: f64,
         /// The solver's error.
-        source: AutoError,
+        source: ContactError,
     },
     /// The friction at a node is not positive (ln φ undefined).
     #[error("friction ρF/N = {phi:e} at reduced time s = {s_s:e} s is not > 0; the map cannot be interpolated in ln F/N")]
@@ -235,7 +237,7 @@ impl ReducedProblem {
         let s_s = x.exp();
         let sol = solve_auto_at_load(&self.terms(s_s), 0.25, settings)
             .map_err(|source| FrictionMapError::Solve { s_s, source })?;
-        let d = &sol.solution;
+        let d = &sol;
         Ok(ReducedSolution {
             friction_rho: d.friction_rho,
             lambda: d.lambda,
@@ -291,37 +293,6 @@ pub struct ReducedCurve {
     pub solves: usize,
     /// Tolerance of the node solves.
     pub node_tol: f64,
-}
-
-/// Coefficients c_j of p(t) = Σ c_j T_j(t) interpolating `v` at the Lobatto points (DCT-I).
-fn cheb_coefficients(v: &[f64]) -> Vec<f64> {
-    let n = v.len() - 1;
-    (0..=n)
-        .map(|j| {
-            let mut s = 0.0;
-            for (k, &vk) in v.iter().enumerate() {
-                let w = if k == 0 || k == n { 0.5 } else { 1.0 };
-                s += w * vk * (PI * (j * k) as f64 / n as f64).cos();
-            }
-            let c = 2.0 * s / n as f64;
-            if j == 0 || j == n {
-                0.5 * c
-            } else {
-                c
-            }
-        })
-        .collect()
-}
-
-/// Clenshaw evaluation of Σ c_j T_j(t).
-fn clenshaw(c: &[f64], t: f64) -> f64 {
-    let (mut b1, mut b2) = (0.0, 0.0);
-    for &cj in c.iter().skip(1).rev() {
-        let b0 = 2.0 * t * b1 - b2 + cj;
-        b2 = b1;
-        b1 = b0;
-    }
-    t * b1 - b2 + c[0]
 }
 
 /// Error estimate of a Chebyshev interpolant from its coefficients: twice the sum of the last
@@ -444,8 +415,8 @@ impl ReducedCurve {
             }
             let mut next = Vec::new();
             for (q, (phi_v, lambda_v)) in pending.iter().zip(filled) {
-                let phi = cheb_coefficients(&phi_v);
-                let lambda = cheb_coefficients(&lambda_v);
+                let phi = lobatto_coefficients(&phi_v);
+                let lambda = lobatto_coefficients(&lambda_v);
                 let estimate = tail(&phi).max(tail(&lambda));
                 if estimate <= budget {
                     done.push(Panel {

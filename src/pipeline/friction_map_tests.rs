@@ -3,8 +3,7 @@
 //! functions, and input errors.
 
 use super::*;
-use crate::contact::roll_auto::roll_auto;
-use crate::contact::Scene;
+use crate::contact::{roll, AutoSettings, Body, ContactSettings, Scene, Scheme};
 use crate::testdata::{broad_spectrum, SplitMix64};
 use crate::ShiftLaw;
 
@@ -30,6 +29,15 @@ fn reference() -> AutoSettings {
         tol: 1e-8,
         gap_check: false,
         ..AutoSettings::default()
+    }
+}
+
+/// [`reference`] for the direct solves of whole scenes.
+fn reference_roll() -> ContactSettings {
+    ContactSettings {
+        scheme: Scheme::Auto,
+        auto: reference(),
+        ..ContactSettings::default()
     }
 }
 
@@ -63,8 +71,9 @@ fn scenes_sharing_s_share_the_dimensionless_answer() {
             load_n_per_m: n,
             speed_m_s: v,
             poisson: None,
+            body: Body::HalfSpace,
         };
-        let sol = roll_auto(&scene, &at.spectrum, &reference()).unwrap().roll;
+        let sol = roll(&scene, &at.spectrum, &reference_roll()).unwrap();
         let d = &sol.dimensionless;
         // Same dimensionless problem up to rounding of bᵢ (~1e−15), each solve within 1e−8 of it.
         match first {
@@ -90,7 +99,7 @@ fn scenes_sharing_s_share_the_dimensionless_answer() {
 }
 
 #[test]
-fn different_s_reproduce_roll_auto() {
+fn different_s_reproduce_roll() {
     let c = creep();
     let law = wlf();
     let p = ReducedProblem::new(&c, None).unwrap();
@@ -105,8 +114,9 @@ fn different_s_reproduce_roll_auto() {
             load_n_per_m: n,
             speed_m_s: v,
             poisson: None,
+            body: Body::HalfSpace,
         };
-        let direct = roll_auto(&scene, &at.spectrum, &reference()).unwrap().roll;
+        let direct = roll(&scene, &at.spectrum, &reference_roll()).unwrap();
         let s = p.reduced_time_s(r, n, v, 10f64.powf(at.log10_a_t));
         let red = p.solve(s.ln(), &reference()).unwrap();
         let lg = p.glassy_length_m(r, n);
@@ -160,8 +170,9 @@ fn map_matches_direct_solves_at_random_points() {
                 load_n_per_m: n,
                 speed_m_s: v,
                 poisson: None,
+                body: Body::HalfSpace,
             };
-            let d = roll_auto(&scene, &at.spectrum, &reference()).unwrap().roll;
+            let d = roll(&scene, &at.spectrum, &reference_roll()).unwrap();
             (k, d.friction, d.contact_length_m)
         })
         .collect();
@@ -200,7 +211,7 @@ fn chebyshev_interpolation_is_exact_for_polynomials_and_estimates_exp() {
     // T₃ sampled at the 17 Lobatto points has coefficients δ_j3 (to rounding).
     let n = 16;
     let t: Vec<f64> = (0..=n).map(|k| (PI * k as f64 / n as f64).cos()).collect();
-    let c = cheb_coefficients(
+    let c = lobatto_coefficients(
         &t.iter()
             .map(|&x| 4.0 * x * x * x - 3.0 * x)
             .collect::<Vec<_>>(),
@@ -212,7 +223,7 @@ fn chebyshev_interpolation_is_exact_for_polynomials_and_estimates_exp() {
     // e^{4x} on [−1, 1]: the degree-16 interpolant's true error (≈ 2·I₁₇(4) ≈ 1e−9, the first
     // neglected coefficient, c_j = 2I_j(4)) is below the estimate Σ_{j≥12}|c_j| ≈ 2I₁₂(4) ≈ 2e−5.
     let f = |x: f64| (4.0 * x).exp();
-    let c = cheb_coefficients(&t.iter().map(|&x| f(x)).collect::<Vec<_>>());
+    let c = lobatto_coefficients(&t.iter().map(|&x| f(x)).collect::<Vec<_>>());
     let est = tail(&c);
     let err = (0..=1000)
         .map(|k| -1.0 + 2.0 * k as f64 / 1000.0)

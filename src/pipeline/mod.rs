@@ -17,6 +17,7 @@ pub use crate::results::CompoundFit;
 pub use error::PipelineError;
 pub use fit_compound::{fit_files, fit_measurement, fit_or_reuse, FitOptions};
 pub use run::{
-    run_all, run_all_with_progress, CompoundOutcome, ProgressEvent, RunOptions, RunSummary,
+    run_all, run_all_with_progress, CompoundOutcome, ProgressEvent, RunOptions, RunStatus,
+    RunSummary,
 };
 pub use scenes::{SceneSet, SceneSpec};

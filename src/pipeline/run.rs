@@ -3,20 +3,25 @@
 //!
 //! Input: a folder of DMA exports, a [`SceneSet`], an output folder; output: [`RunSummary`] and files
 //! (all written atomically). Compounds run in parallel (rayon), so do the temperatures of each scene;
-//! one compound's failure is recorded and does not stop the others. The library never prints:
-//! progress goes to the caller's `log` callback.
+//! one compound's failure, even a panic, is recorded and does not stop the others. The output
+//! folder is locked for the run (a second run on it waits), and temporary files a killed run left
+//! there are removed first. The library never prints: progress goes to the caller's `log` callback.
 
 use super::compounds::{discover, CompoundInput};
-use super::error::PipelineError;
+use super::error::{io, PipelineError};
 use super::fit_compound::{fit_or_reuse, FitAction, FitOptions};
-use super::scenes::{friction_vs_temperature, mean_friction, pipeline_contact_settings};
-use crate::dma::{read_files, IngestOptions};
+use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
+use crate::dma::read_files;
 use crate::report::{index_html, ranking_csv, write_file, write_report};
-use crate::results::{CompoundFit, FrictionPoint, SceneSet};
+use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
+use crate::Measurement;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
-pub use crate::results::{CompoundOutcome, RunSummary};
+pub use crate::results::{CompoundOutcome, RunStatus, RunSummary};
+
+/// How long a run waits for another run that holds the output folder.
+pub const LOCK_WAIT: std::time::Duration = std::time::Duration::from_secs(1800);
 
 /// Options of [`run_all`].
 #[derive(Debug, Clone)]
@@ -29,18 +34,21 @@ pub struct RunOptions {
     pub scenes: SceneSet,
     /// Replace fit files that differ.
     pub force: bool,
-    /// Fit settings.
+    /// Fit settings (a compound's own settings in `compounds.toml` override them).
     pub fit: FitOptions,
+    /// Average extrapolated temperatures into the ranking too (marked); default: measured only.
+    pub allow_extrapolation: bool,
 }
 
 impl RunOptions {
     /// The options of `viscoroll run DIR`: scenes from `scenes` if given, else `DIR/scenes.toml` if
-    /// present, else the shipped scenes; default fit settings.
+    /// present, else the shipped scenes; default fit settings, with `tref_c` as the master curve's
+    /// reference temperature if given (checked: finite, in [−273.15, 1000] °C).
     pub fn for_folder(
         input_dir: &Path,
         out_dir: &Path,
         scenes: Option<&Path>,
-        force: bool,
+        tref_c: Option<f64>,
     ) -> Result<Self, PipelineError> {
         let in_dir = input_dir.join("scenes.toml");
         let scenes = match scenes {
@@ -48,12 +56,23 @@ impl RunOptions {
             None if in_dir.is_file() => SceneSet::read(&in_dir)?,
             None => SceneSet::shipped(),
         };
+        let mut fit = FitOptions::default();
+        if let Some(t) = tref_c {
+            if !(t.is_finite() && (-273.15..=1000.0).contains(&t)) {
+                return Err(PipelineError::Setting {
+                    field: "--tref".into(),
+                    message: format!("{t} is not a temperature in °C in [−273.15, 1000]"),
+                });
+            }
+            fit.master.tref_c = Some(t);
+        }
         Ok(Self {
             input_dir: input_dir.to_path_buf(),
             out_dir: out_dir.to_path_buf(),
             scenes,
-            force,
-            fit: FitOptions::default(),
+            force: false,
+            fit,
+            allow_extrapolation: false,
         })
     }
 }
@@ -61,8 +80,8 @@ impl RunOptions {
 /// Friction of one compound per scene: (scene name, points).
 pub type SceneFriction = Vec<(String, Vec<FrictionPoint>)>;
 
-/// One ranked fit: Ok((compound, points, mean F/N)) or Err((compound, error)).
-pub type RankedFit = Result<(String, Vec<FrictionPoint>, f64), (String, String)>;
+/// One ranked fit: Ok((compound, points, standing)) or Err((compound, error)).
+pub type RankedFit = Result<(String, Vec<FrictionPoint>, SceneStanding), (String, String)>;
 
 /// A step of the main job, for a progress display ([`run_all_with_progress`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -85,17 +104,72 @@ fn units_per_compound(scenes: &SceneSet) -> u64 {
     2 + 2 * scenes.scene.len() as u64
 }
 
+/// The measurement of a compound: its exports read together with its ingest options, or one
+/// measurement JSON written by `viscoroll ingest`.
+fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
+    let is_json = |p: &PathBuf| {
+        p.extension()
+            .is_some_and(|e| e.to_string_lossy().eq_ignore_ascii_case("json"))
+    };
+    if c.files.iter().any(is_json) {
+        if c.files.len() != 1 {
+            return Err(PipelineError::Setting {
+                field: "files".into(),
+                message: format!(
+                    "compound {}: a measurement JSON must be its only file",
+                    c.name
+                ),
+            });
+        }
+        let p = &c.files[0];
+        let text = std::fs::read_to_string(p).map_err(io(p))?;
+        return serde_json::from_str(&text).map_err(|e| PipelineError::Setting {
+            field: p.display().to_string(),
+            message: cap_line(&format!(
+                "not a measurement JSON written by `viscoroll ingest`: {e}"
+            )),
+        });
+    }
+    let ingest = c.settings.ingest.clone().unwrap_or_default();
+    Ok(read_files(&c.files, &ingest)?)
+}
+
+/// [`measurement_of`], then the plausibility checks (crate::dma::plausible): impossible
+/// temperatures refused, suspected unit mix-ups added to the measurement's warnings.
+fn checked_measurement(c: &CompoundInput) -> Result<Measurement, PipelineError> {
+    let mut m = measurement_of(c)?;
+    crate::dma::plausible::refuse_impossible(&m).map_err(|message| PipelineError::Implausible {
+        compound: c.name.clone(),
+        message: cap_line(&message),
+    })?;
+    let w = crate::dma::plausible::warnings(&m);
+    m.warnings.extend(w);
+    Ok(m)
+}
+
+/// The fit options of a compound: the run's, with the compound's own settings over them.
+fn fit_options(c: &CompoundInput, opts: &RunOptions) -> FitOptions {
+    let mut fit = opts.fit.clone();
+    if let Some(t) = c.settings.tref_c {
+        fit.master.tref_c = Some(t);
+    }
+    if let Some(p) = &c.settings.prony {
+        fit.prony = p.clone();
+    }
+    fit
+}
+
 fn one_compound(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
 ) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
-    let measurement = read_files(&c.files, &IngestOptions::default())?;
+    let measurement = checked_measurement(c)?;
     let (fit, action) = fit_or_reuse(
         &c.name,
         &measurement,
         &fit_path(&opts.out_dir, &c.name),
-        &opts.fit,
+        &fit_options(c, opts),
         opts.force,
     )?;
     step("fit");
@@ -120,6 +194,7 @@ fn one_compound(
         &measurement,
         &friction,
         &maps,
+        opts.allow_extrapolation,
         &opts.out_dir.join("reports").join(&c.name),
     )?;
     step("report");
@@ -130,8 +205,30 @@ fn one_compound(
     ))
 }
 
-/// Run the main job (see the module docs). Errors only when the folder cannot be read or the index
-/// cannot be written; a compound's failure is in its [`CompoundOutcome`].
+/// [`one_compound`] with a panic caught and turned into the compound's error, so one bad input
+/// never takes the run down.
+fn one_compound_isolated(
+    c: &CompoundInput,
+    opts: &RunOptions,
+    step: &dyn Fn(&str),
+) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| one_compound(c, opts, step)))
+        .unwrap_or_else(|payload| {
+            let msg = payload
+                .downcast_ref::<String>()
+                .map(String::as_str)
+                .or_else(|| payload.downcast_ref::<&str>().copied())
+                .unwrap_or("no message");
+            Err(PipelineError::Internal {
+                compound: c.name.clone(),
+                message: cap_line(msg),
+            })
+        })
+}
+
+/// Run the main job (see the module docs). Errors when the input folder cannot be read or holds no
+/// compound, the output folder cannot be locked, or the ranking or index cannot be written; a
+/// compound's failure is in its [`CompoundOutcome`].
 pub fn run_all(
     opts: &RunOptions,
     log: &(dyn Fn(&str) + Sync),
@@ -139,9 +236,20 @@ pub fn run_all(
     run_all_with_progress(opts, log, &|_| {})
 }
 
-/// The warnings of a compound's friction: extrapolated temperatures and failed points, per scene.
-fn friction_warnings(friction: &SceneFriction) -> Vec<String> {
-    let mut warnings = Vec::new();
+/// The warnings of a compound: data flags of its fit, then per scene the extrapolated temperatures,
+/// failed points and contact warnings (each distinct warning once per scene).
+fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String> {
+    let mut warnings: Vec<String> = Vec::new();
+    if let Some(t) = &fit.tts {
+        warnings.extend(t.flags.iter().map(|f| format!("master curve: {f}")));
+        warnings.extend(t.warnings.iter().map(|f| format!("master curve: {f}")));
+    }
+    warnings.extend(
+        fit.measurement
+            .warnings
+            .iter()
+            .map(|w| format!("ingest: {w}")),
+    );
     for (scene, pts) in friction {
         let ext: Vec<String> = pts
             .iter()
@@ -161,8 +269,20 @@ fn friction_warnings(friction: &SceneFriction) -> Vec<String> {
                 p.error.as_deref().unwrap_or("")
             ));
         }
+        let mut seen: Vec<&str> = Vec::new();
+        for w in pts.iter().flat_map(|p| &p.warnings) {
+            if !seen.contains(&w.as_str()) {
+                seen.push(w);
+                let at: Vec<String> = pts
+                    .iter()
+                    .filter(|p| p.warnings.contains(w))
+                    .map(|p| p.temp_c.to_string())
+                    .collect();
+                warnings.push(format!("{scene} at {} °C: contact: {w}", at.join(", ")));
+            }
+        }
     }
-    warnings
+    warnings.into_iter().map(|w| cap_line(&w)).collect()
 }
 
 /// The outcome record of one compound from its result.
@@ -173,34 +293,39 @@ fn outcome(
     seconds: f64,
 ) -> CompoundOutcome {
     match result {
-        Ok((_fit, action, friction)) => CompoundOutcome {
-            compound: c.name.clone(),
-            fit_path: Some(fit_path(&opts.out_dir, &c.name)),
-            fit_action: Some(
-                match action {
-                    FitAction::Reused => "reused",
-                    FitAction::Fitted => "fitted",
-                    FitAction::Replaced => "replaced",
-                }
-                .to_string(),
-            ),
-            mean_friction: friction
-                .iter()
-                .map(|(s, p)| (s.clone(), mean_friction(p)))
-                .collect(),
-            warnings: friction_warnings(&friction),
-            friction,
-            error: None,
-            seconds,
-        },
+        Ok((fit, action, friction)) => {
+            let untrusted = fit.untrusted_reasons();
+            CompoundOutcome {
+                compound: c.name.clone(),
+                fit_path: Some(fit_path(&opts.out_dir, &c.name)),
+                fit_action: Some(
+                    match action {
+                        FitAction::Reused => "reused",
+                        FitAction::Fitted => "fitted",
+                        FitAction::Replaced => "replaced",
+                    }
+                    .to_string(),
+                ),
+                standings: friction
+                    .iter()
+                    .map(|(s, p)| standing(s, p, &untrusted, opts.allow_extrapolation))
+                    .collect(),
+                warnings: compound_warnings(&fit, &friction),
+                untrusted,
+                friction,
+                error: None,
+                seconds,
+            }
+        }
         Err(e) => CompoundOutcome {
             compound: c.name.clone(),
             fit_path: None,
             fit_action: None,
-            mean_friction: vec![],
+            standings: vec![],
             friction: vec![],
+            untrusted: vec![],
             warnings: vec![],
-            error: Some(e.to_string()),
+            error: Some(cap_line(&e.to_string())),
             seconds,
         },
     }
@@ -210,14 +335,40 @@ fn outcome(
 fn log_line(out: &CompoundOutcome) -> String {
     match &out.error {
         None => format!(
-            "{}: {} fit, {} scenes, {:.2} s",
+            "{}: {} fit, {} scenes, {:.2} s{}",
             out.compound,
             out.fit_action.as_deref().unwrap_or(""),
             out.friction.len(),
-            out.seconds
+            out.seconds,
+            if out.is_untrusted() {
+                " (NOT TRUSTED: see the index)"
+            } else {
+                ""
+            }
         ),
         Some(e) => format!("{}: FAILED: {e}", out.compound),
     }
+}
+
+/// Notes on report folders of compounds that are no longer in the input (kept, not deleted: they
+/// may be all that is left of a compound).
+fn stale_reports(reports: &Path, compounds: &[CompoundInput]) -> Vec<String> {
+    let Ok(entries) = std::fs::read_dir(reports) else {
+        return vec![];
+    };
+    let mut v: Vec<String> = entries
+        .flatten()
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_dir()))
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| !compounds.iter().any(|c| &c.name == n))
+        .map(|n| {
+            cap_line(&format!(
+                "reports/{n}: compound no longer in the input folder; report of an earlier run kept, not ranked"
+            ))
+        })
+        .collect();
+    v.sort();
+    v
 }
 
 /// [`run_all`], reporting each finished work unit to `progress` (first [`ProgressEvent::Total`],
@@ -227,7 +378,31 @@ pub fn run_all_with_progress(
     log: &(dyn Fn(&str) + Sync),
     progress: &(dyn Fn(ProgressEvent<'_>) + Sync),
 ) -> Result<RunSummary, PipelineError> {
-    let (compounds, notes) = discover(&opts.input_dir)?;
+    if !opts.input_dir.is_dir() {
+        return Err(PipelineError::NotAFolder {
+            path: opts.input_dir.clone(),
+        });
+    }
+    let (compounds, mut notes) = discover(&opts.input_dir)?;
+    if compounds.is_empty() {
+        return Err(PipelineError::NoCompounds {
+            path: opts.input_dir.clone(),
+            notes: notes.iter().take(5).cloned().collect::<Vec<_>>().join("; "),
+        });
+    }
+    let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, LOCK_WAIT, &|pid| {
+        log(&format!(
+            "waiting for another viscoroll run (process {pid}) on {}",
+            opts.out_dir.display()
+        ))
+    })
+    .map_err(io(&opts.out_dir))?;
+    let removed = crate::fsutil::remove_stale_temps(&opts.out_dir, 3);
+    if removed > 0 {
+        notes.push(format!(
+            "removed {removed} temporary file(s) left by an interrupted run"
+        ));
+    }
     for n in &notes {
         log(&format!("note: {n}"));
     }
@@ -245,7 +420,7 @@ pub fn run_all_with_progress(
                     stage,
                 });
             };
-            let r = one_compound(c, opts, &step);
+            let r = one_compound_isolated(c, opts, &step);
             for _ in done.get()..per {
                 step("skipped");
             }
@@ -255,47 +430,57 @@ pub fn run_all_with_progress(
         })
         .collect();
     let reports = opts.out_dir.join("reports");
+    notes.extend(stale_reports(&reports, &compounds));
     let ranking_path = reports.join("ranking.csv");
     let index_path = reports.join("index.html");
     write_file(
         &ranking_path,
-        ranking_csv(&outcomes, &opts.scenes).as_bytes(),
+        ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
     )?;
     write_file(
         &index_path,
-        index_html(&outcomes, &opts.scenes, &notes).as_bytes(),
+        index_html(&outcomes, &opts.scenes, &notes, opts.allow_extrapolation).as_bytes(),
     )?;
     Ok(RunSummary {
         compounds: outcomes,
         notes,
+        allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
     })
 }
 
-/// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, mean).
-pub fn rank_fits(fits: &[CompoundFit], spec: &crate::results::SceneSpec) -> Vec<RankedFit> {
+/// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
+/// compounds first by mean friction, then the others, then the failures.
+pub fn rank_fits(
+    fits: &[CompoundFit],
+    spec: &crate::results::SceneSpec,
+    allow_extrapolation: bool,
+) -> Vec<RankedFit> {
     let settings = pipeline_contact_settings();
     let mut v: Vec<_> = fits
         .par_iter()
         .map(|f| match friction_vs_temperature(f, spec, &settings) {
             Ok(p) => {
-                let m = mean_friction(&p);
-                Ok((f.compound.clone(), p, m))
+                let s = standing(&spec.name, &p, &f.untrusted_reasons(), allow_extrapolation);
+                Ok((f.compound.clone(), p, s))
             }
-            Err(e) => Err((f.compound.clone(), e.to_string())),
+            Err(e) => Err((f.compound.clone(), cap_line(&e.to_string()))),
         })
         .collect();
-    v.sort_by(|a, b| match (a, b) {
-        (Ok(x), Ok(y)) => x.2.total_cmp(&y.2),
-        (Ok(_), Err(_)) => std::cmp::Ordering::Less,
-        (Err(_), Ok(_)) => std::cmp::Ordering::Greater,
-        _ => std::cmp::Ordering::Equal,
+    let key = |r: &RankedFit| match r {
+        Ok((_, _, s)) if s.trusted() => (0, s.mean_friction.unwrap_or(f64::INFINITY)),
+        Ok((_, _, s)) => (1, s.mean_friction.unwrap_or(f64::INFINITY)),
+        Err(_) => (2, f64::INFINITY),
+    };
+    v.sort_by(|a, b| {
+        let (ka, kb) = (key(a), key(b));
+        ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
     });
     v
 }
 
-/// Convenience: the output folder's fit path of a compound.
+/// The output folder's fit path of a compound.
 pub fn fit_path(out_dir: &Path, compound: &str) -> PathBuf {
     out_dir.join("fits").join(format!("{compound}.json"))
 }

@@ -1,14 +1,13 @@
 //! A compound's friction in the scenes ([`friction_vs_temperature`], [`friction_maps`]).
 //!
 //! Input: a [`SceneSpec`] (crate::results::scene) and a [`CompoundFit`]; output: [`FrictionPoint`]s, one per temperature, from
-//! the contact stage's error-controlled load solve (crate::contact::roll_auto, thesis eq. 3.12 for F/N) on the creep
+//! the contact stage's error-controlled load solve (crate::contact::roll, thesis eq. 3.12 for F/N) on the creep
 //! spectrum shifted to each temperature (MATH.md §6).
 
 use super::error::PipelineError;
 use super::friction_map::{friction_map, MapQuery, MapSettings, MapValue, ReducedProblem};
-use crate::contact::controlled::AutoSettings;
-use crate::contact::layer::{roll_cover, ModelChoice};
-use crate::contact::roll_auto::roll_auto;
+use crate::contact::body::layer::{roll_cover, ModelChoice};
+use crate::contact::{roll, AutoSettings, ContactSettings, Scheme};
 use crate::results::CompoundFit;
 use rayon::prelude::*;
 
@@ -23,10 +22,14 @@ pub use crate::results::scene::{
 /// n = 200 would be about 100× slower per load point and only accurate to ~1e-3 in λ. The exterior
 /// gap check is off: it only reports, never changes the friction, and costs more than the solve for
 /// few modes (it made the shipped run 2.2 s instead of 0.9 s); `viscoroll roll` still runs it.
-pub fn pipeline_contact_settings() -> AutoSettings {
-    AutoSettings {
-        gap_check: false,
-        ..AutoSettings::default()
+pub fn pipeline_contact_settings() -> ContactSettings {
+    ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            gap_check: false,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
     }
 }
 
@@ -40,7 +43,7 @@ pub const COVER_TOL: f64 = 1e-3;
 pub fn friction_vs_temperature(
     fit: &CompoundFit,
     spec: &SceneSpec,
-    settings: &AutoSettings,
+    settings: &ContactSettings,
 ) -> Result<Vec<FrictionPoint>, PipelineError> {
     let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
@@ -58,23 +61,23 @@ pub fn friction_vs_temperature(
                 resistance_n_per_m: f64::NAN,
                 contact_length_mm: f64::NAN,
                 extrapolated,
-                error: Some(e),
+                error: Some(crate::results::cap_line(&e)),
                 model: String::new(),
                 model_reason: String::new(),
-                warnings: Vec::new(),
+                warnings: vec![],
             };
             let at = match creep.at_temperature(&fit.shift_law, t, range) {
                 Ok(a) => a,
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
             if let Some(h_mm) = spec.cover_thickness_mm {
-                // A cover: the body chosen and solved by contact::layer (auto, at COVER_TOL).
+                // A cover: the body chosen and solved by contact::body::layer (auto, at COVER_TOL).
                 return match roll_cover(
                     &scene,
                     &at.spectrum,
                     Some(h_mm * 1e-3),
                     ModelChoice::Auto,
-                    settings.tol.max(COVER_TOL),
+                    settings.auto.tol.max(COVER_TOL),
                 ) {
                     Ok(r) => FrictionPoint {
                         temp_c: t,
@@ -86,23 +89,32 @@ pub fn friction_vs_temperature(
                         error: None,
                         model: r.model.name().to_string(),
                         model_reason: r.reason,
-                        warnings: r.warnings,
+                        warnings: r
+                            .warnings
+                            .iter()
+                            .map(|w| crate::results::cap_line(w))
+                            .collect(),
                     },
                     Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
                 };
             }
-            match roll_auto(&scene, &at.spectrum, settings) {
+            match roll(&scene, &at.spectrum, settings) {
                 Ok(r) => FrictionPoint {
                     temp_c: t,
                     log10_a_t: at.log10_a_t,
-                    friction: r.roll.friction,
-                    resistance_n_per_m: r.roll.resistance_n_per_m,
-                    contact_length_mm: r.roll.contact_length_m * 1e3,
+                    friction: r.friction,
+                    resistance_n_per_m: r.resistance_n_per_m,
+                    contact_length_mm: r.contact_length_m * 1e3,
                     extrapolated: at.extrapolated,
                     error: None,
                     model: "half-space".into(),
                     model_reason: String::new(),
-                    warnings: r.auto.warnings,
+                    warnings: r
+                        .dimensionless
+                        .warnings
+                        .iter()
+                        .map(|w| crate::results::cap_line(w))
+                        .collect(),
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }
@@ -239,7 +251,7 @@ pub fn friction_maps(
 }
 
 /// Friction maps of a covered scene: the listed speeds and loads at each map temperature, each solved
-/// directly on the body `auto` chooses (contact::layer::roll_cover at `tol`, [`COVER_TOL`] in the main job). The two-reduced-variable interpolant (speed and h/l_g) of the half-space maps is not built
+/// directly on the body `auto` chooses (contact::body::layer::roll_cover at `tol`, [`COVER_TOL`] in the main job). The two-reduced-variable interpolant (speed and h/l_g) of the half-space maps is not built
 /// for covers yet, so the 2-D grid stays empty; `error_estimate` is the largest point estimate
 /// (the body's own and, where auto chose a cheaper body, its estimated difference from the layer).
 fn covered_maps(
@@ -262,10 +274,9 @@ fn covered_maps(
         .par_iter()
         .map(|&(t, v, n)| {
             let scene = crate::contact::Scene {
-                radius_m: spec.roll_radius_mm * 1e-3,
                 load_n_per_m: n,
                 speed_m_s: v,
-                poisson: spec.poisson,
+                ..spec.scene()
             };
             let r = creep
                 .at_temperature(&fit.shift_law, t, None)

@@ -1,73 +1,142 @@
-//! The ranking of the main job: compounds ordered by temperature-averaged rolling friction per scene
-//! (lowest first), as `reports/ranking.csv`.
+//! The ranking of the main job: per scene, the trusted compounds ordered by mean rolling friction
+//! (lowest first), then the compounds listed apart — not trusted, or failed — with their reasons, as
+//! `reports/ranking.csv`.
 //!
-//! Input: the [`CompoundOutcome`]s and the [`SceneSet`]; output: the order ([`ranked`]) and the CSV
-//! text ([`ranking_csv`], written with the csv crate, so a compound name with a comma stays one field).
+//! Input: the [`CompoundOutcome`]s (each with its [`SceneStanding`] per scene, the rule in
+//! crate::results::outcome) and the [`SceneSet`]; output: the order ([`ranked`], [`apart`]) and the
+//! CSV text ([`ranking_csv`], written with the csv crate, so a compound name with a comma stays one
+//! field).
 
 use super::csv_text::csv_text;
-use crate::results::{CompoundOutcome, SceneSet};
+use crate::results::{CompoundOutcome, SceneSet, SceneStanding};
 
-/// Successful compounds of `scene` ordered by mean friction (lowest rolling resistance first).
-pub fn ranked<'a>(outcomes: &'a [CompoundOutcome], scene: &str) -> Vec<(&'a CompoundOutcome, f64)> {
-    let mut v: Vec<(&CompoundOutcome, f64)> = outcomes
+/// Trusted compounds of `scene` ordered by mean friction (lowest rolling resistance first).
+pub fn ranked<'a>(
+    outcomes: &'a [CompoundOutcome],
+    scene: &str,
+) -> Vec<(&'a CompoundOutcome, &'a SceneStanding)> {
+    let mut v: Vec<(&CompoundOutcome, &SceneStanding)> = outcomes
         .iter()
         .filter(|o| o.error.is_none())
-        .filter_map(|o| {
-            o.mean_friction
-                .iter()
-                .find(|(s, _)| s == scene)
-                .map(|(_, f)| (o, *f))
-        })
+        .filter_map(|o| o.standing(scene).map(|s| (o, s)))
+        .filter(|(_, s)| s.trusted())
         .collect();
-    v.sort_by(|a, b| a.1.total_cmp(&b.1));
+    v.sort_by(|a, b| {
+        let m = |s: &SceneStanding| s.mean_friction.unwrap_or(f64::INFINITY);
+        m(a.1).total_cmp(&m(b.1))
+    });
     v
 }
 
-/// `reports/ranking.csv`: scene, rank, compound, mean F/N, the temperatures averaged.
-pub fn ranking_csv(outcomes: &[CompoundOutcome], scenes: &SceneSet) -> String {
+/// The compounds of `scene` listed apart: (outcome, its standing if it got one, reasons), the
+/// untrusted ones first (by mean friction), then the failed ones.
+pub fn apart<'a>(
+    outcomes: &'a [CompoundOutcome],
+    scene: &str,
+) -> Vec<(&'a CompoundOutcome, Option<&'a SceneStanding>, Vec<String>)> {
+    let mut untrusted: Vec<_> = outcomes
+        .iter()
+        .filter(|o| o.error.is_none())
+        .filter_map(|o| o.standing(scene).map(|s| (o, s)))
+        .filter(|(_, s)| !s.trusted())
+        .map(|(o, s)| (o, Some(s), s.untrusted.clone()))
+        .collect();
+    untrusted.sort_by(|a, b| {
+        let m =
+            |s: Option<&SceneStanding>| s.and_then(|s| s.mean_friction).unwrap_or(f64::INFINITY);
+        m(a.1).total_cmp(&m(b.1))
+    });
+    let failed = outcomes.iter().filter_map(|o| {
+        o.error
+            .as_ref()
+            .map(|e| (o, None, vec![format!("failed: {e}")]))
+    });
+    untrusted.into_iter().chain(failed).collect()
+}
+
+/// Temperatures as a space-separated list.
+pub fn temps_text(t: &[f64]) -> String {
+    t.iter()
+        .map(|t| t.to_string())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// `reports/ranking.csv`: per scene, the ranked compounds (`rank` 1, 2, …; `trusted` true), then
+/// those listed apart (`rank` empty, `trusted` false, reasons in `note`). `temps_c` holds the
+/// temperatures averaged; `extrapolated_temps_c` those outside the measured ones (averaged only
+/// with `allow_extrapolation`); `failed_temps_c` those that could not be computed.
+pub fn ranking_csv(
+    outcomes: &[CompoundOutcome],
+    scenes: &SceneSet,
+    allow_extrapolation: bool,
+) -> String {
     let mut rows = Vec::new();
+    let row = |scene: &str,
+               rank: String,
+               o: &CompoundOutcome,
+               s: Option<&SceneStanding>,
+               trusted: bool,
+               note: String| {
+        let (models, warnings) = bodies_and_warnings(o, scene);
+        vec![
+            scene.to_string(),
+            rank,
+            o.compound.clone(),
+            s.and_then(|s| s.mean_friction)
+                .map_or(String::new(), |f| format!("{f:e}")),
+            s.map_or(String::new(), |s| temps_text(&s.temps_c)),
+            trusted.to_string(),
+            s.map_or(String::new(), |s| temps_text(&s.extrapolated_temps_c)),
+            s.map_or(String::new(), |s| temps_text(&s.failed_temps_c)),
+            note,
+            models,
+            warnings,
+        ]
+    };
     for spec in &scenes.scene {
-        let temps: Vec<String> = spec.temps_c.iter().map(|t| t.to_string()).collect();
-        for (i, (o, f)) in ranked(outcomes, &spec.name).iter().enumerate() {
-            // The bodies solved and the points' warnings (cover validity, …) of this scene.
-            let pts = o
-                .friction
-                .iter()
-                .filter(|(s, _)| *s == spec.name)
-                .flat_map(|(_, p)| p);
-            let mut models: Vec<&str> = Vec::new();
-            let mut warnings: Vec<String> = Vec::new();
-            for p in pts {
-                if !p.model.is_empty() && !models.contains(&p.model.as_str()) {
-                    models.push(&p.model);
-                }
-                for w in &p.warnings {
-                    let w = format!("{} °C: {w}", p.temp_c);
-                    warnings.push(w);
-                }
-            }
-            rows.push(vec![
-                spec.name.clone(),
-                (i + 1).to_string(),
-                o.compound.clone(),
-                format!("{f:e}"),
-                temps.join(" "),
-                models.join(" "),
-                warnings.join("; ").replace(['\r', '\n'], " "),
-            ]);
+        for (i, (o, s)) in ranked(outcomes, &spec.name).into_iter().enumerate() {
+            let note = if allow_extrapolation && !s.extrapolated_temps_c.is_empty() {
+                "mean includes extrapolated temperatures".to_string()
+            } else {
+                String::new()
+            };
+            rows.push(row(&spec.name, (i + 1).to_string(), o, Some(s), true, note));
+        }
+        for (o, s, reasons) in apart(outcomes, &spec.name) {
+            rows.push(row(
+                &spec.name,
+                String::new(),
+                o,
+                s,
+                false,
+                reasons.join("; "),
+            ));
         }
     }
+    let rule = if allow_extrapolation {
+        "over every temperature that computed, extrapolated ones included (--allow-extrapolation)"
+    } else {
+        "over the measured temperatures only (extrapolated ones left out)"
+    };
     csv_text(
-        &[format!(
-            "viscoroll {}: compounds ranked by temperature-averaged rolling friction F/N per scene (lowest first)",
-            env!("CARGO_PKG_VERSION")
-        )],
+        &[
+            format!(
+                "viscoroll {}: compounds ranked by temperature-averaged rolling friction F/N per scene (lowest first), {rule}",
+                env!("CARGO_PKG_VERSION")
+            ),
+            "rows with an empty rank are listed apart, not ranked: the reasons are in `note`".to_string(),
+        ],
         &[
             "scene",
             "rank",
             "compound",
             "mean_friction",
             "temps_c",
+            "trusted",
+            "extrapolated_temps_c",
+            "failed_temps_c",
+            "note",
             "model",
             "warnings",
         ],
@@ -75,40 +144,142 @@ pub fn ranking_csv(outcomes: &[CompoundOutcome], scenes: &SceneSet) -> String {
     )
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
+/// The bodies solved for `o` in `scene` (space-separated, contact::body::layer) and its points'
+/// contact warnings (cover indentation, contact length against R, …) as "T °C: warning; …".
+fn bodies_and_warnings(o: &CompoundOutcome, scene: &str) -> (String, String) {
+    let mut models: Vec<&str> = Vec::new();
+    let mut warnings: Vec<String> = Vec::new();
+    for p in o
+        .friction
+        .iter()
+        .filter(|(s, _)| s == scene)
+        .flat_map(|(_, p)| p)
+    {
+        if !p.model.is_empty() && !models.contains(&p.model.as_str()) {
+            models.push(&p.model);
+        }
+        for w in &p.warnings {
+            warnings.push(format!("{} °C: {w}", p.temp_c));
+        }
+    }
+    (
+        models.join(" "),
+        warnings.join("; ").replace(['\r', '\n'], " "),
+    )
+}
 
-    pub(crate) fn outcome(name: &str, scene: &str, mean: f64) -> CompoundOutcome {
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use crate::results::FrictionPoint;
+
+    pub(crate) fn outcome(
+        name: &str,
+        scene: &str,
+        frictions: &[(f64, bool)],
+        untrusted: &[&str],
+    ) -> CompoundOutcome {
+        let pts: Vec<FrictionPoint> = frictions
+            .iter()
+            .enumerate()
+            .map(|(i, &(f, ext))| FrictionPoint {
+                model: String::new(),
+                model_reason: String::new(),
+                temp_c: 10.0 * i as f64,
+                log10_a_t: 0.0,
+                friction: f,
+                resistance_n_per_m: f,
+                contact_length_mm: 1.0,
+                extrapolated: ext,
+                error: (!f.is_finite()).then(|| "solver stopped".to_string()),
+                warnings: vec![],
+            })
+            .collect();
+        let untrusted: Vec<String> = untrusted.iter().map(|s| s.to_string()).collect();
         CompoundOutcome {
             compound: name.to_string(),
             fit_path: None,
             fit_action: None,
-            mean_friction: vec![(scene.to_string(), mean)],
-            friction: vec![],
+            standings: vec![crate::results::standing(scene, &pts, &untrusted, false)],
+            friction: vec![(scene.to_string(), pts)],
+            untrusted,
             warnings: vec![],
             error: None,
             seconds: 0.0,
         }
     }
 
-    #[test]
-    fn a_compound_name_with_a_comma_stays_one_field() {
-        let scenes = SceneSet::shipped();
-        let s = &scenes.scene[0].name;
-        let outcomes = [outcome("b, the second", s, 2e-3), outcome("a", s, 1e-3)];
-        let text = ranking_csv(&outcomes, &scenes);
+    fn rows(text: &str) -> Vec<csv::StringRecord> {
         let body: String = text
             .lines()
             .filter(|l| !l.starts_with('#'))
             .map(|l| format!("{l}\n"))
             .collect();
-        let mut rd = csv::Reader::from_reader(body.as_bytes());
-        let rows: Vec<csv::StringRecord> = rd.records().map(|r| r.unwrap()).collect();
-        assert_eq!(rows.len(), 2);
-        assert_eq!(&rows[0][2], "a");
-        assert_eq!(&rows[1][2], "b, the second");
-        assert_eq!(&rows[1][1], "2");
-        assert_eq!(rows[1][3].parse::<f64>().unwrap(), 2e-3);
+        csv::Reader::from_reader(body.as_bytes())
+            .records()
+            .map(|r| r.unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn a_compound_name_with_a_comma_stays_one_field() {
+        let scenes = SceneSet::shipped();
+        let s = &scenes.scene[0].name;
+        let outcomes = [
+            outcome("b, the second", s, &[(2e-3, false)], &[]),
+            outcome("a", s, &[(1e-3, false)], &[]),
+        ];
+        let r = rows(&ranking_csv(&outcomes, &scenes, false));
+        assert_eq!(r.len(), 2);
+        assert_eq!(&r[0][2], "a");
+        assert_eq!(&r[1][2], "b, the second");
+        assert_eq!(&r[1][1], "2");
+        assert_eq!(r[1][3].parse::<f64>().unwrap(), 2e-3);
+    }
+
+    #[test]
+    fn untrusted_and_failed_compounds_are_listed_apart_never_ranked() {
+        let scenes = SceneSet::shipped();
+        let s = &scenes.scene[0].name;
+        let mut failed = outcome("broken", s, &[], &[]);
+        failed.error = Some("ingest: no data".into());
+        failed.standings.clear();
+        let outcomes = [
+            // the lowest friction, but its fit is flagged: never ranked first
+            outcome(
+                "flagged",
+                s,
+                &[(1e-6, false)],
+                &["prony_rms_log10_storage out of its bound"],
+            ),
+            outcome("nan-point", s, &[(1e-5, false), (f64::NAN, false)], &[]),
+            outcome("good", s, &[(1e-3, false), (5e-3, true)], &[]),
+            failed,
+        ];
+        let r = rows(&ranking_csv(&outcomes, &scenes, false));
+        let scene_rows: Vec<_> = r.iter().filter(|r| &r[0] == s).collect();
+        assert_eq!(&scene_rows[0][2], "good");
+        assert_eq!(&scene_rows[0][1], "1");
+        // measured temperatures only: the extrapolated 5e-3 is left out of the mean, and listed
+        assert_eq!(scene_rows[0][3].parse::<f64>().unwrap(), 1e-3);
+        assert_eq!(&scene_rows[0][6], "10");
+        for (row, name, reason) in [
+            (1, "flagged", "prony_rms_log10_storage"),
+            (2, "nan-point", "friction failed at 10 °C"),
+            (3, "broken", "failed: ingest"),
+        ] {
+            assert_eq!(&scene_rows[row][2], name);
+            assert_eq!(&scene_rows[row][1], "");
+            assert_eq!(&scene_rows[row][5], "false");
+            assert!(scene_rows[row][8].contains(reason), "{:?}", scene_rows[row]);
+        }
+        // the NaN point is never averaged: the mean is the finite point's
+        assert_eq!(scene_rows[2][3].parse::<f64>().unwrap(), 1e-5);
+        // with extrapolation allowed, the extrapolated temperature enters the mean, marked
+        let mut good = outcomes[2].clone();
+        good.standings = vec![crate::results::standing(s, &good.friction[0].1, &[], true)];
+        let r = rows(&ranking_csv(&[good], &scenes, true));
+        assert_eq!(r[0][3].parse::<f64>().unwrap(), 3e-3);
+        assert!(r[0][8].contains("extrapolated"));
     }
 }

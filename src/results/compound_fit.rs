@@ -302,6 +302,21 @@ impl CompoundFit {
         (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
     }
 
+    /// Why the fit is not trusted: each quality figure out of its bound (empty when trusted).
+    pub fn untrusted_reasons(&self) -> Vec<String> {
+        self.quality
+            .iter()
+            .filter(|q| q.flagged)
+            .map(|q| match q.bound {
+                Some(b) => format!(
+                    "{} = {:.4} {} is out of its bound {b}",
+                    q.name, q.value, q.unit
+                ),
+                None => format!("{} = {:.4} {} is flagged", q.name, q.value, q.unit),
+            })
+            .collect()
+    }
+
     /// Read a fit file, checking its format version.
     pub fn read(path: &Path) -> Result<Self, CompoundFitError> {
         let text = std::fs::read_to_string(path).map_err(|e| CompoundFitError::Io {

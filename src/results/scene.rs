@@ -6,7 +6,7 @@
 //! Input: TOML text; output: checked [`SceneSet`]s (every number finite and in its physical range,
 //! errors naming the scene and key). The pipeline fills the result types; the report writes them.
 
-use crate::contact::Scene;
+use crate::contact::{Body, Scene};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use thiserror::Error;
@@ -57,7 +57,7 @@ pub struct SceneSpec {
     #[serde(default)]
     pub poisson: Option<f64>,
     /// Thickness in mm of a rubber cover bonded to a rigid carcass; absent: a half-space. The body
-    /// solved is chosen by `contact::layer::roll_cover` (`auto`: the cheapest within tolerance).
+    /// solved is chosen by `contact::body::layer::roll_cover` (`auto`: the cheapest within tolerance).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cover_thickness_mm: Option<f64>,
     /// Temperatures in °C of the friction maps (each solve costs; keep it short).
@@ -79,7 +79,25 @@ impl SceneSpec {
             load_n_per_m: self.load_n_per_m,
             speed_m_s: self.speed_m_s,
             poisson: self.poisson,
+            body: Body::HalfSpace,
         }
+    }
+}
+
+/// Longest list of temperatures, speeds or loads in a scene (each entry costs solves).
+pub const MAX_LIST: usize = 1000;
+/// Highest scene temperature, °C (no polymer is used above it).
+pub const TEMP_MAX_C: f64 = 1000.0;
+
+/// The physical range (exclusive lower, inclusive upper bound) of a scene's number, by key: radius
+/// up to 100 m, loads up to 1e8 N/m (100 MN per metre of width: far beyond any rubber contact), speeds
+/// up to 1000 m/s (above the speed of sound in rubber the steady-state theory does not apply).
+pub fn range_of(key: &str) -> (f64, f64) {
+    match key {
+        "roll_radius_mm" => (0.0, 1e5),
+        "load_n_per_m" | "map_loads_n_per_m" => (0.0, 1e8),
+        "speed_m_s" | "map_speeds_m_s" => (0.0, 1e3),
+        _ => (f64::NEG_INFINITY, f64::INFINITY),
     }
 }
 
@@ -123,15 +141,28 @@ impl SceneSet {
                 ("load_n_per_m", s.load_n_per_m),
                 ("speed_m_s", s.speed_m_s),
             ] {
-                if !(v.is_finite() && v > 0.0) {
-                    return Err(cfg(format!("{} must be finite and > 0, got {v}", at(key))));
+                let (lo, hi) = range_of(key);
+                if !(v.is_finite() && v > lo && v <= hi) {
+                    return Err(cfg(format!(
+                        "{} must be finite, > {lo} and ≤ {hi:e}, got {v}",
+                        at(key)
+                    )));
                 }
             }
-            if s.temps_c.is_empty() || s.temps_c.iter().any(|t| !t.is_finite() || *t < -273.15) {
-                return Err(cfg(format!(
-                    "{} must be a non-empty list of temperatures in °C above −273.15",
-                    at("temps_c")
-                )));
+            for (key, list) in [("temps_c", &s.temps_c), ("map_temps_c", &s.map_temps_c)] {
+                if list.len() > MAX_LIST
+                    || list
+                        .iter()
+                        .any(|t| !(t.is_finite() && (-273.15..=TEMP_MAX_C).contains(t)))
+                {
+                    return Err(cfg(format!(
+                        "{} must list at most {MAX_LIST} temperatures in °C in [−273.15, {TEMP_MAX_C}]",
+                        at(key)
+                    )));
+                }
+            }
+            if s.temps_c.is_empty() {
+                return Err(cfg(format!("{} must not be empty", at("temps_c"))));
             }
             for (key, list) in [
                 ("map_speeds_m_s", &s.map_speeds_m_s),
@@ -140,9 +171,19 @@ impl SceneSet {
                 if !list.is_empty() && s.map_temps_c.is_empty() {
                     return Err(cfg(format!("{} needs map_temps_c", at(key))));
                 }
-                if let Some(v) = list.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
+                if list.len() > MAX_LIST {
                     return Err(cfg(format!(
-                        "{} must hold finite values > 0, got {v}",
+                        "{} lists more than {MAX_LIST} values",
+                        at(key)
+                    )));
+                }
+                let (lo, hi) = range_of(key);
+                if let Some(v) = list
+                    .iter()
+                    .find(|v| !(v.is_finite() && **v > lo && **v <= hi))
+                {
+                    return Err(cfg(format!(
+                        "{} must hold finite values > {lo} and ≤ {hi:e}, got {v}",
                         at(key)
                     )));
                 }
@@ -194,19 +235,35 @@ pub struct FrictionPoint {
     /// Why the solve failed, if it did.
     #[serde(default)]
     pub error: Option<String>,
-    /// The body solved (`half-space`, `layer`, `winkler-constrained`, …; contact::layer::BodyModel).
+    /// The body solved (`half-space`, `layer`, `winkler-constrained`, …; contact::body::layer).
     #[serde(default = "half_space_name")]
     pub model: String,
     /// Why that body (empty for a scene without a cover).
     #[serde(default)]
     pub model_reason: String,
-    /// Validity and solver warnings of this point (cover indentation, contact length against R, …).
+    /// Validity warnings of the contact solve (a contact long against the roll radius, cover
+    /// indentation, contact checks).
     #[serde(default)]
     pub warnings: Vec<String>,
 }
 
 fn half_space_name() -> String {
     "half-space".into()
+}
+
+impl FrictionPoint {
+    /// Every flag of the point in one line: failure, extrapolated shift law, contact warnings.
+    pub fn note(&self) -> String {
+        let mut v: Vec<String> = Vec::new();
+        if let Some(e) = &self.error {
+            v.push(format!("failed: {e}"));
+        }
+        if self.extrapolated {
+            v.push("extrapolated shift law (outside the measured temperatures)".into());
+        }
+        v.extend(self.warnings.iter().cloned());
+        super::outcome::cap_line(&v.join("; ").replace(['\r', '\n'], " "))
+    }
 }
 
 /// Points per axis of the 2-D (speed × load) map, log-spaced over the listed speeds and loads.
@@ -275,6 +332,25 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("s.toml") && e.contains("roll_radius_mm"), "{e}");
+        for (key, v) in [
+            ("speed_m_s", "1e300"),
+            ("load_n_per_m", "inf"),
+            ("roll_radius_mm", "nan"),
+        ] {
+            let text = format!(
+                "[[scene]]\nname = \"a\"\nroll_radius_mm = 10\nload_n_per_m = 1\nspeed_m_s = 1\ntemps_c = [20]\n"
+            )
+            .replace(&format!("{key} = "), &format!("{key} = {v} #"));
+            let e = SceneSet::parse(&text, Path::new("s.toml"))
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(key), "{key}: {e}");
+        }
+        let text = "[[scene]]\nname = \"a\"\nroll_radius_mm = 10\nload_n_per_m = 1\nspeed_m_s = 1\ntemps_c = [1e9]\n";
+        let e = SceneSet::parse(text, Path::new("s.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("temps_c"), "{e}");
         let e = SceneSet::parse("[[scene]]\nname = \"a\"\nradius = 1\n", Path::new("s.toml"))
             .unwrap_err()
             .to_string();

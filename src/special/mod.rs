@@ -1,4 +1,7 @@
-//! Special functions the contact kernel needs: the exponential integrals E1 and Ei in scaled forms
+//! General numerics (not specific to any stage): the scaled modified Bessel functions e^{−μ}Iₙ(μ)
+//! (`bessel.rs`), one step of Brent's root finder (`brent.rs`), Gauss–Legendre rules and adaptive
+//! quadrature (`gauss_legendre.rs`), Chebyshev interpolation, Clenshaw and sine series
+//! (`chebyshev.rs`); and the special functions the contact kernel needs: the exponential integrals E1 and Ei in scaled forms
 //! (eˣE1(x), e⁻ˣEi(x)), accurate to a few ulp over the whole double range (MATH.md §2), and the
 //! kernel bracket h with its two antiderivatives (for piecewise-linear collocation of eq. 3.25).
 //! Owned by the foundation contact issue.
@@ -18,9 +21,14 @@
 //! below 6e-16 everywhere (≈ 2.6 × 2⁻⁵²); print the table per function and range with
 //! `cargo test --release --test tests special_accuracy_table -- --nocapture`.
 
+pub mod bessel;
+pub mod brent;
+pub mod chebyshev;
 mod expint;
+pub mod gauss_legendre;
 mod kernel_bracket;
 mod kernel_taylor;
 
+pub use bessel::{one_minus_one_plus_c_i0, scaled_bessel_i};
 pub use expint::{e1, ei, exp_e1, expm_ei, EULER_GAMMA};
 pub use kernel_bracket::{kernel_bracket, kernel_bracket_int1, kernel_bracket_int2};

@@ -133,22 +133,25 @@ fn map_section(
 }
 
 /// Write `dir/` (plots, friction tables, datasheet.html) for one compound; `maps` has one entry per
-/// scene of `friction`, in the same order.
+/// scene of `friction`, in the same order; `allow_extrapolation` as in the ranking (the datasheet
+/// shows the compound's standing per scene by the same rule).
 pub fn write_report(
     fit: &CompoundFit,
     measurement: &Measurement,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     maps: &[FrictionMaps],
+    allow_extrapolation: bool,
     dir: &Path,
 ) -> Result<(), ReportError> {
     std::fs::create_dir_all(dir).map_err(io(dir))?;
     let prov = provenance_line(fit);
+    let flags = fit.untrusted_reasons();
     let scene_maps: Vec<(&SceneSpec, &FrictionMaps)> =
         friction.iter().map(|(s, _)| s).zip(maps).collect();
     let tol = maps.first().map_or(f64::NAN, |m| m.tol);
     write_file(
         &dir.join("friction.csv"),
-        tables::friction_csv(&prov, friction).as_bytes(),
+        tables::friction_csv(&prov, &flags, friction).as_bytes(),
     )?;
     write_file(
         &dir.join("friction_map.csv"),
@@ -168,6 +171,7 @@ pub fn write_report(
         esc(&fit.compound),
         esc(&prov)
     );
+    h.push_str(&sections::trust(fit, friction, allow_extrapolation));
     h.push_str(&sections::sources(fit));
     h.push_str(&sections::test_conditions(fit));
     let _ = write!(h, "<h2>Raw isotherms</h2>{iso_svg}");

@@ -28,6 +28,50 @@ pub fn law_text(law: &ShiftLaw) -> String {
     }
 }
 
+/// The verdict first: whether the fit is trusted, and per scene the mean F/N by the ranking's rule
+/// with the temperatures it averages, leaves out or could not compute.
+pub fn trust(
+    fit: &CompoundFit,
+    friction: &[(SceneSpec, Vec<FrictionPoint>)],
+    allow_extrapolation: bool,
+) -> String {
+    let reasons = fit.untrusted_reasons();
+    let mut h = String::from("<h2>Trust</h2>");
+    if reasons.is_empty() {
+        h.push_str("<p>Every quality figure of the fit is within its bound.</p>");
+    } else {
+        let _ = write!(
+            h,
+            "<p class=\"bad\">Not trusted: this compound is listed apart in the ranking, never ranked among trusted ones.</p><ul class=\"bad\">{}</ul>",
+            reasons.iter().map(|r| format!("<li>{}</li>", esc(r))).collect::<String>()
+        );
+    }
+    h.push_str("<table><tr><th>scene</th><th>mean F/N</th><th>averaged over (°C)</th><th>extrapolated (°C)</th><th>failed (°C)</th><th>verdict</th></tr>");
+    for (spec, pts) in friction {
+        let s = crate::results::standing(&spec.name, pts, &reasons, allow_extrapolation);
+        let list = |t: &[f64]| {
+            t.iter()
+                .map(|t| t.to_string())
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        let _ = write!(
+            h,
+            "<tr><td class=\"l\">{}</td><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}{}</td><td class=\"l\">{}</td><td class=\"l{}\">{}</td></tr>",
+            esc(&spec.name),
+            s.mean_friction.map_or("–".to_string(), |f| format!("{f:.4e}")),
+            list(&s.temps_c),
+            list(&s.extrapolated_temps_c),
+            if s.extrapolated_temps_c.is_empty() { "" } else if allow_extrapolation { " (averaged)" } else { " (left out)" },
+            list(&s.failed_temps_c),
+            if s.trusted() { "" } else { " bad" },
+            if s.trusted() { "ranked".to_string() } else { esc(&s.untrusted.join("; ")) }
+        );
+    }
+    h.push_str("</table>");
+    h
+}
+
 /// Source files with format and SHA-256.
 pub fn sources(fit: &CompoundFit) -> String {
     let mut h = String::from(
@@ -160,7 +204,7 @@ pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str
         );
     }
     h.push_str("</table>");
-    // Which body each covered scene was solved on, and why (contact::layer::roll_cover): one line per
+    // Which body each covered scene was solved on, and why (contact::body::layer::roll_cover): one line per
     // body, with the temperatures it was chosen at and the reason given at the first of them.
     for (s, pts) in friction {
         let Some(c) = s.cover_thickness_mm else {
@@ -188,17 +232,7 @@ pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str
     let _ = write!(h, "{friction_svg}<table><tr><th>scene</th><th>T (°C)</th><th>F/N</th><th>F* (N/m)</th><th>contact (mm)</th><th>note</th></tr>");
     for (s, pts) in friction {
         for p in pts {
-            let mut note = match (&p.error, p.extrapolated) {
-                (Some(e), _) => esc(e),
-                (None, true) => "extrapolated shift law".into(),
-                _ => String::new(),
-            };
-            for w in &p.warnings {
-                if !note.is_empty() {
-                    note.push_str("; ");
-                }
-                note.push_str(&esc(w));
-            }
+            let note = esc(&p.note());
             let _ = write!(
                 h,
                 "<tr><td class=\"l\">{}</td><td>{}</td><td>{:.4e}</td><td>{:.4}</td><td>{:.3}</td><td class=\"l\">{note}</td></tr>",

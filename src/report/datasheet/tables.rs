@@ -8,9 +8,17 @@
 use crate::report::csv_text::csv_text;
 use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
 
-/// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated, error,
-/// the body solved (`model`) and the point's warnings (`; `-separated).
-pub fn friction_csv(prov: &str, friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> String {
+/// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated,
+/// error, `note` (every flag of the row: failure, extrapolation, contact validity) and `model` (the
+/// body solved, contact::body::layer). The
+/// compound's own flags (`flags`: why its fit is not trusted) come first as `#` lines and, when there
+/// are any, lead every row's note with `fit not trusted`.
+pub fn friction_csv(
+    prov: &str,
+    flags: &[String],
+    friction: &[(SceneSpec, Vec<FrictionPoint>)],
+) -> String {
+    let untrusted = !flags.is_empty();
     let rows = friction.iter().flat_map(|(spec, pts)| {
         pts.iter().map(move |p| {
             vec![
@@ -22,13 +30,19 @@ pub fn friction_csv(prov: &str, friction: &[(SceneSpec, Vec<FrictionPoint>)]) ->
                 format!("{:.6}", p.log10_a_t),
                 p.extrapolated.to_string(),
                 p.error.as_deref().unwrap_or("").replace(['\r', '\n'], " "),
+                match (untrusted, p.note()) {
+                    (false, n) => n,
+                    (true, n) if n.is_empty() => "fit not trusted".to_string(),
+                    (true, n) => format!("fit not trusted; {n}"),
+                },
                 p.model.clone(),
-                p.warnings.join("; ").replace(['\r', '\n'], " "),
             ]
         })
     });
+    let mut comments = vec![prov.to_string()];
+    comments.extend(flags.iter().map(|f| format!("not trusted: {f}")));
     csv_text(
-        &[prov.to_string()],
+        &comments,
         &[
             "scene",
             "temp_c",
@@ -38,8 +52,8 @@ pub fn friction_csv(prov: &str, friction: &[(SceneSpec, Vec<FrictionPoint>)]) ->
             "log10_a_t",
             "extrapolated",
             "error",
+            "note",
             "model",
-            "warnings",
         ],
         rows,
     )
@@ -94,4 +108,50 @@ pub fn grid_csv(prov: &str, tol: f64, scenes: &[(&SceneSpec, &FrictionMaps)]) ->
         ],
         rows,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_flag_of_a_point_reaches_the_note_column() {
+        let spec = crate::results::SceneSet::shipped().scene[0].clone();
+        let p = |extrapolated: bool, error: Option<&str>, warnings: Vec<String>| FrictionPoint {
+            model: String::new(),
+            model_reason: String::new(),
+            temp_c: 20.0,
+            log10_a_t: 0.0,
+            friction: if error.is_some() { f64::NAN } else { 1e-3 },
+            resistance_n_per_m: 10.0,
+            contact_length_mm: 1.0,
+            extrapolated,
+            error: error.map(str::to_string),
+            warnings,
+        };
+        let pts = vec![
+            p(false, None, vec![]),
+            p(
+                true,
+                None,
+                vec!["contact length / radius = 0.570, results lose validity".into()],
+            ),
+            p(false, Some("no root, bracket [1, 2]"), vec![]),
+        ];
+        let text = friction_csv("prov", &["prony_rms out of bound".into()], &[(spec, pts)]);
+        assert!(text.contains("# not trusted: prony_rms out of bound"));
+        let body: String = text
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(body.as_bytes())
+            .records()
+            .map(|r| r.unwrap())
+            .collect();
+        assert_eq!(&rows[0][8], "fit not trusted");
+        assert!(rows[1][8].contains("extrapolated") && rows[1][8].contains("0.570"));
+        assert!(rows[2][8].contains("failed: no root, bracket [1, 2]"));
+        assert_eq!(&rows[2][7], "no root, bracket [1, 2]");
+    }
 }

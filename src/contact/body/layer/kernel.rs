@@ -53,8 +53,9 @@
 
 use super::compliance::layer_defect;
 use crate::contact::error::{positive, ContactError};
-use crate::contact::quadrature::gauss_legendre;
-use crate::contact::{CreepTerm, Kernel};
+use crate::contact::half_space::kernel::Kernel;
+use crate::contact::CreepTerm;
+use crate::special::gauss_legendre::gauss_legendre;
 
 /// Gauss–Legendre order of each panel.
 const GL_ORDER: usize = 10;

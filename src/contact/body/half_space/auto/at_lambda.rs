@@ -9,7 +9,7 @@
 //! Q′ = √(1−t²)Σₖ a_k U_k(t) and let H̃(t) = (1/π)∫√(1−s²)φ(s)/(t−s)ds = Σₙ Fₙ Tₙ(t) inside, with
 //! a_k = F_{k+1} (MATH.md §3; the bounded-at-both-ends inverse needs F₀ = 0). The derivative of
 //! eq. 3.25, π[H̃ + Σᵢ Ṽᵢ] = L(1+t) − β with Ṽᵢ(t) = dᵢ∫₀^∞e^{−cᵢσ}H̃(t+σ)dσ and Ṽᵢ′ = cᵢṼᵢ − dᵢH̃,
-//! forces (module [`super::modes`]) H̃(t) = p₀ + p₁t + Σⱼ Aⱼe^{μⱼ(t−1)} on the contact, where
+//! forces (module [`crate::contact::body::half_space::modes`]) H̃(t) = p₀ + p₁t + Σⱼ Aⱼe^{μⱼ(t−1)} on the contact, where
 //! matching the terms linear in t, in e^{μⱼ(t−1)} and in e^{−cᵢ(1−t)} gives
 //! - p₁ = L/(πS), S = 1 + Σfᵢ/bᵢ;  (L − β)/π = p₀S + p₁Σdᵢ/cᵢ²;  F₀ = p₀ + ΣⱼAⱼe^{−μⱼ}I₀(μⱼ) = 0;
 //! - for every i: ∫₀^∞e^{−cᵢσ}H̃ₑₓₜ(1+σ)dσ = (p₀+p₁)/cᵢ + p₁/cᵢ² + Σⱼ Aⱼ/(cᵢ−μⱼ),
@@ -27,12 +27,13 @@
 //! exact one-term solution the results agree to ~1e−13 already at the default step (see tests and the
 //! README of the bench), against first order in h for the thesis scheme.
 //! Costs: O(N·Q·√μ_max + N²·Q) with Q ≈ 200 quadrature nodes, so fast modes (large μ) are lumped
-//! into the glassy compliance by [`super::reduce`] before they get here. The exterior values (the
+//! into the glassy compliance by [`super::reduction`] before they get here. The exterior values (the
 //! O(N·Q·√μ) part, half the time of a 30-term solve) are shared by the step-h solve and the step-2h
 //! check of [`solve_at_lambda_checked`], whose difference gives the quadrature error estimate.
 
-use super::chebyshev::{exp_coefficients, exterior_values, sine_series, theta_w};
-use super::modes::Modes;
+use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
+use crate::contact::body::half_space::modes::Modes;
+use crate::special::chebyshev::{sine_series, sine_series_grid};
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::PI;
 
@@ -88,7 +89,7 @@ impl LambdaSolution {
     /// point within 30 layer widths of the front edge (at most ~40 of them, log-spaced).
     pub fn profile(&self, n_uniform: usize) -> (Vec<f64>, Vec<f64>, f64) {
         let l = 0.5 * self.lambda;
-        let grid = super::chebyshev::sine_series_grid(&self.coefficients);
+        let grid = sine_series_grid(&self.coefficients);
         let m = grid.len() - 1;
         let min_ratio = {
             let pmax = grid.iter().map(|g| g.1).fold(0.0, f64::max);

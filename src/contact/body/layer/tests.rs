@@ -4,10 +4,11 @@
 use super::collocation::{lambda_guess, solve_at_load_n};
 use super::compliance::{winkler_coefficient, WinklerColumns};
 use super::*;
-use crate::contact::controlled::{solve_auto_at_load, AutoSettings};
-use crate::contact::kernel::Kernel;
+use crate::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+use crate::contact::half_space::kernel::Kernel;
+use crate::contact::half_space::thesis;
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::{thesis, CreepTerm, Scene};
+use crate::contact::{Body, CreepTerm, Scene};
 use crate::CreepSpectrum;
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -99,8 +100,8 @@ fn thick_layer_tends_to_half_space() {
             },
         )
         .unwrap();
-        let err = rel(ans.solution.lambda, auto.solution.lambda)
-            .max(rel(ans.solution.friction_rho, auto.solution.friction_rho));
+        let err = rel(ans.solution.lambda, auto.lambda)
+            .max(rel(ans.solution.friction_rho, auto.friction_rho));
         eprintln!(
             "vs auto, tol {tol:.0e}: err {err:.2e}, estimate {:.2e}, n {}",
             ans.error_estimate, ans.solution.n
@@ -207,7 +208,7 @@ fn uniaxial_winkler_standard_linear_solid_closed_form() {
     let c_w = winkler_coefficient(WinklerColumns::Uniaxial, 0.4, 0.5).unwrap();
     let (lam, aa) = (1.5, 1.5 - s.beta);
     let wf = |sg: f64| aa * sg - 0.5 * sg * sg;
-    let mut integ = crate::contact::quadrature::Integrator::new(20);
+    let mut integ = crate::special::gauss_legendre::Integrator::new(20);
     for (&x, &q) in s.xi.iter().zip(&s.pressure).step_by(37) {
         let sd = lam - x;
         let conv = integ.integrate(
@@ -262,13 +263,14 @@ fn issue_figures_conveyor_idler() {
         load_n_per_m: 10_000.0,
         speed_m_s: 4.0,
         poisson: None,
+        body: Body::HalfSpace,
     };
     let p = scene.dimensionless(&spec).unwrap();
     let hs = solve_auto_at_load(&p.terms, p.load, &AutoSettings::default()).unwrap();
-    let f_hs = hs.solution.friction_rho / p.rho;
+    let f_hs = hs.friction_rho / p.rho;
     eprintln!(
         "half-space F/N {f_hs:.5} (l = {:.2} mm)",
-        hs.solution.lambda * p.length_scale_m * 1e3
+        hs.lambda * p.length_scale_m * 1e3
     );
     assert!(rel(f_hs, 0.0139) < 0.005 / 0.139);
     let mut ratios = Vec::new();
@@ -336,6 +338,7 @@ fn criterion_table() {
                 load_n_per_m: 10_000.0,
                 speed_m_s: 4.0,
                 poisson: None,
+                body: Body::HalfSpace,
             };
             scene.dimensionless(&spec).unwrap().terms
         }),

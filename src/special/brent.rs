@@ -1,12 +1,13 @@
 //! One step of Brent's root finder (Brent 1973, *Algorithms for Minimization without Derivatives*,
-//! ch. 4), shared by the load loops of the thesis scheme (`load.rs`) and of the exact one-term
-//! solution (`exact.rs`); each keeps its own bracket, stopping rule and bookkeeping.
+//! ch. 4). Input: the bracket state (a, b, c), its values, the half-width m, the step tolerance and
+//! the previous steps (d, e); output: the next step and the new memory. Used by the contact stage's
+//! load loop (`contact::load`), which keeps the bracket, stopping rules and bookkeeping.
 
 /// The next step `d` (and the previous-step memory `e`) of Brent's method on the bracket [b, c]
 /// with last iterate a: inverse quadratic interpolation (or the secant when a = c) when it is
 /// accepted, else bisection (`d = e = m`, m = (c − b)/2). `interpolate` is false when the caller
 /// forbids interpolation (e.g. the last steps were too small or a value is not finite).
-pub(crate) fn brent_step(
+pub fn brent_step(
     (a, b, c): (f64, f64, f64),
     (fa, fb, fc): (f64, f64, f64),
     m: f64,

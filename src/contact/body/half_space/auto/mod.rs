@@ -1,18 +1,19 @@
 //! The error-controlled `auto` contact solver: tolerance → mode selection, quadrature step and load
 //! iteration; every answer carries its error estimate and the contact-condition checks.
 //!
-//! Input: creep terms ([`CreepTerm`]), λ or N′, [`AutoSettings`]; output: [`AutoSolution`] (a
-//! [`DimensionlessSolution`] with `scheme = "auto"` plus mode counts, checks and warnings).
+//! Input: creep terms ([`CreepTerm`]), λ or N′, [`AutoSettings`]; output: a [`DimensionlessSolution`]
+//! with `scheme = "auto"`, its [`AutoDiagnostics`] (mode counts, checks) and warnings, or a
+//! [`ContactError`].
 //!
 //! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ):
-//! - mode reduction ([`super::reduce`]): ≤ 0.3·tol, re-selected until the estimate, evaluated with
+//! - mode reduction ([`reduction`]): ≤ 0.3·tol, re-selected until the estimate, evaluated with
 //!   the friction of the solution itself, fits. Lumped fast modes are *corrected* to first order:
 //!   one extra solve at the final λ with the lumped mode of largest weight kept measures the gains
 //!   (g_F, g_N, g_β) of ρF/N/λ, ln N′ and β per unit lumping weight, and g·Σwᵢ is added to the
-//!   answer; the remaining error is the second-order estimate of [`super::reduce`]. At given load
+//!   answer; the remaining error is the second-order estimate of [`reduction`]. At given load
 //!   the loop solves N′_lumped(λ)(1 + g_N·W(λ)) = N′, first with the model gain, then (when the
 //!   measured one moves the target) on from the λ found;
-//! - quadrature ([`super::auto`]): step h = 0.6 for tol ≥ 1e−4, 0.4 for tol ≥ 1e−7, 0.3 below
+//! - quadrature ([`at_lambda`]): step h = 0.6 for tol ≥ 1e−4, 0.4 for tol ≥ 1e−7, 0.3 below
 //!   (measured errors ≤ 5e−8, 2e−11, ~1e−15: ≈ e^{−π²/h} with a constant ≤ 1 on 1–30-term
 //!   problems); the estimate is 10·e^{−π²/(2h)} times the difference to the same sum on every second
 //!   node (step 2h, from the same exterior values: no second solve). The calibration is a difference
@@ -33,13 +34,17 @@
 //! The reported `error_estimate` is the largest of the relative errors of ρF/N and of λ (at given
 //! load) or N′ (at given λ).
 
-use super::auto::{solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings};
+pub mod at_lambda;
+pub mod reduction;
+
 use super::rear_gap::contact_check;
-use super::reduce::{
+use crate::contact::error::ContactError;
+use crate::contact::{CreepTerm, DimensionlessSolution};
+use at_lambda::{solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings};
+use reduction::{
     calibration_mode, effective_compliance, lump_weight, lumped_residual, model_gains, select,
     slow_estimate_at, unlump, Reduction,
 };
-use super::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -73,50 +78,10 @@ impl Default for AutoSettings {
     }
 }
 
-/// Errors of the `auto` scheme (bad input only; outcomes are data).
-#[derive(Debug, thiserror::Error, PartialEq)]
-pub enum AutoError {
-    /// A creep term is not usable.
-    #[error("creep term {index}: f = {f} and b = {b}; need f ≥ 0 and b > 0, both finite")]
-    BadTerm {
-        /// Index of the term.
-        index: usize,
-        /// Its f.
-        f: f64,
-        /// Its b.
-        b: f64,
-    },
-    /// A scalar input is out of range.
-    #[error("{name} = {value}: {expected}")]
-    BadValue {
-        /// The input's name.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-        /// What was expected.
-        expected: &'static str,
-    },
-    /// The scene could not be made dimensionless.
-    #[error(transparent)]
-    Scene(#[from] super::error::ContactError),
-    /// The load loop hit its iteration limit (not seen in tests; reported, not hidden).
-    #[error("load iteration did not converge in {iterations} steps: λ in [{lo}, {hi}]")]
-    NotConverged {
-        /// Steps taken.
-        iterations: usize,
-        /// Bracket lower end.
-        lo: f64,
-        /// Bracket upper end.
-        hi: f64,
-    },
-}
-
-/// A solution of the `auto` scheme with its diagnostics.
+/// The diagnostics of an `auto` answer (in [`DimensionlessSolution::auto`]; its warnings are in
+/// [`DimensionlessSolution::warnings`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct AutoSolution {
-    /// λ, β, N′, ρF/N, pressure profile, iterations, `error_estimate`.
-    #[serde(flatten)]
-    pub solution: DimensionlessSolution,
+pub struct AutoDiagnostics {
     /// Modes solved for explicitly.
     pub modes_used: usize,
     /// Modes in the input (terms with f > 0).
@@ -142,15 +107,12 @@ pub struct AutoSolution {
     pub min_gap_xi: f64,
     /// The tolerance asked for.
     pub tol: f64,
-    /// Human-readable warnings (validity of the model, contact conditions).
-    #[serde(default)]
-    pub warnings: Vec<String>,
 }
 
-fn validate(terms: &[CreepTerm], tol: f64) -> Result<(), AutoError> {
+fn validate(terms: &[CreepTerm], tol: f64) -> Result<(), ContactError> {
     for (index, t) in terms.iter().enumerate() {
         if !(t.f >= 0.0 && t.f.is_finite() && t.b > 0.0 && t.b.is_finite()) {
-            return Err(AutoError::BadTerm {
+            return Err(ContactError::BadTerm {
                 index,
                 f: t.f,
                 b: t.b,
@@ -158,10 +120,10 @@ fn validate(terms: &[CreepTerm], tol: f64) -> Result<(), AutoError> {
         }
     }
     if !(1e-12..=0.1).contains(&tol) {
-        return Err(AutoError::BadValue {
-            name: "tol",
+        return Err(ContactError::BadValue {
+            field: "tol".into(),
+            expected: "in [1e-12, 0.1]",
             value: tol,
-            expected: "need 1e-12 ≤ tol ≤ 0.1",
         });
     }
     Ok(())
@@ -197,7 +159,7 @@ fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaS
 
 /// As [`solve_reduced`], with the quadrature error estimate: (solution, relative error of ρF/N,
 /// relative error of N′). The trapezoid error falls like e^{−π²/h} (module doc of
-/// [`super::auto`]; measured constant ≤ 1 for h = 0.4…0.8 on 1–30-term problems), so the error at
+/// [`at_lambda`]; measured constant ≤ 1 for h = 0.4…0.8 on 1–30-term problems), so the error at
 /// step h is about e^{−π²/(2h)} times the difference to the same sum on every second node (step
 /// 2h, no extra exterior values); we take 10 times that.
 fn solve_reduced_checked(
@@ -224,7 +186,7 @@ fn lumped_weight_times_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
         .sum()
 }
 
-/// The measured first-order correction for the lumped modes ([`super::reduce`] module doc).
+/// The measured first-order correction for the lumped modes ([`reduction`] module doc).
 #[derive(Debug, Clone, Copy)]
 struct Correction {
     /// Effects per unit lumping weight: Δ(ρF/N/λ), ΔN′/N′, Δβ (the measured gains g_F, g_N, g_β).
@@ -262,7 +224,7 @@ impl Correction {
 
 /// Measure the gains at the solution's λ by one solve with the lumped mode of largest weight kept,
 /// or the probe that stands in for it when it is too fast to solve for
-/// ([`super::reduce::calibration_mode`]): the probe kept minus the mode lumped is the probe's own
+/// ([`reduction::calibration_mode`]): the probe kept minus the mode lumped is the probe's own
 /// layer effect g·w_p, w_p = rᵢ/c_p. Returns the model gains (and amplification 0) when nothing is
 /// lumped or the solve fails.
 fn calibrate(
@@ -329,13 +291,13 @@ pub fn solve_auto_at_lambda(
     terms: &[CreepTerm],
     lambda: f64,
     settings: &AutoSettings,
-) -> Result<AutoSolution, AutoError> {
+) -> Result<DimensionlessSolution, ContactError> {
     validate(terms, settings.tol)?;
     if !(lambda > 0.0 && lambda.is_finite()) {
-        return Err(AutoError::BadValue {
-            name: "lambda",
+        return Err(ContactError::BadValue {
+            field: "lambda".into(),
+            expected: "finite and > 0",
             value: lambda,
-            expected: "need a finite λ > 0",
         });
     }
     let tol = settings.tol;
@@ -406,13 +368,13 @@ pub fn solve_auto_at_load(
     terms: &[CreepTerm],
     load: f64,
     settings: &AutoSettings,
-) -> Result<AutoSolution, AutoError> {
+) -> Result<DimensionlessSolution, ContactError> {
     validate(terms, settings.tol)?;
     if !(load > 0.0 && load.is_finite()) {
-        return Err(AutoError::BadValue {
-            name: "load",
+        return Err(ContactError::BadValue {
+            field: "load N'".into(),
+            expected: "finite and > 0",
             value: load,
-            expected: "need a finite N' > 0",
         });
     }
     let tol = settings.tol;
@@ -526,7 +488,7 @@ pub fn solve_auto_at_load(
 }
 
 /// The model slope d ln N′/d ln λ of N′ ≈ λ²/(4S_eff(λ)) (MATH.md §3 with the effective
-/// compliance of [`super::reduce`]): 2 − d ln S_eff/d ln λ, d S_eff/d ln λ = Σ rᵢcᵢ/(1+cᵢ)².
+/// compliance of [`reduction`]): 2 − d ln S_eff/d ln λ, d S_eff/d ln λ = Σ rᵢcᵢ/(1+cᵢ)².
 fn model_slope(terms: &[CreepTerm], lambda: f64) -> f64 {
     let l = 0.5 * lambda;
     let d: f64 = terms
@@ -576,7 +538,7 @@ fn load_loop(
     tol: f64,
     q: QuadratureSettings,
     max_iter: usize,
-) -> Result<LoopResult, AutoError> {
+) -> Result<LoopResult, ContactError> {
     let gval = |s: &LambdaSolution| s.load.ln() + (1.0 + k / s.lambda).ln() - target;
     let eval = |u: f64| -> (f64, (LambdaSolution, f64, f64)) {
         let s = solve_reduced_checked(red, u.exp(), q);
@@ -630,10 +592,11 @@ fn load_loop(
             break;
         }
         if iters >= max_iter {
-            return Err(AutoError::NotConverged {
+            return Err(ContactError::NotConverged {
                 iterations: iters,
-                lo: a.exp(),
-                hi: b.exp(),
+                lambda_lo: a.exp(),
+                lambda_hi: b.exp(),
+                residual: g.exp_m1().abs(),
             });
         }
         u = un;
@@ -661,7 +624,7 @@ fn package(
     (friction_error, floor): (f64, f64),
     size_error: f64,
     settings: &AutoSettings,
-) -> AutoSolution {
+) -> DimensionlessSolution {
     // min Q′/max Q′ over the whole FFT grid (finer than the returned profile)
     let (xi, pressure, min_pressure_ratio) = sol.profile(settings.profile_points.max(8));
     let mut warnings = Vec::new();
@@ -748,29 +711,29 @@ fn package(
         ));
     }
     let n = sol.coefficients.len();
-    AutoSolution {
-        solution: DimensionlessSolution {
-            scheme: "auto".into(),
-            lambda: sol.lambda,
-            beta: sol.beta,
-            load: sol.load,
-            friction_rho: sol.friction_rho,
-            xi,
-            pressure,
-            n,
-            iterations,
-            error_estimate: Some(error_estimate),
-        },
-        modes_used: red.modes_used,
-        modes_total,
-        modes_lumped: red.lumped.len(),
-        modes_dropped: red.dropped.len(),
-        friction_error,
-        size_error,
-        min_pressure_ratio,
-        min_gap_ratio,
-        min_gap_xi,
-        tol: settings.tol,
+    DimensionlessSolution {
+        scheme: "auto".into(),
+        lambda: sol.lambda,
+        beta: sol.beta,
+        load: sol.load,
+        friction_rho: sol.friction_rho,
+        xi,
+        pressure,
+        n,
+        iterations,
+        error_estimate: Some(error_estimate),
+        auto: Some(AutoDiagnostics {
+            modes_used: red.modes_used,
+            modes_total,
+            modes_lumped: red.lumped.len(),
+            modes_dropped: red.dropped.len(),
+            friction_error,
+            size_error,
+            min_pressure_ratio,
+            min_gap_ratio,
+            min_gap_xi,
+            tol: settings.tol,
+        }),
         warnings,
     }
 }

@@ -1,8 +1,9 @@
 //! Adaptive Gauss–Legendre quadrature of smooth (analytic) integrands on finite intervals.
 //!
 //! Input: a closure f(x) → f64, a list of panel edges, a relative tolerance; output: the integral.
-//! Owned by the exact contact solution (src/contact/exact.rs), whose integrals are analytic in the
-//! integration variable but have features on very different scales (1/√c, 1/√p, log 1/p).
+//! Used by the exact contact solution (`contact::exact`), whose integrals are analytic in the
+//! integration variable but have features on very different scales (1/√c, 1/√p, log 1/p), and for
+//! the fixed rules of the gap check (`contact` half-space body, `rear_gap`).
 //!
 //! Method: on each panel compare the m-point Gauss–Legendre rule with the sum of the same rule on the two
 //! halves; accept when they agree to `tol` times the running magnitude of the whole integral, otherwise

@@ -70,7 +70,7 @@ pub fn solve_at_lambda(
     n: usize,
 ) -> Result<DimensionlessSolution, ContactError> {
     positive("lambda", lambda)?;
-    crate::contact::thesis::check_intervals(n)?;
+    crate::contact::half_space::thesis::check_intervals(n)?;
     let h = lambda / n as f64;
     let a = kernel.hat_averages(n, h);
     Ok(assemble_and_solve(&a, n, lambda)?.0)
@@ -121,6 +121,8 @@ fn assemble_and_solve(
             n,
             iterations: 0,
             error_estimate: None,
+            auto: None,
+            warnings: Vec::new(),
         },
         pressure,
     ))

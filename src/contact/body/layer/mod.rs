@@ -23,9 +23,9 @@ pub use kernel::LayerKernel;
 pub use roll_cover::{roll_cover, CoverRoll, ModelChoice};
 pub use winkler::{Winkler, WinklerAnswer};
 
-use super::error::ContactError;
-use super::load::LoadSettings;
-use super::{CreepTerm, DimensionlessSolution};
+use crate::contact::error::ContactError;
+use crate::contact::load::LoadSettings;
+use crate::contact::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
 
 /// The body a scene is solved on.
@@ -81,9 +81,11 @@ pub fn layer_at_load(
 ) -> Result<BodyAnswer, ContactError> {
     let kernel = LayerKernel::new(terms, thickness, poisson)?;
     let a = collocation::solve_layer_at_load(&kernel, load, settings)?;
+    let mut solution = a.solution;
+    solution.warnings.extend(a.warnings.iter().cloned());
     Ok(BodyAnswer {
         model: BodyModel::Layer,
-        solution: a.solution,
+        solution,
         error_estimate: a.error_estimate,
         min_pressure_ratio: a.min_pressure_ratio,
         min_gap_ratio: a.min_gap_ratio,
@@ -101,7 +103,8 @@ pub fn winkler_at_load(
     settings: &LoadSettings,
 ) -> Result<BodyAnswer, ContactError> {
     let w = Winkler::new(terms, columns, thickness, poisson)?;
-    let a = w.at_load(load, settings)?;
+    let mut a = w.at_load(load, settings)?;
+    a.solution.warnings.extend(a.warnings.iter().cloned());
     Ok(BodyAnswer {
         model: match columns {
             WinklerColumns::Uniaxial => BodyModel::Winkler,

@@ -22,9 +22,9 @@
 //! Accuracy (MATH.md §3): λ, β and N′ converge like h (first order); where the front-edge layer of width
 //! ≈ 1/(b+f) is unresolved the nodal pressure zig-zags (the thesis' "jagged" front edge).
 
-use super::error::{positive, ContactError};
 use super::kernel::Kernel;
-use super::DimensionlessSolution;
+use crate::contact::error::{positive, ContactError};
+use crate::contact::DimensionlessSolution;
 use nalgebra::{DMatrix, DVector};
 
 /// Smallest number of intervals (one interior unknown plus β).
@@ -94,5 +94,7 @@ pub fn solve_at_lambda(
         n,
         iterations: 0,
         error_estimate: None,
+        auto: None,
+        warnings: Vec::new(),
     })
 }

@@ -9,7 +9,7 @@
 //! # Math
 //! Off the contact the surface displacement is still eq. 3.19 with v(0) = 0,
 //! ρv(ξ) = s∫₀^λ Q′(ξ′)[K̂(−ξ′) − K̂(ξ−ξ′)]dξ′, K̂(x) = ln|x| + Σᵢ (f̂ᵢ/bᵢ)h(bᵢx) (MATH.md §2; with
-//! fast modes lumped Q′K = Q′·sK̂, module [`super::reduce`]), and the roll sits at depth ξβ − ξ²/2
+//! fast modes lumped Q′K = Q′·sK̂, module [`super::auto::reduction`]), and the roll sits at depth ξβ − ξ²/2
 //! (eq. 3.22), so g(ξ) = ρv(ξ) − (ξβ − ξ²/2) must be ≥ 0. The two parts of K̂ are integrated apart:
 //!
 //! - **Elastic part, in closed form.** With ξ′ = L(1+s), L = λ/2, Q′ = √(1−s²)ΣFₙU_{n−1}(s) and, for
@@ -57,10 +57,11 @@
 //! 400 random scenes) were wrong solutions of the solver at tol 1e−6 (a re-solve at tol 1e−10 gives
 //! another λ and an open gap; tests/data/rear_gap_wrong_solution_case.json): the check flags them.
 
-use super::auto::LambdaSolution;
-use super::chebyshev::{sine_series, theta_w};
+use super::auto::at_lambda::LambdaSolution;
+use super::chebyshev::theta_w;
 use super::modes::Modes;
-use super::quadrature::gauss_legendre;
+use crate::special::chebyshev::{clenshaw, first_kind_coefficients, sine_series};
+use crate::special::gauss_legendre::gauss_legendre;
 use crate::special::{expm_ei, kernel_bracket, EULER_GAMMA};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
@@ -258,41 +259,17 @@ const EI_DEGREE: usize = 20;
 fn expm_ei_table(y: f64) -> f64 {
     static TABLE: OnceLock<Vec<[f64; EI_DEGREE + 1]>> = OnceLock::new();
     let table = TABLE.get_or_init(|| {
-        let n = EI_DEGREE + 1;
         let pieces = (EI_TABLE_TO - EI_TABLE_FROM) as usize;
         (0..pieces)
             .map(|p| {
-                let (a, b) = (EI_TABLE_FROM + p as f64, EI_TABLE_FROM + p as f64 + 1.0);
-                // values at the Chebyshev points of the first kind, then the discrete cosine sums
-                let v: Vec<f64> = (0..n)
-                    .map(|k| {
-                        let t = (PI * (k as f64 + 0.5) / n as f64).cos();
-                        expm_ei(0.5 * (a + b) + 0.5 * (b - a) * t)
-                    })
-                    .collect();
-                let mut c = [0.0; EI_DEGREE + 1];
-                for (j, cj) in c.iter_mut().enumerate() {
-                    let s: f64 = (0..n)
-                        .map(|k| v[k] * (PI * j as f64 * (k as f64 + 0.5) / n as f64).cos())
-                        .sum();
-                    *cj = 2.0 * s / n as f64;
-                }
-                c[0] *= 0.5;
-                c
+                let a = EI_TABLE_FROM + p as f64;
+                first_kind_coefficients::<{ EI_DEGREE + 1 }>(expm_ei, a, a + 1.0)
             })
             .collect()
     });
     let p = ((y - EI_TABLE_FROM) as usize).min(table.len() - 1);
     let t = 2.0 * (y - (EI_TABLE_FROM + p as f64)) - 1.0;
-    // Clenshaw
-    let c = &table[p];
-    let (mut b1, mut b2) = (0.0, 0.0);
-    for &ck in c.iter().skip(1).rev() {
-        let b0 = ck + 2.0 * t * b1 - b2;
-        b2 = b1;
-        b1 = b0;
-    }
-    c[0] + t * b1 - b2
+    clenshaw(&table[p], t)
 }
 
 /// Where the smallest gap behind the contact lies, and how small it is.
@@ -415,12 +392,12 @@ pub fn rear_scan(modes: &Modes, scale: f64, sol: &LambdaSolution) -> RearScan {
 
 #[cfg(test)]
 mod tests {
+    use super::super::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use super::super::exact::one_term_at_lambda;
+    use super::super::kernel::Kernel;
     use super::*;
-    use crate::contact::auto::{solve_at_lambda, QuadratureSettings};
-    use crate::contact::exact::one_term_at_lambda;
-    use crate::contact::kernel::Kernel;
-    use crate::contact::quadrature::Integrator;
     use crate::contact::CreepTerm;
+    use crate::special::gauss_legendre::Integrator;
 
     #[test]
     fn spectrum_gap_converged_against_a_finer_rule() {

@@ -57,47 +57,10 @@
 //! with compliance (1 + f/b) (N′ → λ²/(4(1+f/b))). bλ → 0 at fixed f/b: the creep term vanishes
 //! (∫γ ln|ξ+ζ| → (f/b)·O(bλ·ln bλ)), Hertz with the glassy compliance.
 
-use super::bessel::{one_minus_one_plus_c_i0, scaled_bessel_i_orders};
-use super::quadrature::Integrator;
-use super::{CreepTerm, DimensionlessSolution};
-use thiserror::Error;
-
-/// Bad input to the exact one-term solution, or a load that could not be bracketed.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ContactExactError {
-    /// f must be finite and ≥ 0.
-    #[error("creep term strength f must be a finite number >= 0, got {0}")]
-    BadStrength(f64),
-    /// b must be finite and > 0.
-    #[error("creep term rate b must be a finite number > 0, got {0}")]
-    BadRate(f64),
-    /// λ must be finite and > 0.
-    #[error("contact length lambda must be a finite number > 0, got {0}")]
-    BadLambda(f64),
-    /// N′ must be finite and > 0.
-    #[error("load N' must be a finite number > 0, got {0}")]
-    BadLoad(f64),
-    /// κλ = (b+f)λ beyond what the series is set up for (its length grows like √(κλ)).
-    #[error("(b + f)*lambda = {0:e} is beyond the exact solution's range (at most {max:e})", max = MAX_KAPPA_LAMBDA)]
-    OutOfRange(f64),
-    /// bλ so small that the quadrature range ln(1/bλ) is no longer representable.
-    #[error("b*lambda = {0:e} is below the exact solution's range (at least {min:e})", min = MIN_B_LAMBDA)]
-    TooSmall(f64),
-    /// The load could not be bracketed between two contact lengths.
-    #[error("load N' = {load} could not be bracketed: N'({lambda_lo}) = {load_lo}, N'({lambda_hi}) = {load_hi}")]
-    NotBracketed {
-        /// Target load.
-        load: f64,
-        /// Lower end tried.
-        lambda_lo: f64,
-        /// Load there.
-        load_lo: f64,
-        /// Upper end tried.
-        lambda_hi: f64,
-        /// Load there.
-        load_hi: f64,
-    },
-}
+use crate::contact::error::ContactError;
+use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::special::gauss_legendre::Integrator;
+use crate::special::{one_minus_one_plus_c_i0, scaled_bessel_i};
 
 /// Largest κλ accepted: the series then has ~1.3e5 terms and one solve takes of the order of a second.
 pub const MAX_KAPPA_LAMBDA: f64 = 1e9;
@@ -105,7 +68,7 @@ pub const MAX_KAPPA_LAMBDA: f64 = 1e9;
 /// Smallest bλ accepted (the solution is then Hertz to about (f/b)·bλ·ln(1/bλ) anyway).
 pub const MIN_B_LAMBDA: f64 = 1e-250;
 
-/// Relative cut of the Bessel series Ĩₙ(c) (terms below it are dropped; see [`scaled_bessel_i_orders`]).
+/// Relative cut of the Bessel series Ĩₙ(c) (terms below it are dropped; relative to the largest order ≥ 1; see [`scaled_bessel_i`]).
 const SERIES_CUT: f64 = 1e-19;
 /// Relative tolerance of the adaptive quadratures (integrands are positive and analytic).
 const QUAD_TOL: f64 = 1e-15;
@@ -129,28 +92,58 @@ pub struct OneTermExact {
     coeffs: Vec<f64>,
 }
 
-fn check_term(term: CreepTerm) -> Result<(), ContactExactError> {
-    if !(term.f.is_finite() && term.f >= 0.0) {
-        return Err(ContactExactError::BadStrength(term.f));
-    }
-    if !(term.b.is_finite() && term.b > 0.0) {
-        return Err(ContactExactError::BadRate(term.b));
+fn check_term(term: CreepTerm) -> Result<(), ContactError> {
+    if !(term.f.is_finite() && term.f >= 0.0 && term.b.is_finite() && term.b > 0.0) {
+        return Err(ContactError::BadTerm {
+            index: 0,
+            f: term.f,
+            b: term.b,
+        });
     }
     Ok(())
 }
 
+fn out_of_range(
+    quantity: &'static str,
+    value: f64,
+    bound: &'static str,
+    limit: f64,
+) -> ContactError {
+    ContactError::OutOfRange {
+        scheme: "exact",
+        quantity,
+        value,
+        bound,
+        limit,
+    }
+}
+
 /// The exact solution at given contact length λ (eq. D1–D5 of the module docs).
-pub fn one_term_at_lambda(term: CreepTerm, lambda: f64) -> Result<OneTermExact, ContactExactError> {
+pub fn one_term_at_lambda(term: CreepTerm, lambda: f64) -> Result<OneTermExact, ContactError> {
     check_term(term)?;
     if !(lambda.is_finite() && lambda > 0.0) {
-        return Err(ContactExactError::BadLambda(lambda));
+        return Err(ContactError::BadValue {
+            field: "lambda".into(),
+            expected: "finite and > 0",
+            value: lambda,
+        });
     }
     let kl = (term.b + term.f) * lambda;
     if kl > MAX_KAPPA_LAMBDA {
-        return Err(ContactExactError::OutOfRange(kl));
+        return Err(out_of_range(
+            "(b + f)*lambda",
+            kl,
+            "at most",
+            MAX_KAPPA_LAMBDA,
+        ));
     }
     if term.b * lambda < MIN_B_LAMBDA {
-        return Err(ContactExactError::TooSmall(term.b * lambda));
+        return Err(out_of_range(
+            "b*lambda",
+            term.b * lambda,
+            "at least",
+            MIN_B_LAMBDA,
+        ));
     }
     Ok(solve_with_cut(term, lambda, SERIES_CUT))
 }
@@ -178,7 +171,7 @@ fn solve_with_cut(term: CreepTerm, lambda: f64, cut: f64) -> OneTermExact {
     let kappa = b + f;
     let c = 0.5 * kappa * lambda;
     let p = 0.5 * b * lambda;
-    let i_n = scaled_bessel_i_orders(c, cut);
+    let i_n = scaled_bessel_i(c, cut);
     let i0 = i_n[0];
     let i1 = i_n.get(1).copied().unwrap_or(0.0);
     let i2 = i_n.get(2).copied().unwrap_or(0.0);
@@ -261,15 +254,19 @@ fn front_edge_integrals(c: f64, p: f64, i_n: &[f64]) -> (f64, f64, f64) {
 /// The exact solution at given load N′: λ is found by Brent's method on ln λ in the bracket
 /// [2√N′, 2√((1+f/b)N′)] (glassy and relaxed Hertz widths; N′ grows monotonically with λ), widened
 /// if rounding puts the root just outside.
-pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, ContactExactError> {
+pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, ContactError> {
     check_term(term)?;
     if !(load.is_finite() && load > 0.0) {
-        return Err(ContactExactError::BadLoad(load));
+        return Err(ContactError::BadValue {
+            field: "load N'".into(),
+            expected: "finite and > 0",
+            value: load,
+        });
     }
     let glassy = 2.0 * load.sqrt();
     let relaxed = 2.0 * ((1.0 + term.f / term.b) * load).sqrt();
     let ln_target = load.ln();
-    let eval = |t: f64| -> Result<(f64, OneTermExact), ContactExactError> {
+    let eval = |t: f64| -> Result<(f64, OneTermExact), ContactError> {
         let sol = one_term_at_lambda(term, t.exp())?;
         Ok((sol.load.ln() - ln_target, sol))
     };
@@ -283,7 +280,7 @@ pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, Cont
     while f_lo > 0.0 || f_hi < 0.0 {
         widen += 1;
         if widen > 20 {
-            return Err(ContactExactError::NotBracketed {
+            return Err(ContactError::Unbracketed {
                 load,
                 lambda_lo: lo.exp(),
                 load_lo: s_lo.load,
@@ -336,7 +333,7 @@ pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, Cont
         if m.abs() <= tol || fb == 0.0 {
             break;
         }
-        (d, e) = super::brent::brent_step((a, b, c), (fa, fb, fc), m, tol, (d, e), true);
+        (d, e) = crate::special::brent::brent_step((a, b, c), (fa, fb, fc), m, tol, (d, e), true);
         a = b;
         fa = fb;
         b += if d.abs() > tol { d } else { tol.copysign(m) };
@@ -416,6 +413,8 @@ impl OneTermExact {
             n: 0,
             iterations: self.iterations,
             error_estimate: None,
+            auto: None,
+            warnings: Vec::new(),
         }
     }
 }

@@ -16,7 +16,7 @@
 //!   the model g_F = 1/(2S_eff), g_N = 1/S_eff with the effective compliance at the contact time
 //!   S_eff = 1 + Σrᵢcᵢ/(1+cᵢ) was within 0.82–1.14 of the measured g on random spectra (5–35 terms,
 //!   J∞/J_g = 10…1e4); the isolated-mode value 1/(2(1+rᵢ)) overstates it up to S_eff/(1+rᵢ) ~ 1e3×.
-//!   The solver ([`super::controlled`]) therefore *measures* g once per answer (one solve with the
+//!   The solver ([`super`]) therefore *measures* g once per answer (one solve with the
 //!   lumped mode of largest wᵢ kept) and adds the first-order correction g·Σwᵢ; what remains is the
 //!   second-order term, measured ≤ 0.6·|g·Σwᵢ|/c_min on those spectra (c_min: slowest lumped mode),
 //!   and estimated as 2·|g·Σwᵢ|/c_min. Selection uses the same formula with the model g (times
@@ -42,8 +42,8 @@
 //! the budgets (only c ≥ 30, where the first-order law holds); slow modes (μ ≤ 0.05) are dropped
 //! cheapest first within the rest. Modes between are always kept.
 
-use super::modes::Modes;
-use super::CreepTerm;
+use crate::contact::body::half_space::modes::Modes;
+use crate::contact::CreepTerm;
 
 /// Smallest c of a lumped mode: the first-order law of the module doc holds from here on.
 const C_LUMP_MIN: f64 = 30.0;
@@ -111,10 +111,10 @@ fn drop_estimate(t: &CreepTerm, l: f64, s_eff: f64) -> Option<(f64, f64)> {
 }
 
 /// Largest μ = (1 + rᵢ)cᵢ of a mode the lumping calibration solves for: its front layer needs
-/// ~√(83μ) ≈ 2.9e4 Chebyshev terms (module [`super::chebyshev`]).
+/// ~√(83μ) ≈ 2.9e4 Chebyshev terms (module [`crate::contact::body::half_space::chebyshev`]).
 pub const MU_CALIBRATION_MAX: f64 = 1e7;
 
-/// The mode the lumping calibration measures with ([`super::controlled`]): the lumped mode of
+/// The mode the lumping calibration measures with ([`super`]): the lumped mode of
 /// largest weight, and the c of the probe that stands in for it when its μ = (1 + rᵢ)cᵢ exceeds
 /// [`MU_CALIBRATION_MAX`] (`f64::INFINITY`: none): c_p = max(100, μ_max/(1 + rᵢ)). A mode lumped
 /// beyond the cap of [`select`] can be far too fast to solve for (c ≈ 1e15 in a random slow-end
@@ -262,7 +262,7 @@ pub fn unlump(terms: &[CreepTerm], red: &Reduction, i: usize) -> Reduction {
 }
 
 /// Re-evaluate the error estimates of the dropped slow modes of a selection at another λ (the
-/// lumped modes' error comes from the measured correction, see [`super::controlled`]).
+/// lumped modes' error comes from the measured correction, see [`super`]).
 pub fn slow_estimate_at(terms: &[CreepTerm], red: &Reduction, lambda: f64) -> (f64, f64) {
     let l = 0.5 * lambda;
     let mut fr = 0.0;

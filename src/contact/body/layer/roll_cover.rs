@@ -22,11 +22,10 @@
 //! (a lower bound of the true one), below about 30 % of the cover.
 
 use super::{layer_at_load, winkler_at_load, BodyModel, LayerSettings, WinklerColumns};
-use crate::contact::controlled::AutoSettings;
 use crate::contact::error::ContactError;
 use crate::contact::load::LoadSettings;
-use crate::contact::roll_auto::roll_auto;
 use crate::contact::scene::{RollSolution, Scene};
+use crate::contact::{roll, Body, ContactSettings};
 use crate::CreepSpectrum;
 
 /// Half-space law of approach: relative difference from the layer ≤ C_HS·(L/h)² (module doc;
@@ -97,23 +96,23 @@ pub fn roll_cover(
     tol: f64,
 ) -> Result<CoverRoll, ContactError> {
     let p = scene.dimensionless(spectrum)?;
-    let auto_settings = AutoSettings {
-        tol,
-        ..Default::default()
-    };
     let half_space = |reason: String, model_err: Option<f64>| -> Result<CoverRoll, ContactError> {
-        let r = roll_auto(scene, spectrum, &auto_settings)
-            .map_err(|e| ContactError::Unsupported(e.to_string()))?;
+        let hs_scene = Scene {
+            body: Body::HalfSpace,
+            ..*scene
+        };
+        let r = roll(&hs_scene, spectrum, &ContactSettings::auto(tol))?;
+        let diag = r.dimensionless.auto.clone();
         Ok(CoverRoll {
-            error_estimate: r.roll.dimensionless.error_estimate.unwrap_or(f64::NAN),
+            error_estimate: r.dimensionless.error_estimate.unwrap_or(f64::NAN),
             model: BodyModel::HalfSpace,
             reason,
             model_error_estimate: model_err,
-            cover_over_contact: cover_m.map(|h| h / r.roll.contact_length_m),
-            min_pressure_ratio: r.auto.min_pressure_ratio,
-            min_gap_ratio: r.auto.min_gap_ratio,
-            warnings: r.auto.warnings,
-            roll: r.roll,
+            cover_over_contact: cover_m.map(|h| h / r.contact_length_m),
+            min_pressure_ratio: diag.as_ref().map_or(f64::NAN, |d| d.min_pressure_ratio),
+            min_gap_ratio: diag.as_ref().map_or(f64::NAN, |d| d.min_gap_ratio),
+            warnings: r.dimensionless.warnings.clone(),
+            roll: r,
         })
     };
     let Some(h_m) = cover_m else {

@@ -1,0 +1,394 @@
+//! `viscoroll run` on hostile or awkward input folders (issue 15): each class of bad input has a test
+//! here — empty folders, bad files that must fail alone (zip bomb, far cell, an isotherm at 1e9 °C,
+//! a 30 MB line), names that try to leave the output folder, untrusted fits (exit 3), two runs on one
+//! output folder, temp files of a killed run, reports of removed compounds, usage errors, scene
+//! numbers out of range, `--tref` and measurement JSON. Inputs are synthetic exports of a known
+//! rubber-like material, written by [`rubber_csv`].
+
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> &'static str {
+    env!("CARGO_BIN_EXE_viscoroll")
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("viscoroll-hard-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn run(dir: &Path, out: &Path, extra: &[&str]) -> Output {
+    Command::new(bin())
+        .arg("run")
+        .arg(dir)
+        .arg("--out")
+        .arg(out)
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+/// A generic CSV export of a rubber-like material (E∞ = 1 MPa, one 100 MPa term at 1 ms, a weak
+/// power law, WLF shifts about 20 °C): `n` log-spaced frequencies 0.1–100 Hz per temperature.
+pub fn rubber_csv(temps_c: &[f64], n: usize) -> String {
+    let mut s = String::from("temperature [°C],frequency [Hz],E' [Pa],E'' [Pa]\n");
+    for &t in temps_c {
+        let a_t = 10f64.powf(-8.0 * (t - 20.0) / (100.0 + t - 20.0));
+        for k in 0..n {
+            let f = 10f64.powf(-1.0 + 3.0 * k as f64 / (n - 1).max(1) as f64);
+            let w = 2.0 * std::f64::consts::PI * f * a_t;
+            let x = w * 1e-3;
+            let e1 = 1e6 + 1e8 * x * x / (1.0 + x * x) + 1e6 * w.powf(0.2);
+            let e2 = 1e8 * x / (1.0 + x * x) + 2e5 * w.powf(0.2);
+            s.push_str(&format!("{t},{f:.6e},{e1:.6e},{e2:.6e}\n"));
+        }
+    }
+    s
+}
+
+fn zip_of(parts: &[(&str, &[u8])]) -> Vec<u8> {
+    let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    let opts = zip::write::SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated);
+    for (name, data) in parts {
+        w.start_file(*name, opts).unwrap();
+        w.write_all(data).unwrap();
+    }
+    w.finish().unwrap().into_inner()
+}
+
+#[test]
+fn an_empty_folder_exits_1_with_a_message_and_one_json_object() {
+    let dir = temp_dir("empty-in");
+    let out = temp_dir("empty-out");
+    std::fs::write(dir.join("notes.md"), "not an export").unwrap();
+    let o = run(&dir, &out, &["--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o.stderr).contains("no DMA export"),
+        "{}",
+        text(&o.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["error"].as_str().unwrap().contains("no DMA export"));
+    assert_eq!(v["exit_code"], 1);
+    assert_eq!(text(&o.stdout).lines().count(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn bad_files_fail_alone_and_the_good_compound_still_gets_its_report() {
+    let dir = temp_dir("bad-in");
+    let out = temp_dir("bad-out");
+    std::fs::write(dir.join("good.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
+    // An isotherm at 1e9 °C: refused at ingest (it used to hang the shift-law fits).
+    std::fs::write(dir.join("hot.csv"), rubber_csv(&[0.0, 1e9], 20)).unwrap();
+    // A zip bomb: 300 MiB of zeros in a ~300 kB .xlsx (more than the guard's 256 MiB per part).
+    let zeros = vec![0u8; 300 << 20];
+    std::fs::write(
+        dir.join("bomb.xlsx"),
+        zip_of(&[("xl/sharedStrings.xml", &zeros)]),
+    )
+    .unwrap();
+    drop(zeros);
+    // One far cell: calamine would allocate 1.7e10 cells for it.
+    let far = br#"<worksheet><sheetData><row r="1"><c r="A1"><v>1</v></c></row><row r="1048576"><c r="XFD1048576"><v>2</v></c></row></sheetData></worksheet>"#;
+    std::fs::write(
+        dir.join("far.xlsx"),
+        zip_of(&[("xl/worksheets/sheet1.xml", far)]),
+    )
+    .unwrap();
+    // A 30 MB line: its error must not become a 30 MB line of index.html.
+    let mut long = rubber_csv(&[0.0, 20.0], 5);
+    long.push_str(&"x".repeat(30 << 20));
+    long.push('\n');
+    std::fs::write(dir.join("long.csv"), long).unwrap();
+
+    let o = run(&dir, &out, &[]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(out.join("reports/good/datasheet.html").is_file(), "{err}");
+    let index = std::fs::read_to_string(out.join("reports/index.html")).unwrap();
+    for (name, reason) in [
+        ("hot", "above 1000 °C"),
+        ("bomb", "zip bomb"),
+        ("far", "far cell"),
+    ] {
+        let line = err
+            .lines()
+            .find(|l| l.starts_with(&format!("{name}: FAILED")))
+            .unwrap_or_else(|| panic!("{name} did not fail: {err}"));
+        assert!(line.contains(reason), "{line}");
+        assert!(index.contains(&format!("<b>{name}</b>")), "{name}");
+    }
+    // Every line kept short: the index stays small, whatever `long` did.
+    assert!(index.len() < 100_000, "index.html is {} bytes", index.len());
+    assert!(err.lines().all(|l| l.len() < 2000), "a long stderr line");
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn names_are_sanitised_so_nothing_is_written_outside_the_output_folder() {
+    let base = temp_dir("names");
+    let (dir, out) = (base.join("in"), base.join("out"));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0, 40.0], 12)).unwrap();
+    let listing: String = ["../escape", "/abs/olute", "a/b", "a_b", "..", "C:\\\\win"]
+        .iter()
+        .map(|n| format!("[[compound]]\nname = \"{n}\"\nfiles = [\"a.csv\"]\n"))
+        .collect();
+    std::fs::write(dir.join("compounds.toml"), listing).unwrap();
+    let o = run(&dir, &out, &[]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    // Only `in` and `out` under the base folder; nothing at /abs.
+    let mut top: Vec<String> = std::fs::read_dir(&base)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    top.sort();
+    assert_eq!(top, ["in", "out"]);
+    assert!(!Path::new("/abs/olute.json").exists());
+    let mut fits: Vec<String> = std::fs::read_dir(out.join("fits"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    fits.sort();
+    assert_eq!(fits.len(), 6, "{fits:?}");
+    assert!(
+        fits.iter()
+            .all(|f| !f.contains("..") && !f.starts_with('.')),
+        "{fits:?}"
+    );
+    let _ = std::fs::remove_dir_all(&base);
+}
+
+#[test]
+fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
+    let dir = temp_dir("untrusted-in");
+    let out = temp_dir("untrusted-out");
+    std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
+    // One Prony term per five decades cannot follow the data: RMS log10 errors far above bounds.
+    std::fs::write(
+        dir.join("compounds.toml"),
+        "[[compound]]\nname = \"coarse\"\nfiles = [\"a.csv\"]\nprony = { terms_per_decade = 0.2 }\n[[compound]]\nname = \"fine\"\nfiles = [\"a.csv\"]\n",
+    )
+    .unwrap();
+    let o = run(&dir, &out, &["--json"]);
+    assert_eq!(o.status.code(), Some(3), "{}", text(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["kind"], "untrusted_results");
+    assert_eq!(v["detail"]["compounds"].as_array().unwrap().len(), 2);
+    let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();
+    let body: String = ranking
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(body.as_bytes())
+        .records()
+        .map(|r| r.unwrap())
+        .collect();
+    for r in &rows {
+        match &r[2] {
+            "fine" => assert_eq!((&r[1], &r[5]), ("1", "true")),
+            "coarse" => {
+                assert_eq!((&r[1], &r[5]), ("", "false"));
+                assert!(r[8].contains("prony_rms_log10_storage"), "{r:?}");
+            }
+            other => panic!("{other}"),
+        }
+    }
+    let friction = std::fs::read_to_string(out.join("reports/coarse/friction.csv")).unwrap();
+    assert!(friction.contains("# not trusted: prony_rms_log10_storage"));
+    let sheet = std::fs::read_to_string(out.join("reports/coarse/datasheet.html")).unwrap();
+    assert!(sheet.contains("Not trusted"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn two_runs_on_one_output_folder_both_succeed_and_leftovers_are_handled() {
+    let dir = temp_dir("twice-in");
+    let out = temp_dir("twice-out");
+    std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0, 40.0], 15)).unwrap();
+    // A temp file of a killed run (pid above Linux's pid_max, so never alive) and the report of a
+    // compound that is gone from the input.
+    std::fs::create_dir_all(out.join("fits")).unwrap();
+    let stale = out.join("fits/.a.tmp-4294967-0.json");
+    std::fs::write(&stale, "{").unwrap();
+    std::fs::create_dir_all(out.join("reports/gone")).unwrap();
+    let spawn = || {
+        Command::new(bin())
+            .arg("run")
+            .arg(&dir)
+            .arg("--out")
+            .arg(&out)
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap()
+    };
+    let (a, b) = (spawn(), spawn());
+    let (a, b) = (a.wait_with_output().unwrap(), b.wait_with_output().unwrap());
+    assert!(a.status.success(), "{}", text(&a.stderr));
+    assert!(b.status.success(), "{}", text(&b.stderr));
+    assert!(!stale.exists());
+    assert!(!out.join(".viscoroll.lock").exists());
+    let index = std::fs::read_to_string(out.join("reports/index.html")).unwrap();
+    assert!(index.contains("reports/gone") && index.contains("no longer in the input"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn usage_errors_are_printed_in_full_with_a_suggestion() {
+    let o = Command::new(bin())
+        .args(["run", "--forse"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let e = text(&o.stderr);
+    assert!(
+        e.contains("--forse") && e.contains("a similar argument exists: '--force'"),
+        "{e}"
+    );
+    let o = Command::new(bin()).arg("roll").output().unwrap();
+    let e = text(&o.stderr);
+    for arg in ["--radius-mm", "--load-n-per-m", "--speed-m-s"] {
+        assert!(e.contains(arg), "{arg} missing from: {e}");
+    }
+    let o = Command::new(bin())
+        .args(["rank", "--json"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["kind"], "usage");
+    // No doubled text: a cause is not printed again after the error that holds it.
+    let o = Command::new(bin())
+        .args(["rank", "/nonexistent/fit.json"])
+        .output()
+        .unwrap();
+    let e = text(&o.stderr);
+    let first = e.find("/nonexistent/fit.json").unwrap();
+    assert!(
+        e[first + 1..].find("/nonexistent/fit.json").is_none(),
+        "{e}"
+    );
+}
+
+#[test]
+fn scene_numbers_out_of_range_are_refused_naming_the_field() {
+    let dir = temp_dir("scene-in");
+    std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0], 5)).unwrap();
+    for (key, v) in [
+        ("speed_m_s", "1e300"),
+        ("load_n_per_m", "-1"),
+        ("roll_radius_mm", "nan"),
+    ] {
+        let mut scene = String::from("[[scene]]\nname = \"s\"\n");
+        for (k, d) in [
+            ("roll_radius_mm", "50"),
+            ("load_n_per_m", "1000"),
+            ("speed_m_s", "1"),
+        ] {
+            scene.push_str(&format!("{k} = {}\n", if k == key { v } else { d }));
+        }
+        scene.push_str("temps_c = [20]\n");
+        std::fs::write(dir.join("s.toml"), scene).unwrap();
+        let o = Command::new(bin())
+            .arg("run")
+            .arg(&dir)
+            .arg("--scenes")
+            .arg(dir.join("s.toml"))
+            .arg("--out")
+            .arg(dir.join("out"))
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(1));
+        assert!(text(&o.stderr).contains(key), "{}", text(&o.stderr));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn run_takes_tref_and_a_measurement_json_written_by_ingest() {
+    let dir = temp_dir("json-in");
+    let out = temp_dir("json-out");
+    let csv = dir.join("raw.csv.keep");
+    std::fs::write(&csv, rubber_csv(&[0.0, 20.0, 40.0], 15)).unwrap();
+    let o = Command::new(bin())
+        .arg("ingest")
+        .arg(&csv)
+        .args(["--format", "generic", "-o"])
+        .arg(dir.join("m.json"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let o = run(&dir, &out, &["--tref", "20"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let fit: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("fits/m.json")).unwrap()).unwrap();
+    assert_eq!(fit["shift_law"]["t_ref_c"].as_f64(), Some(20.0));
+    let o = run(&dir, &out, &["--tref", "1e9"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o.stderr).contains("--tref"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// Peak resident memory of this process in MB (Linux `VmHWM`; NaN elsewhere).
+fn peak_rss_mb() -> f64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM:"))
+                .and_then(|l| l.split_whitespace().nth(1)?.parse::<f64>().ok())
+        })
+        .map_or(f64::NAN, |kb| kb / 1024.0)
+}
+
+/// Issue 15's large-file figure: a CSV of 1e6 rows in 2 isotherms, ingested (target ≤ 5 s) and
+/// fitted (≤ 10 s) in ≤ 1 GB. Prints a table; not timed as a pass/fail test (speed is measured, not
+/// asserted): `cargo test --release --test tests -- --ignored large_csv --nocapture`.
+#[test]
+#[ignore = "a measurement, not a check: run with --ignored --nocapture"]
+fn large_csv_ingest_and_fit_timings() {
+    use viscoroll::dma::{read_files, IngestOptions};
+    let dir = temp_dir("large");
+    let path = dir.join("large.csv");
+    std::fs::write(&path, rubber_csv(&[0.0, 40.0], 500_000)).unwrap();
+    let bytes = std::fs::metadata(&path).unwrap().len();
+    let t = std::time::Instant::now();
+    let m = read_files(&[&path], &IngestOptions::default()).unwrap();
+    let ingest_s = t.elapsed().as_secs_f64();
+    let rss_ingest = peak_rss_mb();
+    let t = std::time::Instant::now();
+    let fit = viscoroll::pipeline::fit_measurement(
+        "large",
+        &m,
+        &viscoroll::pipeline::FitOptions::default(),
+    );
+    let fit_s = t.elapsed().as_secs_f64();
+    eprintln!("| rows | file MB | ingest s | peak MB after ingest | fit s | peak MB | fit |");
+    eprintln!(
+        "| {} | {:.1} | {ingest_s:.2} | {rss_ingest:.0} | {fit_s:.2} | {:.0} | {} |",
+        m.isotherms.iter().map(|i| i.points.len()).sum::<usize>(),
+        bytes as f64 / 1e6,
+        peak_rss_mb(),
+        match &fit {
+            Ok(f) => format!("ok, {} Prony terms", f.relaxation.terms.len()),
+            Err(e) => format!("error: {e}"),
+        }
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,0 +1,52 @@
+//! Seeds of the randomized tests (issue 19, item 4): random inputs that move from run to run.
+//!
+//! `VISCOROLL_SEED=N` (decimal or `0x` hex) replays a run; without it every run of the test binary
+//! draws one fresh base seed (clock and process id). Each test mixes the base seed with its own name,
+//! so tests do not share their streams, and prints `VISCOROLL_SEED=…` at its start: libtest shows a
+//! failing test's output, so every failure names the seed that reproduces it, e.g.
+//! `VISCOROLL_SEED=0x1234abcd cargo test --test tests contact_props`.
+
+use std::sync::OnceLock;
+
+/// SplitMix64's output function (Steele, Lea & Flood 2014): a bijective 64-bit mixer.
+fn mix(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// The run's base seed: `VISCOROLL_SEED`, or a fresh one.
+pub fn base_seed() -> u64 {
+    static BASE: OnceLock<u64> = OnceLock::new();
+    *BASE.get_or_init(|| match std::env::var("VISCOROLL_SEED") {
+        Ok(text) => {
+            let t = text.trim();
+            let parsed = match t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
+                Some(hex) => u64::from_str_radix(hex, 16),
+                None => t.parse::<u64>(),
+            };
+            parsed.unwrap_or_else(|_| {
+                panic!("VISCOROLL_SEED must be a decimal or 0x-hex u64, got `{text}`")
+            })
+        }
+        Err(_) => {
+            let nanos = std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map(|d| d.as_nanos() as u64)
+                .unwrap_or(0);
+            mix(nanos ^ (u64::from(std::process::id()) << 32))
+        }
+    })
+}
+
+/// The seed of the randomized test `test` in this run (printed with the way to reproduce it).
+pub fn seed(test: &str) -> u64 {
+    let base = base_seed();
+    println!("{test}: random inputs from VISCOROLL_SEED={base:#x} (set it to replay this run)");
+    // FNV-1a of the name, then mixed with the base seed.
+    let name = test.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+    });
+    mix(base ^ mix(name))
+}
