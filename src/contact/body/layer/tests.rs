@@ -1,5 +1,5 @@
 //! Limits of the bonded layer and the Winkler foundations (issue 14 item 3). Run with
-//! `cargo test --lib contact::layer -- --nocapture` to see the measured tables.
+//! `cargo test --lib contact::body::layer -- --nocapture` to see the measured tables.
 
 use super::collocation::{lambda_guess, solve_at_load_n};
 use super::compliance::{winkler_coefficient, WinklerColumns};
