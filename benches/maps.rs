@@ -1,6 +1,6 @@
 //! Benchmark of the friction maps (issue 8): a map of 30 speeds × 30 loads × 10 temperatures of two
 //! shipped compounds (fitted from their raw exports in data/), from the reduced variable
-//! s = l_g/(V·a_T) (src/pipeline/friction_map.rs) at map tolerances 1e−3 (the main job's), 1e−4,
+//! s = l_g/(V·a_T) (src/contact/maps/) at map tolerances 1e−3 (the main job's), 1e−4,
 //! 1e−5 and 1e−6.
 //!
 //! Grid: radius 66.5 mm (the shipped idler), speeds 0.5…40 m/s and loads 2…50 kN/m log-spaced,
@@ -12,9 +12,9 @@
 
 use std::path::PathBuf;
 use std::time::Instant;
+use viscoroll::contact::maps::{friction_map, MapQuery, MapSettings, ReducedProblem};
 use viscoroll::contact::Scene;
 use viscoroll::contact::{roll, Body};
-use viscoroll::pipeline::friction_map::{friction_map, MapQuery, MapSettings, ReducedProblem};
 use viscoroll::pipeline::scenes::pipeline_contact_settings;
 use viscoroll::pipeline::{fit_files, FitOptions};
 

@@ -432,7 +432,7 @@ fn beyond_the_lumping_cap_the_corrected_friction_follows_the_slow_limit() {
 }
 
 /// The estimate on measured compounds over the whole reduced variable s = l_g/(V·a_T) (a scene's
-/// dimensionless problem depends on nothing else; src/pipeline/friction_map.rs): the creep spectra
+/// dimensionless problem depends on nothing else; src/contact/maps/): the creep spectra
 /// of the TRIOS (32 terms over 15 decades, J∞/J_g 7.6e4) and EMS-CA (65 terms over 32 decades)
 /// fits, ln s = −48…8 in steps of 1 (from far on the glassy side to beyond the relaxed end), at tol
 /// 1e−4 and 1e−6 against tol 1e−10: |difference| ≤ the two estimates, in ρF/N and λ. Before the
@@ -440,7 +440,7 @@ fn beyond_the_lumping_cap_the_corrected_friction_follows_the_slow_limit() {
 /// (error 2.7e−2 at ln s ≈ −38…−46, estimates ~1e−6).
 #[test]
 fn estimate_holds_across_the_reduced_variable_on_measured_compounds() {
-    use viscoroll::pipeline::friction_map::ReducedProblem;
+    use viscoroll::contact::maps::ReducedProblem;
     for name in ["rear_scan_trios_creep.json", "rear_scan_ems_ca_creep.json"] {
         let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
         let spec: CreepSpectrum =

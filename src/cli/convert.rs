@@ -1,5 +1,5 @@
 //! `viscoroll convert`: a relaxation spectrum (JSON, [`crate::RelaxationSpectrum`]) → a creep spectrum
-//! (JSON, [`crate::CreepSpectrum`]), exactly (MATH.md §4, default) or by Park & Schapery (thesis
+//! (JSON, [`crate::CreepSpectrum`]), exactly (docs/MATH.md §4, default) or by Park & Schapery (thesis
 //! eq. 2.18–2.23), with the checks that tell how good the result is.
 //!
 //! `--json` prints one object: `{ "method", "variant", "input", "output", "creep_spectrum", "checks":
@@ -16,7 +16,7 @@ use std::path::PathBuf;
 /// Conversion method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Method {
-    /// Exact: roots and residues of s·Ē(s) (MATH.md §4).
+    /// Exact: roots and residues of s·Ē(s) (docs/MATH.md §4).
     Exact,
     /// Park & Schapery's collocation / least squares (thesis eq. 2.18–2.23), τⱼ = ρⱼ.
     ParkSchapery,

@@ -1,18 +1,15 @@
 //! `viscoroll roll`: one dimensional scene, a rigid roll on a half-space with a given creep spectrum
 //! (JSON, the serde form of [`crate::CreepSpectrum`]) → friction, contact length, offset, pressure.
 //! A fit file (`fits/NAME.json`, [`crate::pipeline::CompoundFit`]) is accepted too, with `--temp-c T`:
-//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, MATH.md §6);
+//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, docs/MATH.md §6);
 //! a T outside the measured temperatures is allowed and flagged (`extrapolated`, and a warning).
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
 //! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
 
-use crate::contact::{self, AutoSettings, Body, ContactSettings, Scene, Scheme};
-use crate::creep::AtTemperature;
-use crate::pipeline::fit_compound::measured_range_c;
-use crate::pipeline::CompoundFit;
-use crate::CreepSpectrum;
+use crate::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
+use crate::pipeline::roll_fit::{roll_source_at, CreepSource, SourceRoll};
 use anyhow::{bail, Context};
 use std::path::PathBuf;
 
@@ -71,51 +68,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             bail!("{name} must be finite and > 0, got {v}");
         }
     }
-    let text = std::fs::read_to_string(&args.spectrum)
+    let source = CreepSource::read(&args.spectrum)
         .with_context(|| format!("cannot read spectrum file {}", args.spectrum.display()))?;
-    let value: serde_json::Value = serde_json::from_str(&text).with_context(|| {
-        format!(
-            "{}: not a creep spectrum or fit file",
+    match (&source, args.temp_c) {
+        (CreepSource::Fit(fit), None) => bail!(
+            "{}: a fit file needs --temp-c (its spectrum is at T_ref = {} °C)",
+            args.spectrum.display(),
+            fit.shift_law.t_ref_c()
+        ),
+        (CreepSource::Spectrum(_), Some(_)) => bail!(
+            "{}: --temp-c needs a fit file (a bare creep spectrum has no shift law)",
             args.spectrum.display()
-        )
-    })?;
-    let mut shifted: Option<AtTemperature<CreepSpectrum>> = None;
-    let mut warnings: Vec<String> = Vec::new();
-    let spectrum: CreepSpectrum = if value.get("format_version").is_some() {
-        let fit = CompoundFit::read(&args.spectrum)?;
-        let Some(t) = args.temp_c else {
-            bail!(
-                "{}: a fit file needs --temp-c (its spectrum is at T_ref = {} °C)",
-                args.spectrum.display(),
-                fit.shift_law.t_ref_c()
-            );
-        };
-        let creep = fit.creep.as_ref().with_context(|| {
-            format!("{}: the fit has no creep spectrum", args.spectrum.display())
-        })?;
-        let range = measured_range_c(&fit);
-        let at = creep
-            .at_temperature(&fit.shift_law, t, range)
-            .with_context(|| format!("{}: --temp-c {t}", args.spectrum.display()))?;
-        if at.extrapolated {
-            let (lo, hi) = range.unwrap_or((f64::NAN, f64::NAN));
-            warnings.push(format!(
-                "--temp-c {t} °C lies outside the measured temperatures {lo} … {hi} °C: the shift law is extrapolated"
-            ));
-        }
-        let sp = at.spectrum.clone();
-        shifted = Some(at);
-        sp
-    } else {
-        if args.temp_c.is_some() {
-            bail!(
-                "{}: --temp-c needs a fit file (a bare creep spectrum has no shift law)",
-                args.spectrum.display()
-            );
-        }
-        serde_json::from_value(value)
-            .with_context(|| format!("{}: not a creep spectrum", args.spectrum.display()))?
-    };
+        ),
+        _ => {}
+    }
     let scene = Scene {
         radius_m: args.radius_mm * 1e-3,
         load_n_per_m: args.load_n_per_m,
@@ -124,6 +90,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         body: Body::HalfSpace,
     };
     if args.cover_mm.is_some() || args.model.is_some() {
+        // A cover: the body is chosen and solved by contact::body::layer (super::roll_cover).
+        let (spectrum, shifted, warnings) = match (&source, args.temp_c) {
+            (CreepSource::Fit(fit), Some(t)) => {
+                let (at, w) = crate::pipeline::roll_fit::fit_spectrum_at(fit, t)
+                    .with_context(|| format!("{}: --temp-c {t}", args.spectrum.display()))?;
+                (at.spectrum.clone(), Some(at), w.into_iter().collect())
+            }
+            (CreepSource::Spectrum(s), _) => (s.clone(), None, Vec::new()),
+            (CreepSource::Fit(_), None) => bail!("a fit file needs --temp-c"),
+        };
         return super::roll_cover::run(&args, &scene, &spectrum, shifted.as_ref(), warnings);
     }
     let settings = ContactSettings {
@@ -135,7 +111,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         },
         ..ContactSettings::default()
     };
-    let sol = contact::roll(&scene, &spectrum, &settings)
+    let SourceRoll {
+        roll: sol,
+        spectrum,
+        shift: shifted,
+        warnings,
+    } = roll_source_at(&source, args.temp_c, &scene, &settings)
         .with_context(|| format!("{}", args.spectrum.display()))?;
     let d = &sol.dimensionless;
     let auto_info = d.auto.as_ref();
@@ -176,9 +157,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             obj["modes_dropped"] = serde_json::json!(a.modes_dropped);
             obj["min_pressure_ratio"] = serde_json::json!(a.min_pressure_ratio);
         }
-        // Temperature warnings first, then the solver's.
-        let all: Vec<&String> = warnings.iter().chain(d.warnings.iter()).collect();
-        obj["warnings"] = serde_json::json!(all);
         println!("{obj}");
     } else {
         if let Some(a) = &shifted {
@@ -227,9 +205,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 a.modes_lumped,
                 a.modes_dropped
             );
-        }
-        for w in &d.warnings {
-            eprintln!("warning: {w}");
         }
     }
     for w in &warnings {

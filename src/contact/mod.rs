@@ -7,7 +7,8 @@
 //!
 //! Layout: [`scene`] (to and from the dimensionless problem, [`roll`]), [`settings`], [`error`],
 //! [`load`] (the load loop of the thesis scheme), [`body`] (the seam: one enum, one dispatch;
-//! [`body::half_space`] holds the half-space kernel, modes, reduction and the three schemes).
+//! [`body::half_space`] holds the half-space kernel, modes, reduction and the three schemes),
+//! [`maps`] (friction maps of a spectrum from one reduced variable, half-space only).
 //!
 //! Dimensionless problem (thesis §3.2, eq. 3.25): lengths in units of V·T, contact on 0 ≤ ξ ≤ λ with the
 //! front (leading) edge at ξ = λ, creep function γ(ζ) = Σᵢ fᵢ e^(−bᵢζ) (eq. 3.7), unknown pressure Q′(ξ)
@@ -61,6 +62,7 @@ pub struct DimensionlessSolution {
 pub mod body;
 pub mod error;
 pub mod load;
+pub mod maps;
 pub mod scene;
 pub mod settings;
 

@@ -59,7 +59,9 @@ pub fn warnings(m: &Measurement) -> Vec<String> {
     if let Some(e) = median(points().map(|p| p.storage_pa).collect()) {
         let (lo, hi) = POLYMER_MODULUS_PA;
         if e < lo {
-            let factor = if e < lo * 1e-3 {
+            // The factor that brings the median into the range where filled and unfilled rubbers
+            // sit (1e5 Pa and up): a 5 MPa rubber read as Pa is 5 Pa, ×10³ would still be too soft.
+            let factor = if e * 1e3 < 1e5 {
                 "10⁶ (MPa read as Pa?)"
             } else {
                 "10³ (kPa read as Pa?)"

@@ -24,7 +24,7 @@ pub enum PipelineError {
     Contact(#[from] crate::contact::ContactError),
     /// A friction map could not be built.
     #[error("friction map: {0}")]
-    Map(#[from] super::friction_map::FrictionMapError),
+    Map(#[from] crate::contact::maps::FrictionMapError),
     /// A fit file could not be read or written.
     #[error("{0}")]
     Fit(#[from] crate::results::CompoundFitError),

@@ -7,7 +7,7 @@
 pub mod compounds;
 pub mod error;
 pub mod fit_compound;
-pub mod friction_map;
+pub mod roll_fit;
 pub mod run;
 pub mod scenes;
 

@@ -2,11 +2,12 @@
 //!
 //! Input: a [`SceneSpec`] (crate::results::scene) and a [`CompoundFit`]; output: [`FrictionPoint`]s, one per temperature, from
 //! the contact stage's error-controlled load solve (crate::contact::roll, thesis eq. 3.12 for F/N) on the creep
-//! spectrum shifted to each temperature (MATH.md §6).
+//! spectrum shifted to each temperature (docs/MATH.md §6).
 
 use super::error::PipelineError;
-use super::friction_map::{friction_map, MapQuery, MapSettings, MapValue, ReducedProblem};
+use super::roll_fit::fit_spectrum_at;
 use crate::contact::body::layer::{roll_cover, ModelChoice};
+use crate::contact::maps::{friction_map, MapQuery, MapSettings, MapValue, ReducedProblem};
 use crate::contact::{roll, AutoSettings, ContactSettings, Scheme};
 use crate::results::CompoundFit;
 use rayon::prelude::*;
@@ -45,10 +46,9 @@ pub fn friction_vs_temperature(
     spec: &SceneSpec,
     settings: &ContactSettings,
 ) -> Result<Vec<FrictionPoint>, PipelineError> {
-    let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
+    fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
     })?;
-    let range = fit.measured_range_c();
     let scene = spec.scene();
     Ok(spec
         .temps_c
@@ -66,8 +66,11 @@ pub fn friction_vs_temperature(
                 model_reason: String::new(),
                 warnings: vec![],
             };
-            let at = match creep.at_temperature(&fit.shift_law, t, range) {
-                Ok(a) => a,
+            // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
+            let at = match fit_spectrum_at(fit, t) {
+                Ok((a, _)) => a,
+                // the message of the creep stage itself, as before
+                Err(PipelineError::Creep(e)) => return failed(e.to_string(), f64::NAN, true),
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
             if let Some(h_mm) = spec.cover_thickness_mm {
@@ -150,7 +153,7 @@ fn log_grid(values: &[f64]) -> Vec<f64> {
 
 /// Friction maps of `fit` in `spec` ([`FrictionMaps`]), all from one interpolant of the
 /// dimensionless solution in the reduced variable s = l_g/(V·a_T) (module
-/// [`super::friction_map`]: exact scaling, interpolation error ≤ `settings.tol`).
+/// [`crate::contact::maps`]: exact scaling, interpolation error ≤ `settings.tol`).
 pub fn friction_maps(
     fit: &CompoundFit,
     spec: &SceneSpec,

@@ -1,4 +1,4 @@
-//! The non-negative, regularised Prony fit (MATH.md §5): master-curve points ([`MasterPoint`]) →
+//! The non-negative, regularised Prony fit (docs/MATH.md §5): master-curve points ([`MasterPoint`]) →
 //! [`RelaxationSpectrum`] + [`PronyInfo`], solved as a convex QP with clarabel.
 //!
 //! # The problem
@@ -94,7 +94,7 @@ pub fn relaxation_times_s(
         .collect()
 }
 
-/// Fit a non-negative, smooth Prony series to master-curve points (MATH.md §5; see the module docs
+/// Fit a non-negative, smooth Prony series to master-curve points (docs/MATH.md §5; see the module docs
 /// for the QP). `kind` and `poisson` are copied into the spectrum; the moduli are fitted as given.
 pub fn fit_prony(
     points: &[MasterPoint],

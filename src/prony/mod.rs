@@ -1,5 +1,5 @@
 //! Stage `prony`: the relaxation spectrum (Prony series, thesis eq. 2.9) and its non-negative QP fit
-//! to a master curve (MATH.md §5).
+//! to a master curve (docs/MATH.md §5).
 //!
 //! Input: a master curve; output: [`RelaxationSpectrum`].
 

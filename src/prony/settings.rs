@@ -4,7 +4,7 @@
 use super::PronyError;
 use serde::{Deserialize, Serialize};
 
-/// How the weight λ of the second-difference (Tikhonov) term is chosen (MATH.md §5).
+/// How the weight λ of the second-difference (Tikhonov) term is chosen (docs/MATH.md §5).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "rule", rename_all = "snake_case")]
 pub enum WeightRule {

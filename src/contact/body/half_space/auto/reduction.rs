@@ -1,18 +1,18 @@
-//! Mode reduction of the `auto` scheme: which retardation modes a scene needs.
+//! Mode reduction of the `auto` scheme: which retardation modes a scene needs (docs/MATH.md §8).
 //!
 //! Input: creep terms (fᵢ, bᵢ), the contact length λ and error budgets; output: [`Reduction`] (kept,
 //! lumped and dropped modes and the rescaled problem; their errors: [`lumped_residual`], [`slow_estimate_at`]).
 //!
 //! With L = λ/2, cᵢ = bᵢL (contact half-time over τᵢ), rᵢ = fᵢ/bᵢ = Jᵢ/J_g:
 //! - **Fast modes (cᵢ ≫ 1) are lumped into the glassy compliance.** For bξ → ∞ the kernel term
-//!   (fᵢ/bᵢ)h(bᵢξ) → (fᵢ/bᵢ)(ln|ξ| + const) (MATH.md §2), so K → s·ln|ξ| + Σ_kept, s = 1 + Σ_fast rᵢ;
+//!   (fᵢ/bᵢ)h(bᵢξ) → (fᵢ/bᵢ)(ln|ξ| + const) (docs/MATH.md §2.2; the reduction: §8), so K → s·ln|ξ| + Σ_kept, s = 1 + Σ_fast rᵢ;
 //!   dividing eq. 3.25 by s gives the same problem for Q̂ = sQ′ with f̂ᵢ = fᵢ/s (β, λ and ρF/N are
 //!   unchanged, N′ = N̂/s). Dropping such a mode instead would miss its whole compliance.
 //!   The error is the mode's boundary layer: the kernel differs from its asymptote only within
 //!   |ξ| ≲ 1/bᵢ, so to first order in 1/cᵢ a lumped mode acts like a local compliance of strength
 //!   ∝ rᵢ/bᵢ, and the effects of several lumped modes add: ρF/N/λ rises by g_F·Σwᵢ and N′ by the
 //!   factor 1 + g_N·Σwᵢ, wᵢ = rᵢ/cᵢ, with g_F, g_N properties of the whole problem. For one term
-//!   the exact solution gives g_F = 1/(2(1+r)), g_N = 1/(1+r) (to < 1 % for c ≥ 30). In a spectrum
+//!   the exact solution gives g_F = 1/(2(1+r)), g_N = 1/(1+r) (derived in docs/MATH.md §8.2; the exact values deviate by ≈ 1/c, 3 % at c = 30). In a spectrum
 //!   the model g_F = 1/(2S_eff), g_N = 1/S_eff with the effective compliance at the contact time
 //!   S_eff = 1 + Σrᵢcᵢ/(1+cᵢ) was within 0.82–1.14 of the measured g on random spectra (5–35 terms,
 //!   J∞/J_g = 10…1e4); the isolated-mode value 1/(2(1+rᵢ)) overstates it up to S_eff/(1+rᵢ) ~ 1e3×.
@@ -42,8 +42,12 @@
 //! the budgets (only c ≥ 30, where the first-order law holds); slow modes (μ ≤ 0.05) are dropped
 //! cheapest first within the rest. Modes between are always kept.
 
+use super::at_lambda::{
+    solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings,
+};
 use crate::contact::body::half_space::modes::Modes;
 use crate::contact::CreepTerm;
+use std::f64::consts::PI;
 
 /// Smallest c of a lumped mode: the first-order law of the module doc holds from here on.
 const C_LUMP_MIN: f64 = 30.0;
@@ -283,4 +287,45 @@ pub fn slow_estimate_at(terms: &[CreepTerm], red: &Reduction, lambda: f64) -> (f
         }
     }
     (fr, ld)
+}
+/// Map a solution of the reduced problem back to the full problem's units.
+pub(super) fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution {
+    s.load /= red.scale;
+    for c in s.coefficients.iter_mut() {
+        *c /= red.scale;
+    }
+    s
+}
+
+/// Solve the reduced problem at λ and map back to the full problem's units.
+pub(super) fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaSolution {
+    unscale(red, solve_at_lambda(&red.modes, lambda, q))
+}
+
+/// As [`solve_reduced`], with the quadrature error estimate: (solution, relative error of ρF/N,
+/// relative error of N′). The trapezoid error falls like e^{−π²/h} (module doc of
+/// [`at_lambda`]; measured constant ≤ 1 for h = 0.4…0.8 on 1–30-term problems), so the error at
+/// step h is about e^{−π²/(2h)} times the difference to the same sum on every second node (step
+/// 2h, no extra exterior values); we take 10 times that.
+pub(super) fn solve_reduced_checked(
+    red: &Reduction,
+    lambda: f64,
+    q: QuadratureSettings,
+) -> (LambdaSolution, f64, f64) {
+    let (fine, coarse) = solve_at_lambda_checked(&red.modes, lambda, q);
+    let k = 10.0 * (-PI * PI / (2.0 * q.step)).exp();
+    let e_fr = k * rel(coarse.friction_rho, fine.friction_rho);
+    let e_ld = k * rel(coarse.load, fine.load);
+    (unscale(red, fine), e_fr, e_ld)
+}
+
+/// Relative difference |a − b|/|b|, 0 for equal values.
+pub(super) fn rel(a: f64, b: f64) -> f64 {
+    // equal values (e.g. ρF/N = 0 of an all-lumped, elastic reduced problem) differ by nothing;
+    // 0/0 would give NaN and swallow the rest of the estimate
+    if a == b {
+        0.0
+    } else {
+        ((a - b) / b).abs()
+    }
 }

@@ -1,0 +1,130 @@
+//! The first-order correction for the lumped fast modes ([`super::reduction`] module doc): the
+//! model gains, their measurement by one extra solve (calibration), applying them, and the error
+//! that remains (second order, plus the round-off floor of the corrected friction).
+//!
+//! Input: the creep terms, the [`Reduction`] and a reduced [`LambdaSolution`]; output: a
+//! [`Correction`] and error estimates.
+
+use super::at_lambda::{LambdaSolution, QuadratureSettings};
+use super::reduction::{
+    calibration_mode, lump_weight, lumped_residual, model_gains, solve_reduced, unlump, Reduction,
+};
+use crate::contact::CreepTerm;
+
+/// Σ wᵢ·λ over the lumped modes (wᵢ ∝ 1/λ, so this is independent of λ).
+pub(super) fn lumped_weight_times_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
+    red.lumped
+        .iter()
+        .map(|&i| lump_weight(&terms[i], 1.0))
+        .sum()
+}
+
+/// The measured first-order correction for the lumped modes ([`reduction`] module doc).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Correction {
+    /// Effects per unit lumping weight: Δ(ρF/N/λ), ΔN′/N′, Δβ (the measured gains g_F, g_N, g_β).
+    pub(super) gains: (f64, f64, f64),
+    /// Σwᵢ/w* of the calibration: how much the calibration solve's noise is amplified.
+    pub(super) amplification: f64,
+}
+
+impl Correction {
+    /// The model's gains, before any measurement (β unknown: 0).
+    pub(super) fn model(terms: &[CreepTerm], lambda: f64) -> Correction {
+        let (g_f, g_n) = model_gains(terms, lambda);
+        Correction {
+            gains: (g_f, g_n, 0.0),
+            amplification: 0.0,
+        }
+    }
+
+    /// Apply at the solution's λ: ρF/N += λ·g_F·W, N′ ×= 1 + g_N·W, β += g_β·W (W = Σwᵢ); the
+    /// pressure is scaled with N′ (the layer correction itself is not added to the profile).
+    pub(super) fn apply(&self, terms: &[CreepTerm], red: &Reduction, sol: &mut LambdaSolution) {
+        let w = lumped_weight_times_lambda(terms, red) / sol.lambda;
+        if w == 0.0 {
+            return;
+        }
+        sol.friction_rho += sol.lambda * self.gains.0 * w;
+        let f = 1.0 + self.gains.1 * w;
+        sol.load *= f;
+        for c in sol.coefficients.iter_mut() {
+            *c *= f;
+        }
+        sol.beta += self.gains.2 * w;
+    }
+}
+
+/// Measure the gains at the solution's λ by one solve with the lumped mode of largest weight kept,
+/// or the probe that stands in for it when it is too fast to solve for
+/// ([`reduction::calibration_mode`]): the probe kept minus the mode lumped is the probe's own
+/// layer effect g·w_p, w_p = rᵢ/c_p. Returns the model gains (and amplification 0) when nothing is
+/// lumped or the solve fails.
+pub(super) fn calibrate(
+    terms: &[CreepTerm],
+    red: &Reduction,
+    sol: &LambdaSolution,
+    q: QuadratureSettings,
+) -> Correction {
+    let lambda = sol.lambda;
+    let model = Correction::model(terms, lambda);
+    let Some((star, c_probe)) = calibration_mode(terms, &red.lumped, lambda) else {
+        return model;
+    };
+    let weight = lumped_weight_times_lambda(terms, red) / lambda;
+    let probe_terms;
+    let terms = if c_probe.is_finite() {
+        let l = 0.5 * lambda;
+        let r = terms[star].f / terms[star].b;
+        let mut p = terms.to_vec();
+        p[star] = CreepTerm {
+            f: r * c_probe / l,
+            b: c_probe / l,
+        };
+        probe_terms = p;
+        &probe_terms[..]
+    } else {
+        terms
+    };
+    let w_star = lump_weight(&terms[star], lambda);
+    let with = solve_reduced(&unlump(terms, red, star), lambda, q);
+    let g = (
+        (with.friction_rho - sol.friction_rho) / lambda / w_star,
+        (with.load - sol.load) / sol.load / w_star,
+        (with.beta - sol.beta) / w_star,
+    );
+    if !(g.0.is_finite() && g.1.is_finite() && g.2.is_finite()) {
+        return model;
+    }
+    Correction {
+        gains: g,
+        amplification: weight / w_star,
+    }
+}
+
+/// Remaining lumping error after the correction (ρF/N/λ absolute, N′ relative): the second-order
+/// estimate, plus, without a measurement, the whole (model) effect twice.
+pub(super) fn lumping_error(
+    terms: &[CreepTerm],
+    red: &Reduction,
+    corr: &Correction,
+    lambda: f64,
+) -> (f64, f64) {
+    let (e_fr, e_ld) = lumped_residual(terms, &red.lumped, lambda, (corr.gains.0, corr.gains.1));
+    if corr.amplification > 0.0 {
+        (e_fr, e_ld)
+    } else {
+        let w = lumped_weight_times_lambda(terms, red) / lambda;
+        (e_fr + 2.0 * corr.gains.0 * w, e_ld + 2.0 * corr.gains.1 * w)
+    }
+}
+
+/// Relative round-off floor of the corrected ρF/N. Each solve's ρF/N = L − β + L·F₂/(2F₁) (eq. in
+/// `auto`'s module doc) is a difference of O(λ) terms, so its absolute error is a few ε·(λ + |β|):
+/// once for the reduced solve (none when every mode is lumped or dropped: the elastic solve gives
+/// β = L and F₂ = 0 exactly), and for the lumping correction twice (the calibration is a difference
+/// of two solves) times its amplification Σwᵢ/w*. Large relative to a small friction.
+pub(super) fn roundoff_floor(sol: &LambdaSolution, red: &Reduction, corr: &Correction) -> f64 {
+    let solves = if red.modes_used > 0 { 1.0 } else { 0.0 } + 2.0 * corr.amplification;
+    8.0 * f64::EPSILON * solves * (sol.lambda + sol.beta.abs()) / sol.friction_rho.abs().max(1e-300)
+}

@@ -1,0 +1,125 @@
+//! One scene on a creep spectrum from a file: a bare creep spectrum (JSON, [`CreepSpectrum`]), or a
+//! compound's fit (`fits/NAME.json`, [`CompoundFit`]) whose spectrum is moved to a temperature by its
+//! shift law (`CreepSpectrum::at_temperature`, docs/MATH.md §6), then rolled with [`contact::roll`].
+//!
+//! Input: a path (or a fit), an optional temperature in °C, a [`Scene`] and [`ContactSettings`];
+//! output: [`SourceRoll`] (the contact answer, the shift applied and the warnings, temperature
+//! warnings first) or a [`PipelineError`]. Used by `viscoroll roll` and by the main job
+//! ([`super::scenes::friction_vs_temperature`]), so both give the same friction for the same scene.
+
+use super::error::{io, PipelineError};
+use crate::contact::{self, ContactSettings, RollSolution, Scene};
+use crate::creep::AtTemperature;
+use crate::results::CompoundFit;
+use crate::CreepSpectrum;
+use std::path::Path;
+
+/// Where a creep spectrum comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CreepSource {
+    /// A compound's fit: its spectrum is at T_ref and needs a temperature.
+    Fit(Box<CompoundFit>),
+    /// A bare creep spectrum (no shift law: used as it is).
+    Spectrum(CreepSpectrum),
+}
+
+impl CreepSource {
+    /// Read a fit file (it has a `format_version`) or a bare creep spectrum (JSON).
+    pub fn read(path: &Path) -> Result<Self, PipelineError> {
+        let text = std::fs::read_to_string(path).map_err(io(path))?;
+        let config = |message: String| PipelineError::Config {
+            path: path.to_path_buf(),
+            message,
+        };
+        let value: serde_json::Value = serde_json::from_str(&text)
+            .map_err(|e| config(format!("not a creep spectrum or fit file: {e}")))?;
+        if value.get("format_version").is_some() {
+            Ok(CreepSource::Fit(Box::new(CompoundFit::read(path)?)))
+        } else {
+            serde_json::from_value(value)
+                .map(CreepSource::Spectrum)
+                .map_err(|e| config(format!("not a creep spectrum: {e}")))
+        }
+    }
+}
+
+/// A scene's answer on a [`CreepSource`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct SourceRoll {
+    /// The contact answer (its own warnings in `dimensionless.warnings`).
+    pub roll: RollSolution,
+    /// The spectrum used (shifted to the temperature for a fit).
+    pub spectrum: CreepSpectrum,
+    /// The temperature, log10 a_T and whether it was extrapolated (fits only).
+    pub shift: Option<AtTemperature<()>>,
+    /// Every warning for the user: the temperature's first, then the solver's.
+    pub warnings: Vec<String>,
+}
+
+/// The creep spectrum of `fit` at `temp_c` (°C), with a warning when the temperature lies outside
+/// the measured ones (the shift law is then extrapolated).
+pub fn fit_spectrum_at(
+    fit: &CompoundFit,
+    temp_c: f64,
+) -> Result<(AtTemperature<CreepSpectrum>, Option<String>), PipelineError> {
+    let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
+        compound: fit.compound.clone(),
+    })?;
+    let range = fit.measured_range_c();
+    let at = creep.at_temperature(&fit.shift_law, temp_c, range)?;
+    let warning = at.extrapolated.then(|| {
+        let (lo, hi) = range.unwrap_or((f64::NAN, f64::NAN));
+        format!(
+            "{temp_c} °C lies outside the measured temperatures {lo} … {hi} °C: the shift law is extrapolated"
+        )
+    });
+    Ok((at, warning))
+}
+
+/// Roll `scene` on `source`: a fit is shifted to `temp_c` first (required); a bare spectrum takes
+/// no temperature (refused: it has no shift law).
+pub fn roll_source_at(
+    source: &CreepSource,
+    temp_c: Option<f64>,
+    scene: &Scene,
+    settings: &ContactSettings,
+) -> Result<SourceRoll, PipelineError> {
+    let config = |message: String| PipelineError::Config {
+        path: Default::default(),
+        message,
+    };
+    let mut warnings = Vec::new();
+    let (spectrum, shift) = match (source, temp_c) {
+        (CreepSource::Fit(fit), Some(t)) => {
+            let (at, warning) = fit_spectrum_at(fit, t)?;
+            warnings.extend(warning);
+            let shift = AtTemperature {
+                spectrum: (),
+                temp_c: at.temp_c,
+                log10_a_t: at.log10_a_t,
+                extrapolated: at.extrapolated,
+            };
+            (at.spectrum, Some(shift))
+        }
+        (CreepSource::Fit(fit), None) => {
+            return Err(config(format!(
+                "a fit file needs a temperature (its spectrum is at T_ref = {} °C)",
+                fit.shift_law.t_ref_c()
+            )))
+        }
+        (CreepSource::Spectrum(s), None) => (s.clone(), None),
+        (CreepSource::Spectrum(_), Some(_)) => {
+            return Err(config(
+                "a temperature needs a fit file (a bare creep spectrum has no shift law)".into(),
+            ))
+        }
+    };
+    let roll = contact::roll(scene, &spectrum, settings)?;
+    warnings.extend(roll.dimensionless.warnings.iter().cloned());
+    Ok(SourceRoll {
+        roll,
+        spectrum,
+        shift,
+        warnings,
+    })
+}
