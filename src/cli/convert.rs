@@ -9,7 +9,6 @@
 
 use crate::creep::exact::max_product_error;
 use crate::creep::{park_schapery, relaxation_to_creep, ParkSchaperySettings, ParkSchaperyVariant};
-use crate::RelaxationSpectrum;
 use anyhow::Context;
 use std::path::PathBuf;
 
@@ -38,7 +37,7 @@ pub enum Variant {
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// Relaxation spectrum JSON file (fields `modulus_inf_pa`, `terms[].modulus_pa`, `terms[].tau_s`,
-    /// optional `kind`, `poisson`).
+    /// optional `kind`, `poisson`) or a fit file (`fits/NAME.json`; its `relaxation` is converted).
     pub spectrum: PathBuf,
     /// Conversion method.
     #[arg(long, value_enum, default_value = "exact")]
@@ -59,14 +58,7 @@ pub struct Args {
 
 /// Run `viscoroll convert`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(&args.spectrum)
-        .with_context(|| format!("cannot read {}", args.spectrum.display()))?;
-    let relax: RelaxationSpectrum = serde_json::from_str(&text).with_context(|| {
-        format!(
-            "{}: not a relaxation spectrum JSON",
-            args.spectrum.display()
-        )
-    })?;
+    let relax = super::spectrum_input::read_spectrum_input(&args.spectrum)?.spectrum;
     relax
         .validate()
         .with_context(|| format!("{}", args.spectrum.display()))?;

@@ -18,6 +18,7 @@ mod rank;
 mod roll;
 mod roll_cover;
 mod run;
+mod spectrum_input;
 
 use clap::{Parser, Subcommand};
 

@@ -81,6 +81,26 @@ where
         Ok((r, s))
     };
 
+    let ((lo, f_lo), (hi, f_hi), best) = bracket(load, sum_f_over_b, settings, &mut eval)?;
+    if best.0.abs() <= settings.rel_tol {
+        return finish_with(best.1, solves.get());
+    }
+    brent(((lo, f_lo), (hi, f_hi)), best, settings, &mut eval, &solves)
+}
+
+/// A solve at λ: (ln(N′(λ)/N′₀), the solution).
+type Eval<'a> = dyn FnMut(f64) -> Result<(f64, DimensionlessSolution), ContactError> + 'a;
+
+/// The initial bracket [lo, hi] of λ from the glassy and relaxed Hertz widths, widened by 1.25 at
+/// either end until the residual changes sign; returns both ends with their residuals and the best
+/// solution seen.
+#[allow(clippy::type_complexity)]
+fn bracket(
+    load: f64,
+    sum_f_over_b: f64,
+    settings: &LoadSettings,
+    eval: &mut Eval<'_>,
+) -> Result<((f64, f64), (f64, f64), (f64, DimensionlessSolution)), ContactError> {
     // Initial bracket from the glassy and relaxed Hertz widths (docs/MATH.md §3).
     let mut lo = 2.0 * load.sqrt();
     let mut hi = lo * (1.0 + sum_f_over_b).sqrt();
@@ -125,10 +145,19 @@ where
         }
         expand += 1;
     }
-    if best.0.abs() <= settings.rel_tol {
-        return finish_with(best.1, solves.get());
-    }
+    Ok(((lo, f_lo), (hi, f_hi), best))
+}
 
+/// Brent's method on u = log λ from the bracket, until the load is met to `rel_tol` (or to
+/// `accept_tol` once the bracket has collapsed to the resolution of λ, or the steps chase the
+/// rounding noise of N′(λ)); `solves` counts the solves made.
+fn brent(
+    ((lo, f_lo), (hi, f_hi)): ((f64, f64), (f64, f64)),
+    mut best: (f64, DimensionlessSolution),
+    settings: &LoadSettings,
+    eval: &mut Eval<'_>,
+    solves: &std::cell::Cell<usize>,
+) -> Result<DimensionlessSolution, ContactError> {
     // Brent's method on u = log λ, residual f(u) = log(N′/N′₀); the root stays between b and c.
     let (mut a, mut fa) = (lo.ln(), f_lo);
     let (mut b, mut fb) = (hi.ln(), f_hi);

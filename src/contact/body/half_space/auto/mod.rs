@@ -5,7 +5,7 @@
 //! with `scheme = "auto"`, its [`AutoDiagnostics`] (mode counts, checks) and warnings, or a
 //! [`ContactError`].
 //!
-//! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ):
+//! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ; docs/MATH.md §9):
 //! - mode reduction ([`reduction`]): ≤ 0.3·tol, re-selected until the estimate, evaluated with
 //!   the friction of the solution itself, fits. Lumped fast modes are *corrected* to first order:
 //!   one extra solve at the final λ with the lumped mode of largest weight kept measures the gains
