@@ -137,10 +137,10 @@ mod tests {
     fn defect_form_matches_direct_fraction() {
         // The two algebraic forms agree where neither cancels (t ~ 1): to rounding.
         for nu in [0.0, 0.2, 0.5] {
-            for t in [0.3, 1.0, 3.0, 19.0, 21.0] {
+            for t in [0.3_f64, 1.0, 3.0, 19.0, 21.0] {
                 let k = kolosov(nu);
-                let direct = (k * (2.0 * t as f64).sinh() - 2.0 * t)
-                    / (k * (2.0 * t as f64).cosh() + 2.0 * t * t + 0.5 * (1.0 + k * k));
+                let direct = (k * (2.0 * t).sinh() - 2.0 * t)
+                    / (k * (2.0 * t).cosh() + 2.0 * t * t + 0.5 * (1.0 + k * k));
                 assert!((layer_factor(t, nu) - direct).abs() < 1e-14, "{nu} {t}");
             }
         }

@@ -46,6 +46,7 @@
 //! - on k ∈ [k_mid, k_hi] in k with 10-point panels of width ≤ min(1/X, 1/(2h′)) (at most one radian
 //!   of e^{ikx}, and the nearest complex zeros of the denominator of R lie ≥ 1/(2h′)·O(1) away);
 //!   k_hi = 27/h′ where R < 1e−20.
+//!
 //! Errors are therefore exponentially small in the number of nodes per panel (Trefethen, *Approximation
 //! Theory and Approximation Practice*, SIAM 2013, ch. 19) and the test against a finer rule agrees to
 //! rounding. Cost: O((2m+1)·(panels·10)), about (2m+1)·(300 + 270·X/h′) operations: cheap for layers
