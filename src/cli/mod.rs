@@ -16,6 +16,7 @@ mod master;
 mod output;
 mod rank;
 mod roll;
+mod roll_cover;
 mod run;
 mod spectrum_input;
 
