@@ -50,9 +50,9 @@ fn check_conditions(s: &DimensionlessSolution, tol: f64) {
     assert!(d.pressure.iter().all(|p| p.is_finite()));
     // contact condition Q′ ≥ 0 within the tolerance (relative to the peak)
     assert!(
-        diag(&s).min_pressure_ratio >= -tol,
+        diag(s).min_pressure_ratio >= -tol,
         "min Q'/max Q' = {}",
-        diag(&s).min_pressure_ratio
+        diag(s).min_pressure_ratio
     );
     // dissipation cannot be negative
     assert!(d.friction_rho >= 0.0, "friction {}", d.friction_rho);

@@ -79,14 +79,13 @@ impl Tally {
         self.cases += 1;
         if d.beta < 0.0 {
             self.beta_negative += 1;
-            if diag(&s).min_gap_xi.abs() >= 0.05 * d.lambda
-                && diag(&s).min_gap_ratio < self.worst_far
+            if diag(s).min_gap_xi.abs() >= 0.05 * d.lambda && diag(s).min_gap_ratio < self.worst_far
             {
-                self.worst_far = diag(&s).min_gap_ratio;
+                self.worst_far = diag(s).min_gap_ratio;
             }
         }
         let gap_tol = diag(s).tol.max(1e-9);
-        if diag(&s).min_gap_ratio < -gap_tol {
+        if diag(s).min_gap_ratio < -gap_tol {
             self.penetrating += 1;
             let t = recheck();
             let persists = diag(&t).min_gap_ratio < -diag(&t).tol.max(1e-9);
@@ -97,20 +96,20 @@ impl Tally {
                 "FLAGGED {label}: β/λ {:.3e} gap {:.3e} at ξ/λ {:.3e}, λ {:.6e} est {:.1e}; at tol 1e-10: \
                  λ {:.6e} gap {:.3e} (persists: {persists})",
                 d.beta / d.lambda,
-                diag(&s).min_gap_ratio,
-                diag(&s).min_gap_xi / d.lambda,
+                diag(s).min_gap_ratio,
+                diag(s).min_gap_xi / d.lambda,
                 d.lambda,
                 d.error_estimate.unwrap_or(f64::NAN),
                 t.lambda,
                 diag(&t).min_gap_ratio
             );
         }
-        if diag(&s).min_gap_ratio < self.worst {
-            self.worst = diag(&s).min_gap_ratio;
+        if diag(s).min_gap_ratio < self.worst {
+            self.worst = diag(s).min_gap_ratio;
             self.worst_case = format!(
                 "{label} (β/λ {:.3e}, at ξ/λ {:.3e})",
                 d.beta / d.lambda,
-                diag(&s).min_gap_xi / d.lambda
+                diag(s).min_gap_xi / d.lambda
             );
         }
     }
