@@ -4,7 +4,7 @@
 //! given λ (kernel assembly, O(n) special-function calls, plus the dense LU, O(n³)) and of one load
 //! point (the bracketed Brent loop, several solves), next to the error of ρF/N and of λ against a
 //! reference: the exact solution for one term (`contact::exact`); for ten terms Richardson's
-//! extrapolation of n = 1280 and 2560 (first order in h, MATH.md §3): X_ref = 2X(2560) − X(1280).
+//! extrapolation of n = 1280 and 2560 (first order in h, docs/MATH.md §3): X_ref = 2X(2560) − X(1280).
 //! A second table gives the error against the exact solution at given load over seven decades of
 //! speed (one term, b = 1e-3 … 1e3, f/b = 10, N′ = 1/4) and the observed order.
 //!

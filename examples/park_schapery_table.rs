@@ -1,4 +1,4 @@
-//! Park & Schapery (thesis eq. 2.18–2.23) against the exact conversion (MATH.md §4), and the measured
+//! Park & Schapery (thesis eq. 2.18–2.23) against the exact conversion (docs/MATH.md §4), and the measured
 //! accuracy of the exact conversion itself. Prints markdown tables to stdout.
 //!
 //! Run: `cargo run --release --example park_schapery_table`

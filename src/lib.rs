@@ -32,7 +32,7 @@
 //!     terms: vec![RelaxationTerm { modulus_pa: 1e9, tau_s: 1e-3 }],
 //! };
 //! let (creep, _info) = relaxation_to_creep(&relaxation).unwrap();
-//! // The glassy compliance is 1/E₀ (MATH.md §4).
+//! // The glassy compliance is 1/E₀ (docs/MATH.md §4).
 //! assert!((creep.compliance_glassy_per_pa * (1e9 + 3e6) - 1.0).abs() < 1e-12);
 //!
 //! // A 100 mm roll under 2 kN/m at 1 m/s.

@@ -8,7 +8,7 @@
 //! ```
 //!
 //! [`synthetic_measurement`] evaluates them at the reduced angular frequency ω_r = 2π f a_T(T) of a
-//! given [`ShiftLaw`] (time–temperature superposition, MATH.md §6) for each isotherm, with seeded
+//! given [`ShiftLaw`] (time–temperature superposition, docs/MATH.md §6) for each isotherm, with seeded
 //! multiplicative Gaussian noise and a seeded offset of the actual temperature from the nominal one.
 
 pub mod realistic;

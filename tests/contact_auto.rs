@@ -198,7 +198,7 @@ fn friction_vanishes_at_both_speed_limits() {
     let mid = (-6..=3).map(|k| fr(10f64.powi(k))).fold(0.0, f64::max);
     // τ spans [1e−12, 1e12] s and the contact is ~1e−4…1e−2 m long: below V ≈ 1e−16 m/s every mode
     // is relaxed, above ~1e8 m/s every mode glassy. There friction must fall like V resp. 1/V
-    // (MATH.md §3): four decades of speed → about four decades of friction (asserted: ≥ three).
+    // (docs/MATH.md §3): four decades of speed → about four decades of friction (asserted: ≥ three).
     let (slow1, slow2) = (fr(1e-20), fr(1e-24));
     let (fast1, fast2) = (fr(1e14), fr(1e18));
     assert!(

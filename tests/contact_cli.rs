@@ -97,7 +97,7 @@ fn contact_json_at_load_with_rho() {
     ]));
     assert!((num(&v, "load") / 0.5 - 1.0).abs() <= 1e-8);
     assert!(num(&v, "iterations") >= 2.0);
-    // F/N = (ρF/N)/ρ (MATH.md §1).
+    // F/N = (ρF/N)/ρ (docs/MATH.md §1).
     assert!((num(&v, "friction") - num(&v, "friction_rho") / 20.0).abs() <= 1e-15);
 }
 

@@ -32,3 +32,24 @@ fn bad_input_gives_a_message_naming_the_field() {
     let e = one_term_at_load(CreepTerm { f: 1.0, b: 1.0 }, f64::NAN).unwrap_err();
     assert!(e.to_string().contains("load"), "{e}");
 }
+
+/// The slow-mode law (docs/MATH.md §8.3): as c = bλ → 0 the exact one-term friction obeys
+/// ρF/N = (fN′/2)(ln(1/(bλ)) + K) with one constant K, so K computed at c = 1e-12 and at c far below
+/// the Bessel cut (1e-19 … 1e-40) must agree. Before the series kept orders 0–2 always, K dropped by
+/// exactly 1/4 below c ≈ 4e-19 (ρF/N 0.55 % low); 1e-9 relative is well above the O(c) remainder of the
+/// law and far below that quarter.
+#[test]
+fn slow_mode_constant_holds_below_the_bessel_cut() {
+    let k = |b: f64| {
+        let s = one_term_at_lambda(CreepTerm { f: b, b }, 1.0).unwrap();
+        s.friction_rho / (b * s.load / 2.0) - (1.0 / (b * s.lambda)).ln()
+    };
+    let k_ref = k(1e-12);
+    for b in [1e-19, 1e-22, 1e-30, 1e-40] {
+        assert!(
+            (k(b) - k_ref).abs() < 1e-9 * k_ref.abs(),
+            "b = {b}: K = {} against {k_ref}",
+            k(b)
+        );
+    }
+}

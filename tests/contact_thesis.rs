@@ -16,7 +16,7 @@ fn settings(n: usize) -> ContactSettings {
 
 #[test]
 fn table_1_one_parameter_model() {
-    // Thesis Table 1: f = 10, b = 1, n = 40, at λ = 1 (MATH.md §1): β/λ = 0.1959, ρF/N = 0.43093.
+    // Thesis Table 1: f = 10, b = 1, n = 40, at λ = 1 (docs/MATH.md §1): β/λ = 0.1959, ρF/N = 0.43093.
     // Tolerances from the issue: the printed digits are rounded and the thesis' own grid details
     // (node placement) are not stated beyond n = 40 intervals.
     let s = solve_at_lambda(&[CreepTerm { f: 10.0, b: 1.0 }], 1.0, &settings(40)).unwrap();
@@ -44,7 +44,7 @@ fn table_1_one_parameter_model() {
 
 #[test]
 fn hertz_limit_error_table() {
-    // f = 0: Q′ = (1/π)√(ξ(λ−ξ)), β = λ/2, N′ = λ²/4, friction 0 (MATH.md §3).
+    // f = 0: Q′ = (1/π)√(ξ(λ−ξ)), β = λ/2, N′ = λ²/4, friction 0 (docs/MATH.md §3).
     let lambda = 2.0;
     let mut prev: Option<(f64, f64)> = None;
     eprintln!("   n    |N'/(λ²/4) − 1|   max|Q' − Q'_Hertz|/max Q'   |β/λ − 1/2|   |ρF/N|");
@@ -70,7 +70,7 @@ fn hertz_limit_error_table() {
         // The pressure is the semi-ellipse up to the discretisation error.
         assert!(p_err <= 2.0 / n as f64, "n = {n}: pressure error {p_err}");
         if let Some((pl, pp)) = prev {
-            // First order in h (MATH.md §3): halving h halves the load error (ratio 2 ± 10 %) and
+            // First order in h (docs/MATH.md §3): halving h halves the load error (ratio 2 ± 10 %) and
             // the pressure error falls.
             let r = pl / load_err;
             assert!((1.8..2.2).contains(&r), "n = {n}: load error ratio {r}");
@@ -147,7 +147,7 @@ fn ten_term_load_loop_converges_at_every_speed() {
 #[test]
 fn load_loop_against_the_thesis_secant_at_low_speed() {
     // Low speed, one term with compliance ratio 1000: the true λ is ≈ √1000 = 31.6 times the
-    // thesis' elastic start 2√N′₀ (MATH.md §3).
+    // thesis' elastic start 2√N′₀ (docs/MATH.md §3).
     let terms = [CreepTerm {
         f: 999.0 * 50.0,
         b: 50.0,

@@ -37,7 +37,7 @@ fn each_bad_input_class_has_its_own_message() {
 
     let (e, s) = err("mpa.csv", &GOOD.replace("Hz,MPa,MPa", "Hz,mPa,MPa"), &d);
     assert!(matches!(e, DmaError::UnknownUnit { .. }));
-    assert_eq!(s, "mpa.csv: line 1: column `E'` (storage modulus): unknown unit `mPa` (expected Pa, kPa, MPa, GPa, N/m², N/mm², psi)");
+    assert_eq!(s, "mpa.csv: line 1: column `E'` (storage modulus): unknown unit `mPa` (expected Pa, kPa, MPa, GPa, N/m², N/mm², psi, dyn/cm²)");
 
     let (_, s) = err("pers.csv", &GOOD.replace("Hz,", "1/s,"), &d);
     assert_eq!(
@@ -95,7 +95,7 @@ fn each_bad_input_class_has_its_own_message() {
     let amb = "f,Storage modulus,Loss modulus,T\nHz,MPa,MPa,°C\n1,10,1,20\n10,11,1,20\n";
     let (e, s) = err("amb.csv", amb, &d);
     assert!(matches!(e, DmaError::AmbiguousMode { .. }));
-    assert_eq!(s, "amb.csv: line 1: column `Storage modulus` does not say whether it is tensile (E) or shear (G); give --mode tensile or --mode shear");
+    assert_eq!(s, "amb.csv: line 1: column `Storage modulus` does not say whether it is tensile (E) or shear (G), and the file names no geometry, test or instrument that does; give --mode tensile or --mode shear");
     let shear = IngestOptions {
         mode: Some(ModulusKind::Shear),
         ..IngestOptions::default()

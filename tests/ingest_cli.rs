@@ -95,7 +95,9 @@ fn bad_input_exits_1_with_one_line() {
     std::fs::write(&p, "f,E',E'',T\n1,10,1,20\n10,11,1,20\n").unwrap();
     let out = viscoroll(&["ingest", p.to_str().unwrap(), "--json"]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(out.stdout.is_empty());
+    // With --json a failure is one JSON object on stdout (issue 15), the message also on stderr.
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    assert!(v["error"].is_string() && v["kind"].is_string(), "{v}");
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.starts_with("viscoroll: "), "{err}");

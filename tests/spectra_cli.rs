@@ -80,7 +80,9 @@ fn convert_refuses_a_fluid_in_one_line() {
     .unwrap();
     let out = bin().arg("convert").arg(&f).arg("--json").output().unwrap();
     assert_eq!(out.status.code(), Some(1));
-    assert!(out.stdout.is_empty());
+    // With --json a failure is one JSON object on stdout (issue 15), the message also on stderr.
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    assert!(v["error"].is_string() && v["kind"].is_string(), "{v}");
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("fluid"), "{err}");

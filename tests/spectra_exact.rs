@@ -1,4 +1,4 @@
-//! Property tests of the exact relaxation ↔ creep conversion (MATH.md §4) on spectra with 1–40 terms
+//! Property tests of the exact relaxation ↔ creep conversion (docs/MATH.md §4) on spectra with 1–40 terms
 //! spread over 24 decades of time, with strengths over 8 decades (the run's seed from tests/seed.rs, 256 cases, well under a second).
 //!
 //! Checked, with the tolerances' reasons:

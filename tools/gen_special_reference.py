@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Generate tests/data/special_reference.csv: high-precision values of the exponential integrals and
-of the contact-kernel bracket h and its antiderivatives H1, H2 (src/special/, MATH.md §2).
+of the contact-kernel bracket h and its antiderivatives H1, H2 (src/special/, docs/MATH.md §2).
 
 Run once from the repository root:  python3 tools/gen_special_reference.py
 Needs mpmath (pip install mpmath). The CSV is committed; the Rust tests read it, CI needs no Python.

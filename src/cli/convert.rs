@@ -1,5 +1,5 @@
 //! `viscoroll convert`: a relaxation spectrum (JSON, [`crate::RelaxationSpectrum`]) → a creep spectrum
-//! (JSON, [`crate::CreepSpectrum`]), exactly (MATH.md §4, default) or by Park & Schapery (thesis
+//! (JSON, [`crate::CreepSpectrum`]), exactly (docs/MATH.md §4, default) or by Park & Schapery (thesis
 //! eq. 2.18–2.23), with the checks that tell how good the result is.
 //!
 //! `--json` prints one object: `{ "method", "variant", "input", "output", "creep_spectrum", "checks":
@@ -9,14 +9,13 @@
 
 use crate::creep::exact::max_product_error;
 use crate::creep::{park_schapery, relaxation_to_creep, ParkSchaperySettings, ParkSchaperyVariant};
-use crate::RelaxationSpectrum;
 use anyhow::Context;
 use std::path::PathBuf;
 
 /// Conversion method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Method {
-    /// Exact: roots and residues of s·Ē(s) (MATH.md §4).
+    /// Exact: roots and residues of s·Ē(s) (docs/MATH.md §4).
     Exact,
     /// Park & Schapery's collocation / least squares (thesis eq. 2.18–2.23), τⱼ = ρⱼ.
     ParkSchapery,
@@ -38,7 +37,7 @@ pub enum Variant {
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// Relaxation spectrum JSON file (fields `modulus_inf_pa`, `terms[].modulus_pa`, `terms[].tau_s`,
-    /// optional `kind`, `poisson`).
+    /// optional `kind`, `poisson`) or a fit file (`fits/NAME.json`; its `relaxation` is converted).
     pub spectrum: PathBuf,
     /// Conversion method.
     #[arg(long, value_enum, default_value = "exact")]
@@ -59,14 +58,7 @@ pub struct Args {
 
 /// Run `viscoroll convert`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(&args.spectrum)
-        .with_context(|| format!("cannot read {}", args.spectrum.display()))?;
-    let relax: RelaxationSpectrum = serde_json::from_str(&text).with_context(|| {
-        format!(
-            "{}: not a relaxation spectrum JSON",
-            args.spectrum.display()
-        )
-    })?;
+    let relax = super::spectrum_input::read_spectrum_input(&args.spectrum)?.spectrum;
     relax
         .validate()
         .with_context(|| format!("{}", args.spectrum.display()))?;

@@ -1,11 +1,21 @@
 //! `viscoroll export`: FEA material cards (Abaqus, ANSYS, LS-DYNA) from a relaxation spectrum JSON
-//! ([`crate::RelaxationSpectrum`]; fit files come later), with an optional WLF shift (`--wlf`).
-//! Formats and the documentation they were checked against: [`crate::report::cards`].
+//! ([`crate::RelaxationSpectrum`]) or a fit file, with a WLF shift (`--wlf`, or from a fit file the
+//! WLF fit of its master curve's shifts when that law holds). Formats and the documentation they
+//! were checked against: [`crate::report::cards`].
+//!
+//! LS-DYNA takes at most 18 Prony cards: a longer spectrum is refitted with at most 18 cards (the
+//! β = 0 equilibrium card included) to the fit file's master curve, or to the spectrum's own E′, E″
+//! (10 points per decade over its relaxation times) when a bare spectrum was given; the refit's RMS
+//! log10 errors are stated in the card and on stderr. A WLF law from a fit file is written only when
+//! it describes the shifts (RMS ≤ [`WLF_RMS_BOUND`] decade and C2 ≤ [`WLF_C2_MAX_K`] K); otherwise
+//! the card gets no shift and says why.
 //!
 //! `--json` prints one object `{ "format", "input", "output", "card" }`. Without `--json` and without
 //! `-o` the card text goes to stdout.
 
 use super::output::write_atomic;
+use super::spectrum_input::read_spectrum_input;
+use crate::prony::{fit_prony, log10_errors, MasterPoint, PronySettings};
 use crate::report::cards::{self, BulkRelaxation, CardOptions};
 use crate::{RelaxationSpectrum, ShiftLaw};
 use anyhow::Context;
@@ -34,13 +44,13 @@ pub enum Bulk {
 /// Arguments of `viscoroll export`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Relaxation spectrum JSON file.
+    /// Relaxation spectrum JSON file or fit file (`fits/NAME.json`).
     pub file: PathBuf,
     /// Target program.
     #[arg(long, value_enum)]
     pub to: Target,
     /// WLF shift law "TREF_C,C1,C2" (reference temperature in °C, C1, C2 in K) for *TRS / TB,SHIFT /
-    /// TREF,A,B; omitted: no shift card.
+    /// TREF,A,B; omitted: from a fit file its WLF law if it describes the shifts, else no shift card.
     #[arg(long, value_name = "TREF_C,C1,C2")]
     pub wlf: Option<String>,
     /// Material id (ANSYS MAT, LS-DYNA MID).
@@ -61,6 +71,95 @@ pub struct Args {
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
+}
+
+/// Largest RMS (log10 decades) of the shifts about a fit file's WLF law for it to go into a card:
+/// 0.1 decade is a 26 % error in every relaxation time, about what the master curve's overlap allows.
+pub const WLF_RMS_BOUND: f64 = 0.1;
+/// Largest C2 (K) of a WLF law that goes into a card: measured polymers have C2 of 30–300 K (WLF's
+/// universal 51.6 K); a C2 of thousands of K is a straight line through the shifts in disguise
+/// (issue 17 found C1 = 26185, C2 = 104763 K at 0.97 decade RMS).
+pub const WLF_C2_MAX_K: f64 = 1000.0;
+
+/// The WLF law of a fit file for a card, or why there is none.
+fn wlf_from_fit(fit: &crate::pipeline::CompoundFit) -> Result<(ShiftLaw, f64), String> {
+    let tts = fit
+        .tts
+        .as_ref()
+        .ok_or("the fit file holds no master-curve shifts")?;
+    let law = tts.wlf.clone().ok_or("the WLF fit of the shifts failed")?;
+    let rms = tts
+        .law_rms_log10
+        .iter()
+        .find(|(n, _)| n == "wlf")
+        .map(|(_, r)| *r)
+        .ok_or("the WLF fit has no RMS")?;
+    let ShiftLaw::Wlf { c1, c2_k, .. } = law else {
+        return Err("the fitted law is not WLF".into());
+    };
+    if rms.is_nan() || rms > WLF_RMS_BOUND {
+        return Err(format!(
+            "the WLF fit (C1 = {c1:.4}, C2 = {c2_k:.4} K) misses the shifts by {rms:.3} decade RMS (bound {WLF_RMS_BOUND})"
+        ));
+    }
+    if c2_k.is_nan() || c2_k > WLF_C2_MAX_K {
+        return Err(format!(
+            "the WLF fit is degenerate (C1 = {c1:.4}, C2 = {c2_k:.4} K > {WLF_C2_MAX_K} K)"
+        ));
+    }
+    Ok((law, rms))
+}
+
+/// Refit with at most `max_cards` LS-DYNA cards (E∞ takes one): to the fit file's master curve, or
+/// to the spectrum's own moduli. Returns the spectrum and its RMS log10 errors (E′, E″).
+fn refit_for_cards(
+    spectrum: &RelaxationSpectrum,
+    fit: Option<&crate::pipeline::CompoundFit>,
+    max_cards: usize,
+) -> anyhow::Result<(RelaxationSpectrum, [f64; 2], &'static str)> {
+    let (points, settings, against): (Vec<MasterPoint>, PronySettings, &str) = match fit {
+        Some(f) => (
+            f.master_curve.clone(),
+            f.settings.prony.clone(),
+            "the fit file's master curve",
+        ),
+        None => {
+            let (lo, hi) = spectrum
+                .terms
+                .iter()
+                .fold((f64::INFINITY, 0f64), |(a, b), t| {
+                    (a.min(t.tau_s), b.max(t.tau_s))
+                });
+            let (f0, f1) = (
+                1.0 / (2.0 * std::f64::consts::PI * hi),
+                1.0 / (2.0 * std::f64::consts::PI * lo),
+            );
+            let n = (((f1 / f0).log10() * 10.0).ceil() as usize).max(10);
+            let pts = (0..=n)
+                .map(|k| {
+                    let f = f0 * (f1 / f0).powf(k as f64 / n as f64);
+                    let (e1, e2) = spectrum.complex_modulus(2.0 * std::f64::consts::PI * f);
+                    MasterPoint {
+                        reduced_freq_hz: f,
+                        storage_pa: e1,
+                        loss_pa: e2,
+                    }
+                })
+                .collect();
+            (pts, PronySettings::default(), "the spectrum's own E′, E″")
+        }
+    };
+    let cards_for_inf = usize::from(spectrum.modulus_inf_pa > 0.0);
+    let settings = PronySettings {
+        reduce_terms: true,
+        max_terms: Some(max_cards.saturating_sub(cards_for_inf).max(1)),
+        target_rms_log10: None,
+        ..settings
+    };
+    let refit = fit_prony(&points, spectrum.kind, spectrum.poisson, &settings)
+        .context("refitting with fewer terms for LS-DYNA")?;
+    let e = log10_errors(&points, &refit.spectrum);
+    Ok((refit.spectrum, [e.rms_storage, e.rms_loss], against))
 }
 
 fn parse_wlf(s: &str) -> anyhow::Result<ShiftLaw> {
@@ -84,11 +183,43 @@ fn parse_wlf(s: &str) -> anyhow::Result<ShiftLaw> {
 
 /// Run `viscoroll export`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(&args.file)
-        .with_context(|| format!("cannot read {}", args.file.display()))?;
-    let spectrum: RelaxationSpectrum = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not a relaxation spectrum JSON", args.file.display()))?;
-    let shift = args.wlf.as_deref().map(parse_wlf).transpose()?;
+    let input = read_spectrum_input(&args.file)?;
+    let mut spectrum = input.spectrum;
+    let mut notes: Vec<String> = Vec::new();
+    let shift = match (args.wlf.as_deref(), &input.fit) {
+        (Some(w), _) => Some(parse_wlf(w)?),
+        (None, Some(fit)) => match wlf_from_fit(fit) {
+            Ok((law, rms)) => {
+                notes.push(format!(
+                    "WLF shift fitted to the master curve's shifts: RMS {rms:.3} decade"
+                ));
+                Some(law)
+            }
+            Err(why) => {
+                notes.push(format!(
+                    "WARNING: no shift card: {why}; give one with --wlf TREF_C,C1,C2 or shift in the solver"
+                ));
+                None
+            }
+        },
+        (None, None) => None,
+    };
+    if args.to == Target::Lsdyna {
+        let cards = spectrum.terms.len() + usize::from(spectrum.modulus_inf_pa > 0.0);
+        if cards > cards::LSDYNA_MAX_TERMS {
+            let (refit, rms, against) =
+                refit_for_cards(&spectrum, input.fit.as_ref(), cards::LSDYNA_MAX_TERMS)?;
+            notes.push(format!(
+                "refitted from {} to {} Prony terms for LS-DYNA (at most {} cards): RMS log10 E' {:.4}, E'' {:.4} against {against}",
+                spectrum.terms.len(),
+                refit.terms.len(),
+                cards::LSDYNA_MAX_TERMS,
+                rms[0],
+                rms[1]
+            ));
+            spectrum = refit;
+        }
+    }
     if let Some(d) = args.density_kg_m3 {
         if !(d.is_finite() && d > 0.0) {
             anyhow::bail!("--density-kg-m3 {d}: must be a positive number");
@@ -108,6 +239,19 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Target::Lsdyna => ("lsdyna", cards::lsdyna(&spectrum, shift.as_ref(), &options)),
     };
     let card = card.with_context(|| format!("{}", args.file.display()))?;
+    let prefix = match args.to {
+        Target::Abaqus => "**",
+        Target::Ansys => "!",
+        Target::Lsdyna => "$",
+    };
+    let card: String = notes
+        .iter()
+        .map(|n| format!("{prefix} {n}\n"))
+        .chain(std::iter::once(card))
+        .collect();
+    for n in &notes {
+        eprintln!("viscoroll export: {n}");
+    }
     if let Some(out) = &args.output {
         write_atomic(out, card.as_bytes(), args.force)?;
     }
@@ -117,6 +261,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "input": args.file.display().to_string(),
             "output": args.output.as_ref().map(|p| p.display().to_string()),
             "card": card,
+            "notes": notes,
         });
         println!("{}", serde_json::to_string(&obj)?);
     } else {

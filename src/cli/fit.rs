@@ -25,6 +25,21 @@ pub struct Args {
     /// middle of the range).
     #[arg(long, allow_negative_numbers = true)]
     pub tref: Option<f64>,
+    /// Keep at most N relaxation terms (E∞ not counted): the fit chooses their positions and
+    /// non-negative weights (e.g. 18 for an LS-DYNA card). Default: no cap.
+    #[arg(long, value_name = "N")]
+    pub max_terms: Option<usize>,
+    /// Target RMS log10 error of E′ and E″ ("0.02" for both, "0.012,0.10" for each): the fewest
+    /// terms that reach it. Default: the errors of the dense grid fit (fewer terms, no less accurate).
+    #[arg(long, value_name = "E1[,E2]")]
+    pub target_rms: Option<String>,
+    /// Reduce the dense grid fit to the fewest terms at free positions that are no less accurate
+    /// against the data (implied by --max-terms and --target-rms; default: the dense grid fit).
+    #[arg(long)]
+    pub reduce: bool,
+    /// Print the trade table of terms against RMS log10 E′ and E″ on stderr.
+    #[arg(long)]
+    pub trade: bool,
     /// Replace an existing, different fit file.
     #[arg(long)]
     pub force: bool,
@@ -53,6 +68,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let mut options = FitOptions::default();
     options.master.tref_c = args.tref;
+    options.prony.max_terms = args.max_terms;
+    options.prony.reduce_terms =
+        args.reduce || args.max_terms.is_some() || args.target_rms.is_some();
+    if let Some(t) = &args.target_rms {
+        options.prony.target_rms_log10 = Some(parse_target(t)?);
+    }
     if let Some(dir) = args.output.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
@@ -77,6 +98,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "creep_terms": creep_terms,
             "rms_log10_storage": info.rms_log10_storage,
             "rms_log10_loss": info.rms_log10_loss,
+            "dense_terms": info.dense_terms,
+            "dense_rms_log10": info.dense_rms_log10,
+            "term_target_rms_log10": info.term_target_rms_log10,
+            "term_target_met": info.term_target_met,
+            "term_trade": info.term_trade,
             "quality": fit.quality,
         });
         println!("{obj}");
@@ -92,5 +118,52 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             creep_terms,
         );
     }
+    if args.trade && !args.json {
+        eprintln!("terms  RMS log10 E′  RMS log10 E″  max |log10 E′|  max |log10 E″|");
+        for t in &info.term_trade {
+            eprintln!(
+                "{:5}  {:12.4}  {:12.4}  {:14.3}  {:14.3}{}",
+                t.n_terms,
+                t.rms_log10_storage,
+                t.rms_log10_loss,
+                t.max_abs_log10_storage,
+                t.max_abs_log10_loss,
+                if t.n_terms == fit.relaxation.terms.len() {
+                    "  ← kept"
+                } else {
+                    ""
+                }
+            );
+        }
+    }
+    if info.term_target_met == Some(false) {
+        let t = info.term_target_rms_log10.unwrap_or_default();
+        eprintln!(
+            "{}: WARNING: the term target (RMS log10 E′ {:.4}, E″ {:.4}) is not met within {}; kept {} terms",
+            fit.compound,
+            t[0],
+            t[1],
+            args.max_terms.map_or("the dense fit".to_string(), |n| format!("{n} terms")),
+            fit.relaxation.terms.len()
+        );
+    }
     Ok(())
+}
+
+/// `--target-rms E1[,E2]`: one value for both moduli or one each, finite and > 0.
+fn parse_target(s: &str) -> anyhow::Result<[f64; 2]> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|t| t.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .with_context(|| format!("--target-rms {s}: expected E1 or E1,E2 (RMS log10 errors)"))?;
+    let t = match v.as_slice() {
+        [a] => [*a, *a],
+        [a, b] => [*a, *b],
+        _ => anyhow::bail!("--target-rms {s}: expected one or two numbers"),
+    };
+    if t.iter().any(|x| !(x.is_finite() && *x > 0.0)) {
+        anyhow::bail!("--target-rms {s}: the errors must be finite and > 0");
+    }
+    Ok(t)
 }

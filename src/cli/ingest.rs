@@ -14,7 +14,7 @@ use std::path::PathBuf;
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// DMA export files (EPLEXOR .xls/.xlsx, TRIOS LIMS or text, RheoCompass CSV, Proteus ASCII,
-    /// generic CSV/TSV/text).
+    /// RepTate .osc, generic CSV/TSV/text).
     #[arg(required = true)]
     pub files: Vec<PathBuf>,
     /// Write the Measurement JSON here (atomically).
@@ -24,7 +24,7 @@ pub struct Args {
     #[arg(long)]
     pub force: bool,
     /// Reader to use instead of detecting it: eplexor, trios-lims, trios-text, rheocompass, proteus,
-    /// generic.
+    /// reptate, generic.
     #[arg(long)]
     pub format: Option<String>,
     /// Unit of modulus columns that have none in the file: Pa, kPa, MPa, GPa.
@@ -39,6 +39,11 @@ pub struct Args {
     /// tensile or shear, when the file does not say which moduli it holds.
     #[arg(long)]
     pub mode: Option<String>,
+    /// Which column holds which quantity, for names no reader knows: `key=name,…` with keys freq,
+    /// temp, set_temp, storage, loss, complex, tan_delta, phase, segment (e.g.
+    /// `--columns freq=Frq,storage=Mod1,loss=Mod2`).
+    #[arg(long)]
+    pub columns: Option<String>,
     /// Poisson's ratio stated for shear ↔ tensile conversion (dimensionless, default 0.5).
     #[arg(long, default_value_t = 0.5)]
     pub poisson: f64,
@@ -52,6 +57,9 @@ fn options(a: &Args) -> anyhow::Result<IngestOptions> {
         poisson: a.poisson,
         ..IngestOptions::default()
     };
+    if let Some(c) = &a.columns {
+        o.columns = dma::ColumnMap::parse(c).map_err(|e| anyhow::anyhow!("--columns: {e}"))?;
+    }
     if let Some(f) = &a.format {
         o.format = Some(f.parse::<Format>().map_err(anyhow::Error::msg)?);
     }
@@ -159,8 +167,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             .map(|c| format!("{} = `{}` [{}]", c.quantity, c.name, c.unit))
             .collect();
         eprintln!(
-            "  mode: {}; columns: {}",
+            "  mode: {} (evidence: {}); columns: {}",
             r["mode"].as_str().unwrap_or(""),
+            src.metadata
+                .get("mode evidence")
+                .map_or("-", String::as_str),
             cols.join(", ")
         );
         let tr = r["temp_range_c"].as_array().map(|a| {

@@ -72,6 +72,9 @@ pub enum CriterionArg {
     TanDelta,
     /// log E′ only.
     Storage,
+    /// log E′ and log E″, each weighted per isotherm by its local slope against its scatter (E″
+    /// carries the shift where E′ is flat).
+    SlopeWeighted,
 }
 
 /// `--law` values.
@@ -145,6 +148,7 @@ fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {
         criterion: match args.criterion {
             CriterionArg::Joint => ShiftCriterion::Joint,
             CriterionArg::TanDelta => ShiftCriterion::TanDelta,
+            CriterionArg::SlopeWeighted => ShiftCriterion::SlopeWeighted,
             CriterionArg::Storage => ShiftCriterion::Storage,
         },
         vertical: match args.vertical {
@@ -258,6 +262,9 @@ fn summary(m: &MasterCurve) {
             opt(s.kk_median_log10_ratio, 2),
             if s.flags.is_empty() { "" } else { "  !" }
         );
+        if let Some(c) = &s.shift_channel {
+            eprintln!("           shift carried by {c}");
+        }
     }
     if let Some(w) = &m.wlf {
         eprintln!(

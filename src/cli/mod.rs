@@ -16,7 +16,9 @@ mod master;
 mod output;
 mod rank;
 mod roll;
+mod roll_cover;
 mod run;
+mod spectrum_input;
 
 use clap::{Parser, Subcommand};
 

@@ -1,7 +1,7 @@
 //! `viscoroll roll`: one dimensional scene, a rigid roll on a half-space with a given creep spectrum
 //! (JSON, the serde form of [`crate::CreepSpectrum`]) → friction, contact length, offset, pressure.
 //! A fit file (`fits/NAME.json`, [`crate::pipeline::CompoundFit`]) is accepted too, with `--temp-c T`:
-//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, MATH.md §6);
+//! its creep spectrum is moved to T by its shift law (`CreepSpectrum::at_temperature`, docs/MATH.md §6);
 //! a T outside the measured temperatures is allowed and flagged (`extrapolated`, and a warning).
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
@@ -45,6 +45,13 @@ pub struct Args {
     /// Relative tolerance on friction and contact length for `--scheme auto` (1e-12 … 0.1).
     #[arg(long, default_value_t = 1e-6)]
     pub tol: f64,
+    /// Rubber cover thickness in mm on a rigid carcass (absent: a half-space).
+    #[arg(long, allow_negative_numbers = true)]
+    pub cover_mm: Option<f64>,
+    /// Body: `auto` (default with a cover: the cheapest within --tol of the layer), `half-space`,
+    /// `layer` (bonded to a rigid carcass) or `winkler` (uniaxial columns, as conveyor design tools).
+    #[arg(long)]
+    pub model: Option<String>,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -82,6 +89,19 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         poisson: args.poisson,
         body: Body::HalfSpace,
     };
+    if args.cover_mm.is_some() || args.model.is_some() {
+        // A cover: the body is chosen and solved by contact::body::layer (super::roll_cover).
+        let (spectrum, shifted, warnings) = match (&source, args.temp_c) {
+            (CreepSource::Fit(fit), Some(t)) => {
+                let (at, w) = crate::pipeline::roll_fit::fit_spectrum_at(fit, t)
+                    .with_context(|| format!("{}: --temp-c {t}", args.spectrum.display()))?;
+                (at.spectrum.clone(), Some(at), w.into_iter().collect())
+            }
+            (CreepSource::Spectrum(s), _) => (s.clone(), None, Vec::new()),
+            (CreepSource::Fit(_), None) => bail!("a fit file needs --temp-c"),
+        };
+        return super::roll_cover::run(&args, &scene, &spectrum, shifted.as_ref(), warnings);
+    }
     let settings = ContactSettings {
         scheme: args.scheme,
         n: args.n,

@@ -4,7 +4,7 @@
 //! the [`DimensionlessSolution`] at the λ found, with `iterations` = number of solves.
 //!
 //! The thesis iterates by secant from λ₁ = 2√N′₀, λ₀ = λ₁/2 ([`thesis_secant`], kept for comparison). At
-//! low speeds the true λ is up to √(1 + Σf/b) times the elastic start (MATH.md §3) and the secant runs
+//! low speeds the true λ is up to √(1 + Σf/b) times the elastic start (docs/MATH.md §3) and the secant runs
 //! off (λ ≤ 0 or no convergence). Here instead: N′ grows monotonically with λ and lies between the
 //! glassy and the relaxed Hertz values, N′ ∈ [λ²/(4(1+Σf/b)), λ²/4], so λ ∈ [2√N′₀, 2√((1+Σf/b)N′₀)]
 //! brackets the root. The bracket is widened (×/÷ 1.25, up to [`LoadSettings::max_expand`] times) to
@@ -101,7 +101,7 @@ fn bracket(
     settings: &LoadSettings,
     eval: &mut Eval<'_>,
 ) -> Result<((f64, f64), (f64, f64), (f64, DimensionlessSolution)), ContactError> {
-    // Initial bracket from the glassy and relaxed Hertz widths (MATH.md §3).
+    // Initial bracket from the glassy and relaxed Hertz widths (docs/MATH.md §3).
     let mut lo = 2.0 * load.sqrt();
     let mut hi = lo * (1.0 + sum_f_over_b).sqrt();
     if hi <= lo * 1.0001 {

@@ -1,6 +1,6 @@
 //! Dimensional scenes: a rigid roll of radius R (m) rolling at speed V (m/s) under a load N* per unit
 //! width (N/m) on a body ([`Body`], the half-space by default) with creep compliance J(t) = J_g + Σⱼ Jⱼ(1 − e^(−t/τⱼ)), to and from the
-//! dimensionless problem of thesis §3.2 (MATH.md §1).
+//! dimensionless problem of thesis §3.2 (docs/MATH.md §1).
 //!
 //! Input: [`Scene`] + [`CreepSpectrum`]; output: [`DimensionlessScene`] (creep terms fᵢ, bᵢ, N′, ρ and
 //! the scales) and, after a solve, [`RollSolution`] (SI units).
@@ -111,7 +111,7 @@ impl Scene {
             "compliance_glassy_per_pa",
             spectrum.compliance_glassy_per_pa,
         )?;
-        // C = (1−ν)/μ₀ (MATH.md §1): tensile μ₀ = E₀/(2(1+ν)), shear μ₀ = 1/J_g.
+        // C = (1−ν)/μ₀ (docs/MATH.md §1): tensile μ₀ = E₀/(2(1+ν)), shear μ₀ = 1/J_g.
         let c = match spectrum.kind {
             ModulusKind::Tensile => 2.0 * (1.0 - nu * nu) * jg,
             ModulusKind::Shear => (1.0 - nu) * jg,

@@ -1,6 +1,6 @@
 //! Exact interconversion of Prony spectra: [`RelaxationSpectrum`] → [`CreepSpectrum`]
 //! ([`relaxation_to_creep`]) and back ([`creep_to_relaxation`]), from the poles and residues of
-//! 1/(s·Ē(s)) (MATH.md §4).
+//! 1/(s·Ē(s)) (docs/MATH.md §4).
 //!
 //! With rᵢ = 1/ρᵢ, the modulus in the Laplace domain is M(s) = s·Ē(s) = E∞ + Σ Eᵢ s/(s + rᵢ) and the
 //! compliance is s·J̄(s) = 1/M(s) = J_g + Σ Jⱼσⱼ/(s + σⱼ) (eq. 2.12 transformed; σⱼ = 1/τⱼ). So
@@ -58,7 +58,7 @@ pub struct ExactInfo {
     pub negligible_terms_dropped: usize,
 }
 
-/// Exact relaxation → creep conversion (MATH.md §4). The spectrum is validated first.
+/// Exact relaxation → creep conversion (docs/MATH.md §4). The spectrum is validated first.
 pub fn relaxation_to_creep(
     relax: &RelaxationSpectrum,
 ) -> Result<(CreepSpectrum, ExactInfo), CreepError> {

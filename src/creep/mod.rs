@@ -1,5 +1,5 @@
 //! Stage `creep`: the creep (retardation) spectrum that the contact solver consumes, and the
-//! conversion relaxation → creep (exact, from the roots of s·Ē(s), MATH.md §4; and Park & Schapery,
+//! conversion relaxation → creep (exact, from the roots of s·Ē(s), docs/MATH.md §4; and Park & Schapery,
 //! thesis eq. 2.18–2.23).
 //!
 //! Input: [`crate::RelaxationSpectrum`]; output: [`CreepSpectrum`].

@@ -6,7 +6,7 @@
 //!
 //! Conventions: J*(ω) = J′(ω) − iJ″(ω) = 1/E*(ω) with E* = E′ + iE″ (so J″ ≥ 0), and for one term
 //! Jⱼ(1 − e^(−t/τⱼ)) ↔ Jⱼ/(1 + iωτⱼ). Time–temperature superposition: a time at temperature T equals
-//! a_T times the time at T_ref, so every τ is multiplied by a_T (MATH.md §6).
+//! a_T times the time at T_ref, so every τ is multiplied by a_T (docs/MATH.md §6).
 
 use super::error::CreepError;
 use super::{CreepSpectrum, RetardationTerm};

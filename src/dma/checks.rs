@@ -146,6 +146,45 @@ fn location(sheet: &Option<String>, line: usize) -> String {
     }
 }
 
+/// For each point: whether an earlier point (lower index) with a valid frequency lies within
+/// `rel`·f of its frequency — the duplicate test, in O(n log n) instead of comparing every pair (a
+/// 1e6-point isotherm took hours that way). Sorted by frequency, the window [f(1−rel), f(1+rel)]
+/// moves monotonically, so a sliding-window minimum of the original indices answers each point: an
+/// earlier twin exists iff the smallest index in its window is below its own.
+fn earlier_twins(points: &[DataPoint], rel: f64) -> Vec<bool> {
+    let mut order: Vec<(f64, usize)> = points
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.freq_hz > 0.0 && p.freq_hz.is_finite())
+        .map(|(i, p)| (p.freq_hz, i))
+        .collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    let mut out = vec![false; points.len()];
+    let (mut lo, mut hi) = (0usize, 0usize);
+    // indices into `order`, their original indices increasing from front to back
+    let mut deque: std::collections::VecDeque<usize> = std::collections::VecDeque::new();
+    for k in 0..order.len() {
+        let f = order[k].0;
+        while hi < order.len() && order[hi].0 - f <= rel * f {
+            while deque.back().is_some_and(|&b| order[b].1 >= order[hi].1) {
+                deque.pop_back();
+            }
+            deque.push_back(hi);
+            hi += 1;
+        }
+        while f - order[lo].0 > rel * f {
+            lo += 1;
+        }
+        while deque.front().is_some_and(|&d| d < lo) {
+            deque.pop_front();
+        }
+        if let Some(&d) = deque.front() {
+            out[order[k].1] = order[d].1 < order[k].1;
+        }
+    }
+    out
+}
+
 /// Run every check, flag points, append issues (and their messages to `warnings`), fill the summary.
 pub fn run(m: &mut Measurement, set: &CheckSettings) {
     let mut issues: Vec<Issue> = Vec::new();
@@ -249,19 +288,14 @@ pub fn run(m: &mut Measurement, set: &CheckSettings) {
             (Some(a), Some(b)) => b >= a,
             _ => true,
         };
+        let has_earlier_twin = earlier_twins(&iso.points, set.duplicate_rel);
+        let mut prev: Option<f64> = None;
         for i in 0..n {
             if !valid(&iso.points[i]) {
                 continue;
             }
             let fi = iso.points[i].freq_hz;
-            let dup = iso.points[..i]
-                .iter()
-                .any(|q| valid(q) && ((q.freq_hz - fi).abs() <= set.duplicate_rel * fi));
-            let prev = iso.points[..i]
-                .iter()
-                .rev()
-                .find(|q| valid(q))
-                .map(|q| q.freq_hz);
+            let dup = has_earlier_twin[i];
             let line = iso.points[i].line;
             if dup {
                 add_point_flag(&mut iso.points[i], Flag::DuplicateFrequency);
@@ -280,6 +314,7 @@ pub fn run(m: &mut Measurement, set: &CheckSettings) {
                     push(Flag::NonMonotonic, line, &col_f, format!("frequency {fi} Hz after {pf} Hz goes against the sweep of the isotherm at {:.1} °C", iso.temp_nominal_c));
                 }
             }
+            prev = Some(fi);
         }
         // Outliers, on points with positive finite values only.
         let idx: Vec<usize> = (0..n)
@@ -397,4 +432,61 @@ pub fn run(m: &mut Measurement, set: &CheckSettings) {
     }
     m.issues.extend(issues);
     m.summary = s;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(freq_hz: f64) -> DataPoint {
+        DataPoint {
+            freq_hz,
+            storage_pa: 1e6,
+            loss_pa: 1e5,
+            temp_c: None,
+            line: 0,
+            flags: vec![],
+        }
+    }
+
+    /// The definition, pair by pair (quadratic): an earlier valid point within rel·f.
+    fn pairwise(points: &[DataPoint], rel: f64) -> Vec<bool> {
+        let valid = |p: &DataPoint| p.freq_hz > 0.0 && p.freq_hz.is_finite();
+        (0..points.len())
+            .map(|i| {
+                valid(&points[i])
+                    && points[..i].iter().any(|q| {
+                        valid(q) && (q.freq_hz - points[i].freq_hz).abs() <= rel * points[i].freq_hz
+                    })
+            })
+            .collect()
+    }
+
+    #[test]
+    fn earlier_twins_match_the_pairwise_definition() {
+        // Repeated, near-equal, invalid and unordered frequencies from a fixed pseudo-random walk.
+        let mut x = 12345u64;
+        for len in [0usize, 1, 2, 7, 50, 400] {
+            let pts: Vec<DataPoint> = (0..len)
+                .map(|_| {
+                    x = x
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    let r = (x >> 33) % 40;
+                    point(match r {
+                        0 => f64::NAN,
+                        1 => -1.0,
+                        _ => 1.0 + (r / 3) as f64 * 0.1 + if r % 3 == 0 { 1e-9 } else { 0.0 },
+                    })
+                })
+                .collect();
+            for rel in [0.0, 1e-6, 0.05] {
+                assert_eq!(
+                    earlier_twins(&pts, rel),
+                    pairwise(&pts, rel),
+                    "len {len} rel {rel}"
+                );
+            }
+        }
+    }
 }

@@ -5,11 +5,12 @@
 //! Conversions: with |M*| and tan δ, M′ = |M*|/√(1 + tan²δ), M″ = M′·tan δ; with |M*| and the phase
 //! angle δ, M′ = |M*| cos δ, M″ = |M*| sin δ; with M′ and tan δ only, M″ = M′·tan δ.
 
+use super::column_map::{mapping_key, ColumnMap};
 use super::error::DmaError;
 use super::table::{Block, Cell, Loc, RawFile};
 use super::units::{self, AngleUnit, FreqUnit, ModulusUnit, TempUnit};
 use super::IngestOptions;
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 
 /// What a column holds.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -271,8 +272,13 @@ pub struct Mapped {
     pub points: Vec<RawPoint>,
     /// Tensile or shear.
     pub kind: ModulusKind,
+    /// Why tensile or shear: a column name, `--mode`, or what the file says (geometry, test name,
+    /// instrument).
+    pub mode_evidence: String,
     /// Columns used (from the first block).
     pub columns: Vec<ColumnInfo>,
+    /// Steps skipped, each named with the reason.
+    pub notes: Vec<String>,
 }
 
 struct Ctx<'a> {
@@ -298,6 +304,15 @@ impl Ctx<'_> {
             }
         }
         None
+    }
+
+    /// The column a user mapped by `name` (see [`ColumnMap`]).
+    fn find_mapped(&self, name: &str) -> Option<usize> {
+        let key = mapping_key(name);
+        self.names
+            .iter()
+            .position(|n| n.trim() == name.trim())
+            .or_else(|| self.names.iter().position(|n| mapping_key(n) == key))
     }
 
     fn unit_of(&self, i: usize) -> Option<&str> {
@@ -358,41 +373,103 @@ fn resolve<U: PartialEq + Copy>(
     }
 }
 
-/// Map every block of a file to points.
+/// Map every block of a file to points. In a file of several steps, a step that is not an
+/// oscillatory frequency sweep (by its name, [`super::steps`]; by missing frequency or modulus
+/// columns; or by a single frequency) is skipped with a note naming it; a file with no usable
+/// sweep is an error that names the skipped steps.
 pub fn map_file(file: &str, raw: &RawFile, opts: &IngestOptions) -> Result<Mapped, DmaError> {
     let mut points = Vec::new();
-    let mut kind_seen: Option<ModulusKind> = None;
+    let mut kind_seen: Option<(ModulusKind, String)> = None;
     let mut columns = Vec::new();
+    let mut notes = Vec::new();
     if raw.blocks.iter().all(|b| b.rows.is_empty()) {
         return Err(DmaError::NoData {
             file: file.into(),
             reason: "a header was found but no row of numbers".into(),
         });
     }
+    let several = raw.blocks.iter().filter(|b| !b.rows.is_empty()).count() > 1;
+    let step_name = |bi: usize, b: &Block| {
+        b.label.clone().unwrap_or_else(|| {
+            format!(
+                "block {} ({})",
+                bi + 1,
+                b.header_loc.clone().unwrap_or(Loc::File)
+            )
+        })
+    };
     for (bi, block) in raw.blocks.iter().enumerate() {
         if block.rows.is_empty() {
             continue;
         }
-        let (kind, cols) = map_block(file, bi, block, raw, opts, &mut points)?;
-        if let Some(k) = kind_seen {
-            if k != kind {
+        if let Some(why) = block.label.as_deref().and_then(super::steps::not_a_sweep) {
+            notes.push(format!("step `{}` skipped: {why}", step_name(bi, block)));
+            continue;
+        }
+        let before = points.len();
+        let (kind, cols) = match map_block(file, bi, block, raw, opts, &mut points) {
+            Ok(r) => r,
+            Err(DmaError::MissingColumn { quantity, .. }) if several => {
+                notes.push(format!(
+                    "step `{}` skipped: no {quantity} column, not an oscillatory frequency sweep",
+                    step_name(bi, block)
+                ));
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
+        if several && block.label.is_some() {
+            let f = points[before..]
+                .iter()
+                .map(|p| p.freq_hz)
+                .filter(|f| f.is_finite() && *f > 0.0);
+            let (lo, hi) = f.fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
+            // Under 1 % of spread: one frequency (a time, amplitude or temperature sweep).
+            if hi > 0.0 && hi <= lo * 1.01 {
+                points.truncate(before);
+                notes.push(format!(
+                    "step `{}` skipped: a single frequency ({lo:.4} Hz), not a frequency sweep",
+                    step_name(bi, block)
+                ));
+                continue;
+            }
+        }
+        if let Some((k, _)) = &kind_seen {
+            if *k != kind.0 {
                 return Err(DmaError::MixedMode {
                     file: file.into(),
-                    found: kind_name(kind).into(),
-                    expected: kind_name(k).into(),
+                    found: kind_name(kind.0).into(),
+                    expected: kind_name(*k).into(),
                     why: "an earlier block of the same file".into(),
                 });
             }
         }
-        kind_seen = Some(kind);
+        if kind_seen.is_none() {
+            kind_seen = Some(kind);
+        }
         if columns.is_empty() {
             columns = cols;
         }
     }
+    let Some((kind, mode_evidence)) = kind_seen else {
+        return Err(DmaError::NoData {
+            file: file.into(),
+            reason: format!(
+                "no usable oscillatory frequency sweep: {}",
+                if notes.is_empty() {
+                    "no step holds one".to_string()
+                } else {
+                    notes.join("; ")
+                }
+            ),
+        });
+    };
     Ok(Mapped {
         points,
-        kind: kind_seen.unwrap_or_default(),
+        kind,
+        mode_evidence,
         columns,
+        notes,
     })
 }
 
@@ -404,6 +481,71 @@ pub fn kind_name(k: ModulusKind) -> &'static str {
     }
 }
 
+/// The columns found in one block, by quantity.
+struct Found {
+    freq: Col,
+    set_temp: Option<Col>,
+    temp: Option<Col>,
+    segment: Option<Col>,
+    source: Source,
+}
+
+/// Which pair of columns gives M′ and M″.
+enum Source {
+    StorageLoss(Col, Col),
+    StorageTan(Col, Col),
+    ComplexTan(Col, Col),
+    ComplexPhase(Col, Col),
+}
+
+impl Source {
+    /// The modulus columns (those that carry the kind in their names).
+    fn modulus_cols(&self) -> Vec<&Col> {
+        match self {
+            Source::StorageLoss(a, b) => vec![a, b],
+            Source::StorageTan(a, _) | Source::ComplexTan(a, _) | Source::ComplexPhase(a, _) => {
+                vec![a]
+            }
+        }
+    }
+
+    /// (first column, second column, how the second combines with the first).
+    fn parts(&self) -> (&Col, &Col, Combine) {
+        match self {
+            Source::StorageLoss(a, b) => (a, b, Combine::Loss),
+            Source::StorageTan(a, b) => (a, b, Combine::StorageTan),
+            Source::ComplexTan(a, b) => (a, b, Combine::ComplexTan),
+            Source::ComplexPhase(a, b) => (a, b, Combine::ComplexPhase),
+        }
+    }
+}
+
+/// How (M′, M″) follow from the two modulus columns (a, b) (module docs).
+#[derive(Clone, Copy)]
+enum Combine {
+    /// a = M′, b = M″.
+    Loss,
+    /// a = M′, b = tan δ.
+    StorageTan,
+    /// a = |M*|, b = tan δ.
+    ComplexTan,
+    /// a = |M*|, b = δ.
+    ComplexPhase,
+}
+
+/// The units of the columns used, and the columns recorded for provenance.
+struct Units {
+    freq: FreqUnit,
+    temp: Option<TempUnit>,
+    set_temp: Option<TempUnit>,
+    first: ModulusUnit,
+    second: ModulusUnit,
+    angle: AngleUnit,
+    info: Vec<ColumnInfo>,
+}
+
+/// Map one block: find the columns, choose the modulus source, decide the kind, resolve the units,
+/// convert the rows.
 fn map_block(
     file: &str,
     bi: usize,
@@ -411,7 +553,7 @@ fn map_block(
     raw: &RawFile,
     opts: &IngestOptions,
     out: &mut Vec<RawPoint>,
-) -> Result<(ModulusKind, Vec<ColumnInfo>), DmaError> {
+) -> Result<((ModulusKind, String), Vec<ColumnInfo>), DmaError> {
     let loc = block.header_loc.clone().unwrap_or(Loc::File).to_string();
     let ctx = Ctx {
         file,
@@ -420,19 +562,67 @@ fn map_block(
         normalised: block.names.iter().map(|n| normalise(n)).collect(),
         units: block.units.clone(),
     };
+    let found = find_columns(&ctx, block, &opts.columns)?;
+    let kind = decide_kind(&ctx, &found.source, raw, opts)?;
+    let units = resolve_units(&ctx, &found, opts)?;
+    convert_rows(&ctx, bi, block, &found, &units, out)?;
+    Ok((kind, units.info))
+}
+
+/// Find the columns of each quantity (those the user mapped first, by the given name), and which
+/// pair gives M′ and M″.
+fn find_columns(ctx: &Ctx, block: &Block, map: &ColumnMap) -> Result<Found, DmaError> {
     let mut used: Vec<usize> = Vec::new();
+    for (key, name) in map.entries() {
+        let i = ctx.find_mapped(name).ok_or_else(|| DmaError::Setting {
+            field: format!("columns.{key}"),
+            value: name.to_string(),
+            reason: format!(
+                "{}: {}: no column of that name; the columns are {}",
+                ctx.file,
+                ctx.loc,
+                ctx.names
+                    .iter()
+                    .map(|n| format!("`{n}`"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        })?;
+        used.push(i);
+    }
+    let mapped = |name: &Option<String>, q: Quantity| {
+        name.as_deref()
+            .and_then(|n| ctx.find_mapped(n))
+            .map(|idx| Col { idx, q })
+    };
     let take = |q: Quantity, used: &mut Vec<usize>| -> Option<Col> {
         let i = ctx.find(q, used)?;
         used.push(i);
         Some(Col { idx: i, q })
     };
-    let freq = take(Quantity::Freq, &mut used);
-    let set_temp = take(Quantity::SetTemp, &mut used);
-    let temp = take(Quantity::Temp, &mut used);
-    let segment = take(Quantity::Segment, &mut used);
-    let mut storage = None;
-    let mut loss = None;
-    let mut complex = None;
+    let freq = mapped(&map.freq, Quantity::Freq).or_else(|| take(Quantity::Freq, &mut used));
+    let set_temp =
+        mapped(&map.set_temp, Quantity::SetTemp).or_else(|| take(Quantity::SetTemp, &mut used));
+    let temp = mapped(&map.temp, Quantity::Temp).or_else(|| take(Quantity::Temp, &mut used));
+    let segment =
+        mapped(&map.segment, Quantity::Segment).or_else(|| take(Quantity::Segment, &mut used));
+    // A mapped modulus column's kind comes from its name if that says it, else from the evidence.
+    let kind_of = |name: &Option<String>, make: fn(Option<ModulusKind>) -> Quantity| {
+        name.as_deref().and_then(|n| ctx.find_mapped(n)).map(|idx| {
+            let k = [T, S]
+                .into_iter()
+                .find(|&k| {
+                    candidates(make(k))
+                        .iter()
+                        .any(|c| name_matches(&ctx.names[idx], &ctx.normalised[idx], c))
+                })
+                .flatten();
+            Col { idx, q: make(k) }
+        })
+    };
+    let mut storage = kind_of(&map.storage, Quantity::Storage);
+    let mut loss = kind_of(&map.loss, Quantity::Loss);
+    let mut complex = kind_of(&map.complex, Quantity::Complex);
     for k in [T, S, None] {
         if storage.is_none() {
             storage = take(Quantity::Storage(k), &mut used);
@@ -444,8 +634,9 @@ fn map_block(
             complex = take(Quantity::Complex(k), &mut used);
         }
     }
-    let tan = take(Quantity::TanDelta, &mut used);
-    let phase = take(Quantity::Phase, &mut used);
+    let tan =
+        mapped(&map.tan_delta, Quantity::TanDelta).or_else(|| take(Quantity::TanDelta, &mut used));
+    let phase = mapped(&map.phase, Quantity::Phase).or_else(|| take(Quantity::Phase, &mut used));
 
     let columns_list = || {
         block
@@ -460,7 +651,7 @@ fn map_block(
             .join(", ")
     };
     let missing_col = |q: &'static str, looked: &'static str| DmaError::MissingColumn {
-        file: file.into(),
+        file: ctx.file.into(),
         location: ctx.loc.clone(),
         quantity: q,
         looked_for: looked,
@@ -472,14 +663,6 @@ fn map_block(
             "f, Freq., Frequency, Angular frequency, Frequenz, Fréquence…",
         )
     })?;
-
-    // Which pair of columns gives M′ and M″.
-    enum Source {
-        StorageLoss(Col, Col),
-        StorageTan(Col, Col),
-        ComplexTan(Col, Col),
-        ComplexPhase(Col, Col),
-    }
     let source = match (storage, loss, complex, tan, phase) {
         (Some(s), Some(l), _, _, _) => Source::StorageLoss(s, l),
         (Some(s), None, _, Some(t), _) => Source::StorageTan(s, t),
@@ -492,12 +675,27 @@ fn map_block(
             ))
         }
     };
-    let modulus_cols: Vec<&Col> = match &source {
-        Source::StorageLoss(a, b) => vec![a, b],
-        Source::StorageTan(a, _) | Source::ComplexTan(a, _) | Source::ComplexPhase(a, _) => vec![a],
-    };
-    // Kind: from the names, else from the format, else from --mode; never guessed.
+    Ok(Found {
+        freq,
+        set_temp,
+        temp,
+        segment,
+        source,
+    })
+}
+
+/// Kind: from the names, else from --mode, else from what the file says of its test
+/// ([`super::mode_evidence`]); never guessed. With the reason in words.
+fn decide_kind(
+    ctx: &Ctx,
+    source: &Source,
+    raw: &RawFile,
+    opts: &IngestOptions,
+) -> Result<(ModulusKind, String), DmaError> {
+    let file = ctx.file;
+    let modulus_cols = source.modulus_cols();
     let mut kind: Option<ModulusKind> = None;
+    let mut why = String::new();
     for c in &modulus_cols {
         let k = match c.q {
             Quantity::Storage(k) | Quantity::Loss(k) | Quantity::Complex(k) => k,
@@ -509,10 +707,11 @@ fn map_block(
                     file: file.into(),
                     found: kind_name(k).into(),
                     expected: kind_name(kind.unwrap_or_default()).into(),
-                    why: format!("column `{}`", block.names[c.idx]),
+                    why: format!("column `{}`", ctx.names[c.idx]),
                 });
             }
             kind = Some(k);
+            why = format!("column `{}`", ctx.names[c.idx]);
         }
     }
     if let (Some(k), Some(m)) = (kind, opts.mode) {
@@ -525,20 +724,28 @@ fn map_block(
             });
         }
     }
-    let kind = match kind.or(opts.mode).or(raw.mode_hint.as_ref().map(|h| h.0)) {
-        Some(k) => k,
-        None => {
-            return Err(DmaError::AmbiguousMode {
-                file: file.into(),
-                location: ctx.loc.clone(),
-                column: block.names[modulus_cols[0].idx].clone(),
-            })
-        }
-    };
+    if let Some(k) = kind {
+        return Ok((k, why));
+    }
+    if let Some(m) = opts.mode {
+        return Ok((m, "--mode".into()));
+    }
+    match super::mode_evidence::infer(raw, file) {
+        Some(e) => Ok(e),
+        None => Err(DmaError::AmbiguousMode {
+            file: file.into(),
+            location: ctx.loc.clone(),
+            column: ctx.names[modulus_cols[0].idx].clone(),
+        }),
+    }
+}
 
+/// The unit of every column used: the file's, else the command line's (never guessed).
+fn resolve_units(ctx: &Ctx, found: &Found, opts: &IngestOptions) -> Result<Units, DmaError> {
+    let names = ctx.names;
     let (fu, fu_s) = resolve(
-        &ctx,
-        freq.idx,
+        ctx,
+        found.freq.idx,
         Quantity::Freq,
         opts.freq_unit,
         FreqUnit::parse,
@@ -546,7 +753,7 @@ fn map_block(
     )?;
     let modulus_unit = |c: &Col| {
         resolve(
-            &ctx,
+            ctx,
             c.idx,
             c.q,
             opts.modulus_unit,
@@ -556,7 +763,7 @@ fn map_block(
     };
     let temp_unit = |c: &Col| {
         resolve(
-            &ctx,
+            ctx,
             c.idx,
             c.q,
             opts.temp_unit,
@@ -566,19 +773,19 @@ fn map_block(
     };
     let mut info = vec![ColumnInfo {
         quantity: "frequency".into(),
-        name: block.names[freq.idx].clone(),
+        name: names[found.freq.idx].clone(),
         unit: fu_s,
-        index: freq.idx,
+        index: found.freq.idx,
     }];
     let mut push = |c: &Col, u: String| {
         info.push(ColumnInfo {
             quantity: c.q.words().into(),
-            name: block.names[c.idx].clone(),
+            name: names[c.idx].clone(),
             unit: u,
             index: c.idx,
         })
     };
-    let temp_u = match &temp {
+    let temp_u = match &found.temp {
         Some(c) => {
             let (u, s) = temp_unit(c)?;
             push(c, s);
@@ -586,7 +793,7 @@ fn map_block(
         }
         None => None,
     };
-    let set_u = match &set_temp {
+    let set_u = match &found.set_temp {
         Some(c) => {
             let (u, s) = temp_unit(c)?;
             push(c, s);
@@ -594,27 +801,21 @@ fn map_block(
         }
         None => None,
     };
-    if let Some(c) = &segment {
+    if let Some(c) = &found.segment {
         push(c, String::new());
     }
-    // Modulus-producing closures: (M′, M″) from a row.
-    let (m1, m2, second_kind): (&Col, &Col, u8) = match &source {
-        Source::StorageLoss(a, b) => (a, b, 0),
-        Source::StorageTan(a, b) => (a, b, 1),
-        Source::ComplexTan(a, b) => (a, b, 2),
-        Source::ComplexPhase(a, b) => (a, b, 3),
-    };
+    let (m1, m2, combine) = found.source.parts();
     let (mu1, s1) = modulus_unit(m1)?;
     push(m1, s1);
     let mut mu2 = mu1;
     let mut angle = AngleUnit::Radian;
-    match second_kind {
-        0 => {
+    match combine {
+        Combine::Loss => {
             let (u, s) = modulus_unit(m2)?;
             push(m2, s);
             mu2 = u;
         }
-        1 | 2 => {
+        Combine::StorageTan | Combine::ComplexTan => {
             if let Some(u) = ctx.unit_of(m2.idx) {
                 if !units::is_dimensionless(u) {
                     return Err(ctx.unknown_unit(m2.idx, m2.q, u));
@@ -622,7 +823,7 @@ fn map_block(
             }
             push(m2, String::new());
         }
-        _ => {
+        Combine::ComplexPhase => {
             let u = ctx
                 .unit_of(m2.idx)
                 .ok_or_else(|| ctx.missing_unit(m2.idx, m2.q, "a unit in the file (° or rad)"))?;
@@ -630,7 +831,29 @@ fn map_block(
             push(m2, u.to_string());
         }
     }
+    Ok(Units {
+        freq: fu,
+        temp: temp_u,
+        set_temp: set_u,
+        first: mu1,
+        second: mu2,
+        angle,
+        info,
+    })
+}
 
+/// Every row of the block → a [`RawPoint`] in SI; empty rows skipped, text in a number column an
+/// error, empty cells NaN and named in `missing`.
+fn convert_rows(
+    ctx: &Ctx,
+    bi: usize,
+    block: &Block,
+    found: &Found,
+    units: &Units,
+    out: &mut Vec<RawPoint>,
+) -> Result<(), DmaError> {
+    let (m1, m2, combine) = found.source.parts();
+    let (mu1, mu2) = (units.first, units.second);
     for row in &block.rows {
         let mut missing = Vec::new();
         let mut get = |c: &Col| -> Result<f64, DmaError> {
@@ -641,25 +864,25 @@ fn map_block(
                     Ok(f64::NAN)
                 }
                 Cell::Text(t) => Err(DmaError::BadNumber {
-                    file: file.into(),
+                    file: ctx.file.into(),
                     location: row.loc.to_string(),
                     column: block.names[c.idx].clone(),
                     value: t.chars().take(40).collect(),
                 }),
             }
         };
-        let f_raw = get(&freq)?;
+        let f_raw = get(&found.freq)?;
         let a = get(m1)?;
         let b = get(m2)?;
-        let t = match &temp {
+        let t = match &found.temp {
             Some(c) => Some(get(c)?),
             None => None,
         };
-        let st = match &set_temp {
+        let st = match &found.set_temp {
             Some(c) => Some(get(c)?),
             None => None,
         };
-        let seg = match &segment {
+        let seg = match &found.segment {
             Some(c) => Some(get(c)?),
             None => None,
         };
@@ -667,32 +890,32 @@ fn map_block(
             // An empty row (e.g. the blank tail of a worksheet range): not a point.
             continue;
         }
-        let (storage_pa, loss_pa) = match second_kind {
-            0 => (a * mu1.to_pa(), b * mu2.to_pa()),
-            1 => (a * mu1.to_pa(), a * mu1.to_pa() * b),
-            2 => {
+        let (storage_pa, loss_pa) = match combine {
+            Combine::Loss => (a * mu1.to_pa(), b * mu2.to_pa()),
+            Combine::StorageTan => (a * mu1.to_pa(), a * mu1.to_pa() * b),
+            Combine::ComplexTan => {
                 let m = a * mu1.to_pa();
                 let s = m / (1.0 + b * b).sqrt();
                 (s, s * b)
             }
-            _ => {
+            Combine::ComplexPhase => {
                 let m = a * mu1.to_pa();
-                let d = angle.to_rad(b);
+                let d = units.angle.to_rad(b);
                 (m * d.cos(), m * d.sin())
             }
         };
-        let temp_c = match (t, temp_u) {
+        let temp_c = match (t, units.temp) {
             (Some(t), Some(u)) if !t.is_nan() => Some(u.to_celsius(t)),
             _ => None,
         };
-        let nominal_c = match (st, set_u) {
+        let nominal_c = match (st, units.set_temp) {
             (Some(t), Some(u)) if !t.is_nan() => Some(u.to_celsius(t)),
             _ => block.nominal_c,
         };
         out.push(RawPoint {
             loc: row.loc.clone(),
             block: bi,
-            freq_hz: fu.to_hz(f_raw),
+            freq_hz: units.freq.to_hz(f_raw),
             storage_pa,
             loss_pa,
             temp_c,
@@ -701,5 +924,5 @@ fn map_block(
             missing,
         });
     }
-    Ok((kind, info))
+    Ok(())
 }

@@ -17,18 +17,21 @@ pub enum Format {
     Rheocompass,
     /// Netzsch Proteus ASCII export.
     Proteus,
+    /// RepTate data file (`.osc` sweep or `.tts` master curve).
+    Reptate,
     /// Generic delimited text with a header.
     Generic,
 }
 
 impl Format {
     /// All formats, for help texts.
-    pub const ALL: [Format; 6] = [
+    pub const ALL: [Format; 7] = [
         Format::Eplexor,
         Format::TriosLims,
         Format::TriosText,
         Format::Rheocompass,
         Format::Proteus,
+        Format::Reptate,
         Format::Generic,
     ];
 
@@ -40,6 +43,7 @@ impl Format {
             Format::TriosText => "trios-text",
             Format::Rheocompass => "rheocompass",
             Format::Proteus => "proteus",
+            Format::Reptate => "reptate",
             Format::Generic => "generic",
         }
     }
@@ -96,6 +100,9 @@ pub fn detect(bytes: &[u8], text: &str) -> Format {
     }
     if super::rheocompass::looks_like(text) {
         return Format::Rheocompass;
+    }
+    if super::reptate::looks_like(text) {
+        return Format::Reptate;
     }
     Format::Generic
 }

@@ -108,7 +108,7 @@ pub enum DmaError {
         reason: String,
     },
     /// The moduli are named in a way that does not say tensile or shear.
-    #[error("{file}: {location}: column `{column}` does not say whether it is tensile (E) or shear (G); give --mode tensile or --mode shear")]
+    #[error("{file}: {location}: column `{column}` does not say whether it is tensile (E) or shear (G), and the file names no geometry, test or instrument that does; give --mode tensile or --mode shear")]
     AmbiguousMode {
         /// Path as given.
         file: String,

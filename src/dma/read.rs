@@ -3,15 +3,16 @@
 //! columns their meaning and SI units, splits isotherms, sorts them by temperature and runs the checks.
 
 use super::checks::{self, CheckSettings};
+use super::column_map::ColumnMap;
 use super::columns::{self, kind_name};
 use super::detect::{self, Format};
 use super::error::DmaError;
 use super::isotherms::{self, SplitSettings};
 use super::table::{Loc, RawFile};
 use super::units::{FreqUnit, ModulusUnit, TempUnit};
-use super::{eplexor, generic, proteus, rheocompass, text, trios};
+use super::{eplexor, generic, proteus, reptate, rheocompass, text, trios};
 use super::{DataPoint, Isotherm, Measurement, SourceFile};
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 use sha2::{Digest, Sha256};
 
 /// How to read the files; everything the command line can state.
@@ -27,6 +28,9 @@ pub struct IngestOptions {
     pub temp_unit: Option<TempUnit>,
     /// Tensile or shear when the file does not say (`--mode`).
     pub mode: Option<ModulusKind>,
+    /// Columns named by the user (`--columns`, compounds.toml), for exports whose names no reader
+    /// knows; empty by default.
+    pub columns: ColumnMap,
     /// Poisson's ratio stated for shear ↔ tensile conversion (`--poisson`); default 0.5
     /// (incompressible rubber, ARCHITECTURE.md conventions).
     pub poisson: f64,
@@ -44,6 +48,7 @@ impl Default for IngestOptions {
             freq_unit: None,
             temp_unit: None,
             mode: None,
+            columns: ColumnMap::default(),
             poisson: 0.5,
             split: SplitSettings::default(),
             checks: CheckSettings::default(),
@@ -117,6 +122,9 @@ pub fn read_bytes(
     for (si, (name, bytes)) in inputs.iter().enumerate() {
         let (format, raw, encoding) = parse_one(name, bytes, opts)?;
         let mapped = columns::map_file(name, &raw, opts)?;
+        for n in &mapped.notes {
+            m.warnings.push(format!("{name}: {n}"));
+        }
         match &kind {
             Some((k, first)) if *k != mapped.kind => {
                 return Err(DmaError::MixedMode {
@@ -190,9 +198,7 @@ pub fn read_bytes(
             });
         }
         let mut metadata = raw.metadata;
-        if let Some((_, why)) = &raw.mode_hint {
-            metadata.insert("mode evidence".into(), why.clone());
-        }
+        metadata.insert("mode evidence".into(), mapped.mode_evidence.clone());
         m.sources.push(SourceFile {
             path: name.clone(),
             sha256: sha256_hex(bytes),
@@ -261,6 +267,7 @@ fn parse_one(
         Format::TriosText => trios::read_text(name, t)?,
         Format::Rheocompass => rheocompass::read(name, t)?,
         Format::Proteus => proteus::read(name, t)?,
+        Format::Reptate => reptate::read(name, t)?,
         Format::Generic => generic::read(name, t)?,
     };
     Ok((format, raw, decoded.encoding))

@@ -6,14 +6,14 @@
 //! the data rows (first cell empty). Labels recognised in English, German and French.
 //!
 //! The MCR rheometers measure in shear unless a DMA (tension/bending) fixture is used, so plain
-//! "Storage Modulus" / "Speichermodul" / "Module de stockage" columns are read as G′ unless the
-//! column name or `--mode` says otherwise.
+//! "Storage Modulus" / "Speichermodul" / "Module de stockage" columns say neither: the kind comes
+//! from the measuring system, the test name or the device in the header ([`super::mode_evidence`]),
+//! else from `--mode`; never assumed.
 
 use super::error::DmaError;
 use super::table::{cell_from_text, Block, Loc, RawFile, Row};
 use super::text::{self, Delimiter};
 use super::units;
-use crate::material::ModulusKind;
 
 const RESULT: &[&str] = &["result:", "ergebnis:", "résultat:", "resultat:"];
 const INTERVAL_DATA: &[&str] = &[
@@ -22,6 +22,9 @@ const INTERVAL_DATA: &[&str] = &[
     "données d'intervalle:",
     "donnees d'intervalle:",
     "données de l'intervalle:",
+    "interval données:",
+    "intervalle données:",
+    "données intervalle:",
 ];
 
 fn starts_with_any(s: &str, labels: &[&str]) -> Option<usize> {
@@ -40,13 +43,7 @@ pub fn looks_like(text: &str) -> bool {
 pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
     let lines: Vec<&str> = text.lines().collect();
     let (_, dec) = text::sniff(&lines);
-    let mut raw = RawFile {
-        mode_hint: Some((
-            ModulusKind::Shear,
-            "Anton Paar MCR rheometer (RheoCompass): rotational, shear".into(),
-        )),
-        ..RawFile::default()
-    };
+    let mut raw = RawFile::default();
     let mut result_label: Option<String> = None;
     let mut i = 0;
     while i < lines.len() {

@@ -18,6 +18,8 @@ pub enum ModulusUnit {
     GPa,
     /// Pound-force per square inch.
     Psi,
+    /// Dyne per square centimetre (CGS, older rheometer software and RepTate files): 0.1 Pa.
+    DynPerCm2,
 }
 
 /// Unit of a frequency column.
@@ -50,7 +52,7 @@ pub enum AngleUnit {
 }
 
 /// Accepted spellings, for messages.
-pub const MODULUS_UNITS: &str = "Pa, kPa, MPa, GPa, N/m², N/mm², psi";
+pub const MODULUS_UNITS: &str = "Pa, kPa, MPa, GPa, N/m², N/mm², psi, dyn/cm²";
 /// Accepted spellings, for messages.
 pub const FREQ_UNITS: &str = "Hz, kHz, rad/s";
 /// Accepted spellings, for messages.
@@ -95,6 +97,7 @@ impl ModulusUnit {
             "MPa" | "N/mm2" | "N/mm^2" => ModulusUnit::MPa,
             "GPa" => ModulusUnit::GPa,
             "psi" => ModulusUnit::Psi,
+            "dyn/cm2" | "dyn/cm^2" | "dyne/cm2" => ModulusUnit::DynPerCm2,
             _ => return None,
         })
     }
@@ -107,6 +110,8 @@ impl ModulusUnit {
             ModulusUnit::GPa => 1e9,
             // 1 lbf/in² = 4.4482216152605 N / (0.0254 m)² (exact by definition of lb and in).
             ModulusUnit::Psi => 4.448_221_615_260_5 / (0.0254 * 0.0254),
+            // 1 dyn = 1e-5 N, 1 cm² = 1e-4 m².
+            ModulusUnit::DynPerCm2 => 0.1,
         }
     }
 }
@@ -145,7 +150,7 @@ impl TempUnit {
     pub fn to_celsius(self, v: f64) -> f64 {
         match self {
             TempUnit::Celsius => v,
-            TempUnit::Kelvin => v - crate::tts::ZERO_CELSIUS_K,
+            TempUnit::Kelvin => v - crate::material::ZERO_CELSIUS_K,
         }
     }
 }
@@ -230,7 +235,53 @@ pub fn split_name_unit(name: &str) -> (String, Option<String>) {
             return (n[..i].trim().to_string(), Some(rhs.trim().to_string()));
         }
     }
+    if let Some((stem, unit)) = snake_unit_suffix(n) {
+        return (stem.to_string(), Some(unit.to_string()));
+    }
     (n.to_string(), None)
+}
+
+/// A unit written as the last `_`-separated part of a one-word name, as scripts write them
+/// (`freq_hz`, `omega_rad_s`, `temperature_C`, `T_K`, `G_storage_pa`, `E_loss_MPa`): (stem, unit as
+/// it reads in a unit row). Lower-case spellings are accepted only where they are unambiguous:
+/// `mpa` (mPa or MPa?) and `ms` stay part of the name, so that such a column has no unit and asks
+/// for one.
+fn snake_unit_suffix(name: &str) -> Option<(&str, &'static str)> {
+    if name.contains(char::is_whitespace) || !name.contains('_') {
+        return None;
+    }
+    const SUFFIXES: &[(&str, &str)] = &[
+        ("_rad_s", "rad/s"),
+        ("_rad_per_s", "rad/s"),
+        ("_Hz", "Hz"),
+        ("_hz", "Hz"),
+        ("_kHz", "kHz"),
+        ("_khz", "kHz"),
+        ("_Pa", "Pa"),
+        ("_pa", "Pa"),
+        ("_kPa", "kPa"),
+        ("_kpa", "kPa"),
+        ("_MPa", "MPa"),
+        ("_GPa", "GPa"),
+        ("_gpa", "GPa"),
+        ("_psi", "psi"),
+        ("_C", "°C"),
+        ("_c", "°C"),
+        ("_degC", "°C"),
+        ("_degc", "°C"),
+        ("_K", "K"),
+        ("_k", "K"),
+        ("_deg", "°"),
+        ("_rad", "rad"),
+    ];
+    for (suffix, unit) in SUFFIXES {
+        if let Some(stem) = name.strip_suffix(suffix) {
+            if !stem.is_empty() && !stem.ends_with('_') {
+                return Some((stem, unit));
+            }
+        }
+    }
+    None
 }
 
 #[cfg(test)]
@@ -271,6 +322,20 @@ mod tests {
             ("Temp.".into(), Some("°C".into()))
         );
         assert_eq!(split_name_unit("tan(delta)"), ("tan(delta)".into(), None));
+        // Units as the last part of a snake_case name.
+        let s = |n: &str| split_name_unit(n);
+        assert_eq!(s("freq_hz"), ("freq".into(), Some("Hz".into())));
+        assert_eq!(s("omega_rad_s"), ("omega".into(), Some("rad/s".into())));
+        assert_eq!(
+            s("temperature_C"),
+            ("temperature".into(), Some("°C".into()))
+        );
+        assert_eq!(s("T_K"), ("T".into(), Some("K".into())));
+        assert_eq!(s("G_storage_pa"), ("G_storage".into(), Some("Pa".into())));
+        assert_eq!(s("E_loss_MPa"), ("E_loss".into(), Some("MPa".into())));
+        assert_eq!(s("tan_delta"), ("tan_delta".into(), None));
+        // mPa or MPa? Not decided here: no unit, so the reader asks for one.
+        assert_eq!(s("E_loss_mpa"), ("E_loss_mpa".into(), None));
         assert_eq!(
             split_name_unit("Oscillation strain (cmd)"),
             ("Oscillation strain (cmd)".into(), None)

@@ -111,7 +111,7 @@ impl ShiftLaw {
                     });
                 }
                 for (i, w) in points.windows(2).enumerate() {
-                    if !(w[1].0 > w[0].0) {
+                    if w[1].0.partial_cmp(&w[0].0) != Some(std::cmp::Ordering::Greater) {
                         return Err(MaterialError::InvalidValue {
                             field: format!("points[{}].0", i + 1),
                             value: w[1].0,

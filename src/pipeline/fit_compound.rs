@@ -2,8 +2,8 @@
 //! creep spectrum; and the checks that decide whether an existing fit file can be reused.
 //!
 //! Input: file paths + [`FitOptions`]; output: [`CompoundFit`] (with `creep` and `tts` filled in).
-//! Math: master curve MATH.md §6 (crate::tts), Prony QP MATH.md §5 (crate::prony), exact conversion
-//! MATH.md §4 (crate::creep::exact). Reuse rule: same SHA-256 of every input (as a multiset, paths
+//! Math: master curve docs/MATH.md §6 (crate::tts), Prony QP docs/MATH.md §5 (crate::prony), exact conversion
+//! docs/MATH.md §4 (crate::creep::exact). Reuse rule: same SHA-256 of every input (as a multiset, paths
 //! ignored), same settings, same tool version.
 
 use super::error::{io, PipelineError};

@@ -1,6 +1,6 @@
 //! One scene on a creep spectrum from a file: a bare creep spectrum (JSON, [`CreepSpectrum`]), or a
 //! compound's fit (`fits/NAME.json`, [`CompoundFit`]) whose spectrum is moved to a temperature by its
-//! shift law (`CreepSpectrum::at_temperature`, MATH.md §6), then rolled with [`contact::roll`].
+//! shift law (`CreepSpectrum::at_temperature`, docs/MATH.md §6), then rolled with [`contact::roll`].
 //!
 //! Input: a path (or a fit), an optional temperature in °C, a [`Scene`] and [`ContactSettings`];
 //! output: [`SourceRoll`] (the contact answer, the shift applied and the warnings, temperature

@@ -1,4 +1,4 @@
-//! The non-negative, regularised Prony fit (MATH.md §5): master-curve points ([`MasterPoint`]) →
+//! The non-negative, regularised Prony fit (docs/MATH.md §5): master-curve points ([`MasterPoint`]) →
 //! [`RelaxationSpectrum`] + [`PronyInfo`], solved as a convex QP with clarabel.
 //!
 //! # The problem
@@ -42,6 +42,7 @@
 //!   material functions. Part I, Int. J. Solids Struct. 36, 1653–1675 (Prony series fits).
 
 use super::kernel::{dynamic_moduli_pa, loss_kernel, storage_kernel};
+use super::terms::{reduce_terms, TermControl};
 use super::{
     LambdaCandidate, PronyError, PronyInfo, PronySettings, RelaxationSpectrum, RelaxationTerm,
     WeightRule,
@@ -94,7 +95,7 @@ pub fn relaxation_times_s(
         .collect()
 }
 
-/// Fit a non-negative, smooth Prony series to master-curve points (MATH.md §5; see the module docs
+/// Fit a non-negative, smooth Prony series to master-curve points (docs/MATH.md §5; see the module docs
 /// for the QP). `kind` and `poisson` are copied into the spectrum; the moduli are fitted as given.
 pub fn fit_prony(
     points: &[MasterPoint],
@@ -154,7 +155,44 @@ pub fn fit_prony(
         modulus_inf_pa: x[0].max(0.0) * scale,
         terms,
     };
-    let errors = log10_errors(points, &spectrum);
+    let mut spectrum = spectrum;
+    let mut errors = log10_errors(points, &spectrum);
+    let dense_terms = spectrum.terms.len();
+    let dense_rms = [errors.rms_storage, errors.rms_loss];
+    let mut reduction = None;
+    if settings.reduce_terms || settings.max_terms.is_some() || settings.target_rms_log10.is_some()
+    {
+        // Default target: the dense fit's own errors (no worse in either modulus).
+        let target = settings.target_rms_log10.unwrap_or(dense_rms);
+        let control = TermControl {
+            max_terms: settings.max_terms,
+            target_storage: target[0],
+            target_loss: target[1],
+            log_residuals: settings.log_residuals,
+            stop_early: true,
+        };
+        let red = reduce_terms(
+            points,
+            &taus,
+            scale,
+            settings.loss_weight,
+            kind,
+            poisson,
+            &control,
+        )?;
+        // Target missed and the dense fit within the cap: keep the dense fit (it is the most accurate
+        // one the grid gives, and by default it is the target itself).
+        let keep_dense = !red.target_met && settings.max_terms.map_or(true, |c| dense_terms <= c);
+        if !keep_dense {
+            spectrum = red.spectrum;
+            errors = log10_errors(points, &spectrum);
+        }
+        reduction = Some((target, red.target_met, red.trade));
+    }
+    let (term_target, target_met, trade) = match reduction {
+        Some((t, m, tr)) => (Some(t), Some(m), tr),
+        None => (None, None, Vec::new()),
+    };
     let info = PronyInfo {
         rms_log10_storage: errors.rms_storage,
         rms_log10_loss: errors.rms_loss,
@@ -173,6 +211,11 @@ pub fn fit_prony(
         freq_window_hz: [f_min, f_max],
         tau_window_s: [taus[0], taus[taus.len() - 1]],
         modulus_scale_pa: scale,
+        dense_rms_log10: Some(dense_rms),
+        dense_terms: Some(dense_terms),
+        term_target_rms_log10: term_target,
+        term_target_met: target_met,
+        term_trade: trade,
     };
     Ok(PronyFit { spectrum, info })
 }
@@ -600,6 +643,11 @@ mod tests {
             })
             .collect();
         let pts = master_points(&truth, f0, f1, 10.0, 0.0, 1);
+        // The grid QP's own dropping (the term reduction would move the times off the grid).
+        let settings = PronySettings {
+            reduce_terms: false,
+            ..settings
+        };
         let fit = fit_prony(&pts, ModulusKind::Tensile, 0.5, &settings).unwrap();
         assert!(
             fit.info.n_terms_kept < fit.info.n_terms_grid,

@@ -55,4 +55,20 @@ pub struct PronyInfo {
     pub tau_window_s: [f64; 2],
     /// Modulus scale in Pa that normalises the unknowns (the largest E′ datum).
     pub modulus_scale_pa: f64,
+    /// RMS log10 errors [E′, E″] of the dense grid fit before the term reduction (equal to the
+    /// final ones when no reduction ran).
+    #[serde(default)]
+    pub dense_rms_log10: Option<[f64; 2]>,
+    /// Terms of the dense grid fit (after dropping zeros) before the reduction.
+    #[serde(default)]
+    pub dense_terms: Option<usize>,
+    /// The target [E′, E″] RMS log10 the reduction aimed for.
+    #[serde(default)]
+    pub term_target_rms_log10: Option<[f64; 2]>,
+    /// Whether the reduced spectrum meets the target (false: `max_terms` was too few).
+    #[serde(default)]
+    pub term_target_met: Option<bool>,
+    /// The trade of terms against errors found by the reduction (most terms first).
+    #[serde(default)]
+    pub term_trade: Vec<super::TermTrade>,
 }

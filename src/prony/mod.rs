@@ -1,5 +1,5 @@
 //! Stage `prony`: the relaxation spectrum (Prony series, thesis eq. 2.9) and its non-negative QP fit
-//! to a master curve (MATH.md §5).
+//! to a master curve (docs/MATH.md §5).
 //!
 //! Input: a master curve; output: [`RelaxationSpectrum`].
 
@@ -12,11 +12,13 @@ mod info;
 pub mod kernel;
 mod settings;
 pub mod synthetic;
+pub mod terms;
 
 pub use error::PronyError;
 pub use fit::{fit_prony, log10_errors, relaxation_times_s, MasterPoint, PronyFit};
 pub use info::{LambdaCandidate, PronyInfo};
 pub use settings::{PronySettings, WeightRule};
+pub use terms::{reduce_terms, TermControl, TermTrade};
 
 /// One relaxation term of a Prony series: Eᵢ e^(−t/ρᵢ).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

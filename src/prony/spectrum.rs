@@ -155,7 +155,7 @@ mod tests {
 
     #[test]
     fn kramers_kronig_local_rule_holds_for_a_broad_spectrum() {
-        // For a spectrum spread evenly over many decades E″ ≈ (π/2) dE′/d ln ω (MATH.md §6); 4 terms per
+        // For a spectrum spread evenly over many decades E″ ≈ (π/2) dE′/d ln ω (docs/MATH.md §6); 4 terms per
         // decade make the local rule good to a few per cent in the middle of the window.
         let terms = (0..60)
             .map(|k| RelaxationTerm {

@@ -229,6 +229,7 @@ fn draw_isotherms<DB: DrawingBackend>(
             .filter(|p| p.loss_pa > 0.0)
             .map(|p| (p.freq_hz, p.loss_pa))
             .collect();
+        let (s, l) = (thinned(&s), thinned(&l));
         chart
             .draw_series(LineSeries::new(s.iter().copied(), c.stroke_width(1)))
             .map_err(e)?
@@ -246,6 +247,16 @@ fn draw_isotherms<DB: DrawingBackend>(
     }
     legend(&mut chart, SeriesLabelPosition::LowerRight, 12)?;
     Ok(())
+}
+
+/// Most markers drawn per series: a 1e6-point export would otherwise put 1e6 circles into every SVG
+/// (hundreds of MB) and take minutes to draw; 2000 markers already overlap on a 900-pixel-wide plot.
+pub const MAX_MARKERS: usize = 2000;
+
+/// Every k-th item so that at most [`MAX_MARKERS`] remain (the first one always kept).
+pub fn thinned<T: Copy>(v: &[T]) -> Vec<T> {
+    let k = v.len().div_ceil(MAX_MARKERS).max(1);
+    v.iter().step_by(k).copied().collect()
 }
 
 /// Master curve (points) with the Prony fit (lines): E′ and E″ against reduced frequency.
@@ -281,6 +292,7 @@ fn draw_master<DB: DrawingBackend>(
         "modulus [Pa]",
     )?;
     let (blue, red) = (RGBColor(30, 90, 200), RGBColor(210, 50, 40));
+    let points = &thinned(points)[..];
     chart
         .draw_series(
             points

@@ -78,6 +78,7 @@ pub fn ranking_csv(
                s: Option<&SceneStanding>,
                trusted: bool,
                note: String| {
+        let (models, warnings) = bodies_and_warnings(o, scene);
         vec![
             scene.to_string(),
             rank,
@@ -89,6 +90,8 @@ pub fn ranking_csv(
             s.map_or(String::new(), |s| temps_text(&s.extrapolated_temps_c)),
             s.map_or(String::new(), |s| temps_text(&s.failed_temps_c)),
             note,
+            models,
+            warnings,
         ]
     };
     for spec in &scenes.scene {
@@ -134,8 +137,34 @@ pub fn ranking_csv(
             "extrapolated_temps_c",
             "failed_temps_c",
             "note",
+            "model",
+            "warnings",
         ],
         rows,
+    )
+}
+
+/// The bodies solved for `o` in `scene` (space-separated, contact::body::layer) and its points'
+/// contact warnings (cover indentation, contact length against R, …) as "T °C: warning; …".
+fn bodies_and_warnings(o: &CompoundOutcome, scene: &str) -> (String, String) {
+    let mut models: Vec<&str> = Vec::new();
+    let mut warnings: Vec<String> = Vec::new();
+    for p in o
+        .friction
+        .iter()
+        .filter(|(s, _)| s == scene)
+        .flat_map(|(_, p)| p)
+    {
+        if !p.model.is_empty() && !models.contains(&p.model.as_str()) {
+            models.push(&p.model);
+        }
+        for w in &p.warnings {
+            warnings.push(format!("{} °C: {w}", p.temp_c));
+        }
+    }
+    (
+        models.join(" "),
+        warnings.join("; ").replace(['\r', '\n'], " "),
     )
 }
 
@@ -154,6 +183,8 @@ pub(crate) mod tests {
             .iter()
             .enumerate()
             .map(|(i, &(f, ext))| FrictionPoint {
+                model: String::new(),
+                model_reason: String::new(),
                 temp_c: 10.0 * i as f64,
                 log10_a_t: 0.0,
                 friction: f,

@@ -193,6 +193,8 @@ mod tests {
 
     fn point(temp_c: f64, friction: f64, extrapolated: bool, error: Option<&str>) -> FrictionPoint {
         FrictionPoint {
+            model: String::new(),
+            model_reason: String::new(),
             temp_c,
             log10_a_t: 0.0,
             friction,

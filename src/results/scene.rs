@@ -56,6 +56,10 @@ pub struct SceneSpec {
     /// Poisson's ratio (default: the spectrum's).
     #[serde(default)]
     pub poisson: Option<f64>,
+    /// Thickness in mm of a rubber cover bonded to a rigid carcass; absent: a half-space. The body
+    /// solved is chosen by `contact::body::layer::roll_cover` (`auto`: the cheapest within tolerance).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cover_thickness_mm: Option<f64>,
     /// Temperatures in °C of the friction maps (each solve costs; keep it short).
     #[serde(default)]
     pub map_temps_c: Vec<f64>,
@@ -184,6 +188,14 @@ impl SceneSet {
                     )));
                 }
             }
+            if let Some(h) = s.cover_thickness_mm {
+                if !(h.is_finite() && h > 0.0) {
+                    return Err(cfg(format!(
+                        "{} must be finite and > 0 (omit it for a half-space), got {h}",
+                        at("cover_thickness_mm")
+                    )));
+                }
+            }
             s.scene().validate().map_err(|e| cfg(at(&e.to_string())))?;
         }
         Ok(set)
@@ -223,9 +235,20 @@ pub struct FrictionPoint {
     /// Why the solve failed, if it did.
     #[serde(default)]
     pub error: Option<String>,
-    /// Validity warnings of the contact solve (e.g. a contact long against the roll radius).
+    /// The body solved (`half-space`, `layer`, `winkler-constrained`, …; contact::body::layer).
+    #[serde(default = "half_space_name")]
+    pub model: String,
+    /// Why that body (empty for a scene without a cover).
+    #[serde(default)]
+    pub model_reason: String,
+    /// Validity warnings of the contact solve (a contact long against the roll radius, cover
+    /// indentation, contact checks).
     #[serde(default)]
     pub warnings: Vec<String>,
+}
+
+fn half_space_name() -> String {
+    "half-space".into()
 }
 
 impl FrictionPoint {

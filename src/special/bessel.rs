@@ -28,11 +28,13 @@ pub fn scaled_bessel_i(mu: f64, rel_cut: f64) -> Vec<f64> {
         return vec![1.0];
     }
     if mu < 1e-50 {
-        // Power series (A&S 9.6.10): Ĩ₀ = e^{−μ}(1 + μ²/4 + …), Ĩ₁ = e^{−μ}(μ/2)(1 + μ²/8 + …) are
-        // exact to double precision here, and Ĩ₂/Ĩ₁ = μ/4 lies below any cut; the recurrence would
-        // overflow (one step multiplies by 2n/μ > 1e50).
+        // Power series (A&S 9.6.10): Ĩ₀ = e^{−μ}(1 + μ²/4 + …), Ĩ₁ = e^{−μ}(μ/2)(1 + μ²/8 + …),
+        // Ĩ₂ = e^{−μ}(μ²/8)(1 + …) are exact to double precision here; the recurrence would overflow
+        // (one step multiplies by 2n/μ > 1e50). Order 2 is kept although Ĩ₂/Ĩ₁ = μ/4 lies below any
+        // cut: the exact one-term solution divides it by μ² (docs/MATH.md §10), and without it the
+        // friction's constant loses a quarter (0.55 % low at c ≲ 4e-19).
         let e = (-mu).exp();
-        return vec![e, 0.5 * mu * e];
+        return vec![e, 0.5 * mu * e, 0.125 * mu * mu * e];
     }
     // Terms behave like exp(−n²/(2μ)) for μ ≫ 1 and like (μ/2)ⁿ/n! for μ ≪ 1; for the cut 1e−18,
     // 2·ln(1e18) ≈ 83.
@@ -71,7 +73,8 @@ pub fn scaled_bessel_i(mu: f64, rel_cut: f64) -> Vec<f64> {
         *v /= sum;
     }
     let peak = out.iter().skip(1).cloned().fold(0.0, f64::max);
-    while out.len() > 2 && *out.last().unwrap() < rel_cut * peak {
+    // Orders 0–2 are always kept (see the power-series branch above).
+    while out.len() > 3 && *out.last().unwrap() < rel_cut * peak {
         out.pop();
     }
     out
@@ -234,9 +237,14 @@ mod tests {
                         "mu {mu} n {n}: {got:e} vs {exact:e}"
                     );
                 }
-                // trimmed exactly where the next order falls below the cut of order 1
+                // trimmed exactly where the next order falls below the cut of order 1, but never
+                // below order 2 (kept always: the exact one-term solution needs it)
                 let s1 = series_scaled(1, mu);
-                assert!(series_scaled(c.len() - 1, mu) >= cut * s1, "mu {mu}");
+                assert!(c.len() >= 3, "mu {mu}");
+                assert!(
+                    c.len() == 3 || series_scaled(c.len() - 1, mu) >= cut * s1,
+                    "mu {mu}"
+                );
                 assert!(
                     series_scaled(c.len(), mu) < cut * s1,
                     "mu {mu}: {} orders",

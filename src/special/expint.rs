@@ -1,5 +1,5 @@
 //! Exponential integrals E1 and Ei, plain and scaled (eˣE1(x), e⁻ˣEi(x)), in double precision over the
-//! whole range where the value is representable (MATH.md §2).
+//! whole range where the value is representable (docs/MATH.md §2).
 //!
 //! Input: one `f64`; output: one `f64`. Owns: the series, continued fraction and asymptotic branches
 //! and their switch points. Definitions (Abramowitz & Stegun 5.1.1, 5.1.2, 5.1.10, 5.1.11):
@@ -30,7 +30,7 @@
 //!   so that E1 fades gracefully through the subnormals and Ei reaches the largest double.
 //! - For x < 0, Ei(x) = −E1(−x) and e⁻ˣEi(x) = −e^{|x|}E1(|x|), so the E1 branches serve.
 //!
-//! Why not a crate (MATH.md §2): statrs 0.18 `integral(x, 1)` gives E1 only (no scaled form, no Ei)
+//! Why not a crate (docs/MATH.md §2): statrs 0.18 `integral(x, 1)` gives E1 only (no scaled form, no Ei)
 //! and, against the same mpmath table, errs up to 5.3e-15 relative at x = 1.9 (forward Lentz
 //! evaluation of the same continued fraction), where the backward evaluation here stays ≤ 2.4e-16.
 

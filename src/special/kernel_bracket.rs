@@ -1,11 +1,11 @@
-//! The bracket of the contact kernel (MATH.md §2) and its first two antiderivatives, for every real x.
+//! The bracket of the contact kernel (docs/MATH.md §2) and its first two antiderivatives, for every real x.
 //!
 //! Input: one `f64`; output: one `f64`. Owns: h, H₁ = ∫₀ˣh, H₂ = ∫₀ˣH₁, their series and closed forms
 //! and the switch points between them. The kernel of thesis eq. 3.19,
 //! K(ξ) = ln|ξ| + ∫₀^∞ γ(ζ) ln|ξ+ζ| dζ, for γ(ζ) = Σ fᵢe^{−bᵢζ} is, up to an additive constant that
 //! cancels in eq. 3.25, K(ξ) = ln|ξ| + Σ (fᵢ/bᵢ)·h(bᵢξ), because (substituting u = bζ and integrating
-//! by parts) ∫₀^∞ e^{−bζ} ln|ξ+ζ| dζ = (ln|bξ| − ln b + g(bξ))/b = (h(bξ) − γ − ln b)/b (MATH.md §2
-//! prints ln|ξ| where ln|bξ| belongs; the constant is immaterial there), with
+//! by parts) ∫₀^∞ e^{−bζ} ln|ξ+ζ| dζ = (ln|bξ| − ln b + g(bξ))/b = (h(bξ) − γ − ln b)/b (docs/MATH.md §2.1),
+//! with
 //!
 //! ```text
 //! h(x) = ln|x| + γ + g(x) = ∫₀^∞ e^{−ζ} ln|1 + x/ζ| dζ,
@@ -60,7 +60,7 @@ const SERIES_NEG_UP_TO: f64 = 0.75;
 const TAYLOR_FROM: f64 = -6.0;
 const TAYLOR_TO: f64 = -0.75;
 
-/// h(x) = ln|x| + γ + g(x), the kernel bracket of MATH.md §2 (h(0) = 0, h′ = g).
+/// h(x) = ln|x| + γ + g(x), the kernel bracket of docs/MATH.md §2 (h(0) = 0, h′ = g).
 pub fn kernel_bracket(x: f64) -> f64 {
     bracket(x, 0)
 }

@@ -2,7 +2,7 @@
 //! (`bessel.rs`), one step of Brent's root finder (`brent.rs`), Gauss–Legendre rules and adaptive
 //! quadrature (`gauss_legendre.rs`), Chebyshev interpolation, Clenshaw and sine series
 //! (`chebyshev.rs`); and the special functions the contact kernel needs: the exponential integrals E1 and Ei in scaled forms
-//! (eˣE1(x), e⁻ˣEi(x)), accurate to a few ulp over the whole double range (MATH.md §2), and the
+//! (eˣE1(x), e⁻ˣEi(x)), accurate to a few ulp over the whole double range (docs/MATH.md §2), and the
 //! kernel bracket h with its two antiderivatives (for piecewise-linear collocation of eq. 3.25).
 //! Owned by the foundation contact issue.
 //!

@@ -7,7 +7,7 @@
 //! temperature of each point, a segment number per isotherm), which `crate::dma` reads.
 //!
 //! Math: E′, E″ of a Prony series (thesis eq. 2.9 in the frequency domain, [`super::storage_modulus`])
-//! at ω = 2π f a_T(T) with a_T from WLF (MATH.md §6) evaluated at each point's *measured* temperature.
+//! at ω = 2π f a_T(T) with a_T from WLF (docs/MATH.md §6) evaluated at each point's *measured* temperature.
 //! Noise is multiplicative Gaussian (E′ × (1 + 0.01 g), E″ × (1 + 0.03 g) by default, g seeded
 //! standard normals): a good DMA repeats E′ to about 1 % and the phase angle to a few tenths of a
 //! degree, which is a few per cent of E″ where tan δ is small.

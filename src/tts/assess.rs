@@ -92,6 +92,7 @@ pub(super) fn assess(
             vgp_rms_deg: vgp[i],
             kk_median_log10_ratio: kk,
             flags,
+            shift_channel: ch.carried.get(i).cloned().flatten(),
         });
     }
     let max_of = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, f64::max);

@@ -1,4 +1,4 @@
-//! Fits of the shift factors log10 a_T(T) (MATH.md §6): input (temperature, log10 a_T) pairs and a
+//! Fits of the shift factors log10 a_T(T) (docs/MATH.md §6): input (temperature, log10 a_T) pairs and a
 //! reference temperature; output [`WlfFit`] and [`ArrheniusFit`], each with its residuals, and the
 //! exact re-referencing of a WLF law to another reference temperature.
 //!

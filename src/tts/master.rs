@@ -71,6 +71,9 @@ pub struct IsothermShift {
     pub kk_median_log10_ratio: Option<f64>,
     /// Quality figures out of bounds, in words.
     pub flags: Vec<String>,
+    /// The channel that carried the shift (`E′` or `E″`), with the slope-weighted criterion.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shift_channel: Option<String>,
 }
 
 /// Summary of the quality figures.

@@ -1,12 +1,13 @@
 //! Stage `tts`: time–temperature superposition. Horizontal (and optional vertical) shifts of the
 //! isotherms of a [`crate::Measurement`], WLF and Arrhenius fits of log a_T → master curve and
-//! [`ShiftLaw`] (MATH.md §6).
+//! [`ShiftLaw`] (docs/MATH.md §6).
 
 mod assess;
 mod channels;
 mod clean;
 mod error;
 pub mod fit_laws;
+mod from_reduced;
 mod horizontal;
 mod interp;
 mod law_choice;
@@ -19,6 +20,7 @@ pub mod vertical;
 
 pub use error::TtsError;
 pub use fit_laws::{rereference_wlf, ArrheniusFit, ShiftResidual, WlfFit};
+pub use from_reduced::master_curve_from_reduced;
 pub use master::{build_master_curve, IsothermShift, MasterCurve, MasterPoint, MasterQuality};
 pub use quality::QualityBounds;
 pub use settings::{

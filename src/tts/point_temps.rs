@@ -5,7 +5,7 @@
 //! Input: a [`Measurement`] and the local slope d log10 a_T/dT at each isotherm (from a first
 //! shifting pass, [`slopes_from_shifts`], or from a given law); output: a corrected [`Measurement`]
 //! whose points carry the isotherm's temperature and the frequency that gives the same reduced
-//! frequency there. Time–temperature superposition (MATH.md §6): a point at T_p and f has the
+//! frequency there. Time–temperature superposition (docs/MATH.md §6, §12): a point at T_p and f has the
 //! reduced frequency f·a_T(T_p) = f·10^(log a(T_p) − log a(T_i))·a_T(T_i), so to first order in
 //! T_p − T_i it is the point (f·10^(s_i (T_p − T_i)), T_i) with s_i = d log10 a_T/dT at T_i.
 //! The neglected second-order term is ½ s′ (T_p − T_i)²: for WLF near T_g (s′ ≈ 2C₁/C₂² ≈ 0.013

@@ -1,4 +1,4 @@
-//! Quality figures of a master curve (MATH.md §6), each with a stated bound and a flag:
+//! Quality figures of a master curve (docs/MATH.md §6), each with a stated bound and a flag:
 //!
 //! - **Overlap residual**: RMS mismatch (log10 units) of each isotherm's overlaps after shifting
 //!   (computed by the global shift refinement, `super::shift`).

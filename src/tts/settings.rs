@@ -28,6 +28,12 @@ pub enum ShiftCriterion {
     Joint,
     /// log10 tan δ (independent of any vertical shift).
     TanDelta,
+    /// log10 E′ and log10 E″, each weighted per isotherm by the information it carries there: its
+    /// local slope against its scatter, (|d log M/d log f| / σ)², as a share of both channels'
+    /// (docs/MATH.md §6). Where E′ is flat (the rubbery and glassy plateaus) E″ carries the shift;
+    /// in the transition E′ does, as with [`ShiftCriterion::Storage`]. Each isotherm reports the
+    /// channel that carried it.
+    SlopeWeighted,
     /// log10 E′ only, the default: on the real EMS-CA and DMA-suite sets E″ carries an
     /// instrument upturn at the top frequency and a secondary relaxation below T_g that do not
     /// superpose, and E′ alone superposes best (overlap RMS 0.004 and 0.021 against 0.045 and

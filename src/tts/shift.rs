@@ -1,4 +1,4 @@
-//! Automatic horizontal shifting (MATH.md §6): input the isotherms prepared in log–log
+//! Automatic horizontal shifting (docs/MATH.md §6): input the isotherms prepared in log–log
 //! ([`Prepared`]: x = log10 f, one or more channels y = log10 E′, log10 E″ or log10 tan δ, each with
 //! a clamped cubic spline), output log10 a_T of each isotherm relative to a reference isotherm.
 //!
@@ -24,6 +24,9 @@ pub(crate) struct Prepared {
     pub x: Vec<f64>,
     /// The compared quantities, each with its values at `x` and its spline.
     pub channels: Vec<(Vec<f64>, Spline)>,
+    /// Weight of each channel in this isotherm's pairs (empty: all 1). A pair weighs channel c by
+    /// √(w_a,c · w_b,c), the same whichever isotherm a point comes from.
+    pub weights: Vec<f64>,
 }
 
 impl Prepared {
@@ -36,7 +39,32 @@ impl Prepared {
                 (y, s)
             })
             .collect();
-        Prepared { x, channels }
+        Prepared {
+            x,
+            channels,
+            weights: Vec::new(),
+        }
+    }
+
+    /// The same isotherm with channel weights (see [`Prepared::weights`]).
+    pub(crate) fn with_weights(mut self, weights: Vec<f64>) -> Prepared {
+        self.weights = weights;
+        self
+    }
+
+    /// Median |d y/d log10 f| of channel `c` over this isotherm's points (its spline's slope).
+    pub(crate) fn median_abs_slope(&self, c: usize) -> f64 {
+        let mut s: Vec<f64> = self
+            .x
+            .iter()
+            .map(|&x| self.channels[c].1.eval(x).1.abs())
+            .filter(|v| v.is_finite())
+            .collect();
+        if s.is_empty() {
+            return 0.0;
+        }
+        s.sort_by(f64::total_cmp);
+        s[s.len() / 2]
     }
 
     fn x_min(&self) -> f64 {
@@ -94,12 +122,18 @@ pub(crate) fn residual(
     op: OverlapPoint,
     channel: usize,
 ) -> (f64, f64) {
-    if op.from_a {
+    let (r, drdd) = if op.from_a {
         let (v, s) = b.channels[channel].1.eval(a.x[op.point] - d);
         (a.channels[channel].0[op.point] - v, s)
     } else {
         let (v, s) = a.channels[channel].1.eval(b.x[op.point] + d);
         (b.channels[channel].0[op.point] - v, -s)
+    };
+    if a.weights.is_empty() || b.weights.is_empty() {
+        (r, drdd)
+    } else {
+        let w = (a.weights[channel] * b.weights[channel]).sqrt();
+        (w * r, w * drdd)
     }
 }
 

@@ -1,4 +1,4 @@
-//! Optional vertical shift b_T (MATH.md §6; off by default for tensile rubbers): the reduced moduli
+//! Optional vertical shift b_T (docs/MATH.md §6; off by default for tensile rubbers): the reduced moduli
 //! are E_r(ω a_T) = E(ω, T) / b_T.
 //!
 //! - `temperature`: the entropy-elasticity factor b_T = ρT/(ρ_ref T_ref) with constant density,

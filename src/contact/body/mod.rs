@@ -22,6 +22,7 @@
 //! support is refused with [`ContactError::Unsupported`].
 
 pub mod half_space;
+pub mod layer;
 
 use super::error::ContactError;
 use super::scene::DimensionlessScene;
@@ -37,6 +38,25 @@ pub enum Body {
     /// A viscoelastic half-space (thesis ch. 3): kernel eq. 3.19.
     #[default]
     HalfSpace,
+    /// A viscoelastic cover of thickness `thickness_m` bonded to a rigid carcass (plane strain,
+    /// [`layer`]). Every scheme is served by the layer's own error-controlled collocation (to
+    /// `settings.auto.tol`, at least [`layer::roll_cover::LAYER_TOL_FLOOR`]); at given λ by the
+    /// thesis collocation with `settings.n` intervals.
+    Layer {
+        /// Cover thickness in m (> 0).
+        thickness_m: f64,
+    },
+    /// A Winkler foundation of uniaxial columns of height `height_m` (conveyor design tools;
+    /// [`layer::winkler`], closed form).
+    Winkler {
+        /// Column height in m (> 0).
+        height_m: f64,
+    },
+    /// A Winkler foundation of laterally constrained columns (the thin compressible layer's limit).
+    WinklerConstrained {
+        /// Column height in m (> 0).
+        height_m: f64,
+    },
 }
 
 impl Body {
@@ -44,6 +64,9 @@ impl Body {
     pub fn name(&self) -> &'static str {
         match self {
             Body::HalfSpace => "half_space",
+            Body::Layer { .. } => "layer",
+            Body::Winkler { .. } => "winkler",
+            Body::WinklerConstrained { .. } => "winkler_constrained",
         }
     }
 
@@ -51,6 +74,11 @@ impl Body {
     pub fn validate(&self) -> Result<(), ContactError> {
         match self {
             Body::HalfSpace => Ok(()),
+            Body::Layer { thickness_m: h }
+            | Body::Winkler { height_m: h }
+            | Body::WinklerConstrained { height_m: h } => {
+                super::error::positive("body thickness in m", *h).map(|_| ())
+            }
         }
     }
 }
@@ -64,6 +92,29 @@ pub fn solve_at_load(
     body.validate()?;
     match body {
         Body::HalfSpace => half_space::solve_at_load(&problem.terms, problem.load, settings),
+        Body::Layer { thickness_m } => layer::layer_at_load(
+            &problem.terms,
+            problem.load,
+            thickness_m / problem.length_scale_m,
+            problem.poisson,
+            &layer::LayerSettings {
+                tol: settings.auto.tol.max(layer::roll_cover::LAYER_TOL_FLOOR),
+                n_max: 512,
+                ..Default::default()
+            },
+        )
+        .map(|a| a.solution),
+        Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => {
+            layer::winkler_at_load(
+                &problem.terms,
+                problem.load,
+                winkler_columns(body),
+                height_m / problem.length_scale_m,
+                problem.poisson,
+                &settings.load,
+            )
+            .map(|a| a.solution)
+        }
     }
 }
 
@@ -77,5 +128,30 @@ pub fn solve_at_lambda(
     body.validate()?;
     match body {
         Body::HalfSpace => half_space::solve_at_lambda(&problem.terms, lambda, settings),
+        Body::Layer { thickness_m } => {
+            let k = layer::LayerKernel::new(
+                &problem.terms,
+                thickness_m / problem.length_scale_m,
+                problem.poisson,
+            )?;
+            layer::collocation::solve_at_lambda(&k, lambda, settings.n)
+        }
+        Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => {
+            let w = layer::Winkler::new(
+                &problem.terms,
+                winkler_columns(body),
+                height_m / problem.length_scale_m,
+                problem.poisson,
+            )?;
+            Ok(w.at_lambda(lambda)?.solution)
+        }
+    }
+}
+
+/// The columns of a Winkler body.
+fn winkler_columns(body: &Body) -> layer::WinklerColumns {
+    match body {
+        Body::WinklerConstrained { .. } => layer::WinklerColumns::Constrained,
+        _ => layer::WinklerColumns::Uniaxial,
     }
 }

@@ -5,9 +5,9 @@
 //! temperature) and map points (radius, load, speed, a_T); output: [`ReducedCurve`] (the interpolant,
 //! with its error estimate and solve count) and, per point, friction F*/N* and contact length.
 //!
-//! # Why one variable suffices (exact)
+//! # Why one variable suffices (exact; docs/MATH.md §13)
 //! A scene (R, N*, V) on J(t) = J_g + Σᵢ Jᵢ(1 − e^(−t/(a_T τᵢ))) at temperature T (the shift acts on
-//! the times only, MATH.md §6) is made dimensionless in [`crate::contact::scene`] with
+//! the times only, docs/MATH.md §6) is made dimensionless in [`crate::contact::scene`] with
 //! T_c = l_g/V, l_g = 2√(2RCN*/π) the glassy Hertz length, C = (1−ν)/μ₀ (thesis eq. 3.8, 3.24):
 //!
 //! - bᵢ = T_c/(a_T τᵢ) = s/τᵢ and fᵢ = (Jᵢ/J_g)·bᵢ with the **reduced variable s = l_g/(V·a_T)** (s),

@@ -60,7 +60,7 @@ impl ReducedProblem {
         if !(jg.is_finite() && jg > 0.0) {
             return Err(bad("compliance_glassy_per_pa".into(), jg, "finite and > 0"));
         }
-        // C = (1−ν)/μ₀ (MATH.md §1), as in contact::scene.
+        // C = (1−ν)/μ₀ (docs/MATH.md §1), as in contact::scene.
         let c = match spectrum.kind {
             ModulusKind::Tensile => 2.0 * (1.0 - nu * nu) * jg,
             ModulusKind::Shear => (1.0 - nu) * jg,

@@ -203,7 +203,33 @@ pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str
             esc(&s.description)
         );
     }
-    let _ = write!(h, "</table>{friction_svg}<table><tr><th>scene</th><th>T (°C)</th><th>F/N</th><th>F* (N/m)</th><th>contact (mm)</th><th>note</th></tr>");
+    h.push_str("</table>");
+    // Which body each covered scene was solved on, and why (contact::body::layer::roll_cover): one line per
+    // body, with the temperatures it was chosen at and the reason given at the first of them.
+    for (s, pts) in friction {
+        let Some(c) = s.cover_thickness_mm else {
+            continue;
+        };
+        let mut bodies: Vec<(&str, Vec<f64>, &str)> = Vec::new();
+        for p in pts.iter().filter(|p| !p.model.is_empty()) {
+            match bodies.iter_mut().find(|b| b.0 == p.model) {
+                Some(b) => b.1.push(p.temp_c),
+                None => bodies.push((&p.model, vec![p.temp_c], &p.model_reason)),
+            }
+        }
+        for (model, temps, reason) in bodies {
+            let temps: Vec<String> = temps.iter().map(|t| t.to_string()).collect();
+            let _ = write!(
+                h,
+                "<p>{}: {c} mm cover bonded to a rigid carcass; body solved at {} °C: {} ({}).</p>",
+                esc(&s.name),
+                temps.join(", "),
+                esc(model),
+                esc(reason)
+            );
+        }
+    }
+    let _ = write!(h, "{friction_svg}<table><tr><th>scene</th><th>T (°C)</th><th>F/N</th><th>F* (N/m)</th><th>contact (mm)</th><th>note</th></tr>");
     for (s, pts) in friction {
         for p in pts {
             let note = esc(&p.note());

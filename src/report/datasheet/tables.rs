@@ -9,7 +9,8 @@ use crate::report::csv_text::csv_text;
 use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
 
 /// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated,
-/// error, and `note` (every flag of the row: failure, extrapolation, contact validity). The
+/// error, `note` (every flag of the row: failure, extrapolation, contact validity) and `model` (the
+/// body solved, contact::body::layer). The
 /// compound's own flags (`flags`: why its fit is not trusted) come first as `#` lines and, when there
 /// are any, lead every row's note with `fit not trusted`.
 pub fn friction_csv(
@@ -34,6 +35,7 @@ pub fn friction_csv(
                     (true, n) if n.is_empty() => "fit not trusted".to_string(),
                     (true, n) => format!("fit not trusted; {n}"),
                 },
+                p.model.clone(),
             ]
         })
     });
@@ -51,6 +53,7 @@ pub fn friction_csv(
             "extrapolated",
             "error",
             "note",
+            "model",
         ],
         rows,
     )
@@ -115,6 +118,8 @@ mod tests {
     fn every_flag_of_a_point_reaches_the_note_column() {
         let spec = crate::results::SceneSet::shipped().scene[0].clone();
         let p = |extrapolated: bool, error: Option<&str>, warnings: Vec<String>| FrictionPoint {
+            model: String::new(),
+            model_reason: String::new(),
             temp_c: 20.0,
             log10_a_t: 0.0,
             friction: if error.is_some() { f64::NAN } else { 1e-3 },

@@ -1,6 +1,6 @@
 //! tan δ of a fit at a temperature and frequency, and the tan δ peak over the measured temperatures.
 //!
-//! tan δ = E″/E′ of the relaxation spectrum (docs/MATH.md §2) shifted by the fit's law (docs/MATH.md
+//! tan δ = E″/E′ of the relaxation spectrum (docs/MATH.md §5.1) shifted by the fit's law (docs/MATH.md
 //! §6); T_g is taken, as usual for DMA, as the temperature of the tan δ peak at 1 Hz.
 
 use crate::results::CompoundFit;

@@ -24,7 +24,8 @@ sets = sorted(set(r[4] for r in rows))
 
 def rheocompass(labels, name):
     out = [f"{labels['project']}:\tviscoroll synthetic export (see data/SOURCES.md)",
-           f"{labels['test']}:\tEMS-CA frequency sweeps"]
+           f"{labels['test']}:\tEMS-CA frequency sweeps",
+           f"{labels['system']}:\tPP25-SN41234"]
     for s in sets:
         pts = [r for r in rows if r[4] == s]
         tn = round(sum(p[3] for p in pts) / len(pts) * 2) / 2
@@ -41,13 +42,13 @@ def rheocompass(labels, name):
     with open(os.path.join(here, name), "wb") as fh:
         fh.write(b"\xff\xfe" + text.encode("utf-16-le"))
 
-rheocompass({"project": "Project", "test": "Test", "result": "Result", "points": "Interval and data points",
+rheocompass({"project": "Project", "test": "Test", "system": "Measuring System", "result": "Result", "points": "Interval and data points",
              "data": "Interval data", "cols": ["Point No.", "Angular Frequency", "Storage Modulus", "Loss Modulus", "Temperature", "Time"]},
             "rheocompass_en.csv")
-rheocompass({"project": "Projekt", "test": "Test", "result": "Ergebnis", "points": "Intervall und Messpunkte",
+rheocompass({"project": "Projekt", "test": "Test", "system": "Messsystem", "result": "Ergebnis", "points": "Intervall und Messpunkte",
              "data": "Intervalldaten", "cols": ["Messpunkt", "Kreisfrequenz", "Speichermodul", "Verlustmodul", "Temperatur", "Zeit"]},
             "rheocompass_de.csv")
-rheocompass({"project": "Projet", "test": "Essai", "result": "Résultat", "points": "Intervalle et points de mesure",
+rheocompass({"project": "Projet", "test": "Essai", "system": "Système de mesure", "result": "Résultat", "points": "Intervalle et points de mesure",
              "data": "Données d'intervalle", "cols": ["Point n°", "Fréquence angulaire", "Module de stockage", "Module de perte", "Température", "Temps"]},
             "rheocompass_fr.csv")
 

@@ -1,4 +1,4 @@
-//! Chebyshev machinery of the `auto` contact scheme (MATH.md §3): the Chebyshev coefficients of the
+//! Chebyshev machinery of the `auto` contact scheme (docs/MATH.md §7, §10): the Chebyshev coefficients of the
 //! exponentials e^{μ(t−1)} on [−1, 1], the exterior continuation of a finite Hilbert transform, its
 //! Laplace transform along the front exterior, and the pressure √(1−t²)·Σ aₖUₖ(t).
 //!

@@ -6,7 +6,7 @@
 //! Q′(ξ) anywhere on the contact) or a [`DimensionlessSolution`] with scheme `exact`. This is the
 //! library's reference for every test of the general (piecewise-linear) solver.
 //!
-//! # Derivation (MATH.md §3, written out; symbols as in the thesis)
+//! # Derivation (docs/MATH.md §3, written out; symbols as in the thesis)
 //! Problem: Q′ ≥ 0 on 0 ≤ ξ ≤ λ, zero at both edges, and β with
 //! ∫₀^λ Q′(ξ′)[K(−ξ′) − K(ξ−ξ′)]dξ′ = ξβ − ξ²/2 (eq. 3.25), K(ξ) = ln|ξ| + ∫₀^∞ γ(ζ) ln|ξ+ζ| dζ
 //! (eq. 3.19). At ξ = 0 both sides vanish, so eq. 3.25 is equivalent to its ξ-derivative
@@ -441,7 +441,7 @@ mod tests {
 
     #[test]
     fn goodier_loutzenheiser_case() {
-        // Goodier & Loutzenheiser (via thesis Table 1 / MATH.md §1): f = 10, b = 1, λ = 1 gives
+        // Goodier & Loutzenheiser (via thesis Table 1 / docs/MATH.md §1): f = 10, b = 1, λ = 1 gives
         // β/λ ≈ 0.1952 and ρF/N ≈ 0.4308; the issue asks for agreement within 0.5 %.
         let s = one_term_at_lambda(t(10.0, 1.0), 1.0).unwrap();
         assert!(
@@ -458,7 +458,7 @@ mod tests {
 
     #[test]
     fn hertz_when_f_is_zero() {
-        // f = 0: λ = 2√N′, β = λ/2, friction 0, Q′ = (1/π)√(ξ(λ−ξ)) (MATH.md §3), to rounding.
+        // f = 0: λ = 2√N′, β = λ/2, friction 0, Q′ = (1/π)√(ξ(λ−ξ)) (docs/MATH.md §3), to rounding.
         for &lam in &[1e-4, 1.0, 37.0] {
             let s = one_term_at_lambda(t(0.0, 2.5), lam).unwrap();
             assert!(rel(s.load, lam * lam / 4.0) < 1e-15);
@@ -537,7 +537,7 @@ mod tests {
     /// Left side of eq. 3.25, ∫₀^λ Q′(t)[K(−t) − K(ξ−t)]dt, by adaptive Gauss–Legendre quadrature with
     /// panels graded geometrically toward the log singularities (t = 0, ξ) and the square-root edges (t = λ)
     /// and the front-edge layer; K(x) = ln|x| + (f/b)·h(bx) with h the closed-form kernel bracket
-    /// (MATH.md §2; constants cancel in the difference).
+    /// (docs/MATH.md §2; constants cancel in the difference).
     fn lhs_3_25(s: &OneTermExact, xi: f64) -> f64 {
         let CreepTerm { f, b } = s.term;
         let lam = s.lambda;

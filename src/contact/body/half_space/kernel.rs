@@ -4,9 +4,9 @@
 //! Input: the creep terms [`CreepTerm`] (fᵢ ≥ 0, bᵢ > 0); output: K, K₁ = ∫₀^ξ K, K₂ = ∫₀^ξ K₁ and the
 //! hat-function averages of K that are the matrix entries of the thesis scheme ([`Kernel::hat_averages`]).
 //!
-//! Math (MATH.md §2). Per term, ∫₀^∞ e^(−bζ) log|ξ+ζ| dζ = (log|ξ| − log b + g(bξ))/b with
+//! Math (docs/MATH.md §2). Per term, ∫₀^∞ e^(−bζ) log|ξ+ζ| dζ = (log|bξ| − log b + g(bξ))/b with
 //! g(x) = eˣE1(x) (x > 0), −eˣEi(−x) (x < 0). Constants cancel in eq. 3.25 (the kernel enters only as
-//! K(−ξ′) − K(ξ−ξ′)), so we add (fᵢ/bᵢ)(2 log bᵢ + γ_E) per term and use
+//! K(−ξ′) − K(ξ−ξ′)), so we add (fᵢ/bᵢ)(log bᵢ + γ_E) per term and use
 //!
 //! ```text
 //!   K(ξ)  = log|ξ| + Σ (fᵢ/bᵢ)  h(bᵢξ),          h(x) = log|x| + g(x) + γ_E,   h(0) = 0
@@ -91,7 +91,7 @@ impl Kernel {
     /// h and height 1 (so A(k) = (K₂((k+1)h) − 2K₂(kh) + K₂((k−1)h))/h, the second difference of K₂).
     ///
     /// Returned as a vector indexed by k + m. Costs O(m) evaluations of each special function per term
-    /// (the Toeplitz structure of the thesis scheme on a uniform grid, MATH.md §2).
+    /// (the Toeplitz structure of the thesis scheme on a uniform grid, docs/MATH.md §2).
     ///
     /// The logarithmic part is summed in closed form without cancellation:
     /// (1/h)Δ²[ξ²log|ξ|/2] = h(D(k) + log h) with D(k) = ½Δ²[k² log|k|] (see [`half_second_diff_k2logk`]).

@@ -1,5 +1,5 @@
 //! The viscoelastic half-space (thesis ch. 3): a rigid roll on a half-space whose surface
-//! displacement is eq. 3.19 with the kernel K(ξ) = ln|ξ| + Σ (fᵢ/bᵢ)h(bᵢξ) (MATH.md §2), and the
+//! displacement is eq. 3.19 with the kernel K(ξ) = ln|ξ| + Σ (fᵢ/bᵢ)h(bᵢξ) (docs/MATH.md §2), and the
 //! three schemes that solve eq. 3.25 on it.
 //!
 //! Input: creep terms [`CreepTerm`], λ or N′, [`ContactSettings`]; output: [`DimensionlessSolution`].

@@ -3,7 +3,7 @@
 //! Input: creep terms fᵢe^(−bᵢζ) ([`CreepTerm`]); output: [`Modes`] (terms sorted by bᵢ, equal bᵢ
 //! merged, and the roots κⱼ).
 //!
-//! Math (derived for this scheme; MATH.md §3 gives the one-term case): differentiating eq. 3.25 gives
+//! Math (derived for this scheme, docs/MATH.md §7; §3 gives the one-term case): differentiating eq. 3.25 gives
 //! H(ξ) + Σᵢ Vᵢ(ξ) = ξ − β on the contact, with H the finite Hilbert transform of Q′ and
 //! Vᵢ(ξ) = fᵢ∫₀^∞e^(−bᵢζ)H(ξ+ζ)dζ, so Vᵢ′ = bᵢVᵢ − fᵢH. A solution e^{κξ} of the homogeneous system
 //! needs 1 + Σᵢ fᵢ/(bᵢ − κ) = 0 (the relaxation rates of the material in units of 1/T). The left side

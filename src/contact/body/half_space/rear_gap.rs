@@ -6,9 +6,9 @@
 //! [`LambdaSolution`]; output: the gap g(ξ) over the depth scale λ²/8 at chosen points
 //! ([`GapEvaluator::gap_ratio`]) and a scan of the whole region behind the contact ([`rear_scan`]).
 //!
-//! # Math
+//! # Math (docs/MATH.md §11)
 //! Off the contact the surface displacement is still eq. 3.19 with v(0) = 0,
-//! ρv(ξ) = s∫₀^λ Q′(ξ′)[K̂(−ξ′) − K̂(ξ−ξ′)]dξ′, K̂(x) = ln|x| + Σᵢ (f̂ᵢ/bᵢ)h(bᵢx) (MATH.md §2; with
+//! ρv(ξ) = s∫₀^λ Q′(ξ′)[K̂(−ξ′) − K̂(ξ−ξ′)]dξ′, K̂(x) = ln|x| + Σᵢ (f̂ᵢ/bᵢ)h(bᵢx) (docs/MATH.md §2; with
 //! fast modes lumped Q′K = Q′·sK̂, module [`super::auto::reduction`]), and the roll sits at depth ξβ − ξ²/2
 //! (eq. 3.22), so g(ξ) = ρv(ξ) − (ξβ − ξ²/2) must be ≥ 0. The two parts of K̂ are integrated apart:
 //!
@@ -237,7 +237,7 @@ fn creep_kernel(creep: &[(f64, f64)], x: f64) -> f64 {
     creep.iter().map(|&(r, b)| r * bracket(b * x)).sum()
 }
 
-/// h(x) (MATH.md §2) as `crate::special::kernel_bracket`, with a fast path for −45 ≤ x ≤ −6: there
+/// h(x) (docs/MATH.md §2) as `crate::special::kernel_bracket`, with a fast path for −45 ≤ x ≤ −6: there
 /// h = ln y + γ − e^{−y}Ei(y), y = −x, and e^{−y}Ei(y) (≈ 1/y, analytic) comes from a table of
 /// degree-[`EI_DEGREE`] Chebyshev interpolants on unit intervals, built once from
 /// `crate::special::expm_ei` (the library's Ei costs ~1.5 µs per call in this range, as its series

@@ -19,7 +19,7 @@
 //! for the piecewise-linear pressure: ∫Q′ = hΣQⱼ, ∫Q′ξ = hΣQⱼξⱼ, so N′ = 2hΣQⱼ (eq. 3.24) and
 //! ρF/N = ΣQⱼ(ξⱼ − β)/ΣQⱼ (eq. 3.20 with eq. 3.22).
 //!
-//! Accuracy (MATH.md §3): λ, β and N′ converge like h (first order); where the front-edge layer of width
+//! Accuracy (docs/MATH.md §3): λ, β and N′ converge like h (first order); where the front-edge layer of width
 //! ≈ 1/(b+f) is unresolved the nodal pressure zig-zags (the thesis' "jagged" front edge).
 
 use super::kernel::Kernel;

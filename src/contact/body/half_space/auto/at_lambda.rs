@@ -7,7 +7,7 @@
 //! # Formulation
 //! Map the contact to t ∈ [−1, 1]: ξ = L(1+t), L = λ/2, cᵢ = bᵢL, dᵢ = fᵢL, μⱼ = κⱼL. Write
 //! Q′ = √(1−t²)Σₖ a_k U_k(t) and let H̃(t) = (1/π)∫√(1−s²)φ(s)/(t−s)ds = Σₙ Fₙ Tₙ(t) inside, with
-//! a_k = F_{k+1} (MATH.md §3; the bounded-at-both-ends inverse needs F₀ = 0). The derivative of
+//! a_k = F_{k+1} (docs/MATH.md §3.6, §7; the bounded-at-both-ends inverse needs F₀ = 0). The derivative of
 //! eq. 3.25, π[H̃ + Σᵢ Ṽᵢ] = L(1+t) − β with Ṽᵢ(t) = dᵢ∫₀^∞e^{−cᵢσ}H̃(t+σ)dσ and Ṽᵢ′ = cᵢṼᵢ − dᵢH̃,
 //! forces (module [`crate::contact::body::half_space::modes`]) H̃(t) = p₀ + p₁t + Σⱼ Aⱼe^{μⱼ(t−1)} on the contact, where
 //! matching the terms linear in t, in e^{μⱼ(t−1)} and in e^{−cᵢ(1−t)} gives

@@ -193,7 +193,7 @@ fn finish(
     )
 }
 
-/// The model slope d ln N′/d ln λ of N′ ≈ λ²/(4S_eff(λ)) (MATH.md §3 with the effective
+/// The model slope d ln N′/d ln λ of N′ ≈ λ²/(4S_eff(λ)) (docs/MATH.md §3 with the effective
 /// compliance of [`reduction`]): 2 − d ln S_eff/d ln λ, d S_eff/d ln λ = Σ rᵢcᵢ/(1+cᵢ)².
 fn model_slope(terms: &[CreepTerm], lambda: f64) -> f64 {
     let l = 0.5 * lambda;

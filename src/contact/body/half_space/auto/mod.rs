@@ -5,7 +5,7 @@
 //! with `scheme = "auto"`, its [`AutoDiagnostics`] (mode counts, checks) and warnings, or a
 //! [`ContactError`].
 //!
-//! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ):
+//! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ; docs/MATH.md §9):
 //! - mode reduction ([`reduction`]): ≤ 0.3·tol, re-selected until the estimate, evaluated with
 //!   the friction of the solution itself, fits. Lumped fast modes are *corrected* to first order:
 //!   one extra solve at the final λ with the lumped mode of largest weight kept measures the gains
@@ -19,7 +19,7 @@
 //!   node (step 2h, from the same exterior values: no second solve). The calibration is a difference
 //!   of two solves, so its noise, amplified by Σwᵢ/w*, is added;
 //! - load loop: a safeguarded secant on ln N′(ln λ) inside the bracket [2√N′, 2√(S·N′)]
-//!   (MATH.md §3: N′ grows with λ; glassy and relaxed compliance bound it), started from
+//!   (docs/MATH.md §3: N′ grows with λ; glassy and relaxed compliance bound it), started from
 //!   λ = 2√(S_eff N′) with the model slope 2 − d ln S_eff/d ln λ and stopped when the step is below
 //!   0.05·tol; the step not taken (and a target shift by the measured gain too small to chase)
 //!   counts twice in the λ error.

@@ -1,18 +1,18 @@
-//! Mode reduction of the `auto` scheme: which retardation modes a scene needs.
+//! Mode reduction of the `auto` scheme: which retardation modes a scene needs (docs/MATH.md §8).
 //!
 //! Input: creep terms (fᵢ, bᵢ), the contact length λ and error budgets; output: [`Reduction`] (kept,
 //! lumped and dropped modes and the rescaled problem; their errors: [`lumped_residual`], [`slow_estimate_at`]).
 //!
 //! With L = λ/2, cᵢ = bᵢL (contact half-time over τᵢ), rᵢ = fᵢ/bᵢ = Jᵢ/J_g:
 //! - **Fast modes (cᵢ ≫ 1) are lumped into the glassy compliance.** For bξ → ∞ the kernel term
-//!   (fᵢ/bᵢ)h(bᵢξ) → (fᵢ/bᵢ)(ln|ξ| + const) (MATH.md §2), so K → s·ln|ξ| + Σ_kept, s = 1 + Σ_fast rᵢ;
+//!   (fᵢ/bᵢ)h(bᵢξ) → (fᵢ/bᵢ)(ln|ξ| + const) (docs/MATH.md §2.2; the reduction: §8), so K → s·ln|ξ| + Σ_kept, s = 1 + Σ_fast rᵢ;
 //!   dividing eq. 3.25 by s gives the same problem for Q̂ = sQ′ with f̂ᵢ = fᵢ/s (β, λ and ρF/N are
 //!   unchanged, N′ = N̂/s). Dropping such a mode instead would miss its whole compliance.
 //!   The error is the mode's boundary layer: the kernel differs from its asymptote only within
 //!   |ξ| ≲ 1/bᵢ, so to first order in 1/cᵢ a lumped mode acts like a local compliance of strength
 //!   ∝ rᵢ/bᵢ, and the effects of several lumped modes add: ρF/N/λ rises by g_F·Σwᵢ and N′ by the
 //!   factor 1 + g_N·Σwᵢ, wᵢ = rᵢ/cᵢ, with g_F, g_N properties of the whole problem. For one term
-//!   the exact solution gives g_F = 1/(2(1+r)), g_N = 1/(1+r) (to < 1 % for c ≥ 30). In a spectrum
+//!   the exact solution gives g_F = 1/(2(1+r)), g_N = 1/(1+r) (derived in docs/MATH.md §8.2; the exact values deviate by ≈ 1/c, 3 % at c = 30). In a spectrum
 //!   the model g_F = 1/(2S_eff), g_N = 1/S_eff with the effective compliance at the contact time
 //!   S_eff = 1 + Σrᵢcᵢ/(1+cᵢ) was within 0.82–1.14 of the measured g on random spectra (5–35 terms,
 //!   J∞/J_g = 10…1e4); the isolated-mode value 1/(2(1+rᵢ)) overstates it up to S_eff/(1+rᵢ) ~ 1e3×.

@@ -1,0 +1,293 @@
+//! The bonded viscoelastic layer solved by the thesis' collocation scheme (thesis §3.2, eq. 3.25,
+//! Fig. 3; the same discretisation as [`crate::contact::thesis`]) with the layer kernel of
+//! [`super::kernel`], at given contact length and at given load (the bracketed load loop of
+//! [`crate::contact::load`]).
+//!
+//! Input: a [`LayerKernel`], λ or N′, the number of intervals n; output: a
+//! [`DimensionlessSolution`] (scheme `layer`) and, at given load, an error estimate and the contact
+//! checks ([`LayerAnswer`]).
+//!
+//! Eq. 3.25 holds for any kernel of the form K(ξ) + const: ∫₀^λ Q′(ξ′)[K(−ξ′) − K(ξ−ξ′)]dξ′ = ξβ − ξ²/2.
+//! With hat functions of half-width Δ = λ/n the matrix entries are the hat averages A(i − j) of the
+//! layer kernel (Toeplitz), rows i = 1…n, unknowns Q₁…Q_{n−1} and β.
+//!
+//! Convergence: the layer kernel has the half-space's log singularity plus a C^∞ part, so the scheme
+//! keeps the half-space's orders (README "Speed and accuracy of the thesis scheme": λ first order in
+//! Δ, ρF/N at given load ≈ 2.8 when the front-edge layer is resolved) once Δ also resolves the
+//! layer's own length h′ (the pressure varies on that scale near the contact ends of a thin layer).
+//! The error estimate compares the solutions at n/2 and n (λ and β Richardson-extrapolated, see
+//! [`solve_layer_at_load`]), which doubles n until the estimate meets the tolerance or n reaches its cap.
+
+use super::kernel::LayerKernel;
+use crate::contact::error::{positive, ContactError};
+use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
+use crate::contact::DimensionlessSolution;
+use nalgebra::{DMatrix, DVector};
+
+/// Settings of the layer solve at given load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LayerSettings {
+    /// Relative tolerance on ρF/N and λ (estimate from the n/2 solve). Default 1e−3.
+    pub tol: f64,
+    /// First n (≥ 8; n/2 is solved too). Default 32.
+    pub n_start: usize,
+    /// Largest n (dense LU, O(n³)). Default 1024.
+    pub n_max: usize,
+    /// Load loop settings.
+    pub load: LoadSettings,
+}
+
+impl Default for LayerSettings {
+    fn default() -> Self {
+        Self {
+            tol: 1e-3,
+            n_start: 32,
+            n_max: 1024,
+            load: LoadSettings::default(),
+        }
+    }
+}
+
+/// A layer solution at given load with its checks.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LayerAnswer {
+    /// The solution at the finest n.
+    pub solution: DimensionlessSolution,
+    /// max(|Δλ|/λ, |Δ(ρF/N)|/|ρF/N|) between n/2 and n.
+    pub error_estimate: f64,
+    /// Smallest nodal pressure over the largest (≥ 0 for a valid contact, up to the scheme's ripple).
+    pub min_pressure_ratio: f64,
+    /// Smallest gap outside the contact (within λ/2 of either end) over the largest indentation.
+    pub min_gap_ratio: f64,
+    /// Warnings (tolerance not reached, contact checks).
+    pub warnings: Vec<String>,
+}
+
+/// Solve eq. 3.25 on the layer at contact length `lambda` with `n` intervals.
+pub fn solve_at_lambda(
+    kernel: &LayerKernel,
+    lambda: f64,
+    n: usize,
+) -> Result<DimensionlessSolution, ContactError> {
+    positive("lambda", lambda)?;
+    crate::contact::half_space::thesis::check_intervals(n)?;
+    let h = lambda / n as f64;
+    let a = kernel.hat_averages(n, h);
+    Ok(assemble_and_solve(&a, n, lambda)?.0)
+}
+
+/// The collocation system for hat averages `a` (index j + n … at least j = −n..=n centred at a.len()/2).
+fn assemble_and_solve(
+    a: &[f64],
+    n: usize,
+    lambda: f64,
+) -> Result<(DimensionlessSolution, Vec<f64>), ContactError> {
+    let centre = (a.len() / 2) as i64;
+    let at = |k: i64| a[(k + centre) as usize];
+    let xi = |i: usize| lambda * (i as f64) / (n as f64);
+    let h = lambda / n as f64;
+    let mut m = DMatrix::<f64>::zeros(n, n);
+    let mut rhs = DVector::<f64>::zeros(n);
+    for r in 0..n {
+        let i = r + 1;
+        for j in 1..n {
+            m[(r, j - 1)] = at(-(j as i64)) - at(i as i64 - j as i64);
+        }
+        let x = xi(i);
+        m[(r, n - 1)] = -x;
+        rhs[r] = -0.5 * x * x;
+    }
+    let sol = m
+        .lu()
+        .solve(&rhs)
+        .filter(|s| s.iter().all(|v| v.is_finite()))
+        .ok_or(ContactError::Singular { lambda, n })?;
+    let beta = sol[n - 1];
+    let mut pressure = vec![0.0; n + 1];
+    pressure[1..n].copy_from_slice(&sol.as_slice()[..n - 1]);
+    let xs: Vec<f64> = (0..=n).map(xi).collect();
+    let (sum_q, sum_qx) = (1..n).fold((0.0, 0.0), |(s, sx), j| {
+        (s + pressure[j], sx + pressure[j] * (xs[j] - beta))
+    });
+    Ok((
+        DimensionlessSolution {
+            scheme: "layer".to_string(),
+            lambda,
+            beta,
+            load: 2.0 * h * sum_q,
+            friction_rho: sum_qx / sum_q,
+            xi: xs,
+            pressure: pressure.clone(),
+            n,
+            iterations: 0,
+            error_estimate: None,
+            auto: None,
+            warnings: Vec::new(),
+        },
+        pressure,
+    ))
+}
+
+/// An initial guess of λ at load N′ for the load loop: the glassy half-space width 2√N′ or, when
+/// smaller, the thin-layer width (glassy constrained Winkler λ = (6c_W N′)^{1/3}, or the h³ law
+/// λ = 2(15πh′³N′/2)^{1/5} at ν = ½, whichever is larger).
+pub fn lambda_guess(load: f64, thickness: f64, nu: f64) -> f64 {
+    use super::compliance::{winkler_coefficient, WinklerColumns};
+    let hs = 2.0 * load.sqrt();
+    let h3 = 2.0 * (7.5 * std::f64::consts::PI * thickness.powi(3) * load).powf(0.2);
+    let w = winkler_coefficient(WinklerColumns::Constrained, thickness, nu)
+        .map(|c| (6.0 * c * load).cbrt())
+        .unwrap_or(0.0);
+    hs.min(h3.max(w))
+}
+
+/// Solve at load N′ with `n` intervals (one load loop).
+pub fn solve_at_load_n(
+    kernel: &LayerKernel,
+    load: f64,
+    n: usize,
+    settings: &LoadSettings,
+    sum_f_over_b: f64,
+) -> Result<DimensionlessSolution, ContactError> {
+    solve_near(kernel, load, n, settings, None, sum_f_over_b)
+}
+
+/// The load loop at `n`, started from `near` (a coarser solve's λ) when given: the loop brackets λ
+/// from 2√N′ up to 2√N′·√(1 + Σf/b), so its variable is rescaled to start at 0.995·λ_near with a
+/// bracket of ±0.5 % (a coarse λ at n/2 is off by ~1/n; the loop widens the bracket by 1.25 when
+/// needed). Saves about half the solves of a cold start.
+fn solve_near(
+    kernel: &LayerKernel,
+    load: f64,
+    n: usize,
+    settings: &LoadSettings,
+    near: Option<f64>,
+    sum_f_over_b: f64,
+) -> Result<DimensionlessSolution, ContactError> {
+    positive("load N'", load)?;
+    let (start, sfb) = match near {
+        Some(l) => (0.995 * l, 1.01f64.powi(2) - 1.0),
+        None => (
+            lambda_guess(load, kernel.thickness(), kernel.poisson()),
+            sum_f_over_b,
+        ),
+    };
+    let scale = start / (2.0 * load.sqrt());
+    load_loop(load, sfb, settings, |l| {
+        solve_at_lambda(kernel, l * scale, n)
+    })
+}
+
+/// Solve at load N′ to the settings' tolerance (n doubled from `n_start`), with checks.
+///
+/// λ and β converge to first order in Δ (observed order 1.00–1.01 for the half-space, README), so
+/// they are Richardson-extrapolated, X_R(n) = 2X(n) − X(n/2), and their estimate is
+/// |X_R(n) − X_R(n/2)| (the change of the extrapolation, which bounds the error of the coarser
+/// extrapolation); ρF/N at given load converges faster (order ≈ 2.8 where the front layer is resolved)
+/// and is taken from the finest n with the estimate |ρF/N(n) − ρF/N(n/2)|. The pressure profile is the
+/// finest solve's, its positions stretched to the extrapolated λ.
+pub fn solve_layer_at_load(
+    kernel: &LayerKernel,
+    load: f64,
+    settings: &LayerSettings,
+) -> Result<LayerAnswer, ContactError> {
+    let sfb = kernel.half_space().sum_f_over_b();
+    let mut n = settings.n_start.max(8);
+    let mut coarse = solve_near(kernel, load, n / 2, &settings.load, None, sfb)?;
+    let mut prev_rich: Option<(f64, f64)> = None;
+    let mut warnings = Vec::new();
+    loop {
+        let fine = solve_near(kernel, load, n, &settings.load, Some(coarse.lambda), sfb)?;
+        let rich = (
+            2.0 * fine.lambda - coarse.lambda,
+            2.0 * fine.beta - coarse.beta,
+        );
+        let est_size = match prev_rich {
+            Some((l, b)) => rel(rich.0, l).max((rich.1 - b).abs() / rich.0),
+            None => {
+                rel(fine.lambda, coarse.lambda).max((fine.beta - coarse.beta).abs() / fine.lambda)
+            }
+        };
+        let est = est_size.max(rel(fine.friction_rho, coarse.friction_rho));
+        if est <= settings.tol || 2 * n > settings.n_max {
+            if est > settings.tol {
+                warnings.push(format!(
+                    "tolerance not reached: layer estimate {est:.1e} > tol {:.1e} at the largest n = {n} \
+                     (a layer thin against the contact needs n ≳ 10·λ/h; the Winkler or h³ limit applies there)",
+                    settings.tol
+                ));
+            }
+            let (min_pressure_ratio, min_gap_ratio) = contact_checks(kernel, &fine)?;
+            if min_pressure_ratio < -1e-3 {
+                warnings.push(format!(
+                    "contact check: negative pressure inside the contact (min/max = {min_pressure_ratio:.2e})"
+                ));
+            }
+            if min_gap_ratio < -1e-3 {
+                warnings.push(format!(
+                    "contact check: the body penetrates the roll outside the contact (min gap/indentation = {min_gap_ratio:.2e})"
+                ));
+            }
+            let mut solution = fine;
+            let stretch = rich.0 / solution.lambda;
+            for x in solution.xi.iter_mut() {
+                *x *= stretch;
+            }
+            solution.lambda = rich.0;
+            solution.beta = rich.1;
+            solution.error_estimate = Some(est);
+            return Ok(LayerAnswer {
+                solution,
+                error_estimate: est,
+                min_pressure_ratio,
+                min_gap_ratio,
+                warnings,
+            });
+        }
+        prev_rich = Some(rich);
+        coarse = fine;
+        n *= 2;
+    }
+}
+
+/// Relative difference (0 for equal values).
+fn rel(a: f64, b: f64) -> f64 {
+    if a == b {
+        0.0
+    } else {
+        (a - b).abs() / a.abs().max(b.abs())
+    }
+}
+
+/// Pressure and gap checks of a solution: min nodal pressure / max, and the smallest gap at the nodes
+/// within λ/2 outside either contact end over the largest indentation (eq. 3.25's left side minus
+/// its right side; inside it vanishes).
+fn contact_checks(
+    kernel: &LayerKernel,
+    sol: &DimensionlessSolution,
+) -> Result<(f64, f64), ContactError> {
+    let n = sol.n;
+    let max_q = sol.pressure.iter().cloned().fold(0.0, f64::max);
+    let min_q = sol.pressure.iter().cloned().fold(f64::INFINITY, f64::min);
+    let ext = n / 2;
+    let h = sol.lambda / n as f64;
+    let m = n + ext;
+    let a = kernel.hat_averages(m, h);
+    let at = |k: i64| a[(k + m as i64) as usize];
+    // s(i) = Σⱼ Qⱼ[A(−j) − A(i−j)] − (iΔβ − (iΔ)²/2): the body's deflection (eq. 3.19, relative to
+    // the rear edge) minus the roll's depth (eq. 3.22); the roll is above the surface where s ≥ 0.
+    let s = |i: i64| -> f64 {
+        let x = i as f64 * h;
+        let mut v = 0.0;
+        for j in 1..n {
+            v += sol.pressure[j] * (at(-(j as i64)) - at(i - j as i64));
+        }
+        v - (x * sol.beta - 0.5 * x * x)
+    };
+    let depth = sol.beta * sol.beta / 2.0; // the indentation scale (λ²/8 for Hertz)
+    let mut min_gap = f64::INFINITY;
+    for i in (-(ext as i64)..0).chain((n as i64 + 1)..=(n + ext) as i64) {
+        min_gap = min_gap.min(s(i));
+    }
+    Ok((min_q / max_q, min_gap / depth.max(f64::MIN_POSITIVE)))
+}
