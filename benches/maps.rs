@@ -7,7 +7,7 @@
 //! temperatures −40…50 °C every 10 K. Prints a Markdown table: wall time of the whole map
 //! (interpolant build + evaluation of the 9000 points, rayon on all threads, best of 2), node
 //! solves, panels, the range of ln s, the error estimate; and for scale the time of one direct
-//! `roll_auto` solve at 10 °C, 4 m/s, 10 kN/m at the main job's settings, times 9000.
+//! `contact::roll` solve at 10 °C, 4 m/s, 10 kN/m at the main job's settings, times 9000.
 //! Run: `RAYON_NUM_THREADS=2 cargo bench --bench maps` (the 2-core figure).
 
 use std::path::PathBuf;
@@ -27,7 +27,7 @@ fn log_spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
 fn main() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data");
     println!(
-        "threads: {}\n\n| compound | creep terms | tol | map time (9000 points) | solves | panels | ln s range | estimate | direct roll_auto × 9000 |\n|---|---|---|---|---|---|---|---|---|",
+        "threads: {}\n\n| compound | creep terms | tol | map time (9000 points) | solves | panels | ln s range | estimate | direct roll × 9000 |\n|---|---|---|---|---|---|---|---|---|",
         rayon::current_num_threads()
     );
     for (name, file) in [

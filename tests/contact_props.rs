@@ -201,14 +201,14 @@ fn estimate_confirmed_pressure_and_friction_non_negative() {
 }
 
 /// A very slow mode against an exact law. For c = bL ≪ 1 a mode's term in the differentiated
-/// eq. 3.25 (src/contact/auto.rs) is Ṽ(t) = d∫₀^∞e^{−cσ}H̃(t+σ)dσ with H̃ ≈ F₁/(2σ) far ahead of
+/// eq. 3.25 (src/contact/body/half_space/auto/at_lambda.rs) is Ṽ(t) = d∫₀^∞e^{−cσ}H̃(t+σ)dσ with H̃ ≈ F₁/(2σ) far ahead of
 /// the contact, so Ṽ = −(dF₁/2)·ln c + (terms free of c) + O(c ln c). A constant in the equation
 /// is taken up by β alone: pressure, λ and N′ do not move, and ∂β/∂ln b = πdF₁/2 = f·N′/2
 /// (d = fL, N′ = πLF₁), so ρF/N + (f·N′/2)·ln b is independent of b. CI case 28 (the slow end,
 /// ρF/N/λ = 3.2e−5, so a β error of ε·λ is ~1e−11 of ρF/N) with its slowest mode (f fixed) moved
 /// over c = 1e−12…1e−6 in quarter decades: the invariant must hold to 1e−9 relative (round-off of
 /// ρF/N ≈ 8ε·λ/ρF/N ≈ 1e−10 per solve; the O(c ln c) rest is ≤ 1e−6·14 of the mode's 2e−5 effect).
-/// Until the Bessel coefficients were trimmed relative to order 1 (src/contact/chebyshev.rs) it
+/// Until the Bessel coefficients were trimmed relative to order 1 (src/special/bessel.rs) it
 /// jumped by 5.6e−7 near c = 2.5e−9, where the n = 2 coefficient fell below the old cut.
 #[test]
 fn a_slow_mode_only_shifts_beta_by_f_n_ln_b_over_2() {
@@ -292,7 +292,7 @@ fn friction(spec: &CreepSpectrum, scene: &Scene, v: f64) -> RollSolution {
 ///   asymptotes give ≈ 1/(2c) ≤ 1 % and c·ln(1/c) ≤ 5e−4 of a mode's own scale).
 ///
 /// Speeds much further out are not used: there the solver lumps modes with c > 1e7 whatever the
-/// budget (src/contact/reduce.rs, `C_MAX`) and says so through its estimate (tested below).
+/// budget (src/contact/body/half_space/auto/reduction.rs, `C_MAX`) and says so through its estimate (tested below).
 fn check_limits(spec: &CreepSpectrum, scene: &Scene, label: &str) {
     let tau_min = spec
         .terms
@@ -436,7 +436,7 @@ fn beyond_the_lumping_cap_the_corrected_friction_follows_the_slow_limit() {
 /// of the TRIOS (32 terms over 15 decades, J∞/J_g 7.6e4) and EMS-CA (65 terms over 32 decades)
 /// fits, ln s = −48…8 in steps of 1 (from far on the glassy side to beyond the relaxed end), at tol
 /// 1e−4 and 1e−6 against tol 1e−10: |difference| ≤ the two estimates, in ρF/N and λ. Before the
-/// Bessel cut was fixed (src/contact/chebyshev.rs) TRIOS missed by up to 1.8e4× its estimate
+/// Bessel cut was fixed (src/special/bessel.rs) TRIOS missed by up to 1.8e4× its estimate
 /// (error 2.7e−2 at ln s ≈ −38…−46, estimates ~1e−6).
 #[test]
 fn estimate_holds_across_the_reduced_variable_on_measured_compounds() {

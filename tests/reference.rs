@@ -6,7 +6,7 @@
 //! textbook formulas, so that a wrong factor in the project's own conversion cannot cancel out.
 //! The only library call is the exact one-term solution of the dimensionless problem
 //! (`viscoroll::contact::exact`, checked to 1e-14 against a 30-digit mpmath evaluation in
-//! src/contact/exact_tests.rs), which has no units in it.
+//! src/contact/body/half_space/exact.rs, tests at its foot), which has no units in it.
 //!
 //! Standard linear solid (SLS). Relaxation M(t) = M∞ + (M₀ − M∞)e^(−t/τ_r) (M = E tensile or G shear).
 //! Its creep compliance (Laplace: s·M̄(s)·s·J̄(s) = 1, one pole) is

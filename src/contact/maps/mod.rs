@@ -19,7 +19,7 @@
 //!   F*/N* = φ(s)·l_g/R,   contact length l = λ(s)·l_g,   F* = (F*/N*)·N*.
 //!
 //! Speed, load, radius and temperature enter only through s and the two scale factors; the tests
-//! check this against direct `roll_auto` solves of scenes sharing s.
+//! check this against direct `contact::roll` solves of scenes sharing s.
 //!
 //! # The interpolant
 //! y₁ = ln φ and y₂ = ln λ are smooth functions of x = ln s (λ runs from 1 at the glassy end to

@@ -153,7 +153,7 @@ impl ReducedProblem {
 /// the Lebesgue constant stays below a third of `tol`). It was capped at 1e−7 while the `auto` solver
 /// returned, on the shipped TRIOS compound far on the glassy side (ln s ≈ −46…−20), frictions off
 /// by up to 3 % (once 2–4×) with estimates of ~1e−6; the cause was the Bessel cut of
-/// src/contact/chebyshev.rs, and since its fix the solver's estimate holds there
+/// src/special/bessel.rs, and since its fix the solver's estimate holds there
 /// (tests/contact_props.rs, `estimate_holds_across_the_reduced_variable_on_measured_compounds`).
 pub fn node_tol(tol: f64) -> f64 {
     0.1 * tol

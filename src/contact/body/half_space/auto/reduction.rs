@@ -225,7 +225,7 @@ pub fn select(
 /// The reduced problem of a given split: s = 1 + Σ_lumped rᵢ, f̂ = f/s for the kept modes.
 ///
 /// Kept slow modes are solved for separately, however slow: with the Bessel coefficients accurate
-/// for small μ (src/contact/chebyshev.rs) 30 slow modes side by side moved ρF/N by ≤ 7e−13 under
+/// for small μ (src/special/bessel.rs) 30 slow modes side by side moved ρF/N by ≤ 7e−13 under
 /// random relative perturbations of 1e−12 in fᵢ, bᵢ, and 33 modes with c = 1e−22…1e−6 (the shipped
 /// test spectrum far on its glassy side) agree with tighter solves to the round-off floor. (Until
 /// this version, kept modes with μ ≤ min(0.05, 1e−14/tol) were merged into one term F = Σf,
