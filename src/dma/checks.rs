@@ -290,15 +290,14 @@ pub fn run(m: &mut Measurement, set: &CheckSettings) {
         };
         let has_earlier_twin = earlier_twins(&iso.points, set.duplicate_rel);
         let mut prev: Option<f64> = None;
-        for i in 0..n {
-            if !valid(&iso.points[i]) {
+        for (p, &dup) in iso.points.iter_mut().zip(&has_earlier_twin) {
+            if !valid(p) {
                 continue;
             }
-            let fi = iso.points[i].freq_hz;
-            let dup = has_earlier_twin[i];
-            let line = iso.points[i].line;
+            let fi = p.freq_hz;
+            let line = p.line;
             if dup {
-                add_point_flag(&mut iso.points[i], Flag::DuplicateFrequency);
+                add_point_flag(p, Flag::DuplicateFrequency);
                 push(
                     Flag::DuplicateFrequency,
                     line,
@@ -310,7 +309,7 @@ pub fn run(m: &mut Measurement, set: &CheckSettings) {
                 );
             } else if let Some(pf) = prev {
                 if (ascending && fi < pf) || (!ascending && fi > pf) {
-                    add_point_flag(&mut iso.points[i], Flag::NonMonotonic);
+                    add_point_flag(p, Flag::NonMonotonic);
                     push(Flag::NonMonotonic, line, &col_f, format!("frequency {fi} Hz after {pf} Hz goes against the sweep of the isotherm at {:.1} °C", iso.temp_nominal_c));
                 }
             }

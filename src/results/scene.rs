@@ -337,10 +337,8 @@ mod tests {
             ("load_n_per_m", "inf"),
             ("roll_radius_mm", "nan"),
         ] {
-            let text = format!(
-                "[[scene]]\nname = \"a\"\nroll_radius_mm = 10\nload_n_per_m = 1\nspeed_m_s = 1\ntemps_c = [20]\n"
-            )
-            .replace(&format!("{key} = "), &format!("{key} = {v} #"));
+            let text = "[[scene]]\nname = \"a\"\nroll_radius_mm = 10\nload_n_per_m = 1\nspeed_m_s = 1\ntemps_c = [20]\n"
+                .replace(&format!("{key} = "), &format!("{key} = {v} #"));
             let e = SceneSet::parse(&text, Path::new("s.toml"))
                 .unwrap_err()
                 .to_string();
