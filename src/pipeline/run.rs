@@ -447,6 +447,7 @@ pub fn run_all_with_progress(
         allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
+        comparisons: Vec::new(),
     })
 }
 

@@ -64,6 +64,7 @@ pub fn friction_vs_temperature(
                 error: Some(crate::results::cap_line(&e)),
                 model: String::new(),
                 model_reason: String::new(),
+                band: None,
                 warnings: vec![],
             };
             // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
@@ -92,6 +93,7 @@ pub fn friction_vs_temperature(
                         error: None,
                         model: r.model.name().to_string(),
                         model_reason: r.reason,
+                        band: None,
                         warnings: r
                             .warnings
                             .iter()
@@ -112,6 +114,7 @@ pub fn friction_vs_temperature(
                     error: None,
                     model: "half-space".into(),
                     model_reason: String::new(),
+                    band: None,
                     warnings: r
                         .dimensionless
                         .warnings

@@ -185,6 +185,7 @@ pub(crate) mod tests {
             .map(|(i, &(f, ext))| FrictionPoint {
                 model: String::new(),
                 model_reason: String::new(),
+                band: None,
                 temp_c: 10.0 * i as f64,
                 log10_a_t: 0.0,
                 friction: f,

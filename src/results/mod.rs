@@ -14,5 +14,7 @@ pub use compound_fit::{
     CompoundFit, CompoundFitError, FitSettings, InputHash, MeasurementSummary, Provenance,
     QualityFigure, TtsSummary, COMPOUND_FIT_FORMAT_VERSION,
 };
-pub use outcome::{cap_line, standing, CompoundOutcome, RunStatus, RunSummary, SceneStanding};
-pub use scene::{FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec};
+pub use outcome::{
+    cap_line, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary, SceneStanding,
+};
+pub use scene::{FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec};

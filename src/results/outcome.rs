@@ -11,7 +11,7 @@
 //! with its reasons. A failed point never enters a mean.
 
 use super::scene::FrictionPoint;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 
 /// Longest error or warning line kept in outcomes and reports, in bytes (a 30 MB line in an input
@@ -162,6 +162,24 @@ pub struct RunSummary {
     pub ranking_csv: PathBuf,
     /// `reports/index.html`.
     pub index_html: PathBuf,
+    /// For each scene, each pair of ranked compounds: how sure their order is (empty with
+    /// `--no-bands`).
+    pub comparisons: Vec<PairComparison>,
+}
+
+/// Two compounds in one scene: the probability that `a` rolls with lower friction than `b`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PairComparison {
+    /// Scene name.
+    pub scene: String,
+    /// First compound.
+    pub a: String,
+    /// Second compound.
+    pub b: String,
+    /// P(F/N of `a` < F/N of `b`) over the propagated scatter.
+    pub prob_a_lower: f64,
+    /// The order is not significant (neither probability reaches the significance level).
+    pub tied: bool,
 }
 
 impl RunSummary {
@@ -195,6 +213,7 @@ mod tests {
         FrictionPoint {
             model: String::new(),
             model_reason: String::new(),
+            band: None,
             temp_c,
             log10_a_t: 0.0,
             friction,

@@ -245,6 +245,20 @@ pub struct FrictionPoint {
     /// indentation, contact checks).
     #[serde(default)]
     pub warnings: Vec<String>,
+    /// The uncertainty band of `friction` (None when bands were not computed, `--no-bands`).
+    #[serde(default)]
+    pub band: Option<FrictionBand>,
+}
+
+/// Percentiles of F*/N* from the measurement's own scatter propagated through the pipeline.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct FrictionBand {
+    /// 5th percentile of F*/N*.
+    pub p05: f64,
+    /// Median of F*/N*.
+    pub p50: f64,
+    /// 95th percentile of F*/N*.
+    pub p95: f64,
 }
 
 fn half_space_name() -> String {

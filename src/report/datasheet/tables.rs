@@ -120,6 +120,7 @@ mod tests {
         let p = |extrapolated: bool, error: Option<&str>, warnings: Vec<String>| FrictionPoint {
             model: String::new(),
             model_reason: String::new(),
+            band: None,
             temp_c: 20.0,
             log10_a_t: 0.0,
             friction: if error.is_some() { f64::NAN } else { 1e-3 },
