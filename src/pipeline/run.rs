@@ -12,7 +12,7 @@ use super::error::{io, PipelineError};
 use super::fit_compound::{fit_or_reuse, FitAction, FitOptions};
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::dma::read_files;
-use crate::report::{index_html, ranking_csv, write_file, write_report};
+use crate::report::{ranking_csv, write_file, write_index, write_report, TanDeltaProxy};
 use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
 use crate::Measurement;
 use rayon::prelude::*;
@@ -408,7 +408,7 @@ pub fn run_all_with_progress(
     }
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
-    let outcomes: Vec<CompoundOutcome> = compounds
+    let (outcomes, proxies): (Vec<CompoundOutcome>, Vec<Option<TanDeltaProxy>>) = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();
@@ -424,11 +424,13 @@ pub fn run_all_with_progress(
             for _ in done.get()..per {
                 step("skipped");
             }
+            let proxy = r.as_ref().ok().map(|(fit, _, _)| TanDeltaProxy::of(fit));
             let out = outcome(c, opts, r, start.elapsed().as_secs_f64());
             log(&log_line(&out));
-            out
+            (out, proxy)
         })
-        .collect();
+        .unzip();
+    let proxies: Vec<TanDeltaProxy> = proxies.into_iter().flatten().collect();
     let reports = opts.out_dir.join("reports");
     notes.extend(stale_reports(&reports, &compounds));
     let ranking_path = reports.join("ranking.csv");
@@ -437,18 +439,17 @@ pub fn run_all_with_progress(
         &ranking_path,
         ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
     )?;
-    write_file(
-        &index_path,
-        index_html(&outcomes, &opts.scenes, &notes, opts.allow_extrapolation).as_bytes(),
-    )?;
-    Ok(RunSummary {
+    // the index reads the whole summary (comparisons included), so it is written last
+    let summary = RunSummary {
         compounds: outcomes,
         notes,
         allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
         comparisons: Vec::new(),
-    })
+    };
+    write_index(&reports, &summary, &opts.scenes, &proxies)?;
+    Ok(summary)
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
