@@ -30,6 +30,7 @@ mod pipeline_hardening;
 mod prony_ems_ca;
 mod prony_terms;
 mod reference;
+mod report_browser;
 mod report_plots;
 mod seed;
 mod special_functions;
