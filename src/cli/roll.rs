@@ -6,7 +6,10 @@
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
-//! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
+//! `rho`, `time_scale_s`, `creep`), the numerics (`scheme`, `n`, `iterations`) and the 90 %
+//! uncertainty band `friction_p05`, `friction_p50`, `friction_p95` (crate::bands: a fit file made by
+//! `viscoroll run` carries the bootstrap ensemble; otherwise null, with the reason in `bands_note`).
+//! With a cover (`--cover-mm`, `--model`) no band is computed yet.
 
 use crate::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
 use crate::pipeline::roll_fit::{roll_source_at, CreepSource, SourceRoll};
@@ -52,9 +55,35 @@ pub struct Args {
     /// `layer` (bonded to a rigid carcass) or `winkler` (uniaxial columns, as conveyor design tools).
     #[arg(long)]
     pub model: Option<String>,
+    /// Skip the uncertainty band (a fit file made by `viscoroll run` carries the bootstrap ensemble
+    /// it needs; see crate::bands).
+    #[arg(long)]
+    pub no_bands: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
+}
+
+/// The 90 % band of the friction of `r` (crate::bands), or why there is none.
+fn band(
+    args: &Args,
+    source: &CreepSource,
+    scene: &Scene,
+    r: &SourceRoll,
+) -> Result<crate::results::FrictionBand, String> {
+    if args.no_bands {
+        return Err("skipped (--no-bands)".into());
+    }
+    let (CreepSource::Fit(fit), Some(t)) = (source, args.temp_c) else {
+        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file made by `viscoroll run`".into());
+    };
+    let Some(ensemble) = fit.bands.as_ref() else {
+        return Err("this fit file carries no bootstrap ensemble (made by `viscoroll fit` or `run --no-bands`): `viscoroll run` on its measurement adds one".into());
+    };
+    let settings = crate::bands::BandSettings::default();
+    let ratios = crate::bands::scene_ratios(fit, ensemble, scene, &[t], &settings);
+    crate::bands::band_of(r.roll.friction, &ratios[0])
+        .ok_or_else(|| "too few replicate solves succeeded for a band".to_string())
 }
 
 /// Run `viscoroll roll`.
@@ -113,10 +142,18 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let r = roll_source_at(&source, args.temp_c, &scene, &settings)
         .with_context(|| format!("{}", args.spectrum.display()))?;
+    let band = band(&args, &source, &scene, &r);
     if args.json {
-        print_json(&args, &r);
+        print_json(&args, &r, &band);
     } else {
         print_text(&args, &r);
+        match &band {
+            Ok(b) => eprintln!(
+                "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
+                b.p05, b.p95, b.p50
+            ),
+            Err(why) => eprintln!("friction band: none: {why}"),
+        }
     }
     // Temperature warnings first, then the solver's (also in the JSON object).
     for w in &r.warnings {
@@ -126,7 +163,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 }
 
 /// `--json`: one object on stdout (fields in the module doc; the `auto` diagnostics when solved so).
-fn print_json(args: &Args, r: &SourceRoll) {
+fn print_json(args: &Args, r: &SourceRoll, band: &Result<crate::results::FrictionBand, String>) {
     let (sol, shifted, warnings) = (&r.roll, &r.shift, &r.warnings);
     let d = &sol.dimensionless;
     let auto_info = d.auto.as_ref();
@@ -156,6 +193,10 @@ fn print_json(args: &Args, r: &SourceRoll) {
         "log10_a_t": shifted.as_ref().map(|a| a.log10_a_t),
         "extrapolated": shifted.as_ref().map(|a| a.extrapolated),
         "warnings": warnings,
+        "friction_p05": band.as_ref().ok().map(|b| b.p05),
+        "friction_p50": band.as_ref().ok().map(|b| b.p50),
+        "friction_p95": band.as_ref().ok().map(|b| b.p95),
+        "bands_note": band.as_ref().err(),
     });
     if let Some(a) = &auto_info {
         obj["error_estimate"] = serde_json::json!(d.error_estimate);

@@ -7,6 +7,7 @@
 //! ignored), same settings, same tool version.
 
 use super::error::{io, PipelineError};
+use crate::bands::BandSettings;
 use crate::dma::{read_files, sha256_hex, IngestOptions};
 use crate::prony::{fit_prony, MasterPoint as PronyPoint, PronySettings};
 use crate::results::{CompoundFit, QualityFigure, TtsSummary};
@@ -104,6 +105,15 @@ pub fn fit_measurement(
     measurement: &crate::Measurement,
     options: &FitOptions,
 ) -> Result<CompoundFit, PipelineError> {
+    Ok(fit_measurement_master(compound, measurement, options)?.0)
+}
+
+/// [`fit_measurement`], also handing on the master curve (the bands resample it).
+pub fn fit_measurement_master(
+    compound: &str,
+    measurement: &crate::Measurement,
+    options: &FitOptions,
+) -> Result<(CompoundFit, crate::tts::MasterCurve), PipelineError> {
     let master = build_master_curve(measurement, &options.master)?;
     let points: Vec<PronyPoint> = master
         .points
@@ -151,7 +161,7 @@ pub fn fit_measurement(
         flags: master.quality.flags.clone(),
         warnings: master.warnings.clone(),
     });
-    Ok(fit)
+    Ok((fit, master))
 }
 
 /// Outcome of [`fit_or_reuse`].
@@ -174,6 +184,43 @@ pub fn fit_or_reuse(
     options: &FitOptions,
     force: bool,
 ) -> Result<(CompoundFit, FitAction), PipelineError> {
+    fit_or_reuse_with_bands(compound, measurement, fit_path, options, force, None)
+        .map(|(f, a, _)| (f, a))
+}
+
+/// Whether `fit` carries an ensemble made with `settings`.
+fn has_ensemble(fit: &CompoundFit, settings: &BandSettings) -> bool {
+    fit.bands
+        .as_ref()
+        .is_some_and(|b| b.replicates_requested == settings.replicates && b.seed == settings.seed)
+}
+
+/// [`fit_or_reuse`], and with `bands` the fit's bootstrap ensemble (crate::bands): made with a new
+/// fit, or added to a reused fit that lacks one (the fit file is then rewritten with it; its fit is
+/// unchanged). The third value is why the ensemble could not be made, if it could not (the fit is
+/// kept; its friction then has no bands).
+pub fn fit_or_reuse_with_bands(
+    compound: &str,
+    measurement: &crate::Measurement,
+    fit_path: &Path,
+    options: &FitOptions,
+    force: bool,
+    bands: Option<&BandSettings>,
+) -> Result<(CompoundFit, FitAction, Option<String>), PipelineError> {
+    let add = |fit: &mut CompoundFit, master: &crate::tts::MasterCurve, s: &BandSettings| {
+        match crate::bands::build_ensemble(master, measurement, fit, s) {
+            Ok(e) => {
+                fit.bands = Some(e);
+                None
+            }
+            Err(e) => {
+                fit.bands = None;
+                Some(crate::results::cap_line(&format!(
+                    "uncertainty bands not computed: {e}"
+                )))
+            }
+        }
+    };
     let mut hashes: Vec<String> = measurement
         .sources
         .iter()
@@ -183,7 +230,19 @@ pub fn fit_or_reuse(
     let mut action = FitAction::Fitted;
     if fit_path.exists() {
         match CompoundFit::read(fit_path) {
-            Ok(old) if fit_matches(&old, &hashes, options) => return Ok((old, FitAction::Reused)),
+            Ok(old) if fit_matches(&old, &hashes, options) => {
+                let Some(s) = bands.filter(|s| !has_ensemble(&old, s)) else {
+                    return Ok((old, FitAction::Reused, None));
+                };
+                // The same fit, its ensemble added: the master curve is rebuilt (deterministic).
+                let mut fit = old;
+                let master = build_master_curve(measurement, &options.master)?;
+                let why = add(&mut fit, &master, s);
+                if why.is_none() {
+                    fit.write(fit_path, true)?;
+                }
+                return Ok((fit, FitAction::Reused, why));
+            }
             _ if !force => {
                 return Err(PipelineError::FitDiffers {
                     path: fit_path.to_path_buf(),
@@ -192,9 +251,10 @@ pub fn fit_or_reuse(
             _ => action = FitAction::Replaced,
         }
     }
-    let fit = fit_measurement(compound, measurement, options)?;
+    let (mut fit, master) = fit_measurement_master(compound, measurement, options)?;
+    let why = bands.and_then(|s| add(&mut fit, &master, s));
     fit.write(fit_path, force)?;
-    Ok((fit, action))
+    Ok((fit, action, why))
 }
 
 /// The measured temperature range (°C) of a fit, for flagging extrapolation
