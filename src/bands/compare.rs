@@ -1,4 +1,4 @@
-//! Pairs of compounds in one scene (docs/MATH.md §13, step 6): the probability that A's mean
+//! Pairs of compounds in one scene (docs/MATH.md §15, step 6): the probability that A's mean
 //! friction is below B's, from their bands, and the ties.
 //!
 //! Input: (compound, band of its scene mean) of the ranked compounds; output: [`PairComparison`]s.
@@ -33,7 +33,7 @@ fn log_normal(b: &FrictionBand) -> (f64, f64) {
     (b.p50.ln(), (b.p95 / b.p05).ln() / (2.0 * Z95))
 }
 
-/// P(F_A < F_B) for independent log-normal F_A, F_B with these bands (eq. 13.7).
+/// P(F_A < F_B) for independent log-normal F_A, F_B with these bands (eq. 15.7).
 pub fn prob_lower(a: &FrictionBand, b: &FrictionBand) -> f64 {
     let ((ma, sa), (mb, sb)) = (log_normal(a), log_normal(b));
     let s = (sa * sa + sb * sb).sqrt();

@@ -1,4 +1,4 @@
-//! The bootstrap ensemble of one compound's fit (docs/MATH.md §13, steps 1–3): the scatter of the
+//! The bootstrap ensemble of one compound's fit (docs/MATH.md §15, steps 1–3): the scatter of the
 //! measurement estimated from the master curve, then `replicates` resampled master curves, each
 //! refitted (Prony QP at the fit's own λ, exact creep conversion).
 //!
@@ -16,12 +16,12 @@ use rayon::prelude::*;
 
 /// The scatter inputs of the resampling, per master point and per isotherm.
 struct Scatter {
-    /// ln(E′/Ê′), ln(E″/Ê″) of each master point (eq. 13.1).
+    /// ln(E′/Ê′), ln(E″/Ê″) of each master point (eq. 15.1).
     residuals: Vec<(f64, f64)>,
     /// Fitted Ê′, Ê″ at each master point.
     fitted: Vec<(f64, f64)>,
     /// Isotherms in temperature order: (index in `MasterCurve::isotherms`, T °C, σ of the shift's
-    /// random-walk increment from its inner neighbour (eq. 13.2), σ_T of its temperature, d log a_T/dT).
+    /// random-walk increment from its inner neighbour (eq. 15.2), σ_T of its temperature, d log a_T/dT).
     chain: Vec<(usize, f64, f64, f64, f64)>,
     /// Position of the reference isotherm in `chain`.
     reference: usize,
@@ -99,17 +99,12 @@ fn scatter(
         .min_by(|&a, &b| sigma(order[a]).total_cmp(&sigma(order[b])))
         .unwrap_or(0);
     let law = &fit.shift_law;
+    let sigmas: Vec<f64> = order.iter().map(|&i| sigma(i)).collect();
+    let incs = increments_of(&sigmas, reference);
     let chain: Vec<(usize, f64, f64, f64, f64)> = (0..order.len())
         .map(|k| {
             let i = order[k];
-            let inner = match k.cmp(&reference) {
-                std::cmp::Ordering::Equal => None,
-                std::cmp::Ordering::Greater => Some(order[k - 1]),
-                std::cmp::Ordering::Less => Some(order[k + 1]),
-            };
-            let inc = inner.map_or(0.0, |j| {
-                (sigma(i).powi(2) - sigma(j).powi(2)).max(0.0).sqrt()
-            });
+            let inc = incs[k];
             let t = master.isotherms[i].temp_c;
             let slope = (law.log10_a_t(t + 0.5) - law.log10_a_t(t - 0.5)) / 1.0;
             let t_std = temperature_std_k(measurement, master.isotherms[i].measurement_index);
@@ -143,7 +138,36 @@ fn scatter(
     })
 }
 
-/// One replicate (eqs. 13.2–13.4): shifts by a random walk out from the reference isotherm,
+/// Shift errors along the temperature-ordered chain (eq. 15.2): 0 at `reference`, then each step
+/// outwards adds `increments[k]`·z.
+fn shift_walk(increments: &[f64], reference: usize, rng: &mut Rng) -> Vec<f64> {
+    let n = increments.len();
+    let mut walk = vec![0.0; n];
+    for k in (reference + 1)..n {
+        walk[k] = walk[k - 1] + increments[k] * rng.normal();
+    }
+    for k in (0..reference.min(n)).rev() {
+        walk[k] = walk[k + 1] + increments[k] * rng.normal();
+    }
+    walk
+}
+
+/// The random-walk increment of each isotherm of the chain from the marginal standard errors
+/// `sigma` (temperature order): √(max(σ_k² − σ_inner², 0)), 0 at `reference`.
+fn increments_of(sigma: &[f64], reference: usize) -> Vec<f64> {
+    (0..sigma.len())
+        .map(|k| {
+            let inner = match k.cmp(&reference) {
+                std::cmp::Ordering::Equal => return 0.0,
+                std::cmp::Ordering::Greater => sigma[k - 1],
+                std::cmp::Ordering::Less => sigma[k + 1],
+            };
+            (sigma[k].powi(2) - inner.powi(2)).max(0.0).sqrt()
+        })
+        .collect()
+}
+
+/// One replicate (eqs. 15.2–15.4): shifts by a random walk out from the reference isotherm,
 /// moduli the fitted ones times a wild-bootstrap residual, refitted.
 fn replicate(
     master: &MasterCurve,
@@ -156,13 +180,8 @@ fn replicate(
     // Shift error of each isotherm (indexed like MasterCurve::isotherms) and law offset at its T.
     let mut delta = vec![0.0; master.isotherms.len()];
     let mut offsets = Vec::with_capacity(n);
-    let mut walk = vec![0.0; n];
-    for k in (sc.reference + 1)..n {
-        walk[k] = walk[k - 1] + sc.chain[k].2 * rng.normal();
-    }
-    for k in (0..sc.reference).rev() {
-        walk[k] = walk[k + 1] + sc.chain[k].2 * rng.normal();
-    }
+    let increments: Vec<f64> = sc.chain.iter().map(|c| c.2).collect();
+    let walk = shift_walk(&increments, sc.reference, rng);
     for (k, &(i, t, _, t_std, slope)) in sc.chain.iter().enumerate() {
         delta[i] = walk[k];
         offsets.push((t, walk[k] + slope * t_std * rng.normal()));
@@ -243,4 +262,45 @@ pub fn build_ensemble(
         replicates,
         notes,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_shift_walk_keeps_each_marginal_standard_error() {
+        // Marginal σ growing outwards from the reference (index 2), with one dip (index 4 below
+        // index 3: its increment is 0, so it inherits index 3's σ, the only place the walk is off).
+        let sigma = [0.03, 0.012, 0.0, 0.01, 0.008, 0.02];
+        let inc = increments_of(&sigma, 2);
+        let want = [0.03, 0.012, 0.0, 0.01, 0.01, 0.02];
+        let n = 40_000;
+        let mut sum2 = [0.0; 6];
+        let mut cross = 0.0;
+        let mut rng = Rng::new(3, 0);
+        for _ in 0..n {
+            let w = shift_walk(&inc, 2, &mut rng);
+            for k in 0..6 {
+                sum2[k] += w[k] * w[k];
+            }
+            cross += w[0] * w[1];
+        }
+        for k in 0..6 {
+            let sd = (sum2[k] / n as f64).sqrt();
+            // The sample sd of 40 000 draws is within 1/√(2n) ≈ 0.35 % of σ; 1.5 % is > 4 of those.
+            if want[k] == 0.0 {
+                assert_eq!(sd, 0.0);
+            } else {
+                assert!(
+                    (sd / want[k] - 1.0).abs() < 0.015,
+                    "{k}: {sd} vs {}",
+                    want[k]
+                );
+            }
+        }
+        // Neighbours share the walk: corr(δ0, δ1) = σ1/σ0 = 0.4 (independent draws would give 0).
+        let corr = cross / n as f64 / (want[0] * want[1]);
+        assert!((corr - 0.4).abs() < 0.03, "{corr}");
+    }
 }

@@ -1,4 +1,4 @@
-//! Friction bands of one compound in one scene (docs/MATH.md §13, steps 4–5): every replicate of
+//! Friction bands of one compound in one scene (docs/MATH.md §15, steps 4–5): every replicate of
 //! the ensemble solved at every temperature of the scene, as a ratio to the fit's own friction
 //! solved the same way, then the band of each point and of the scene mean.
 //!
@@ -39,7 +39,7 @@ pub fn band_contact_settings(settings: &BandSettings) -> ContactSettings {
 
 /// Per temperature of `temps_c`, the ratio F_b/F̂ of each replicate b (NaN where a solve failed),
 /// both on the half-space of `scene` (its body is not used: a covered scene's band takes the
-/// half-space's relative scatter, eq. 13.6). Parallel over (temperature, replicate).
+/// half-space's relative scatter, eq. 15.6). Parallel over (temperature, replicate).
 pub fn scene_ratios(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
@@ -80,7 +80,7 @@ pub fn scene_ratios(
         .collect()
 }
 
-/// The band of `value` from replicate ratios (eq. 13.5): d_b = ln ratio_b, mean m and standard
+/// The band of `value` from replicate ratios (eq. 15.5): d_b = ln ratio_b, mean m and standard
 /// deviation s over the finite ones; p50 = value·e^m, p05/p95 = value·e^(m ∓ z₀.₉₅ s). `None` with
 /// fewer than 8 finite ratios or a non-finite value.
 pub fn band_of(value: f64, ratios: &[f64]) -> Option<FrictionBand> {

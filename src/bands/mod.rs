@@ -1,6 +1,6 @@
 //! Stage `bands`: uncertainty bands on every friction number, from the measurement's own scatter
 //! propagated through the shifts, the Prony fit, the creep conversion and the contact solve by a
-//! bootstrap (docs/MATH.md §13).
+//! bootstrap (docs/MATH.md §15).
 //!
 //! Input: a compound's [`MasterCurve`](crate::tts::MasterCurve), its measurement and its
 //! [`CompoundFit`](crate::results::CompoundFit); output: a
@@ -9,29 +9,29 @@
 //! a scene's mean friction and [`PairComparison`](crate::results::PairComparison)s. Sits above
 //! results, tts, prony, creep and contact, below pipeline.
 //!
-//! The math (docs/MATH.md §13):
+//! The math (docs/MATH.md §15):
 //!
 //! 1. Scatter from the data. The residual of master point p against the fitted Prony series,
-//!    r_p = ln(E′_p/Ê′(ω_p)) and likewise for E″ (eq. 13.1), holds the isotherm overlap mismatch and
+//!    r_p = ln(E′_p/Ê′(ω_p)) and likewise for E″ (eq. 15.1), holds the isotherm overlap mismatch and
 //!    the fit residual together. The shift stage's least squares over the isotherm overlaps gives
 //!    each isotherm's standard error σ_k of log a_T relative to the reference isotherm; the drift of
 //!    an isotherm's point temperatures gives σ_T,k = sd(T_points)/√n (0 when the file has none).
-//! 2. Shifts (eq. 13.2). The shifts are found pairwise outwards from the reference, so their errors
+//! 2. Shifts (eq. 15.2). The shifts are found pairwise outwards from the reference, so their errors
 //!    add up along the chain: replicate shifts are a random walk δ_k = δ_(k∓1) + √(σ_k² − σ_(k∓1)²)·z
 //!    from the reference (δ = 0) to either end, which keeps each σ_k and the correlation of
 //!    neighbours. The law at T_k gets δ_k + (d log a_T/dT)·σ_T,k·z.
-//! 3. Moduli (eq. 13.3, wild residual bootstrap): E′*_p = Ê′(ω_p)·exp(z_p r_p), E″ alike, placed at
-//!    the reduced frequency ω_p·10^δ_k of its isotherm k. Each replicate is refitted (eq. 13.4): the
+//! 3. Moduli (eq. 15.3, wild residual bootstrap): E′*_p = Ê′(ω_p)·exp(z_p r_p), E″ alike, placed at
+//!    the reduced frequency ω_p·10^δ_k of its isotherm k. Each replicate is refitted (eq. 15.4): the
 //!    Prony QP at the fit's own λ (the λ search is not redone: one QP instead of twelve), then the
 //!    exact creep conversion.
 //! 4. Contact: each replicate's creep spectrum, shifted by its own law log a_T(T) + δ(T) (δ linear
 //!    between isotherms, constant beyond the ends), is rolled at the scene's temperatures; the ratio
 //!    F_b/F̂ to the fit's own friction solved at the same tolerance carries the scatter.
-//! 5. Band (eq. 13.5): with d_b = ln(F_b/F̂), mean m and standard deviation s over the replicates,
+//! 5. Band (eq. 15.5): with d_b = ln(F_b/F̂), mean m and standard deviation s over the replicates,
 //!    p50 = F·e^m and p05, p95 = F·e^(m ∓ 1.645 s) (log-normal: smoother than empirical 5 %
-//!    quantiles of 32 replicates). A covered scene's points take the half-space's ratios (eq. 13.6).
+//!    quantiles of 32 replicates). A covered scene's points take the half-space's ratios (eq. 15.6).
 //!    The band of a scene mean takes per replicate the mean of F_t·ratio_(b,t).
-//! 6. Pairs (eq. 13.7): P(F_A < F_B) = Φ((ln p50_B − ln p50_A)/√(s_A² + s_B²)), compounds
+//! 6. Pairs (eq. 15.7): P(F_A < F_B) = Φ((ln p50_B − ln p50_A)/√(s_A² + s_B²)), compounds
 //!    independent (separate measurements); tied when it lies strictly between 0.05 and 0.95.
 //!
 //! Left out: the contact solver's own error (≤ its tolerance, far below the bands), the choice of

@@ -1,7 +1,7 @@
 //! The bootstrap ensemble of a compound's fit ([`BandEnsemble`]), saved in its fit file so that
 //! `viscoroll roll` and a re-run give the same uncertainty bands without the measurement.
 //!
-//! Input: made by crate::bands (the replicates of the Prony fit and shift law, docs/MATH.md §13);
+//! Input: made by crate::bands (the replicates of the Prony fit and shift law, docs/MATH.md §15);
 //! output: plain serde data read back by crate::bands to solve each replicate's contact.
 
 use crate::CreepSpectrum;
@@ -64,7 +64,7 @@ fn offset_at(rows: &[(f64, f64)], t: f64) -> f64 {
     }
 }
 
-/// The bootstrap ensemble of a fit (crate::bands; docs/MATH.md §13).
+/// The bootstrap ensemble of a fit (crate::bands; docs/MATH.md §15).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BandEnsemble {
     /// How the replicates were made, in words.
