@@ -46,8 +46,33 @@ fn shifted(c: &CreepSpectrum, log10_a_t: f64) -> CreepSpectrum {
     s
 }
 
-/// One point: (compound, scene, T, truth, friction, band p05, p95).
-type Point = (String, String, f64, f64, f64, f64, f64);
+/// One point: (compound, scene, T, truth, friction, band p05, p95, (m, s) of ln F_b/F̂).
+type Point = (String, String, f64, f64, f64, f64, f64, (f64, f64));
+
+/// Mean and standard deviation of the finite ln ratios (as crate::bands::band_of reads them).
+fn log_stats(r: &[f64]) -> (f64, f64) {
+    let d: Vec<f64> = r
+        .iter()
+        .filter(|x| x.is_finite() && **x > 0.0)
+        .map(|x| x.ln())
+        .collect();
+    let n = d.len() as f64;
+    let m = d.iter().sum::<f64>() / n;
+    (
+        m,
+        (d.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1.0)).sqrt(),
+    )
+}
+
+/// Coverage of two other readings of the same replicates, for comparison (not asserted): the band
+/// centred on F itself (p50 = F, half-width 1.645 s) and the basic bootstrap (the bias e^m reflected:
+/// p50 = F·e^(−m)).
+fn other_readings(p: &Point) -> (bool, bool) {
+    let (m, s) = p.7;
+    let z = viscoroll::bands::friction::Z95;
+    let inside = |c: f64| p.4 * (c - z * s).exp() <= p.3 && p.3 <= p.4 * (c + z * s).exp();
+    (inside(0.0), inside(-m))
+}
 
 /// Every (compound, scene, temperature) point of one noise seed.
 fn points_of_seed(seed: u64) -> Vec<Point> {
@@ -103,6 +128,7 @@ fn points_of_seed(seed: u64) -> Vec<Point> {
                     p.friction,
                     b.p05,
                     b.p95,
+                    log_stats(r),
                 ));
             }
         }
@@ -167,6 +193,13 @@ fn calibrate(seeds: &[u64]) -> f64 {
             p.0, p.1, p.2, p.3, p.4, p.5, p.6
         );
     }
+    let centred = all.iter().filter(|(_, p)| other_readings(p).0).count();
+    let basic = all.iter().filter(|(_, p)| other_readings(p).1).count();
+    println!(
+        "other readings of the same replicates: centred on F {:.1} %, basic bootstrap {:.1} %",
+        100.0 * centred as f64 / all.len() as f64,
+        100.0 * basic as f64 / all.len() as f64
+    );
     let hit = all.iter().filter(|(_, p)| covered(p)).count();
     let total = hit as f64 / all.len() as f64;
     println!("total: {hit}/{} = {:.1} %", all.len(), 100.0 * total);

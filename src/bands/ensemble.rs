@@ -153,18 +153,22 @@ fn shift_walk(increments: &[f64], reference: usize, rng: &mut Rng) -> Vec<f64> {
 }
 
 /// The random-walk increment of each isotherm of the chain from the marginal standard errors
-/// `sigma` (temperature order): √(max(σ_k² − σ_inner², 0)), 0 at `reference`.
+/// `sigma` (temperature order): √(max(σ_k² − M², 0)), M the largest σ between it and `reference`
+/// (the walk's own σ there), 0 at `reference`. So the walk's σ at k is max(σ_k, M): each marginal
+/// is kept, except where σ dips below an inner one (then the inner one's is kept).
 fn increments_of(sigma: &[f64], reference: usize) -> Vec<f64> {
-    (0..sigma.len())
-        .map(|k| {
-            let inner = match k.cmp(&reference) {
-                std::cmp::Ordering::Equal => return 0.0,
-                std::cmp::Ordering::Greater => sigma[k - 1],
-                std::cmp::Ordering::Less => sigma[k + 1],
-            };
-            (sigma[k].powi(2) - inner.powi(2)).max(0.0).sqrt()
-        })
-        .collect()
+    let mut inc = vec![0.0; sigma.len()];
+    let mut m = sigma.get(reference).copied().unwrap_or(0.0);
+    for k in (reference + 1)..sigma.len() {
+        inc[k] = (sigma[k].powi(2) - m * m).max(0.0).sqrt();
+        m = m.max(sigma[k]);
+    }
+    let mut m = sigma.get(reference).copied().unwrap_or(0.0);
+    for k in (0..reference.min(sigma.len())).rev() {
+        inc[k] = (sigma[k].powi(2) - m * m).max(0.0).sqrt();
+        m = m.max(sigma[k]);
+    }
+    inc
 }
 
 /// One replicate (eqs. 15.2–15.4): shifts by a random walk out from the reference isotherm,
@@ -271,7 +275,7 @@ mod tests {
     #[test]
     fn the_shift_walk_keeps_each_marginal_standard_error() {
         // Marginal σ growing outwards from the reference (index 2), with one dip (index 4 below
-        // index 3: its increment is 0, so it inherits index 3's σ, the only place the walk is off).
+        // index 3: its increment is 0, so it keeps index 3's σ, the only place the walk is off).
         let sigma = [0.03, 0.012, 0.0, 0.01, 0.008, 0.02];
         let inc = increments_of(&sigma, 2);
         let want = [0.03, 0.012, 0.0, 0.01, 0.01, 0.02];
