@@ -262,7 +262,7 @@ fn rel(a: f64, b: f64) -> f64 {
 /// Pressure and gap checks of a solution: min nodal pressure / max, and the smallest gap at the nodes
 /// within λ/2 outside either contact end over the largest indentation (eq. 3.25's left side minus
 /// its right side; inside it vanishes).
-fn contact_checks(
+pub fn contact_checks(
     kernel: &LayerKernel,
     sol: &DimensionlessSolution,
 ) -> Result<(f64, f64), ContactError> {
