@@ -119,4 +119,6 @@ pub fn winkler_at_load(
 }
 
 #[cfg(test)]
+mod elastic_check;
+#[cfg(test)]
 mod tests;

@@ -353,7 +353,7 @@ fn criterion_table() {
             let ratios: &[f64] = if nu == 0.5 || nu == 0.3 {
                 &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0]
             } else {
-                &[0.03, 0.1, 0.3, 1.0]
+                &[0.01, 0.03, 0.1, 0.3, 1.0]
             };
             for &hr in ratios {
                 let h = hr * hs.lambda;
