@@ -21,6 +21,7 @@ mod fuzz_inputs;
 mod golden_outputs;
 mod ingest_cli;
 mod known_truth;
+mod layer_props;
 mod master_cli;
 mod master_plateau;
 mod master_real;
