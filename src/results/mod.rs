@@ -17,4 +17,6 @@ pub use compound_fit::{
 pub use outcome::{
     cap_line, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary, SceneStanding,
 };
-pub use scene::{FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec};
+pub use scene::{
+    FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec,
+};
