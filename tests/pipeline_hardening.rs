@@ -345,6 +345,45 @@ fn run_takes_tref_and_a_measurement_json_written_by_ingest() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// Issue 15, large files: no pass grows with the size of the file. Two isotherms of 3000 points (more
+/// than `tts::clean::THIN_ABOVE_POINTS` = 1000 each) are thinned to 1000 group means each before the
+/// shifting, so the master curve and the Prony QP see 2000 points, and the fit says so where the
+/// user looks (the datasheet). The 1e6-row figures: `cargo bench --bench large_input`.
+#[test]
+fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
+    let dir = temp_dir("thin-in");
+    let out = temp_dir("thin-out");
+    std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 40.0], 3000)).unwrap();
+    let o = run(&dir, &out, &[]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let fit: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
+            .unwrap();
+    assert_eq!(fit["master_curve"].as_array().unwrap().len(), 2000);
+    assert_eq!(fit["prony_info"]["n_points"].as_u64(), Some(2000));
+    let warnings = fit["tts"]["warnings"].to_string();
+    assert_eq!(
+        warnings
+            .matches("3000 points at distinct frequencies thinned to 1000 means of 3 consecutive")
+            .count(),
+        2,
+        "{warnings}"
+    );
+    let sheet = std::fs::read_to_string(out.join("reports/dense/datasheet.html")).unwrap();
+    assert!(sheet.contains("thinned to 1000 means"));
+    // A small export (20 points per isotherm) is untouched.
+    std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
+    let o = run(&dir, &out, &["--force"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let fit: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
+            .unwrap();
+    assert_eq!(fit["master_curve"].as_array().unwrap().len(), 60);
+    assert!(!fit["tts"]["warnings"].to_string().contains("thinned"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 /// Peak resident memory of this process in MB (Linux `VmHWM`; NaN elsewhere).
 fn peak_rss_mb() -> f64 {
     std::fs::read_to_string("/proc/self/status")

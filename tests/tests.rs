@@ -30,6 +30,7 @@ mod pipeline_cli;
 mod pipeline_hardening;
 mod prony_ems_ca;
 mod prony_terms;
+mod pyvisco_interop;
 mod reference;
 mod report_plots;
 mod seed;

@@ -8,6 +8,7 @@
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
 //! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
 
+use super::roll_print::{Answer, Shift};
 use crate::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
 use crate::pipeline::roll_fit::{roll_source_at, CreepSource, SourceRoll};
 use anyhow::{bail, Context};
@@ -113,105 +114,36 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let r = roll_source_at(&source, args.temp_c, &scene, &settings)
         .with_context(|| format!("{}", args.spectrum.display()))?;
-    if args.json {
-        print_json(&args, &r);
-    } else {
-        print_text(&args, &r);
-    }
-    // Temperature warnings first, then the solver's (also in the JSON object).
-    for w in &r.warnings {
-        eprintln!("warning: {w}");
-    }
+    print_answer(&args, &r);
     Ok(())
 }
 
-/// `--json`: one object on stdout (fields in the module doc; the `auto` diagnostics when solved so).
-fn print_json(args: &Args, r: &SourceRoll) {
-    let (sol, shifted, warnings) = (&r.roll, &r.shift, &r.warnings);
+/// Print through the shared printer: the `auto` diagnostics in the JSON object, the dimensionless
+/// problem and the numerics in the text.
+fn print_answer(args: &Args, r: &SourceRoll) {
+    let (sol, shifted) = (&r.roll, &r.shift);
     let d = &sol.dimensionless;
-    let auto_info = d.auto.as_ref();
-    let mut obj = serde_json::json!({
-        "friction": sol.friction,
-        "contact_length_mm": sol.contact_length_m * 1e3,
-        "offset_mm": sol.offset_m * 1e3,
-        "resistance_n_per_m": sol.resistance_n_per_m,
-        "max_pressure_mpa": sol.max_pressure_pa * 1e-6,
-        "x_mm": sol.x_m.iter().map(|x| x * 1e3).collect::<Vec<_>>(),
-        "pressure_mpa": sol.pressure_pa.iter().map(|p| p * 1e-6).collect::<Vec<_>>(),
-        "radius_mm": args.radius_mm,
-        "load_n_per_m": args.load_n_per_m,
-        "speed_m_s": args.speed_m_s,
-        "poisson": sol.problem.poisson,
-        "lambda": d.lambda,
-        "beta": d.beta,
-        "load": d.load,
-        "friction_rho": d.friction_rho,
-        "rho": sol.problem.rho,
-        "time_scale_s": sol.problem.time_scale_s,
-        "creep": sol.problem.terms,
-        "scheme": d.scheme,
-        "n": d.n,
-        "iterations": d.iterations,
-        "temp_c": shifted.as_ref().map(|a| a.temp_c),
-        "log10_a_t": shifted.as_ref().map(|a| a.log10_a_t),
-        "extrapolated": shifted.as_ref().map(|a| a.extrapolated),
-        "warnings": warnings,
-    });
-    if let Some(a) = &auto_info {
-        obj["error_estimate"] = serde_json::json!(d.error_estimate);
-        obj["tol"] = serde_json::json!(a.tol);
-        obj["modes_used"] = serde_json::json!(a.modes_used);
-        obj["modes_total"] = serde_json::json!(a.modes_total);
-        obj["modes_lumped"] = serde_json::json!(a.modes_lumped);
-        obj["modes_dropped"] = serde_json::json!(a.modes_dropped);
-        obj["min_pressure_ratio"] = serde_json::json!(a.min_pressure_ratio);
-    }
-    println!("{obj}");
-}
-
-/// The human-readable answer on stderr.
-fn print_text(args: &Args, r: &SourceRoll) {
-    let (sol, shifted, spectrum) = (&r.roll, &r.shift, &r.spectrum);
-    let d = &sol.dimensionless;
-    let auto_info = d.auto.as_ref();
-    if let Some(a) = &shifted {
-        eprintln!(
-            "at {} °C: log10 a_T = {:.4}{}",
-            a.temp_c,
-            a.log10_a_t,
-            if a.extrapolated {
-                " (extrapolated)"
-            } else {
-                ""
-            }
-        );
-    }
-    eprintln!(
-        "roll R = {} mm, N = {} N/m, V = {} m/s on {} ({} terms, nu = {})",
-        args.radius_mm,
-        args.load_n_per_m,
-        args.speed_m_s,
-        args.spectrum.display(),
-        spectrum.terms.len(),
-        sol.problem.poisson
-    );
-    eprintln!("friction F/N        = {:.6e}", sol.friction);
-    eprintln!("resistance          = {:.6e} N/m", sol.resistance_n_per_m);
-    eprintln!("contact length      = {:.6} mm", sol.contact_length_m * 1e3);
-    eprintln!(
-        "offset (centre ahead of lowest point) = {:.6} mm",
-        sol.offset_m * 1e3
-    );
-    eprintln!(
-        "max pressure        = {:.6} MPa",
-        sol.max_pressure_pa * 1e-6
-    );
-    eprintln!(
+    let mut json_extra = serde_json::Map::new();
+    let mut lines_after = vec![format!(
         "dimensionless: lambda = {:.6}, beta = {:.6}, N' = {}, rho = {:.6e}, T = {:.6e} s; {} n = {}, {} solves",
         d.lambda, d.beta, d.load, sol.problem.rho, sol.problem.time_scale_s, d.scheme, d.n, d.iterations
-    );
-    if let Some(a) = &auto_info {
-        eprintln!(
+    )];
+    if let Some(a) = &d.auto {
+        for (k, v) in [
+            ("error_estimate", serde_json::json!(d.error_estimate)),
+            ("tol", serde_json::json!(a.tol)),
+            ("modes_used", serde_json::json!(a.modes_used)),
+            ("modes_total", serde_json::json!(a.modes_total)),
+            ("modes_lumped", serde_json::json!(a.modes_lumped)),
+            ("modes_dropped", serde_json::json!(a.modes_dropped)),
+            (
+                "min_pressure_ratio",
+                serde_json::json!(a.min_pressure_ratio),
+            ),
+        ] {
+            json_extra.insert(k.into(), v);
+        }
+        lines_after.push(format!(
             "auto: error estimate {:.3e} (tol {:e}), modes used {}/{} (lumped {}, dropped {})",
             d.error_estimate.unwrap_or(f64::NAN),
             a.tol,
@@ -219,6 +151,22 @@ fn print_text(args: &Args, r: &SourceRoll) {
             a.modes_total,
             a.modes_lumped,
             a.modes_dropped
-        );
+        ));
     }
+    Answer {
+        args,
+        sol,
+        shift: shifted.as_ref().map(|a| Shift {
+            temp_c: a.temp_c,
+            log10_a_t: a.log10_a_t,
+            extrapolated: a.extrapolated,
+        }),
+        terms: r.spectrum.terms.len(),
+        warnings: &r.warnings,
+        json_extra,
+        header_suffix: String::new(),
+        lines_after_header: Vec::new(),
+        lines_after,
+    }
+    .print();
 }
