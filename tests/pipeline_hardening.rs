@@ -384,6 +384,77 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// Issue 15, temperatures: an isotherm at 1e9 °C is refused by every command that reads DMA data
+/// (the check is in the read path, crate::dma::plausible), with one error naming the file, the line
+/// of its first point and the temperature column: `ingest` on the export, `master` and `fit` on a
+/// measurement JSON whose isotherm was edited to 1e9 °C.
+#[test]
+fn ingest_master_and_fit_refuse_an_isotherm_at_1e9_c_naming_file_line_and_column() {
+    let dir = temp_dir("hot-cmds");
+    let hot = dir.join("hot.csv");
+    // Header on line 1, five rows at 0 °C on lines 2–6: the first 1e9 °C row is line 7.
+    std::fs::write(&hot, rubber_csv(&[0.0, 1e9], 5)).unwrap();
+    let o = Command::new(bin())
+        .arg("ingest")
+        .arg(&hot)
+        .output()
+        .unwrap();
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("hot.csv: line 7, column `temperature`") && err.contains("above 1000 °C"),
+        "{err}"
+    );
+    assert_eq!(err.matches("above 1000 °C").count(), 1, "one error: {err}");
+    // A measurement JSON edited by hand: `master` and `fit` refuse it the same way.
+    let good = dir.join("good.csv");
+    std::fs::write(&good, rubber_csv(&[0.0, 20.0, 40.0], 5)).unwrap();
+    let m_json = dir.join("m.json");
+    let o = Command::new(bin())
+        .arg("ingest")
+        .arg(&good)
+        .arg("-o")
+        .arg(&m_json)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let mut m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&m_json).unwrap()).unwrap();
+    let iso = &mut m["isotherms"][2];
+    iso["temp_nominal_c"] = 1e9.into();
+    iso["temp_mean_c"] = 1e9.into();
+    let first_line = iso["points"][0]["line"].as_u64().unwrap();
+    for p in iso["points"].as_array_mut().unwrap() {
+        p["temp_c"] = 1e9.into();
+    }
+    std::fs::write(&m_json, m.to_string()).unwrap();
+    for args in [
+        vec![
+            "master".to_string(),
+            m_json.display().to_string(),
+            "--tref".into(),
+            "20".into(),
+        ],
+        vec![
+            "fit".to_string(),
+            m_json.display().to_string(),
+            "-o".into(),
+            dir.join("f.json").display().to_string(),
+        ],
+    ] {
+        let o = Command::new(bin()).args(&args).output().unwrap();
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
+        assert!(
+            err.contains(&format!(
+                "good.csv: line {first_line}, column `temperature`"
+            )) && err.contains("above 1000 °C"),
+            "{args:?}: {err}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// Peak resident memory of this process in MB (Linux `VmHWM`; NaN elsewhere).
 fn peak_rss_mb() -> f64 {
     std::fs::read_to_string("/proc/self/status")

@@ -52,12 +52,12 @@ pub struct Args {
 pub fn run(args: Args) -> anyhow::Result<()> {
     let text = std::fs::read_to_string(&args.measurement)
         .with_context(|| format!("{}: cannot read", args.measurement.display()))?;
-    let value: serde_json::Value = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not JSON", args.measurement.display()))?;
-    // The bare serde of Measurement, or an object holding it under "measurement".
-    let inner = value.get("measurement").cloned().unwrap_or(value);
-    let measurement: crate::Measurement = serde_json::from_value(inner)
-        .with_context(|| format!("{}: not a measurement", args.measurement.display()))?;
+    // The bare serde of Measurement, or an object holding it under "measurement"; checked like any
+    // export (crate::dma::plausible).
+    let measurement = crate::dma::plausible::measurement_from_json(
+        &args.measurement.display().to_string(),
+        &text,
+    )?;
     let name = match &args.name {
         Some(n) => n.clone(),
         None => args
