@@ -30,7 +30,7 @@ fn median(mut v: Vec<f64>) -> Option<f64> {
 /// outside [−273.15, `MAX_TEMP_C`] °C (else of its first point) and the temperature column, if any.
 fn temperature_place(m: &Measurement, iso: &super::Isotherm) -> String {
     let file = m.sources.get(iso.source).map_or("", |s| s.path.as_str());
-    let bad = |t: f64| t < -273.15 || t > MAX_TEMP_C;
+    let bad = |t: f64| !(-273.15..=MAX_TEMP_C).contains(&t);
     let point = iso
         .points
         .iter()
