@@ -105,6 +105,20 @@ pub fn fit_measurement(
     options: &FitOptions,
 ) -> Result<CompoundFit, PipelineError> {
     let master = build_master_curve(measurement, &options.master)?;
+    fit_master_curve(compound, measurement, &master, options)
+}
+
+/// Fit a master curve already built (or read already shifted, [`crate::tts::master_curve_from_reduced`]):
+/// Prony series, exact creep spectrum, quality figures. `measurement` is what the master curve was
+/// made from (its sources are the fit's inputs). A master curve read already shifted has one
+/// isotherm; its shift law's table (when it is one) gives the shifts and the WLF and Arrhenius fits
+/// stored for the datasheet and the cards.
+pub fn fit_master_curve(
+    compound: &str,
+    measurement: &crate::Measurement,
+    master: &crate::tts::MasterCurve,
+    options: &FitOptions,
+) -> Result<CompoundFit, PipelineError> {
     let points: Vec<PronyPoint> = master
         .points
         .iter()
@@ -133,20 +147,34 @@ pub fn fit_measurement(
         MASTER_OVERLAP_RMS_BOUND,
     ));
     let mut law_rms = Vec::new();
-    if let Some(w) = &master.wlf {
-        law_rms.push(("wlf".to_string(), w.rms_log10));
-    }
-    if let Some(a) = &master.arrhenius {
-        law_rms.push(("arrhenius".to_string(), a.rms_log10));
-    }
-    fit.tts = Some(TtsSummary {
-        shifts: master
+    let shifts: Vec<(f64, f64)> = match (&master.shift_law, master.isotherms.len()) {
+        (crate::ShiftLaw::Table { points, .. }, 1) => points.clone(),
+        _ => master
             .isotherms
             .iter()
             .map(|i| (i.temp_c, i.log10_a_t))
             .collect(),
-        wlf: master.wlf.as_ref().map(|w| w.law()),
-        arrhenius: master.arrhenius.as_ref().map(|a| a.law()),
+    };
+    let (wlf, arrhenius) = if master.isotherms.len() == 1 && shifts.len() > 2 {
+        // Read already shifted: fit the laws to the table that came with it.
+        let t_ref = master.t_ref_c;
+        (
+            crate::tts::fit_laws::fit_wlf(&shifts, t_ref).ok(),
+            crate::tts::fit_laws::fit_arrhenius(&shifts, t_ref).ok(),
+        )
+    } else {
+        (master.wlf.clone(), master.arrhenius.clone())
+    };
+    if let Some(w) = &wlf {
+        law_rms.push(("wlf".to_string(), w.rms_log10));
+    }
+    if let Some(a) = &arrhenius {
+        law_rms.push(("arrhenius".to_string(), a.rms_log10));
+    }
+    fit.tts = Some(TtsSummary {
+        shifts,
+        wlf: wlf.as_ref().map(|w| w.law()),
+        arrhenius: arrhenius.as_ref().map(|a| a.law()),
         law_rms_log10: law_rms,
         flags: master.quality.flags.clone(),
         warnings: master.warnings.clone(),
@@ -174,6 +202,35 @@ pub fn fit_or_reuse(
     options: &FitOptions,
     force: bool,
 ) -> Result<(CompoundFit, FitAction), PipelineError> {
+    reuse_or_fit(measurement, fit_path, options, force, || {
+        fit_measurement(compound, measurement, options)
+    })
+}
+
+/// [`fit_or_reuse`] for a master curve read already shifted (e.g. pyvisco's CSV with its shift
+/// factors): `measurement` holds its reduced points and sources, `master` the curve made of them.
+/// `options.master` should be `master.settings`, so that such a fit is never taken for one made
+/// from the isotherms.
+pub fn fit_or_reuse_master(
+    compound: &str,
+    measurement: &crate::Measurement,
+    master: &crate::tts::MasterCurve,
+    fit_path: &Path,
+    options: &FitOptions,
+    force: bool,
+) -> Result<(CompoundFit, FitAction), PipelineError> {
+    reuse_or_fit(measurement, fit_path, options, force, || {
+        fit_master_curve(compound, measurement, master, options)
+    })
+}
+
+fn reuse_or_fit(
+    measurement: &crate::Measurement,
+    fit_path: &Path,
+    options: &FitOptions,
+    force: bool,
+    fit: impl FnOnce() -> Result<CompoundFit, PipelineError>,
+) -> Result<(CompoundFit, FitAction), PipelineError> {
     let mut hashes: Vec<String> = measurement
         .sources
         .iter()
@@ -192,7 +249,7 @@ pub fn fit_or_reuse(
             _ => action = FitAction::Replaced,
         }
     }
-    let fit = fit_measurement(compound, measurement, options)?;
+    let fit = fit()?;
     fit.write(fit_path, force)?;
     Ok((fit, action))
 }

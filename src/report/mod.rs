@@ -7,6 +7,7 @@
 //! (results and the stages); the pipeline calls it.
 
 pub mod cards;
+pub mod chart;
 pub mod csv_text;
 pub mod datasheet;
 pub mod error;
@@ -14,6 +15,7 @@ pub mod html;
 pub mod index;
 pub mod plots;
 pub mod ranking;
+pub mod ticks;
 
 pub use datasheet::write_report;
 pub use error::{write_file, ReportError};

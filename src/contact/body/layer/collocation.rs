@@ -16,7 +16,8 @@
 //! Δ, ρF/N at given load ≈ 2.8 when the front-edge layer is resolved) once Δ also resolves the
 //! layer's own length h′ (the pressure varies on that scale near the contact ends of a thin layer).
 //! The error estimate compares the solutions at n/2 and n (λ and β Richardson-extrapolated, see
-//! [`solve_layer_at_load`]), which doubles n until the estimate meets the tolerance or n reaches its cap.
+//! [`solve_layer_at_load`]), which doubles n until the estimate meets the tolerance, n reaches its cap or the kernel table
+//! would cost more than [`KERNEL_WORK_BUDGET`] (layers thinner than ~λ/100; a warning says so).
 
 use super::kernel::LayerKernel;
 use crate::contact::error::{positive, ContactError};
@@ -203,18 +204,25 @@ pub fn solve_layer_at_load(
             2.0 * fine.beta - coarse.beta,
         );
         let est_size = match prev_rich {
-            Some((l, b)) => rel(rich.0, l).max((rich.1 - b).abs() / rich.0),
+            // The change of the extrapolation, times RICHARDSON_SAFETY (see there).
+            Some((l, b)) => RICHARDSON_SAFETY * rel(rich.0, l).max((rich.1 - b).abs() / rich.0),
             None => {
                 rel(fine.lambda, coarse.lambda).max((fine.beta - coarse.beta).abs() / fine.lambda)
             }
         };
         let est = est_size.max(rel(fine.friction_rho, coarse.friction_rho));
-        if est <= settings.tol || 2 * n > settings.n_max {
+        let over_budget = kernel_work(2 * n, fine.lambda, kernel.thickness()) > KERNEL_WORK_BUDGET;
+        if est <= settings.tol || 2 * n > settings.n_max || over_budget {
             if est > settings.tol {
                 warnings.push(format!(
-                    "tolerance not reached: layer estimate {est:.1e} > tol {:.1e} at the largest n = {n} \
+                    "tolerance not reached: layer estimate {est:.1e} > tol {:.1e} at the largest n = {n}{} \
                      (a layer thin against the contact needs n ≳ 10·λ/h; the Winkler or h³ limit applies there)",
-                    settings.tol
+                    settings.tol,
+                    if over_budget && 2 * n <= settings.n_max {
+                        format!(" (cover/contact length {:.1e}: a finer kernel table would cost more than the budget)", kernel.thickness() / fine.lambda)
+                    } else {
+                        String::new()
+                    }
                 ));
             }
             let (min_pressure_ratio, min_gap_ratio) = contact_checks(kernel, &fine)?;
@@ -250,6 +258,24 @@ pub fn solve_layer_at_load(
     }
 }
 
+/// Largest work (kernel-table operations, [`kernel_work`]) of one solve at given λ that the n-doubling
+/// of [`solve_layer_at_load`] starts: about 0.1 s. Only layers thinner than ~λ/100 reach it before
+/// n = 512 (the correction's quadrature needs panels of width ~h/2 up to k = 27/h over |x| ≤ 1.5λ).
+pub const KERNEL_WORK_BUDGET: f64 = 1e8;
+
+/// Operations of the layer kernel table at n intervals on a contact λ over a layer h′ (module doc of
+/// [`super::kernel`]: (2m+1)·10·(panels), m = 1.5n for the contact checks, panels ≈ 30 + 27·1.5λ/h′·2).
+pub fn kernel_work(n: usize, lambda: f64, thickness: f64) -> f64 {
+    let m = 1.5 * n as f64;
+    (2.0 * m + 1.0) * 10.0 * (30.0 + 81.0 * lambda / thickness)
+}
+
+/// Safety factor on the change of the Richardson-extrapolated λ and β between n/2 and n, used as
+/// their error estimate: the property sweep (`tests/layer_props.rs`, `VISCOROLL_SEED=0x6e96a9fbdb9288b`
+/// case 46: 3 terms, J∞/J_g = 150, h/λ = 0.4, ν = 0.27) found the bare change 1.9 times below the
+/// true error of λ where the extrapolation is not yet asymptotic; 3 leaves a margin.
+pub const RICHARDSON_SAFETY: f64 = 3.0;
+
 /// Relative difference (0 for equal values).
 fn rel(a: f64, b: f64) -> f64 {
     if a == b {
@@ -262,7 +288,7 @@ fn rel(a: f64, b: f64) -> f64 {
 /// Pressure and gap checks of a solution: min nodal pressure / max, and the smallest gap at the nodes
 /// within λ/2 outside either contact end over the largest indentation (eq. 3.25's left side minus
 /// its right side; inside it vanishes).
-fn contact_checks(
+pub fn contact_checks(
     kernel: &LayerKernel,
     sol: &DimensionlessSolution,
 ) -> Result<(f64, f64), ContactError> {
