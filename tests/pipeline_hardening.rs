@@ -171,6 +171,70 @@ fn names_are_sanitised_so_nothing_is_written_outside_the_output_folder() {
     let _ = std::fs::remove_dir_all(&base);
 }
 
+/// Issue 15, per-compound settings: an export whose column names no reader knows (`T`, `Frq`,
+/// `Mod1`, `Mod2`) fails without a mapping, naming the columns; with `columns` (a table or the
+/// `ingest --columns` string) and `mode` in compounds.toml, `run` fits it, and both forms give the
+/// same fit as the same data under the generic reader's names. A bad key is refused naming it.
+#[test]
+fn compounds_toml_maps_the_columns_of_an_unknown_export() {
+    let base = temp_dir("colmap");
+    let (dir, out) = (base.join("in"), base.join("out"));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = rubber_csv(&[0.0, 20.0, 40.0], 12);
+    let (header, body) = csv.split_once('\n').unwrap();
+    assert_eq!(header, "temperature [°C],frequency [Hz],E' [Pa],E'' [Pa]");
+    std::fs::write(
+        dir.join("odd.csv"),
+        format!("T [°C],Frq [Hz],Mod1 [Pa],Mod2 [Pa]\n{body}"),
+    )
+    .unwrap();
+    std::fs::write(dir.join("plain.csv.ref"), &csv).unwrap();
+    let listing = |columns: &str| {
+        format!(
+            "[[compound]]\nname = \"odd\"\nfiles = [\"odd.csv\"]\nmode = \"tensile\"\n{columns}\n\
+             [[compound]]\nname = \"plain\"\nfiles = [\"plain.csv.ref\"]\nformat = \"generic\"\n"
+        )
+    };
+    std::fs::write(dir.join("compounds.toml"), listing("")).unwrap();
+    let o = run(&dir, &out, &[]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("no frequency column") && err.contains("`Frq`"),
+        "{err}"
+    );
+    let friction = |name: &str| {
+        std::fs::read_to_string(out.join(format!("reports/{name}/friction.csv"))).unwrap()
+    };
+    for columns in [
+        r#"columns = { temp = "T", freq = "Frq", storage = "Mod1", loss = "Mod2" }"#,
+        r#"columns = "temp=T,freq=Frq,storage=Mod1,loss=Mod2""#,
+    ] {
+        std::fs::write(dir.join("compounds.toml"), listing(columns)).unwrap();
+        let o = run(&dir, &out, &["--force"]);
+        assert!(o.status.success(), "{columns}: {}", text(&o.stderr));
+        // Same numbers, so the friction tables agree past their first column header lines.
+        let (a, b) = (friction("odd"), friction("plain"));
+        assert_eq!(
+            a.lines().skip(1).collect::<Vec<_>>(),
+            b.lines().skip(1).collect::<Vec<_>>()
+        );
+    }
+    std::fs::write(
+        dir.join("compounds.toml"),
+        listing(r#"columns = { frq = "Frq" }"#),
+    )
+    .unwrap();
+    let o = run(&dir, &out, &["--force"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o.stderr).contains("unknown key `frq`"),
+        "{}",
+        text(&o.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&base);
+}
+
 #[test]
 fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
     let dir = temp_dir("untrusted-in");
