@@ -24,6 +24,7 @@ mod known_truth;
 mod master_cli;
 mod master_plateau;
 mod master_real;
+mod mutation_gaps;
 mod physical_units;
 mod pipeline_cli;
 mod pipeline_hardening;
