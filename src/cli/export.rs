@@ -10,6 +10,9 @@
 //! it describes the shifts (RMS ≤ [`WLF_RMS_BOUND`] decade and C2 ≤ [`WLF_C2_MAX_K`] K); otherwise
 //! the card gets no shift and says why.
 //!
+//! `--to pyvisco` writes a fit file's master curve and shift factors in pyvisco's CSV layouts
+//! ([`crate::dma::pyvisco`]): `-o NAME.csv` and `NAME__shift_factors.csv` beside it.
+//!
 //! `--json` prints one object `{ "format", "input", "output", "card" }`. Without `--json` and without
 //! `-o` the card text goes to stdout.
 
@@ -30,6 +33,9 @@ pub enum Target {
     Ansys,
     /// LS-DYNA `*MAT_GENERAL_VISCOELASTIC`.
     Lsdyna,
+    /// pyvisco's master-curve CSV (`-o NAME.csv`) and shift-factor CSV (`NAME__shift_factors.csv`)
+    /// of a fit file, the layout pyvisco's `load.user_master` and `load.user_shift` read.
+    Pyvisco,
 }
 
 /// Bulk relaxation (Abaqus kᵢ).
@@ -181,9 +187,90 @@ fn parse_wlf(s: &str) -> anyhow::Result<ShiftLaw> {
     })
 }
 
+/// The shift-factor file written beside pyvisco's master-curve file `NAME.csv`:
+/// `NAME__shift_factors.csv` (the name pyvisco's example pair uses).
+pub fn pyvisco_shift_path(master: &std::path::Path) -> PathBuf {
+    let stem = master
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "master".into());
+    master.with_file_name(format!("{stem}__shift_factors.csv"))
+}
+
+/// `export --to pyvisco`: the fit file's master curve and shifts in pyvisco's two CSV layouts.
+fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> anyhow::Result<()> {
+    let fit = input.fit.as_ref().ok_or_else(|| {
+        anyhow::anyhow!(
+            "{}: --to pyvisco writes a master curve and its shift factors, which only a fit file \
+             holds (a bare spectrum has neither)",
+            args.file.display()
+        )
+    })?;
+    let out = args.output.as_ref().ok_or_else(|| {
+        anyhow::anyhow!("--to pyvisco writes two files: give the master curve's with -o NAME.csv")
+    })?;
+    let shifts: Vec<(f64, f64)> = match (&fit.tts, &fit.shift_law) {
+        (Some(t), _) if !t.shifts.is_empty() => t.shifts.clone(),
+        (_, ShiftLaw::Table { points, .. }) => points.clone(),
+        _ => anyhow::bail!(
+            "{}: the fit file holds no table of shift factors",
+            args.file.display()
+        ),
+    };
+    let t_ref = fit.shift_law.t_ref_c();
+    // pyvisco reads log a_T relative to the master curve's temperature: refer the table to it.
+    let at_ref = fit.shift_law.log10_a_t(t_ref);
+    let shifts: Vec<(f64, f64)> = shifts.iter().map(|&(t, a)| (t, a - at_ref)).collect();
+    let points: Vec<(f64, f64, f64)> = fit
+        .master_curve
+        .iter()
+        .map(|p| (p.reduced_freq_hz, p.storage_pa, p.loss_pa))
+        .collect();
+    let master_text = crate::dma::pyvisco::master_csv(fit.relaxation.kind, &points);
+    let shift_text = crate::dma::pyvisco::shift_csv(&shifts);
+    let shift_out = pyvisco_shift_path(out);
+    if !args.force {
+        for p in [out, &shift_out] {
+            if p.exists() {
+                anyhow::bail!(
+                    "{} exists; not overwritten (use --force to replace it)",
+                    p.display()
+                );
+            }
+        }
+    }
+    write_atomic(out, master_text.as_bytes(), args.force)?;
+    write_atomic(&shift_out, shift_text.as_bytes(), args.force)?;
+    if args.json {
+        let obj = serde_json::json!({
+            "format": "pyvisco",
+            "input": args.file.display().to_string(),
+            "output": out.display().to_string(),
+            "shift_factors": shift_out.display().to_string(),
+            "points": points.len(),
+            "temperatures": shifts.len(),
+            "t_ref_c": t_ref,
+        });
+        println!("{obj}");
+    } else {
+        eprintln!(
+            "viscoroll export: pyvisco master curve ({} points at T_ref = {t_ref} °C) → {}; shift \
+             factors ({} temperatures) → {}",
+            points.len(),
+            out.display(),
+            shifts.len(),
+            shift_out.display()
+        );
+    }
+    Ok(())
+}
+
 /// Run `viscoroll export`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let input = read_spectrum_input(&args.file)?;
+    if args.to == Target::Pyvisco {
+        return export_pyvisco(&args, &input);
+    }
     let mut spectrum = input.spectrum;
     let mut notes: Vec<String> = Vec::new();
     let shift = match (args.wlf.as_deref(), &input.fit) {
@@ -237,12 +324,19 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Target::Abaqus => ("abaqus", cards::abaqus(&spectrum, shift.as_ref(), &options)),
         Target::Ansys => ("ansys", cards::ansys(&spectrum, shift.as_ref(), &options)),
         Target::Lsdyna => ("lsdyna", cards::lsdyna(&spectrum, shift.as_ref(), &options)),
+        // Written by export_pyvisco before any card work.
+        Target::Pyvisco => (
+            "pyvisco",
+            Err(cards::CardError::Unwritable(
+                "pyvisco files are not a card".into(),
+            )),
+        ),
     };
     let card = card.with_context(|| format!("{}", args.file.display()))?;
     let prefix = match args.to {
         Target::Abaqus => "**",
         Target::Ansys => "!",
-        Target::Lsdyna => "$",
+        Target::Lsdyna | Target::Pyvisco => "$",
     };
     let card: String = notes
         .iter()

@@ -17,6 +17,7 @@ mod output;
 mod rank;
 mod roll;
 mod roll_cover;
+mod roll_print;
 mod run;
 mod spectrum_input;
 
