@@ -12,7 +12,7 @@
 use super::chart::{Axis, Chart, Curve, Mark};
 use super::datasheet::friction_curve;
 use super::error::{write_file, ReportError};
-use super::html::{esc, num, plot_pair, STYLE};
+use super::html::{esc, num, num_band, plot_pair, STYLE};
 use super::plots;
 use super::ranking::{apart, ranked, temps_text};
 use crate::results::{
@@ -156,7 +156,14 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
             h,
             "<tr><td>{}</td><td class=\"l\"><a href=\"{n}/datasheet.html\">{n}</a></td><td>{}</td><td class=\"l\">{vs}</td><td>{pv}</td><td{}>{}</td><td class=\"l warn\">{}</td></tr>",
             i + 1,
-            s.mean_friction.map_or("–".into(), num),
+            s.mean_friction.map_or("–".into(), |m| {
+                let (v, b) = num_band(m, s.band.map(|b| (b.p05, b.p95)));
+                if b.is_empty() {
+                    v
+                } else {
+                    format!("{v}<span class=\"band\">{b}</span>")
+                }
+            }),
             if misranked { " class=\"warn\" title=\"the proxy ranks this compound elsewhere\"" } else { "" },
             pr.map_or("–".into(), |r| r.to_string()),
             flags(o, &spec.name, allow),
@@ -463,10 +470,21 @@ mod tests {
             tied: true,
         }];
         let proxies = [proxy("a", 0.2), proxy("b", 0.1)];
+        let mut outcomes = outcomes;
+        outcomes[0].standings[0].band = Some(crate::results::FrictionBand {
+            p05: 1.4e-4,
+            p50: 1.5e-4,
+            p95: 1.6e-4,
+        });
         let h = index_html(&summary(outcomes, cmp), &scenes, &proxies, &[]);
         let table = &h[h.find("<table>").unwrap()..h.find("</table>").unwrap()];
         // a is first; its comparison with b is the reversed pair: P(a lower) = 1 − 0.4
         assert!(table.contains("tied (P = 0.60)"), "{table}");
+        // the band of a's mean under it, in its power of ten
+        assert!(
+            table.contains("1.50·10⁻⁴<span class=\"band\">1.40–1.60 ·10⁻⁴</span>"),
+            "{table}"
+        );
         // the proxy ranks a second: marked as a misrank
         let row_a = &table[table.find("a/datasheet").unwrap()..];
         assert!(row_a.contains("0.2000") && row_a.contains("class=\"warn\" title=\"the proxy"));
