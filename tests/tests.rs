@@ -1,5 +1,7 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
 mod auto_vs_richardson;
+mod cards_vendor;
+mod cli_habits;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;

@@ -9,7 +9,7 @@
 
 use super::compounds::{discover, CompoundInput};
 use super::error::{io, PipelineError};
-use super::fit_compound::{fit_or_reuse, FitAction, FitOptions};
+use super::fit_compound::{fit_or_reuse, fit_or_reuse_master, FitAction, FitOptions};
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::dma::read_files;
 use crate::report::{index_html, ranking_csv, write_file, write_report};
@@ -164,14 +164,46 @@ fn one_compound(
     opts: &RunOptions,
     step: &dyn Fn(&str),
 ) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
-    let measurement = checked_measurement(c)?;
-    let (fit, action) = fit_or_reuse(
-        &c.name,
-        &measurement,
-        &fit_path(&opts.out_dir, &c.name),
-        &fit_options(c, opts),
-        opts.force,
-    )?;
+    let (measurement, fit, action) = match &c.settings.shift_factors {
+        None => {
+            let measurement = checked_measurement(c)?;
+            let (fit, action) = fit_or_reuse(
+                &c.name,
+                &measurement,
+                &fit_path(&opts.out_dir, &c.name),
+                &fit_options(c, opts),
+                opts.force,
+            )?;
+            (measurement, fit, action)
+        }
+        Some(sf) => {
+            // A master curve read already shifted (pyvisco's CSV pair).
+            let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
+            let pv =
+                crate::dma::pyvisco::read_master_pair(&c.files[0], sf, poisson, c.settings.tref_c)?;
+            let mut measurement = pv.measurement;
+            crate::dma::plausible::refuse_impossible(&measurement).map_err(|message| {
+                PipelineError::Implausible {
+                    compound: c.name.clone(),
+                    message: cap_line(&message),
+                }
+            })?;
+            let w = crate::dma::plausible::warnings(&measurement);
+            measurement.warnings.extend(w);
+            let master = crate::tts::master_curve_from_reduced(&measurement, &pv.shift_law)?;
+            let mut options = fit_options(c, opts);
+            options.master = master.settings.clone();
+            let (fit, action) = fit_or_reuse_master(
+                &c.name,
+                &measurement,
+                &master,
+                &fit_path(&opts.out_dir, &c.name),
+                &options,
+                opts.force,
+            )?;
+            (measurement, fit, action)
+        }
+    };
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();

@@ -30,14 +30,22 @@
 //!   given directly, then one card `GI, BETAI, KI, BETAKI` per term with *absolute shear* moduli Gᵢ and
 //!   decay constants βᵢ = 1/τᵢ; the equilibrium modulus G∞ is a term with β = 0 (MAT_076 has no separate
 //!   long-term field: G(t) = Σ Gᵢ e^(−βᵢt)). Fixed 10-character fields; numbers are written with the most
-//!   significant digits that fit (5–7). TREF, A, B: WLF shift (A = C1, B = C2). At most 18 terms.
-//!   We could not retrieve the LS-DYNA Keyword User's Manual text through our search tool; the layout
-//!   follows the manual (vol. II, MAT_076) as we know it and a third-party exporter's test we saw
-//!   (G₀ = E/(2(1+ν)), Gᵢ and β = 1/τ). Check before production use.
+//!   significant digits that fit (5–7). TREF, A, B: WLF shift (A = C1, B = C2), TREF in kelvin
+//!   because the keyword requires TREF > 0 (WLF depends on T − TREF only, so A and B do not change;
+//!   the deck's temperatures must then be in K). At most 18 terms.
+//!   Checked against: the keyword definition Ansys publishes in its PyDyna package
+//!   (`keyword_classes/auto/mat_general_viscoelastic.py` and its documentation page: card 1 MID, RO,
+//!   BULK, PCF, EF, TREF, A, B in 10-column fields at columns 1, 11, …, 71; card 2 LCID, NT, BSTART,
+//!   TRAMP, LCIDK, NTK, BSTARTK, TRAMPK; cards 3+ GI, BETAI, KI, BETAKI at columns 1, 11, 21, 31;
+//!   "TREF: reference temperature for shift function (must be greater than zero)"; A: coefficient of
+//!   the Arrhenius and WLF shift, B: of the WLF shift). Until this check TREF was written in °C,
+//!   which LS-DYNA refuses at or below 0 °C (e.g. EMS-CA's −5 °C). The WLF sign convention of A, B
+//!   was not in that source.
 //!
 //! Readers: our own three formats (round trips) and ANSYS `TB,PRON`/`TB,PRONY` cards written by ANSYS
 //! itself (abbreviated keywords, `_MATL` placeholders, `TBFIELD`/`TBIN` lines ignored).
 
+use crate::material::ZERO_CELSIUS_K;
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
 use crate::{ModulusKind, ShiftLaw};
 use serde::{Deserialize, Serialize};
@@ -312,13 +320,15 @@ pub fn lsdyna(
     let blank = " ".repeat(10);
     let mut s = String::new();
     s.push_str(&provenance("$", spectrum, e0));
-    s.push_str("$ Units: kg, m, s, Pa, degC. Shear moduli G_i (absolute), decay constants BETA_i = 1/tau_i.\n");
+    s.push_str("$ Units: kg, m, s, Pa, K (TREF must be > 0: temperatures in kelvin). Shear moduli G_i (absolute), decay constants BETA_i = 1/tau_i.\n");
     s.push_str("*MAT_GENERAL_VISCOELASTIC\n");
     s.push_str(
         "$      MID        RO      BULK       PCF        EF      TREF         A         B\n",
     );
+    // TREF in kelvin: the keyword's definition asks for TREF > 0 (an absolute temperature); WLF
+    // depends on T − TREF only, so A = C1 and B = C2 are the same in K as in °C.
     let (tref, a, b) = match wlf {
-        Some((t, c1, c2)) => (f(t), f(c1), f(c2)),
+        Some((t, c1, c2)) => (f(t + ZERO_CELSIUS_K), f(c1), f(c2)),
         None => (blank.clone(), blank.clone(), blank.clone()),
     };
     let ro = options
@@ -585,7 +595,7 @@ pub fn read_lsdyna(text: &str) -> Result<CardContents, CardError> {
                 let get = |k: usize| v.get(k).copied().unwrap_or(0.0);
                 if get(6) != 0.0 || get(7) != 0.0 {
                     wlf = Some(ShiftLaw::Wlf {
-                        t_ref_c: get(5),
+                        t_ref_c: get(5) - ZERO_CELSIUS_K,
                         c1: get(6),
                         c2_k: get(7),
                     });
