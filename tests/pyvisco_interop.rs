@@ -266,3 +266,29 @@ fn run_takes_a_pyvisco_master_curve_listed_in_compounds_toml() {
     let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();
     assert!(ranking.contains("ems-ca-pyvisco"), "{ranking}");
 }
+
+#[test]
+fn master_reads_the_pyvisco_pair_as_a_master_curve() {
+    let (mc, sf) = (
+        data("freq_user_master.csv"),
+        data("freq_user_master__shift_factors.csv"),
+    );
+    let o = viscoroll(&[
+        "master",
+        "--master-curve",
+        mc.to_str().unwrap(),
+        "--shift-factors",
+        sf.to_str().unwrap(),
+        "--json",
+    ]);
+    let m: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(m["points"].as_array().unwrap().len(), 206);
+    assert_eq!(m["t_ref_c"], -5.0);
+    assert_eq!(m["shift_law"]["points"].as_array().unwrap().len(), 21);
+    // A measurement and a master curve at once is a usage error.
+    let both = Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+        .args(["master", "m.json", "--master-curve", mc.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(both.status.code(), Some(2));
+}

@@ -57,7 +57,7 @@ fn holds(law: &ShiftLaw, rms: f64) -> Result<(), String> {
     let ShiftLaw::Wlf { c1, c2_k, .. } = *law else {
         return Err("not WLF".into());
     };
-    if !(rms <= WLF_RMS_BOUND) {
+    if rms.is_nan() || rms > WLF_RMS_BOUND {
         return Err(format!(
             "the WLF fit (C1 = {c1:.4}, C2 = {c2_k:.4} K) misses the shifts by {rms:.3} decade RMS (bound {WLF_RMS_BOUND})"
         ));
