@@ -16,6 +16,8 @@
 //!   −log A = h(θ) = C1(θ−θ₀)/(C2+θ−θ₀)); `*VISCOELASTIC` (v6.5 keywords page: TIME=PRONY, elasticity
 //!   from `*ELASTIC`/`*HYPERELASTIC`). The card must be combined with an elastic definition of the
 //!   instantaneous modulus (`*ELASTIC, MODULI=INSTANTANEOUS`), given in a comment.
+//!   `tests/cards_vendor.rs` reads our *TRS with its own parser and, with Abaqus' form, reproduces
+//!   the EPLEXOR software's own WLF table of EMS-CA (RMS 0.21 decade; the flipped sign 11.9).
 //! - **ANSYS** `TB,PRONY,mat,1,n,SHEAR` then `TBDATA` with pairs `aᵢ, τᵢ` (aᵢ = Gᵢ/G₀ relative to the
 //!   instantaneous modulus), six values per `TBDATA` line with the start index, and
 //!   `TB,SHIFT,mat,1,3,WLF` + `TBDATA,1,T_ref,C1,C2`. Checked against: a real card written by ANSYS 2020 R1
@@ -23,8 +25,9 @@
 //!   `TBDATA,1,a1,t1,a2,t2,a3,t3`, `TBDATA,4,…`) and the ANSYS 18.2 command reference page of `TBDATA`
 //!   (STLOC + up to six constants). The TB,SHIFT WLF constant order (T_ref, C1, C2, with
 //!   log10 A = C1(T−T_ref)/(C2+T−T_ref) for the factor dividing times, i.e. the same C1, C2 as ours) is
-//!   from the ANSYS Material Reference as we remember it; we could not retrieve that page here: check
-//!   it before relying on the shift card.
+//!   from the ANSYS Material Reference as we remember it; we could not retrieve that page here (nor
+//!   an ANSYS-written TB,SHIFT): check it before relying on the shift card. The TB,PRONY layout is
+//!   compared with ANSYS's own card by an independent parser in `tests/cards_vendor.rs`.
 //! - **LS-DYNA** `*MAT_GENERAL_VISCOELASTIC` (MAT_076): card 1 `MID, RO, BULK, PCF, EF, TREF, A, B`,
 //!   card 2 (`LCID, NT, BSTART, TRAMP, LCIDK, NTK, BSTARTK, TRAMPK`) left blank because the Prony terms are
 //!   given directly, then one card `GI, BETAI, KI, BETAKI` per term with *absolute shear* moduli Gᵢ and
