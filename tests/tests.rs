@@ -1,5 +1,7 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
 mod auto_vs_richardson;
+mod bands_calibration;
+mod bands_cli;
 mod cards_vendor;
 mod cli_habits;
 mod contact_auto;
@@ -23,9 +25,11 @@ mod fuzz_inputs;
 mod golden_outputs;
 mod ingest_cli;
 mod known_truth;
+mod layer_props;
 mod master_cli;
 mod master_plateau;
 mod master_real;
+mod mutation_gaps;
 mod physical_units;
 mod pipeline_cli;
 mod pipeline_hardening;

@@ -8,7 +8,7 @@ use crate::tts::{
     build_master_curve, LawChoice, MasterCurve, MasterSettings, ShiftCriterion, ShiftSource,
     TemperatureBasis, VerticalShift,
 };
-use crate::{Measurement, ShiftLaw};
+use crate::ShiftLaw;
 use anyhow::{bail, Context};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -117,8 +117,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         (Some(path), _, _) => {
             let text = std::fs::read_to_string(path)
                 .with_context(|| format!("cannot read {}", path.display()))?;
-            let measurement = parse_measurement(&text)
-                .with_context(|| format!("{} is not a measurement JSON", path.display()))?;
+            // Parsed and checked like any export (impossible temperatures refused, naming file and line).
+            let measurement =
+                crate::dma::plausible::measurement_from_json(&path.display().to_string(), &text)?;
             build_master_curve(&measurement, &settings)?
         }
         (None, Some(mc), Some(sf)) => {
@@ -141,13 +142,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         writeln!(stdout, "{json}")?;
     }
     Ok(())
-}
-
-fn parse_measurement(text: &str) -> anyhow::Result<Measurement> {
-    // The bare serde of Measurement, or an object holding it under "measurement".
-    let value: serde_json::Value = serde_json::from_str(text)?;
-    let inner = value.get("measurement").cloned().unwrap_or(value);
-    Ok(serde_json::from_value(inner)?)
 }
 
 fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {

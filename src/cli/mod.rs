@@ -18,6 +18,7 @@ mod output;
 mod rank;
 mod roll;
 mod roll_cover;
+mod roll_print;
 mod run;
 mod spectrum_input;
 

@@ -9,8 +9,9 @@
 
 use super::compounds::{discover, CompoundInput};
 use super::error::{io, PipelineError};
-use super::fit_compound::{fit_or_reuse, fit_or_reuse_master, FitAction, FitOptions};
+use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitAction, FitOptions};
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
+use crate::bands::BandSettings;
 use crate::dma::read_files;
 use crate::report::{index_html, ranking_csv, write_file, write_report};
 use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
@@ -38,6 +39,8 @@ pub struct RunOptions {
     pub fit: FitOptions,
     /// Average extrapolated temperatures into the ranking too (marked); default: measured only.
     pub allow_extrapolation: bool,
+    /// Uncertainty bands (crate::bands) with these settings; `None` skips them (`--no-bands`).
+    pub bands: Option<BandSettings>,
 }
 
 impl RunOptions {
@@ -73,12 +76,24 @@ impl RunOptions {
             force: false,
             fit,
             allow_extrapolation: false,
+            bands: Some(BandSettings::default()),
         })
     }
 }
 
 /// Friction of one compound per scene: (scene name, points).
 pub type SceneFriction = Vec<(String, Vec<FrictionPoint>)>;
+
+/// What one compound hands on: its fit, what was done with the fit file, its friction per scene,
+/// per scene and temperature the bootstrap ratios F_b/F̂ (empty without bands: crate::bands) and
+/// why bands are missing, if they are.
+type CompoundResult = (
+    CompoundFit,
+    FitAction,
+    SceneFriction,
+    Vec<Vec<Vec<f64>>>,
+    Option<String>,
+);
 
 /// One ranked fit: Ok((compound, points, standing)) or Err((compound, error)).
 pub type RankedFit = Result<(String, Vec<FrictionPoint>, SceneStanding), (String, String)>;
@@ -123,28 +138,19 @@ fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
         }
         let p = &c.files[0];
         let text = std::fs::read_to_string(p).map_err(io(p))?;
-        return serde_json::from_str(&text).map_err(|e| PipelineError::Setting {
-            field: p.display().to_string(),
-            message: cap_line(&format!(
-                "not a measurement JSON written by `viscoroll ingest`: {e}"
-            )),
-        });
+        return Ok(crate::dma::plausible::measurement_from_json(
+            &p.display().to_string(),
+            &text,
+        )?);
     }
     let ingest = c.settings.ingest.clone().unwrap_or_default();
     Ok(read_files(&c.files, &ingest)?)
 }
 
-/// [`measurement_of`], then the plausibility checks (crate::dma::plausible): impossible
-/// temperatures refused, suspected unit mix-ups added to the measurement's warnings.
+/// [`measurement_of`]: the plausibility checks (crate::dma::plausible) ran in the read path —
+/// impossible temperatures refused, suspected unit mix-ups in the measurement's warnings.
 fn checked_measurement(c: &CompoundInput) -> Result<Measurement, PipelineError> {
-    let mut m = measurement_of(c)?;
-    crate::dma::plausible::refuse_impossible(&m).map_err(|message| PipelineError::Implausible {
-        compound: c.name.clone(),
-        message: cap_line(&message),
-    })?;
-    let w = crate::dma::plausible::warnings(&m);
-    m.warnings.extend(w);
-    Ok(m)
+    measurement_of(c)
 }
 
 /// The fit options of a compound: the run's, with the compound's own settings over them.
@@ -163,18 +169,19 @@ fn one_compound(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
-) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
-    let (measurement, fit, action) = match &c.settings.shift_factors {
+) -> Result<CompoundResult, PipelineError> {
+    let (measurement, fit, action, no_bands) = match &c.settings.shift_factors {
         None => {
             let measurement = checked_measurement(c)?;
-            let (fit, action) = fit_or_reuse(
+            let (fit, action, no_bands) = fit_or_reuse_with_bands(
                 &c.name,
                 &measurement,
                 &fit_path(&opts.out_dir, &c.name),
                 &fit_options(c, opts),
                 opts.force,
+                opts.bands.as_ref(),
             )?;
-            (measurement, fit, action)
+            (measurement, fit, action, no_bands)
         }
         Some(sf) => {
             // A master curve read already shifted (pyvisco's CSV pair).
@@ -201,18 +208,34 @@ fn one_compound(
                 &options,
                 opts.force,
             )?;
-            (measurement, fit, action)
+            // The bands resample isotherms; a master curve read already shifted has none.
+            let no_bands = opts.bands.as_ref().map(|_| {
+                "uncertainty bands not computed: a master curve read already shifted has no \
+                 isotherms to resample"
+                    .to_string()
+            });
+            (measurement, fit, action, no_bands)
         }
     };
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
     let mut maps = Vec::new();
+    let mut ratios = Vec::new();
     for spec in &opts.scenes.scene {
-        friction.push((
-            spec.clone(),
-            friction_vs_temperature(&fit, spec, &settings)?,
-        ));
+        let mut points = friction_vs_temperature(&fit, spec, &settings)?;
+        if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
+            let r = crate::bands::scene_ratios(&fit, ensemble, &spec.scene(), &spec.temps_c, bs);
+            for (p, r) in points.iter_mut().zip(&r) {
+                if p.error.is_none() {
+                    p.band = crate::bands::band_of(p.friction, r);
+                }
+            }
+            ratios.push(r);
+        } else {
+            ratios.push(Vec::new());
+        }
+        friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         maps.push(super::scenes::friction_maps(
             &fit,
@@ -234,6 +257,8 @@ fn one_compound(
         fit,
         action,
         friction.into_iter().map(|(s, p)| (s.name, p)).collect(),
+        ratios,
+        no_bands,
     ))
 }
 
@@ -243,7 +268,7 @@ fn one_compound_isolated(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
-) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
+) -> Result<CompoundResult, PipelineError> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| one_compound(c, opts, step)))
         .unwrap_or_else(|payload| {
             let msg = payload
@@ -321,12 +346,14 @@ fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String>
 fn outcome(
     c: &CompoundInput,
     opts: &RunOptions,
-    result: Result<(CompoundFit, FitAction, SceneFriction), PipelineError>,
+    result: Result<CompoundResult, PipelineError>,
     seconds: f64,
 ) -> CompoundOutcome {
     match result {
-        Ok((fit, action, friction)) => {
+        Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
+            let mut warnings = compound_warnings(&fit, &friction);
+            warnings.extend(no_bands);
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
@@ -340,9 +367,16 @@ fn outcome(
                 ),
                 standings: friction
                     .iter()
-                    .map(|(s, p)| standing(s, p, &untrusted, opts.allow_extrapolation))
+                    .enumerate()
+                    .map(|(k, (s, p))| {
+                        let mut st = standing(s, p, &untrusted, opts.allow_extrapolation);
+                        if let Some(r) = ratios.get(k).filter(|r| !r.is_empty()) {
+                            st.band = crate::bands::mean_band(p, r, &st.temps_c);
+                        }
+                        st
+                    })
                     .collect(),
-                warnings: compound_warnings(&fit, &friction),
+                warnings,
                 untrusted,
                 friction,
                 error: None,
@@ -461,6 +495,8 @@ pub fn run_all_with_progress(
             out
         })
         .collect();
+    let mut outcomes = outcomes;
+    let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
     notes.extend(stale_reports(&reports, &compounds));
     let ranking_path = reports.join("ranking.csv");
@@ -479,8 +515,43 @@ pub fn run_all_with_progress(
         allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
-        comparisons: Vec::new(),
+        comparisons,
     })
+}
+
+/// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,
+/// in ranking order), and each standing's `tied_with` filled from the ties.
+fn compare_ranked(
+    outcomes: &mut [CompoundOutcome],
+    scenes: &SceneSet,
+) -> Vec<crate::results::PairComparison> {
+    let mut all = Vec::new();
+    for spec in &scenes.scene {
+        let ranked: Vec<(String, crate::results::FrictionBand)> =
+            crate::report::ranked(outcomes, &spec.name)
+                .into_iter()
+                .filter_map(|(o, s)| s.band.map(|b| (o.compound.clone(), b)))
+                .collect();
+        let pairs = crate::bands::comparisons(&spec.name, &ranked);
+        for o in outcomes.iter_mut() {
+            let name = o.compound.clone();
+            if let Some(st) = o.standings.iter_mut().find(|s| s.scene == spec.name) {
+                st.tied_with = pairs
+                    .iter()
+                    .filter(|p| p.tied && (p.a == name || p.b == name))
+                    .map(|p| {
+                        if p.a == name {
+                            p.b.clone()
+                        } else {
+                            p.a.clone()
+                        }
+                    })
+                    .collect();
+            }
+        }
+        all.extend(pairs);
+    }
+    all
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted

@@ -8,6 +8,7 @@
 
 pub mod card_shift;
 pub mod cards;
+pub mod chart;
 pub mod csv_text;
 pub mod datasheet;
 pub mod error;
@@ -15,6 +16,7 @@ pub mod html;
 pub mod index;
 pub mod plots;
 pub mod ranking;
+pub mod ticks;
 
 pub use datasheet::write_report;
 pub use error::{write_file, ReportError};
