@@ -9,7 +9,7 @@
 
 use super::compounds::{discover, CompoundInput};
 use super::error::{io, PipelineError};
-use super::fit_compound::{fit_or_reuse_with_bands, FitAction, FitOptions};
+use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitAction, FitOptions};
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::bands::BandSettings;
 use crate::dma::read_files;
@@ -170,15 +170,53 @@ fn one_compound(
     opts: &RunOptions,
     step: &dyn Fn(&str),
 ) -> Result<CompoundResult, PipelineError> {
-    let measurement = checked_measurement(c)?;
-    let (fit, action, no_bands) = fit_or_reuse_with_bands(
-        &c.name,
-        &measurement,
-        &fit_path(&opts.out_dir, &c.name),
-        &fit_options(c, opts),
-        opts.force,
-        opts.bands.as_ref(),
-    )?;
+    let (measurement, fit, action, no_bands) = match &c.settings.shift_factors {
+        None => {
+            let measurement = checked_measurement(c)?;
+            let (fit, action, no_bands) = fit_or_reuse_with_bands(
+                &c.name,
+                &measurement,
+                &fit_path(&opts.out_dir, &c.name),
+                &fit_options(c, opts),
+                opts.force,
+                opts.bands.as_ref(),
+            )?;
+            (measurement, fit, action, no_bands)
+        }
+        Some(sf) => {
+            // A master curve read already shifted (pyvisco's CSV pair).
+            let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
+            let pv =
+                crate::dma::pyvisco::read_master_pair(&c.files[0], sf, poisson, c.settings.tref_c)?;
+            let mut measurement = pv.measurement;
+            crate::dma::plausible::refuse_impossible(&measurement).map_err(|message| {
+                PipelineError::Implausible {
+                    compound: c.name.clone(),
+                    message: cap_line(&message),
+                }
+            })?;
+            let w = crate::dma::plausible::warnings(&measurement);
+            measurement.warnings.extend(w);
+            let master = crate::tts::master_curve_from_reduced(&measurement, &pv.shift_law)?;
+            let mut options = fit_options(c, opts);
+            options.master = master.settings.clone();
+            let (fit, action) = fit_or_reuse_master(
+                &c.name,
+                &measurement,
+                &master,
+                &fit_path(&opts.out_dir, &c.name),
+                &options,
+                opts.force,
+            )?;
+            // The bands resample isotherms; a master curve read already shifted has none.
+            let no_bands = opts.bands.as_ref().map(|_| {
+                "uncertainty bands not computed: a master curve read already shifted has no \
+                 isotherms to resample"
+                    .to_string()
+            });
+            (measurement, fit, action, no_bands)
+        }
+    };
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
