@@ -37,6 +37,7 @@ mod prony_ems_ca;
 mod prony_terms;
 mod pyvisco_interop;
 mod reference;
+mod report_browser;
 mod report_plots;
 mod seed;
 mod special_functions;

@@ -13,7 +13,7 @@ use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitActio
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::bands::BandSettings;
 use crate::dma::read_files;
-use crate::report::{index_html, ranking_csv, write_file, write_report};
+use crate::report::{ranking_csv, write_file, write_index, write_report, TanDeltaProxy};
 use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
 use crate::Measurement;
 use rayon::prelude::*;
@@ -474,7 +474,7 @@ pub fn run_all_with_progress(
     }
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
-    let outcomes: Vec<CompoundOutcome> = compounds
+    let (outcomes, proxies): (Vec<CompoundOutcome>, Vec<Option<TanDeltaProxy>>) = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();
@@ -490,11 +490,13 @@ pub fn run_all_with_progress(
             for _ in done.get()..per {
                 step("skipped");
             }
+            let proxy = r.as_ref().ok().map(|(fit, ..)| TanDeltaProxy::of(fit));
             let out = outcome(c, opts, r, start.elapsed().as_secs_f64());
             log(&log_line(&out));
-            out
+            (out, proxy)
         })
-        .collect();
+        .unzip();
+    let proxies: Vec<TanDeltaProxy> = proxies.into_iter().flatten().collect();
     let mut outcomes = outcomes;
     let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
@@ -505,18 +507,17 @@ pub fn run_all_with_progress(
         &ranking_path,
         ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
     )?;
-    write_file(
-        &index_path,
-        index_html(&outcomes, &opts.scenes, &notes, opts.allow_extrapolation).as_bytes(),
-    )?;
-    Ok(RunSummary {
+    // the index reads the whole summary (comparisons included), so it is written last
+    let summary = RunSummary {
         compounds: outcomes,
         notes,
         allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
         comparisons,
-    })
+    };
+    write_index(&reports, &summary, &opts.scenes, &proxies)?;
+    Ok(summary)
 }
 
 /// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,

@@ -20,5 +20,5 @@ pub mod ticks;
 
 pub use datasheet::write_report;
 pub use error::{write_file, ReportError};
-pub use index::index_html;
+pub use index::{index_html, write_index, TanDeltaProxy};
 pub use ranking::{ranked, ranking_csv};
