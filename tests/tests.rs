@@ -27,6 +27,7 @@ mod layer_props;
 mod master_cli;
 mod master_plateau;
 mod master_real;
+mod mutation_gaps;
 mod physical_units;
 mod pipeline_cli;
 mod pipeline_hardening;

@@ -208,10 +208,12 @@ enum Source {
 fn read_measurement(path: &std::path::Path) -> anyhow::Result<crate::Measurement> {
     let text = std::fs::read_to_string(path)
         .with_context(|| format!("{}: cannot read", path.display()))?;
-    let value: serde_json::Value =
-        serde_json::from_str(&text).with_context(|| format!("{}: not JSON", path.display()))?;
-    let inner = value.get("measurement").cloned().unwrap_or(value);
-    serde_json::from_value(inner).with_context(|| format!("{}: not a measurement", path.display()))
+    // The bare serde of Measurement, or an object holding it under "measurement"; checked like any
+    // export (crate::dma::plausible).
+    Ok(crate::dma::plausible::measurement_from_json(
+        &path.display().to_string(),
+        &text,
+    )?)
 }
 
 /// `--target-rms E1[,E2]`: one value for both moduli or one each, finite and > 0.

@@ -7,7 +7,7 @@ use crate::tts::{
     build_master_curve, LawChoice, MasterCurve, MasterSettings, ShiftCriterion, ShiftSource,
     TemperatureBasis, VerticalShift,
 };
-use crate::{Measurement, ShiftLaw};
+use crate::ShiftLaw;
 use anyhow::{bail, Context};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -100,8 +100,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let text = std::fs::read_to_string(&args.measurement)
         .with_context(|| format!("cannot read {}", args.measurement.display()))?;
-    let measurement = parse_measurement(&text)
-        .with_context(|| format!("{} is not a measurement JSON", args.measurement.display()))?;
+    // Parsed and checked like any export (impossible temperatures refused, naming file and line).
+    let measurement = crate::dma::plausible::measurement_from_json(
+        &args.measurement.display().to_string(),
+        &text,
+    )?;
     let master = build_master_curve(&measurement, &settings)?;
     let json = serde_json::to_string_pretty(&master)?;
     if let Some(out) = &args.output {
@@ -115,13 +118,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         writeln!(stdout, "{json}")?;
     }
     Ok(())
-}
-
-fn parse_measurement(text: &str) -> anyhow::Result<Measurement> {
-    // The bare serde of Measurement, or an object holding it under "measurement".
-    let value: serde_json::Value = serde_json::from_str(text)?;
-    let inner = value.get("measurement").cloned().unwrap_or(value);
-    Ok(serde_json::from_value(inner)?)
 }
 
 fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {

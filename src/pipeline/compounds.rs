@@ -16,6 +16,9 @@
 //! modulus_unit = "MPa"            # units the file does not state
 //! freq_unit = "Hz"
 //! temp_unit = "°C"
+//! columns = { freq = "Frq", storage = "Mod1", loss = "Mod2" }  # as `ingest --columns` (keys:
+//!                                 # freq, temp, set_temp, storage, loss, complex, tan_delta, phase,
+//!                                 # segment); also the string "freq=Frq,storage=Mod1,loss=Mod2"
 //! tref_c = 20.0                   # reference temperature of the master curve
 //! prony = { terms_per_decade = 1.5 }   # keys of the Prony settings (fit file `settings.prony`)
 //! ```
@@ -76,6 +79,16 @@ struct ListedCompound {
     tref_c: Option<f64>,
     #[serde(default)]
     prony: Option<toml::Table>,
+    #[serde(default)]
+    columns: Option<ColumnsSetting>,
+}
+
+/// `columns` of a compound: a table `{ freq = "Frq", … }` or the `ingest --columns` string.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum ColumnsSetting {
+    Spec(String),
+    Table(toml::Table),
 }
 
 impl ListedCompound {
@@ -128,6 +141,30 @@ impl ListedCompound {
                     crate::dma::units::TEMP_UNITS
                 )
             })?);
+            any = true;
+        }
+        if let Some(c) = &self.columns {
+            o.columns = match c {
+                ColumnsSetting::Spec(spec) => {
+                    crate::dma::ColumnMap::parse(spec).map_err(|e| format!("columns: {e}"))?
+                }
+                ColumnsSetting::Table(t) => {
+                    let mut spec = Vec::new();
+                    for (k, v) in t {
+                        let v = v.as_str().ok_or_else(|| {
+                            format!("columns: `{k}` must be a column name (a string), got {v}")
+                        })?;
+                        if v.contains([',', '=']) {
+                            return Err(format!(
+                                "columns: `{k}` = `{v}`: a column name may not hold `,` or `=`"
+                            ));
+                        }
+                        spec.push(format!("{k}={v}"));
+                    }
+                    crate::dma::ColumnMap::parse(&spec.join(","))
+                        .map_err(|e| format!("columns: {e}"))?
+                }
+            };
             any = true;
         }
         if let Some(t) = self.tref_c {

@@ -138,28 +138,19 @@ fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
         }
         let p = &c.files[0];
         let text = std::fs::read_to_string(p).map_err(io(p))?;
-        return serde_json::from_str(&text).map_err(|e| PipelineError::Setting {
-            field: p.display().to_string(),
-            message: cap_line(&format!(
-                "not a measurement JSON written by `viscoroll ingest`: {e}"
-            )),
-        });
+        return Ok(crate::dma::plausible::measurement_from_json(
+            &p.display().to_string(),
+            &text,
+        )?);
     }
     let ingest = c.settings.ingest.clone().unwrap_or_default();
     Ok(read_files(&c.files, &ingest)?)
 }
 
-/// [`measurement_of`], then the plausibility checks (crate::dma::plausible): impossible
-/// temperatures refused, suspected unit mix-ups added to the measurement's warnings.
+/// [`measurement_of`]: the plausibility checks (crate::dma::plausible) ran in the read path —
+/// impossible temperatures refused, suspected unit mix-ups in the measurement's warnings.
 fn checked_measurement(c: &CompoundInput) -> Result<Measurement, PipelineError> {
-    let mut m = measurement_of(c)?;
-    crate::dma::plausible::refuse_impossible(&m).map_err(|message| PipelineError::Implausible {
-        compound: c.name.clone(),
-        message: cap_line(&message),
-    })?;
-    let w = crate::dma::plausible::warnings(&m);
-    m.warnings.extend(w);
-    Ok(m)
+    measurement_of(c)
 }
 
 /// The fit options of a compound: the run's, with the compound's own settings over them.
