@@ -222,10 +222,21 @@ fn one_compound(
     let mut friction = Vec::new();
     let mut maps = Vec::new();
     let mut ratios = Vec::new();
+    let mut solved: Vec<((crate::contact::Scene, Vec<f64>), Vec<Vec<f64>>)> = Vec::new();
     for spec in &opts.scenes.scene {
         let mut points = friction_vs_temperature(&fit, spec, &settings)?;
         if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
-            let r = crate::bands::scene_ratios(&fit, ensemble, &spec.scene(), &spec.temps_c, bs);
+            // The ratios are solved on the scene's half-space: a covered scene and its half-space
+            // twin (the shipped conveyor-idler pair) share them.
+            let key = (spec.scene(), spec.temps_c.clone());
+            let r = match solved.iter().find(|(k, _)| *k == key) {
+                Some((_, r)) => r.clone(),
+                None => {
+                    let r = crate::bands::scene_ratios(&fit, ensemble, &key.0, &key.1, bs);
+                    solved.push((key, r.clone()));
+                    r
+                }
+            };
             for (p, r) in points.iter_mut().zip(&r) {
                 if p.error.is_none() {
                     p.band = crate::bands::band_of(p.friction, r);
@@ -354,6 +365,11 @@ fn outcome(
             let untrusted = fit.untrusted_reasons();
             let mut warnings = compound_warnings(&fit, &friction);
             warnings.extend(no_bands);
+            if opts.bands.is_some() {
+                if let Some(e) = &fit.bands {
+                    warnings.extend(e.notes.iter().map(|n| format!("uncertainty bands: {n}")));
+                }
+            }
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
