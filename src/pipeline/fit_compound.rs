@@ -181,7 +181,7 @@ pub fn fit_master_curve(
     });
     if fit.quality.iter().any(|q| q.flagged) {
         if let (Some(w), Some(tts)) = (
-            worst_point(measurement, &master, &fit.relaxation),
+            worst_point(measurement, master, &fit.relaxation),
             fit.tts.as_mut(),
         ) {
             tts.warnings.push(w);
