@@ -1,5 +1,7 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
 mod auto_vs_richardson;
+mod bands_calibration;
+mod bands_cli;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;
@@ -25,6 +27,7 @@ mod layer_props;
 mod master_cli;
 mod master_plateau;
 mod master_real;
+mod mutation_gaps;
 mod physical_units;
 mod pipeline_cli;
 mod pipeline_hardening;

@@ -6,7 +6,10 @@
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
-//! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
+//! `rho`, `time_scale_s`, `creep`), the numerics (`scheme`, `n`, `iterations`) and the 90 %
+//! uncertainty band `friction_p05`, `friction_p50`, `friction_p95` (crate::bands: a fit file made by
+//! `viscoroll run` carries the bootstrap ensemble; otherwise null, with the reason in `bands_note`).
+//! With a cover (`--cover-mm`, `--model`) no band is computed yet.
 
 use super::roll_print::{Answer, Shift};
 use crate::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
@@ -53,9 +56,35 @@ pub struct Args {
     /// `layer` (bonded to a rigid carcass) or `winkler` (uniaxial columns, as conveyor design tools).
     #[arg(long)]
     pub model: Option<String>,
+    /// Skip the uncertainty band (a fit file made by `viscoroll run` carries the bootstrap ensemble
+    /// it needs; see crate::bands).
+    #[arg(long)]
+    pub no_bands: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
+}
+
+/// The 90 % band of the friction of `r` (crate::bands), or why there is none.
+fn band(
+    args: &Args,
+    source: &CreepSource,
+    scene: &Scene,
+    r: &SourceRoll,
+) -> Result<crate::results::FrictionBand, String> {
+    if args.no_bands {
+        return Err("skipped (--no-bands)".into());
+    }
+    let (CreepSource::Fit(fit), Some(t)) = (source, args.temp_c) else {
+        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file made by `viscoroll run`".into());
+    };
+    let Some(ensemble) = fit.bands.as_ref() else {
+        return Err("this fit file carries no bootstrap ensemble (made by `viscoroll fit` or `run --no-bands`): `viscoroll run` on its measurement adds one".into());
+    };
+    let settings = crate::bands::BandSettings::default();
+    let ratios = crate::bands::scene_ratios(fit, ensemble, scene, &[t], &settings);
+    crate::bands::band_of(r.roll.friction, &ratios[0])
+        .ok_or_else(|| "too few replicate solves succeeded for a band".to_string())
 }
 
 /// Run `viscoroll roll`.
@@ -114,13 +143,14 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let r = roll_source_at(&source, args.temp_c, &scene, &settings)
         .with_context(|| format!("{}", args.spectrum.display()))?;
-    print_answer(&args, &r);
+    let band = band(&args, &source, &scene, &r);
+    print_answer(&args, &r, &band);
     Ok(())
 }
 
 /// Print through the shared printer: the `auto` diagnostics in the JSON object, the dimensionless
 /// problem and the numerics in the text.
-fn print_answer(args: &Args, r: &SourceRoll) {
+fn print_answer(args: &Args, r: &SourceRoll, band: &Result<crate::results::FrictionBand, String>) {
     let (sol, shifted) = (&r.roll, &r.shift);
     let d = &sol.dimensionless;
     let mut json_extra = serde_json::Map::new();
@@ -153,6 +183,21 @@ fn print_answer(args: &Args, r: &SourceRoll) {
             a.modes_dropped
         ));
     }
+    for (k, v) in [
+        ("friction_p05", band.as_ref().ok().map(|b| b.p05)),
+        ("friction_p50", band.as_ref().ok().map(|b| b.p50)),
+        ("friction_p95", band.as_ref().ok().map(|b| b.p95)),
+    ] {
+        json_extra.insert(k.into(), serde_json::json!(v));
+    }
+    json_extra.insert("bands_note".into(), serde_json::json!(band.as_ref().err()));
+    lines_after.push(match band {
+        Ok(b) => format!(
+            "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
+            b.p05, b.p95, b.p50
+        ),
+        Err(why) => format!("friction band: none: {why}"),
+    });
     Answer {
         args,
         sol,

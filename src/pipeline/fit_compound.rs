@@ -7,6 +7,7 @@
 //! ignored), same settings, same tool version.
 
 use super::error::{io, PipelineError};
+use crate::bands::BandSettings;
 use crate::dma::{read_files, sha256_hex, IngestOptions};
 use crate::prony::{fit_prony, MasterPoint as PronyPoint, PronySettings};
 use crate::results::{CompoundFit, QualityFigure, TtsSummary};
@@ -104,8 +105,18 @@ pub fn fit_measurement(
     measurement: &crate::Measurement,
     options: &FitOptions,
 ) -> Result<CompoundFit, PipelineError> {
+    Ok(fit_measurement_master(compound, measurement, options)?.0)
+}
+
+/// [`fit_measurement`], also handing on the master curve (the bands resample it).
+pub fn fit_measurement_master(
+    compound: &str,
+    measurement: &crate::Measurement,
+    options: &FitOptions,
+) -> Result<(CompoundFit, crate::tts::MasterCurve), PipelineError> {
     let master = build_master_curve(measurement, &options.master)?;
-    fit_master_curve(compound, measurement, &master, options)
+    let fit = fit_master_curve(compound, measurement, &master, options)?;
+    Ok((fit, master))
 }
 
 /// Fit a master curve already built (or read already shifted, [`crate::tts::master_curve_from_reduced`]):
@@ -287,9 +298,8 @@ pub fn fit_or_reuse(
     options: &FitOptions,
     force: bool,
 ) -> Result<(CompoundFit, FitAction), PipelineError> {
-    reuse_or_fit(measurement, fit_path, options, force, || {
-        fit_measurement(compound, measurement, options)
-    })
+    fit_or_reuse_with_bands(compound, measurement, fit_path, options, force, None)
+        .map(|(f, a, _)| (f, a))
 }
 
 /// [`fit_or_reuse`] for a master curve read already shifted (e.g. pyvisco's CSV with its shift
@@ -304,39 +314,103 @@ pub fn fit_or_reuse_master(
     options: &FitOptions,
     force: bool,
 ) -> Result<(CompoundFit, FitAction), PipelineError> {
-    reuse_or_fit(measurement, fit_path, options, force, || {
-        fit_master_curve(compound, measurement, master, options)
-    })
+    match existing(measurement, fit_path, options, force)? {
+        Existing::Matches(old) => Ok((*old, FitAction::Reused)),
+        Existing::Make(action) => {
+            let fit = fit_master_curve(compound, measurement, master, options)?;
+            fit.write(fit_path, force)?;
+            Ok((fit, action))
+        }
+    }
 }
 
-fn reuse_or_fit(
+/// What lies at a fit path.
+enum Existing {
+    /// A fit of these inputs with these settings by this build: reuse it.
+    Matches(Box<CompoundFit>),
+    /// None, or a different one that `force` lets us replace: make it (`Fitted` or `Replaced`).
+    Make(FitAction),
+}
+
+/// Whether the fit at `fit_path` can be reused; a different fit without `force` is an error.
+fn existing(
     measurement: &crate::Measurement,
     fit_path: &Path,
     options: &FitOptions,
     force: bool,
-    fit: impl FnOnce() -> Result<CompoundFit, PipelineError>,
-) -> Result<(CompoundFit, FitAction), PipelineError> {
+) -> Result<Existing, PipelineError> {
     let mut hashes: Vec<String> = measurement
         .sources
         .iter()
         .map(|s| s.sha256.clone())
         .collect();
     hashes.sort();
-    let mut action = FitAction::Fitted;
-    if fit_path.exists() {
-        match CompoundFit::read(fit_path) {
-            Ok(old) if fit_matches(&old, &hashes, options) => return Ok((old, FitAction::Reused)),
-            _ if !force => {
-                return Err(PipelineError::FitDiffers {
-                    path: fit_path.to_path_buf(),
-                })
+    if !fit_path.exists() {
+        return Ok(Existing::Make(FitAction::Fitted));
+    }
+    match CompoundFit::read(fit_path) {
+        Ok(old) if fit_matches(&old, &hashes, options) => Ok(Existing::Matches(Box::new(old))),
+        _ if !force => Err(PipelineError::FitDiffers {
+            path: fit_path.to_path_buf(),
+        }),
+        _ => Ok(Existing::Make(FitAction::Replaced)),
+    }
+}
+
+/// Whether `fit` carries an ensemble made with `settings`.
+fn has_ensemble(fit: &CompoundFit, settings: &BandSettings) -> bool {
+    fit.bands
+        .as_ref()
+        .is_some_and(|b| b.replicates_requested == settings.replicates && b.seed == settings.seed)
+}
+
+/// [`fit_or_reuse`], and with `bands` the fit's bootstrap ensemble (crate::bands): made with a new
+/// fit, or added to a reused fit that lacks one (the fit file is then rewritten with it; its fit is
+/// unchanged). The third value is why the ensemble could not be made, if it could not (the fit is
+/// kept; its friction then has no bands).
+pub fn fit_or_reuse_with_bands(
+    compound: &str,
+    measurement: &crate::Measurement,
+    fit_path: &Path,
+    options: &FitOptions,
+    force: bool,
+    bands: Option<&BandSettings>,
+) -> Result<(CompoundFit, FitAction, Option<String>), PipelineError> {
+    let add = |fit: &mut CompoundFit, master: &crate::tts::MasterCurve, s: &BandSettings| {
+        match crate::bands::build_ensemble(master, measurement, fit, s) {
+            Ok(e) => {
+                fit.bands = Some(e);
+                None
             }
-            _ => action = FitAction::Replaced,
+            Err(e) => {
+                fit.bands = None;
+                Some(crate::results::cap_line(&format!(
+                    "uncertainty bands not computed: {e}"
+                )))
+            }
+        }
+    };
+    match existing(measurement, fit_path, options, force)? {
+        Existing::Matches(old) => {
+            let Some(s) = bands.filter(|s| !has_ensemble(&old, s)) else {
+                return Ok((*old, FitAction::Reused, None));
+            };
+            // The same fit, its ensemble added: the master curve is rebuilt (deterministic).
+            let mut fit = *old;
+            let master = build_master_curve(measurement, &options.master)?;
+            let why = add(&mut fit, &master, s);
+            if why.is_none() {
+                fit.write(fit_path, true)?;
+            }
+            Ok((fit, FitAction::Reused, why))
+        }
+        Existing::Make(action) => {
+            let (mut fit, master) = fit_measurement_master(compound, measurement, options)?;
+            let why = bands.and_then(|s| add(&mut fit, &master, s));
+            fit.write(fit_path, force)?;
+            Ok((fit, action, why))
         }
     }
-    let fit = fit()?;
-    fit.write(fit_path, force)?;
-    Ok((fit, action))
 }
 
 /// The measured temperature range (°C) of a fit, for flagging extrapolation

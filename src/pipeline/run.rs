@@ -9,8 +9,9 @@
 
 use super::compounds::{discover, CompoundInput};
 use super::error::{io, PipelineError};
-use super::fit_compound::{fit_or_reuse, FitAction, FitOptions};
+use super::fit_compound::{fit_or_reuse_with_bands, FitAction, FitOptions};
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
+use crate::bands::BandSettings;
 use crate::dma::read_files;
 use crate::report::{index_html, ranking_csv, write_file, write_report};
 use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
@@ -38,6 +39,8 @@ pub struct RunOptions {
     pub fit: FitOptions,
     /// Average extrapolated temperatures into the ranking too (marked); default: measured only.
     pub allow_extrapolation: bool,
+    /// Uncertainty bands (crate::bands) with these settings; `None` skips them (`--no-bands`).
+    pub bands: Option<BandSettings>,
 }
 
 impl RunOptions {
@@ -73,12 +76,24 @@ impl RunOptions {
             force: false,
             fit,
             allow_extrapolation: false,
+            bands: Some(BandSettings::default()),
         })
     }
 }
 
 /// Friction of one compound per scene: (scene name, points).
 pub type SceneFriction = Vec<(String, Vec<FrictionPoint>)>;
+
+/// What one compound hands on: its fit, what was done with the fit file, its friction per scene,
+/// per scene and temperature the bootstrap ratios F_b/F̂ (empty without bands: crate::bands) and
+/// why bands are missing, if they are.
+type CompoundResult = (
+    CompoundFit,
+    FitAction,
+    SceneFriction,
+    Vec<Vec<Vec<f64>>>,
+    Option<String>,
+);
 
 /// One ranked fit: Ok((compound, points, standing)) or Err((compound, error)).
 pub type RankedFit = Result<(String, Vec<FrictionPoint>, SceneStanding), (String, String)>;
@@ -154,24 +169,35 @@ fn one_compound(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
-) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
+) -> Result<CompoundResult, PipelineError> {
     let measurement = checked_measurement(c)?;
-    let (fit, action) = fit_or_reuse(
+    let (fit, action, no_bands) = fit_or_reuse_with_bands(
         &c.name,
         &measurement,
         &fit_path(&opts.out_dir, &c.name),
         &fit_options(c, opts),
         opts.force,
+        opts.bands.as_ref(),
     )?;
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
     let mut maps = Vec::new();
+    let mut ratios = Vec::new();
     for spec in &opts.scenes.scene {
-        friction.push((
-            spec.clone(),
-            friction_vs_temperature(&fit, spec, &settings)?,
-        ));
+        let mut points = friction_vs_temperature(&fit, spec, &settings)?;
+        if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
+            let r = crate::bands::scene_ratios(&fit, ensemble, &spec.scene(), &spec.temps_c, bs);
+            for (p, r) in points.iter_mut().zip(&r) {
+                if p.error.is_none() {
+                    p.band = crate::bands::band_of(p.friction, r);
+                }
+            }
+            ratios.push(r);
+        } else {
+            ratios.push(Vec::new());
+        }
+        friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         maps.push(super::scenes::friction_maps(
             &fit,
@@ -193,6 +219,8 @@ fn one_compound(
         fit,
         action,
         friction.into_iter().map(|(s, p)| (s.name, p)).collect(),
+        ratios,
+        no_bands,
     ))
 }
 
@@ -202,7 +230,7 @@ fn one_compound_isolated(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
-) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
+) -> Result<CompoundResult, PipelineError> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| one_compound(c, opts, step)))
         .unwrap_or_else(|payload| {
             let msg = payload
@@ -280,12 +308,14 @@ fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String>
 fn outcome(
     c: &CompoundInput,
     opts: &RunOptions,
-    result: Result<(CompoundFit, FitAction, SceneFriction), PipelineError>,
+    result: Result<CompoundResult, PipelineError>,
     seconds: f64,
 ) -> CompoundOutcome {
     match result {
-        Ok((fit, action, friction)) => {
+        Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
+            let mut warnings = compound_warnings(&fit, &friction);
+            warnings.extend(no_bands);
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
@@ -299,9 +329,16 @@ fn outcome(
                 ),
                 standings: friction
                     .iter()
-                    .map(|(s, p)| standing(s, p, &untrusted, opts.allow_extrapolation))
+                    .enumerate()
+                    .map(|(k, (s, p))| {
+                        let mut st = standing(s, p, &untrusted, opts.allow_extrapolation);
+                        if let Some(r) = ratios.get(k).filter(|r| !r.is_empty()) {
+                            st.band = crate::bands::mean_band(p, r, &st.temps_c);
+                        }
+                        st
+                    })
                     .collect(),
-                warnings: compound_warnings(&fit, &friction),
+                warnings,
                 untrusted,
                 friction,
                 error: None,
@@ -420,6 +457,8 @@ pub fn run_all_with_progress(
             out
         })
         .collect();
+    let mut outcomes = outcomes;
+    let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
     notes.extend(stale_reports(&reports, &compounds));
     let ranking_path = reports.join("ranking.csv");
@@ -438,8 +477,43 @@ pub fn run_all_with_progress(
         allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
-        comparisons: Vec::new(),
+        comparisons,
     })
+}
+
+/// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,
+/// in ranking order), and each standing's `tied_with` filled from the ties.
+fn compare_ranked(
+    outcomes: &mut [CompoundOutcome],
+    scenes: &SceneSet,
+) -> Vec<crate::results::PairComparison> {
+    let mut all = Vec::new();
+    for spec in &scenes.scene {
+        let ranked: Vec<(String, crate::results::FrictionBand)> =
+            crate::report::ranked(outcomes, &spec.name)
+                .into_iter()
+                .filter_map(|(o, s)| s.band.map(|b| (o.compound.clone(), b)))
+                .collect();
+        let pairs = crate::bands::comparisons(&spec.name, &ranked);
+        for o in outcomes.iter_mut() {
+            let name = o.compound.clone();
+            if let Some(st) = o.standings.iter_mut().find(|s| s.scene == spec.name) {
+                st.tied_with = pairs
+                    .iter()
+                    .filter(|p| p.tied && (p.a == name || p.b == name))
+                    .map(|p| {
+                        if p.a == name {
+                            p.b.clone()
+                        } else {
+                            p.a.clone()
+                        }
+                    })
+                    .collect();
+            }
+        }
+        all.extend(pairs);
+    }
+    all
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
