@@ -222,7 +222,9 @@ fn one_compound(
     let mut friction = Vec::new();
     let mut maps = Vec::new();
     let mut ratios = Vec::new();
-    let mut solved: Vec<((crate::contact::Scene, Vec<f64>), Vec<Vec<f64>>)> = Vec::new();
+    // (scene, its temperatures) → the friction ratios of each replicate, shared by twin scenes.
+    type SolvedRatios = ((crate::contact::Scene, Vec<f64>), Vec<Vec<f64>>);
+    let mut solved: Vec<SolvedRatios> = Vec::new();
     for spec in &opts.scenes.scene {
         let mut points = friction_vs_temperature(&fit, spec, &settings)?;
         if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
