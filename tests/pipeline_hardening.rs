@@ -519,6 +519,40 @@ fn ingest_master_and_fit_refuse_an_isotherm_at_1e9_c_naming_file_line_and_column
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Issue 15, plausibility: one storage modulus 1000× too high in the middle of the 20 °C isotherm
+/// breaks the Prony fit (out of its bounds, exit 3). The data check names file, line, column and
+/// value with the 10³ suggestion, and the fit names the same line and value as the point that breaks
+/// it, in the datasheet. Line: header 1, 12 rows at 0 °C (2–13), the 20 °C row k = 6 is line 20.
+#[test]
+fn a_single_far_off_point_names_its_file_line_and_value() {
+    let dir = temp_dir("one-off-in");
+    let out = temp_dir("one-off-out");
+    let csv = rubber_csv(&[0.0, 20.0, 40.0], 12);
+    let mut lines: Vec<String> = csv.lines().map(String::from).collect();
+    let cells: Vec<&str> = lines[19].split(',').collect();
+    assert_eq!(cells[0], "20");
+    let e1: f64 = cells[2].parse().unwrap();
+    let bad = format!("{},{},{:.6e},{}", cells[0], cells[1], e1 * 1e3, cells[3]);
+    lines[19] = bad;
+    std::fs::write(dir.join("bad.csv"), lines.join("\n") + "\n").unwrap();
+    let o = run(&dir, &out, &[]);
+    assert_eq!(o.status.code(), Some(3), "{}", text(&o.stderr));
+    let sheet = std::fs::read_to_string(out.join("reports/bad/datasheet.html")).unwrap();
+    let value = format!("{:.4e} Pa", e1 * 1e3);
+    assert!(
+        sheet.contains(&format!("line 20: column `E'`: storage modulus {value}"))
+            && sheet.contains("about 10^3 times too high"),
+        "the data check"
+    );
+    assert!(
+        sheet.contains(&format!("bad.csv: line 20: storage modulus {value}"))
+            && sheet.contains("this one point breaks the fit"),
+        "the fit"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 /// Peak resident memory of this process in MB (Linux `VmHWM`; NaN elsewhere).
 fn peak_rss_mb() -> f64 {
     std::fs::read_to_string("/proc/self/status")

@@ -2,6 +2,8 @@
 mod auto_vs_richardson;
 mod bands_calibration;
 mod bands_cli;
+mod cards_vendor;
+mod cli_habits;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;

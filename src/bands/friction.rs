@@ -52,7 +52,7 @@ pub fn scene_ratios(
     };
     let scene = Scene {
         body: crate::contact::Body::HalfSpace,
-        ..scene.clone()
+        ..*scene
     };
     let cs = band_contact_settings(settings);
     let law = &fit.shift_law;

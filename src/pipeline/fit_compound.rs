@@ -190,7 +190,92 @@ pub fn fit_master_curve(
         flags: master.quality.flags.clone(),
         warnings: master.warnings.clone(),
     });
+    if fit.quality.iter().any(|q| q.flagged) {
+        if let (Some(w), Some(tts)) = (
+            worst_point(measurement, master, &fit.relaxation),
+            fit.tts.as_mut(),
+        ) {
+            tts.warnings.push(w);
+        }
+    }
     Ok(fit)
+}
+
+/// A single point far off the fitted curve is reported when it is this many times the RMS log10
+/// error of all other points and at least `WORST_POINT_MIN_LOG10` off: one such point is what turns a
+/// good fit into one out of its quality bounds.
+const WORST_POINT_RATIO: f64 = 10.0;
+/// See [`WORST_POINT_RATIO`]: 0.3 decade is the data checks' outlier threshold (a factor 2).
+const WORST_POINT_MIN_LOG10: f64 = 0.3;
+
+/// When the fit is out of its bounds because of one point: that point's file, line, value and how
+/// far off the fitted curve it is, with a suggestion (issue 15: a single far-off point names itself).
+/// The master point is traced back to the measured point of its isotherm nearest in (log f, log E′,
+/// log E″) after undoing the shifts.
+fn worst_point(
+    measurement: &crate::Measurement,
+    master: &crate::tts::MasterCurve,
+    spectrum: &crate::prony::RelaxationSpectrum,
+) -> Option<String> {
+    let errs: Vec<(f64, f64)> = master
+        .points
+        .iter()
+        .map(|p| {
+            let (e1, e2) = crate::prony::kernel::dynamic_moduli_pa(
+                spectrum,
+                2.0 * std::f64::consts::PI * p.reduced_freq_hz,
+            );
+            ((p.storage_pa / e1).log10(), (p.loss_pa / e2).log10())
+        })
+        .collect();
+    let (k, loss) = errs
+        .iter()
+        .enumerate()
+        .flat_map(|(k, e)| [(k, false, e.0), (k, true, e.1)])
+        .filter(|e| e.2.is_finite())
+        .max_by(|a, b| a.2.abs().total_cmp(&b.2.abs()))
+        .map(|(k, loss, _)| (k, loss))?;
+    let off = if loss { errs[k].1 } else { errs[k].0 };
+    let others: Vec<f64> = errs
+        .iter()
+        .enumerate()
+        .filter(|(j, _)| *j != k)
+        .map(|(_, e)| if loss { e.1 } else { e.0 })
+        .collect();
+    let rms = (others.iter().map(|e| e * e).sum::<f64>() / others.len().max(1) as f64).sqrt();
+    if !(off.abs() >= WORST_POINT_MIN_LOG10 && off.abs() >= WORST_POINT_RATIO * rms) {
+        return None;
+    }
+    let mp = &master.points[k];
+    let shift = master.isotherms.get(mp.isotherm)?;
+    let iso = measurement.isotherms.get(shift.measurement_index)?;
+    let file = measurement
+        .sources
+        .get(iso.source)
+        .map_or("", |s| s.path.as_str());
+    let dist = |p: &crate::dma::DataPoint| {
+        (p.freq_hz.log10() + shift.log10_a_t - mp.reduced_freq_hz.log10()).abs()
+            + (p.storage_pa.log10() - shift.log10_b_t - mp.storage_pa.log10()).abs()
+            + (p.loss_pa.log10() - shift.log10_b_t - mp.loss_pa.log10()).abs()
+    };
+    let p = iso
+        .points
+        .iter()
+        .filter(|p| dist(p).is_finite())
+        .min_by(|a, b| dist(a).total_cmp(&dist(b)))?;
+    let (what, value) = if loss {
+        ("loss modulus", p.loss_pa)
+    } else {
+        ("storage modulus", p.storage_pa)
+    };
+    let place = match &iso.sheet {
+        Some(sheet) => format!("{file}: sheet `{sheet}` row {}", p.line),
+        None => format!("{file}: line {}", p.line),
+    };
+    Some(format!(
+        "{place}: {what} {value:.4e} Pa at {:.4e} Hz, {} °C, is {off:.2} decades off the fitted curve while the other points are within {rms:.3} decade RMS: this one point breaks the fit. Check that cell (a typo or a slipped exponent?), or remove the row",
+        p.freq_hz, iso.temp_nominal_c
+    ))
 }
 
 /// Outcome of [`fit_or_reuse`].

@@ -47,7 +47,7 @@ impl TanDeltaProxy {
             tan_delta: super::datasheet::tan_delta_at(fit, PROXY_TEMP_C, PROXY_FREQ_HZ),
             extrapolated: fit
                 .measured_range_c()
-                .is_none_or(|(a, b)| !(a..=b).contains(&PROXY_TEMP_C)),
+                .map_or(true, |(a, b)| !(a..=b).contains(&PROXY_TEMP_C)),
         }
     }
 }
