@@ -210,11 +210,85 @@ fn fit_export_fit_round_trip_and_the_ansys_fit_beside_ours() {
          {ours2:.4}; ANSYS 2020 R1 card 27 terms E' {an1:.4}, E'' {an2:.4}",
         a.relaxation.terms.len()
     );
-    // Measured: ours 0.097 / 0.066 (the default dense fit, residuals relative to each modulus);
-    // ANSYS 0.030 / 0.39. Ours is the better fit of E″ by a factor of ~6, ANSYS's of E′ by ~3:
-    // the bounds sit ~15 % above our figures, and the comparison is asserted as it stands.
+    // Measured: ours 0.097 / 0.066 (the default dense fit, E′ and E″ weighted alike); ANSYS 0.010 /
+    // 0.38. Ours is the better fit of E″ by ~6×, ANSYS's of E′ by ~9×: this curve's low end is not
+    // Kramers–Kronig consistent (E′ flat at 89–98 MPa over four decades while tan δ ≈ 0.12), so a
+    // Prony series cannot follow both, and each fit chose a side. Bounds ~15 % above our figures.
     assert!(ours1 < 0.11 && ours2 < 0.076, "{ours1} {ours2}");
     assert!(ours2 < an2 / 3.0, "E'': ours {ours2}, ANSYS {an2}");
     // The fit file's own figures are the same numbers.
     assert!((a.prony_info.rms_log10_storage - ours1).abs() < 1e-6);
+}
+
+#[test]
+fn run_takes_a_pyvisco_master_curve_listed_in_compounds_toml() {
+    let dir = scratch("run");
+    let (mc, sf) = (
+        data("freq_user_master.csv"),
+        data("freq_user_master__shift_factors.csv"),
+    );
+    std::fs::write(
+        dir.join("compounds.toml"),
+        format!(
+            "[[compound]]\nname = \"ems-ca-pyvisco\"\nfiles = [{:?}]\nshift_factors = {:?}\n",
+            mc.to_str().unwrap(),
+            sf.to_str().unwrap()
+        ),
+    )
+    .unwrap();
+    let scenes = dir.join("scenes.toml");
+    std::fs::write(
+        &scenes,
+        "[[scene]]\nname = \"roll\"\nroll_radius_mm = 100.0\nload_n_per_m = 2000.0\n\
+         speed_m_s = 1.0\ntemps_c = [-5.0, 25.0]\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+        .args([
+            "run",
+            dir.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--scenes",
+            scenes.to_str().unwrap(),
+            "--allow-extrapolation",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    // 0, or 3 when a quality bound flags the fit: either way the compound was fitted and rolled.
+    assert!(matches!(o.status.code(), Some(0) | Some(3)), "{err}");
+    let fit =
+        viscoroll::pipeline::CompoundFit::read(&out.join("fits/ems-ca-pyvisco.json")).unwrap();
+    assert_eq!(fit.master_curve.len(), 206);
+    assert_eq!(fit.shift_law.t_ref_c(), -5.0);
+    let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();
+    assert!(ranking.contains("ems-ca-pyvisco"), "{ranking}");
+}
+
+#[test]
+fn master_reads_the_pyvisco_pair_as_a_master_curve() {
+    let (mc, sf) = (
+        data("freq_user_master.csv"),
+        data("freq_user_master__shift_factors.csv"),
+    );
+    let o = viscoroll(&[
+        "master",
+        "--master-curve",
+        mc.to_str().unwrap(),
+        "--shift-factors",
+        sf.to_str().unwrap(),
+        "--json",
+    ]);
+    let m: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(m["points"].as_array().unwrap().len(), 206);
+    assert_eq!(m["t_ref_c"], -5.0);
+    assert_eq!(m["shift_law"]["points"].as_array().unwrap().len(), 21);
+    // A measurement and a master curve at once is a usage error.
+    let both = Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+        .args(["master", "m.json", "--master-curve", mc.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(both.status.code(), Some(2));
 }

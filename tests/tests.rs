@@ -2,6 +2,8 @@
 mod auto_vs_richardson;
 mod bands_calibration;
 mod bands_cli;
+mod cards_vendor;
+mod cli_habits;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;
@@ -35,6 +37,7 @@ mod prony_ems_ca;
 mod prony_terms;
 mod pyvisco_interop;
 mod reference;
+mod report_browser;
 mod report_plots;
 mod seed;
 mod special_functions;

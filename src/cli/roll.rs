@@ -98,6 +98,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             bail!("{name} must be finite and > 0, got {v}");
         }
     }
+    super::spectrum_input::refuse_fluid_or_relaxation(&args.spectrum)?;
     let source = CreepSource::read(&args.spectrum)
         .with_context(|| format!("cannot read spectrum file {}", args.spectrum.display()))?;
     match (&source, args.temp_c) {

@@ -22,6 +22,15 @@
 //! tref_c = 20.0                   # reference temperature of the master curve
 //! prony = { terms_per_decade = 1.5 }   # keys of the Prony settings (fit file `settings.prony`)
 //! ```
+//!
+//! A master curve already shifted, in pyvisco's CSV layout, is one compound too: `files` is the
+//! master-curve CSV alone and `shift_factors` its shift-factor CSV (crate::dma::pyvisco):
+//! ```toml
+//! [[compound]]
+//! name = "ems-ca-pyvisco"
+//! files = ["pyvisco-ems-ca/freq_user_master.csv"]
+//! shift_factors = "pyvisco-ems-ca/freq_user_master__shift_factors.csv"
+//! ```
 
 use super::error::{io, PipelineError};
 use crate::dma::IngestOptions;
@@ -50,6 +59,8 @@ pub struct CompoundSettings {
     pub tref_c: Option<f64>,
     /// Prony settings.
     pub prony: Option<PronySettings>,
+    /// pyvisco's shift-factor CSV of a master curve given as the compound's one file.
+    pub shift_factors: Option<PathBuf>,
 }
 
 #[derive(Deserialize)]
@@ -79,6 +90,8 @@ struct ListedCompound {
     tref_c: Option<f64>,
     #[serde(default)]
     prony: Option<toml::Table>,
+    #[serde(default)]
+    shift_factors: Option<String>,
     #[serde(default)]
     columns: Option<ColumnsSetting>,
 }
@@ -196,6 +209,7 @@ impl ListedCompound {
             ingest: any.then_some(o),
             tref_c: self.tref_c,
             prony,
+            shift_factors: None,
         })
     }
 }
@@ -332,10 +346,23 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 }
                 files.extend(got);
             }
-            let settings = c.settings().map_err(|message| PipelineError::Config {
+            let mut settings = c.settings().map_err(|message| PipelineError::Config {
                 path: listing.clone(),
                 message: format!("compound {:?}: {message}", c.name),
             })?;
+            if let Some(sf) = &c.shift_factors {
+                if files.len() != 1 {
+                    return Err(PipelineError::Config {
+                        path: listing.clone(),
+                        message: format!(
+                            "compound {:?}: with shift_factors, `files` must name the one master-curve CSV ({} files found)",
+                            c.name,
+                            files.len()
+                        ),
+                    });
+                }
+                settings.shift_factors = Some(dir.join(sf));
+            }
             out.push(CompoundInput {
                 name: c.name,
                 files,

@@ -9,11 +9,11 @@
 
 use super::compounds::{discover, CompoundInput};
 use super::error::{io, PipelineError};
-use super::fit_compound::{fit_or_reuse_with_bands, FitAction, FitOptions};
+use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitAction, FitOptions};
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::bands::BandSettings;
 use crate::dma::read_files;
-use crate::report::{index_html, ranking_csv, write_file, write_report};
+use crate::report::{ranking_csv, write_file, write_index, write_report, TanDeltaProxy};
 use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
 use crate::Measurement;
 use rayon::prelude::*;
@@ -170,24 +170,75 @@ fn one_compound(
     opts: &RunOptions,
     step: &dyn Fn(&str),
 ) -> Result<CompoundResult, PipelineError> {
-    let measurement = checked_measurement(c)?;
-    let (fit, action, no_bands) = fit_or_reuse_with_bands(
-        &c.name,
-        &measurement,
-        &fit_path(&opts.out_dir, &c.name),
-        &fit_options(c, opts),
-        opts.force,
-        opts.bands.as_ref(),
-    )?;
+    let (measurement, fit, action, no_bands) = match &c.settings.shift_factors {
+        None => {
+            let measurement = checked_measurement(c)?;
+            let (fit, action, no_bands) = fit_or_reuse_with_bands(
+                &c.name,
+                &measurement,
+                &fit_path(&opts.out_dir, &c.name),
+                &fit_options(c, opts),
+                opts.force,
+                opts.bands.as_ref(),
+            )?;
+            (measurement, fit, action, no_bands)
+        }
+        Some(sf) => {
+            // A master curve read already shifted (pyvisco's CSV pair).
+            let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
+            let pv =
+                crate::dma::pyvisco::read_master_pair(&c.files[0], sf, poisson, c.settings.tref_c)?;
+            let mut measurement = pv.measurement;
+            crate::dma::plausible::refuse_impossible(&measurement).map_err(|message| {
+                PipelineError::Implausible {
+                    compound: c.name.clone(),
+                    message: cap_line(&message),
+                }
+            })?;
+            let w = crate::dma::plausible::warnings(&measurement);
+            measurement.warnings.extend(w);
+            let master = crate::tts::master_curve_from_reduced(&measurement, &pv.shift_law)?;
+            let mut options = fit_options(c, opts);
+            options.master = master.settings.clone();
+            let (fit, action) = fit_or_reuse_master(
+                &c.name,
+                &measurement,
+                &master,
+                &fit_path(&opts.out_dir, &c.name),
+                &options,
+                opts.force,
+            )?;
+            // The bands resample isotherms; a master curve read already shifted has none.
+            let no_bands = opts.bands.as_ref().map(|_| {
+                "uncertainty bands not computed: a master curve read already shifted has no \
+                 isotherms to resample"
+                    .to_string()
+            });
+            (measurement, fit, action, no_bands)
+        }
+    };
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
     let mut maps = Vec::new();
     let mut ratios = Vec::new();
+    // (scene, its temperatures) → the friction ratios of each replicate, shared by twin scenes.
+    type SolvedRatios = ((crate::contact::Scene, Vec<f64>), Vec<Vec<f64>>);
+    let mut solved: Vec<SolvedRatios> = Vec::new();
     for spec in &opts.scenes.scene {
         let mut points = friction_vs_temperature(&fit, spec, &settings)?;
         if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
-            let r = crate::bands::scene_ratios(&fit, ensemble, &spec.scene(), &spec.temps_c, bs);
+            // The ratios are solved on the scene's half-space: a covered scene and its half-space
+            // twin (the shipped conveyor-idler pair) share them.
+            let key = (spec.scene(), spec.temps_c.clone());
+            let r = match solved.iter().find(|(k, _)| *k == key) {
+                Some((_, r)) => r.clone(),
+                None => {
+                    let r = crate::bands::scene_ratios(&fit, ensemble, &key.0, &key.1, bs);
+                    solved.push((key, r.clone()));
+                    r
+                }
+            };
             for (p, r) in points.iter_mut().zip(&r) {
                 if p.error.is_none() {
                     p.band = crate::bands::band_of(p.friction, r);
@@ -316,6 +367,11 @@ fn outcome(
             let untrusted = fit.untrusted_reasons();
             let mut warnings = compound_warnings(&fit, &friction);
             warnings.extend(no_bands);
+            if opts.bands.is_some() {
+                if let Some(e) = &fit.bands {
+                    warnings.extend(e.notes.iter().map(|n| format!("uncertainty bands: {n}")));
+                }
+            }
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
@@ -436,7 +492,7 @@ pub fn run_all_with_progress(
     }
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
-    let outcomes: Vec<CompoundOutcome> = compounds
+    let (outcomes, proxies): (Vec<CompoundOutcome>, Vec<Option<TanDeltaProxy>>) = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();
@@ -452,11 +508,13 @@ pub fn run_all_with_progress(
             for _ in done.get()..per {
                 step("skipped");
             }
+            let proxy = r.as_ref().ok().map(|(fit, ..)| TanDeltaProxy::of(fit));
             let out = outcome(c, opts, r, start.elapsed().as_secs_f64());
             log(&log_line(&out));
-            out
+            (out, proxy)
         })
-        .collect();
+        .unzip();
+    let proxies: Vec<TanDeltaProxy> = proxies.into_iter().flatten().collect();
     let mut outcomes = outcomes;
     let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
@@ -467,18 +525,17 @@ pub fn run_all_with_progress(
         &ranking_path,
         ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
     )?;
-    write_file(
-        &index_path,
-        index_html(&outcomes, &opts.scenes, &notes, opts.allow_extrapolation).as_bytes(),
-    )?;
-    Ok(RunSummary {
+    // the index reads the whole summary (comparisons included), so it is written last
+    let summary = RunSummary {
         compounds: outcomes,
         notes,
         allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
         comparisons,
-    })
+    };
+    write_index(&reports, &summary, &opts.scenes, &proxies)?;
+    Ok(summary)
 }
 
 /// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,

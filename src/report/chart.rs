@@ -50,12 +50,13 @@ impl Ranged for Ticked {
     }
 }
 
-/// Tick labels, in SVG units (900 px wide plots shown ≥ 660 px wide: ≥ 12 px on screen).
-pub const TICK_PX: u32 = 18;
+/// Tick labels, in plotters font units (the SVG backend writes 0.806 of it: 17.7 SVG px, ≥ 12 px on
+/// screen for a 900 px plot shown ≥ 620 px wide, as in the two-column layout at 1400 px).
+pub const TICK_PX: u32 = 22;
 /// Axis titles and legend text.
-pub const LABEL_PX: u32 = 19;
+pub const LABEL_PX: u32 = 22;
 /// Chart titles.
-pub const TITLE_PX: u32 = 23;
+pub const TITLE_PX: u32 = 26;
 
 /// How a curve is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -252,11 +253,11 @@ fn e<E: std::fmt::Display>(err: E) -> String {
 }
 
 /// Width of the legend panel (px).
-const LEGEND_W: u32 = 215;
+const LEGEND_W: u32 = 225;
 /// Width of the colour-bar panel (px).
 const BAR_W: u32 = 120;
 /// Characters per legend line before wrapping.
-const LEGEND_CHARS: usize = 19;
+const LEGEND_CHARS: usize = 18;
 
 /// A legend entry broken into lines of at most [`LEGEND_CHARS`] characters (at spaces where
 /// possible), at most three lines, the last cut with `…`.

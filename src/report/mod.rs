@@ -6,6 +6,7 @@
 //! [`crate::fsutil`]). CSV goes through the csv crate ([`csv_text`]). Imports only downward
 //! (results and the stages); the pipeline calls it.
 
+pub mod card_shift;
 pub mod cards;
 pub mod chart;
 pub mod csv_text;
@@ -19,5 +20,5 @@ pub mod ticks;
 
 pub use datasheet::write_report;
 pub use error::{write_file, ReportError};
-pub use index::index_html;
+pub use index::{index_html, write_index, TanDeltaProxy};
 pub use ranking::{ranked, ranking_csv};
