@@ -11,11 +11,13 @@
 
 use std::time::Instant;
 use viscoroll::contact::body::layer::{
-    layer_at_load, winkler_at_load, LayerSettings, WinklerColumns,
+    collocation, layer_at_load, winkler_at_load, LayerKernel, LayerSettings, WinklerColumns,
 };
+use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
 use viscoroll::contact::load::LoadSettings;
-use viscoroll::contact::CreepTerm;
+use viscoroll::contact::{Body, CreepTerm, Scene};
+use viscoroll::CreepSpectrum;
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
     if n == 1 {
@@ -54,7 +56,84 @@ fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
 }
 
+/// Where the time of one layer solve at given λ goes (kernel table: half-space part and Fourier
+/// correction; the dense LU), for the two spectra at h = λ.
+fn profile() {
+    println!(
+        "| spectrum | n | half-space hat averages | correction hat averages | solve at λ (all) |"
+    );
+    println!("|---|---|---|---|---|");
+    for (name, terms) in [
+        ("1 term f=10 b=1", spectrum(1, 0.0, 0.0)),
+        ("30 terms, 24 decades, J∞/J_g=1e3", spectrum(30, 24.0, 1e3)),
+    ] {
+        let k = LayerKernel::new(&terms, 1.0, 0.5).unwrap();
+        for n in [64usize, 256, 1024] {
+            let d = 1.0 / n as f64;
+            let (_, t_hs) = time_it(|| k.half_space().hat_averages(n, d));
+            let (_, t_c) = time_it(|| k.correction_hat_averages(n, d));
+            let (_, t_s) = time_it(|| collocation::solve_at_lambda(&k, 1.0, n).unwrap());
+            println!(
+                "| {name} | {n} | {} | {} | {} |",
+                ms(t_hs),
+                ms(t_c),
+                ms(t_s)
+            );
+        }
+    }
+    println!();
+}
+
+/// What a covered friction map costs today (issue 14 item 5 / #14 leftover 3): the covered maps are
+/// solved point by point (`roll_cover`, auto, the main job's tol 1e−3), so a 30 speeds × 30 loads ×
+/// 10 temperatures map is 9000 such points. Temperatures only rescale time (time–temperature
+/// superposition), so the 300 speed–temperature pairs are sampled as reduced speeds log-uniform over
+/// 9 decades; loads over 2 decades; example spectrum at its reference state, R = 66.5 mm, 5 mm
+/// cover, ν = ½. Prints the mean time per point over a 6 × 6 sample and the extrapolation to 9000
+/// points on 2 cores.
+fn covered_map_timing() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/data/spectra/example_creep.json"
+    ))
+    .unwrap();
+    let spec: CreepSpectrum = serde_json::from_str(&text).unwrap();
+    let mut total = 0.0;
+    let mut count = 0usize;
+    let mut models = std::collections::BTreeMap::new();
+    for i in 0..6 {
+        let speed = 10f64.powf(-6.0 + 9.0 * i as f64 / 5.0);
+        for j in 0..6 {
+            let load = 10f64.powf(3.0 + 2.0 * j as f64 / 5.0);
+            let scene = Scene {
+                radius_m: 0.0665,
+                load_n_per_m: load,
+                speed_m_s: speed,
+                poisson: None,
+                body: Body::HalfSpace,
+            };
+            let t0 = Instant::now();
+            let r = roll_cover(&scene, &spec, Some(5e-3), ModelChoice::Auto, 1e-3).unwrap();
+            total += t0.elapsed().as_secs_f64();
+            count += 1;
+            *models.entry(r.model.name()).or_insert(0usize) += 1;
+        }
+    }
+    let per = total / count as f64;
+    println!(
+        "covered map, point by point: {} per point (bodies {models:?}); 9000 points on 2 cores ≈ {:.0} s (goal 3 s)",
+        ms(per),
+        per * 9000.0 / 2.0
+    );
+    println!();
+}
+
 fn main() {
+    profile();
+    covered_map_timing();
+    if std::env::args().any(|a| a == "--profile-only") {
+        return;
+    }
     let load = 0.25;
     println!("| spectrum | h/λ_HS | ν | body | tol | time/load point | n | error ρF/N | error λ | estimate |");
     println!("|---|---|---|---|---|---|---|---|---|---|");

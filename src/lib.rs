@@ -56,6 +56,7 @@ pub mod fsutil;
 pub mod material;
 pub mod special;
 
+pub mod bands;
 pub mod contact;
 pub mod creep;
 pub mod dma;

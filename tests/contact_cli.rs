@@ -261,3 +261,141 @@ fn contact_exact_scheme() {
         "one creep term",
     );
 }
+
+#[test]
+fn contact_cover_is_the_dimensionless_roll_cover() {
+    // `contact --cover H′` is `roll --cover-mm H` in the units of V·T: the same creep terms, load and
+    // h′ = H/(V·T) must give the same λ, β and ρF/N (the same computation; 1e−9 allows for the last
+    // digits of V·T recovered from the JSON).
+    let spectrum = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/data/spectra/example_creep.json"
+    );
+    let r = json(&run(&[
+        "roll",
+        spectrum,
+        "--radius-mm",
+        "66.5",
+        "--load-n-per-m",
+        "10000",
+        "--speed-m-s",
+        "4",
+        "--cover-mm",
+        "5",
+        "--model",
+        "layer",
+        "--tol",
+        "1e-3",
+        "--json",
+    ]));
+    let creep: Vec<String> = r["creep"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|t| format!("{}:{}", num(t, "f"), num(t, "b")))
+        .collect();
+    let vt_mm = num(&r, "contact_length_mm") / num(&r, "lambda");
+    let h = format!("{}", 5.0 / vt_mm);
+    let load = format!("{}", num(&r, "load"));
+    let c = json(&run(&[
+        "contact",
+        "--creep",
+        &creep.join(","),
+        "--load",
+        &load,
+        "--cover",
+        &h,
+        "--model",
+        "layer",
+        "--tol",
+        "1e-3",
+        "--rho",
+        &format!("{}", num(&r, "rho")),
+        "--json",
+    ]));
+    for key in [
+        "lambda",
+        "beta",
+        "friction_rho",
+        "error_estimate",
+        "cover_over_contact",
+    ] {
+        let (a, b) = (num(&c, key), num(&r, key));
+        assert!(
+            (a - b).abs() <= 1e-9 * b.abs(),
+            "{key}: contact {a} vs roll {b}"
+        );
+    }
+    assert!((num(&c, "friction") - num(&r, "friction")).abs() <= 1e-9 * num(&r, "friction"));
+    for key in [
+        "model",
+        "model_reason",
+        "model_error_estimate",
+        "min_pressure_ratio",
+        "min_gap_ratio",
+        "warnings",
+        "poisson",
+        "tol",
+    ] {
+        assert!(
+            !c[key].is_null() || key == "model_error_estimate",
+            "{key} missing: {c}"
+        );
+    }
+    assert_eq!(c["model"], "layer");
+}
+
+#[test]
+fn contact_cover_auto_chooses_by_the_criterion() {
+    // A cover 1e4 times the contact length: auto takes the half-space (estimated difference
+    // 3(λ/h)² ≈ 1e−8 ≤ tol) and its answer is the half-space's without a cover, to rounding.
+    let hs = json(&run(&[
+        "contact", "--creep", "10:1", "--load", "0.25", "--scheme", "auto", "--tol", "1e-6",
+        "--json",
+    ]));
+    let thick = json(&run(&[
+        "contact", "--creep", "10:1", "--load", "0.25", "--cover", "1e4", "--tol", "1e-6", "--json",
+    ]));
+    assert_eq!(thick["model"], "half-space");
+    assert!(num(&thick, "model_error_estimate") <= 1e-6);
+    assert_eq!(num(&thick, "friction_rho"), num(&hs, "friction_rho"));
+    // A thin compressible cover (h′ = 1e−3, ν = 0.3): the constrained Winkler foundation; at a
+    // cover of 0.3 the layer, without a model error.
+    let thin = json(&run(&[
+        "contact",
+        "--creep",
+        "10:1",
+        "--load",
+        "0.25",
+        "--cover",
+        "1e-3",
+        "--poisson",
+        "0.3",
+        "--tol",
+        "1e-2",
+        "--json",
+    ]));
+    assert_eq!(thin["model"], "winkler-constrained");
+    assert!(num(&thin, "model_error_estimate") <= 1e-2);
+    let mid = json(&run(&[
+        "contact", "--creep", "10:1", "--lambda", "1", "--cover", "0.3", "--n", "64", "--json",
+    ]));
+    assert_eq!(mid["model"], "layer");
+    assert!(mid["model_error_estimate"].is_null());
+    assert!(num(&mid, "error_estimate") > 0.0 && num(&mid, "error_estimate") < 0.05);
+}
+
+#[test]
+fn contact_cover_bad_arguments() {
+    let base = ["contact", "--creep", "10:1", "--load", "0.25"];
+    let with = |extra: &[&'static str]| {
+        let mut a = base.to_vec();
+        a.extend_from_slice(extra);
+        a
+    };
+    one_line_error(&with(&["--model", "layer"]), "--cover");
+    one_line_error(&with(&["--cover", "0"]), "--cover");
+    one_line_error(&with(&["--cover", "-1"]), "--cover");
+    one_line_error(&with(&["--cover", "1", "--poisson", "0.7"]), "--poisson");
+    one_line_error(&with(&["--cover", "1", "--model", "plate"]), "--model");
+}

@@ -15,6 +15,17 @@ fn scratch() -> PathBuf {
     d
 }
 
+/// A folder of one test's own (tests run in parallel in one process: `scratch` is the first test's).
+fn own_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!(
+        "viscoroll-fit-exports-{tag}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
 fn viscoroll(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_viscoroll"))
         .args(args)
@@ -85,4 +96,110 @@ fn cards_and_creep_from_a_fit_file() {
     assert!(c.terms.len() < LSDYNA_MAX_TERMS, "{card}");
     assert!(card.contains("Prony terms for LS-DYNA"), "{card}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_wlf_that_holds_over_part_of_the_shifts_goes_into_the_card_with_its_range() {
+    let dir = own_dir("range");
+    // Shifts: exact WLF (C1 = 8.86, C2 = 101.6 K at 20 °C) from −10 to 60 °C, and below −10 °C a
+    // glassy straight line of 0.05 decade/K. WLF over all of them misses (or degenerates); over
+    // −10…60 °C it is exact.
+    let wlf = ShiftLaw::Wlf {
+        t_ref_c: 20.0,
+        c1: 8.86,
+        c2_k: 101.6,
+    };
+    let temps: Vec<f64> = (0..12).map(|i| -50.0 + 10.0 * i as f64).collect();
+    let points: Vec<(f64, f64)> = temps
+        .iter()
+        .map(|&t| {
+            let a = if t >= -10.0 {
+                wlf.log10_a_t(t)
+            } else {
+                wlf.log10_a_t(-10.0) + 0.05 * (-10.0 - t)
+            };
+            (t, a)
+        })
+        .collect();
+    let law = ShiftLaw::Table {
+        t_ref_c: 20.0,
+        points,
+    };
+    let m = synthetic_measurement(&broad_spectrum(), &SyntheticSettings::new(temps, law));
+    let mpath = dir.join("m.json");
+    std::fs::write(&mpath, serde_json::to_string(&m).unwrap()).unwrap();
+    let fit = dir.join("kinked.json");
+    let (m_s, f_s) = (mpath.to_str().unwrap(), fit.to_str().unwrap());
+    let o = viscoroll(&["fit", m_s, "-o", f_s, "--tref", "20"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = viscoroll(&["export", f_s, "--to", "abaqus"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let card = String::from_utf8(o.stdout).unwrap();
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    // The warning is in the card and on stderr, with the range; the law is near the true one.
+    let note = card
+        .lines()
+        .find(|l| l.contains("fitted over"))
+        .unwrap_or_else(|| panic!("{card}"));
+    assert!(note.contains("only, where it holds") && stderr.contains("fitted over"));
+    assert!(note.contains("to 60.00 degC"), "{note}");
+    let c = viscoroll::report::cards::read_abaqus(&card).unwrap();
+    let Some(ShiftLaw::Wlf { t_ref_c, c1, c2_k }) = c.shift else {
+        panic!("no WLF in {card}")
+    };
+    // Shifts found by the master-curve stage from exact data: within a few 0.01 decade of the
+    // law, so C1 and C2 come back within ~10 % (a degenerate law is off by 100×).
+    assert!((t_ref_c - 20.0).abs() < 1e-9);
+    assert!(
+        (c1 / 8.86 - 1.0).abs() < 0.15 && (c2_k / 101.6 - 1.0).abs() < 0.15,
+        "{c1} {c2_k}"
+    );
+}
+
+#[test]
+fn roll_refuses_a_fluid_and_a_relaxation_spectrum_with_the_reason() {
+    let dir = own_dir("fluid");
+    let melt = serde_json::json!({
+        "kind": "shear", "poisson": 0.5, "modulus_inf_pa": 0.0,
+        "terms": [{"modulus_pa": 1e5, "tau_s": 0.1}, {"modulus_pa": 1e4, "tau_s": 10.0}]
+    });
+    let solid = serde_json::json!({
+        "kind": "shear", "poisson": 0.5, "modulus_inf_pa": 1e5,
+        "terms": [{"modulus_pa": 1e5, "tau_s": 0.1}]
+    });
+    // A fit file whose relaxation has no equilibrium modulus (the reader is not reached).
+    let fit = serde_json::json!({"format_version": 1, "relaxation": melt.clone()});
+    let args = |p: &std::path::Path| {
+        vec![
+            "roll".to_string(),
+            p.display().to_string(),
+            "--radius-mm".into(),
+            "100".into(),
+            "--load-n-per-m".into(),
+            "2000".into(),
+            "--speed-m-s".into(),
+            "1".into(),
+        ]
+    };
+    for (name, v, want) in [
+        ("melt.json", &melt, "no steady state"),
+        ("fit.json", &fit, "no steady state"),
+        ("solid.json", &solid, "convert it first"),
+    ] {
+        let p = dir.join(name);
+        std::fs::write(&p, v.to_string()).unwrap();
+        let a = args(&p);
+        let a: Vec<&str> = a.iter().map(String::as_str).collect();
+        let o = viscoroll(&a);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{name}: {err}");
+        assert!(err.contains(want), "{name}: {err}");
+        assert_eq!(err.lines().count(), 1, "{name}: one line: {err}");
+    }
+    // η₀ = Σ Gᵢτᵢ = 1e5·0.1 + 1e4·10 = 1.1e5 Pa·s, stated in the refusal.
+    let p = dir.join("melt.json");
+    let a = args(&p);
+    let a: Vec<&str> = a.iter().map(String::as_str).collect();
+    let err = String::from_utf8(viscoroll(&a).stderr).unwrap();
+    assert!(err.contains("1.100e5 Pa·s"), "{err}");
 }

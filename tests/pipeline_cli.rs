@@ -60,48 +60,6 @@ fn hertz_length_mm(radius_mm: f64, load_n_per_m: f64, e_pa: f64, nu: f64) -> f64
     2.0 * a2.sqrt() * 1e3
 }
 
-/// Screenshot `html` with headless Chromium if /usr/bin/chromium exists (None otherwise); waits at
-/// most 60 s.
-fn chromium_screenshot(html: &Path, out: &Path) -> Option<PathBuf> {
-    let exe = Path::new("/usr/bin/chromium");
-    if !exe.is_file() {
-        return None;
-    }
-    let png = out.join("datasheet-screenshot.png");
-    let profile = out.join("chromium-profile");
-    let mut child = Command::new(exe)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            "--window-size=1280,4000",
-        ])
-        .arg(format!("--user-data-dir={}", profile.display()))
-        .arg(format!("--screenshot={}", png.display()))
-        .arg(format!("file://{}", html.canonicalize().unwrap().display()))
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .spawn()
-        .ok()?;
-    for _ in 0..600 {
-        if child.try_wait().unwrap().is_some() {
-            break;
-        }
-        std::thread::sleep(std::time::Duration::from_millis(100));
-    }
-    if child.try_wait().unwrap().is_none() {
-        let _ = child.kill();
-        panic!("chromium did not finish the screenshot in 60 s");
-    }
-    assert!(png.is_file(), "chromium made no screenshot");
-    Some(png)
-}
-
 #[test]
 fn run_on_shipped_data_then_rank_roll_and_reuse() {
     let out = temp_dir("main");
@@ -270,20 +228,9 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
             );
         }
     }
-    // In a real browser (only where Chromium is installed; CI does not need it): the EMS-CA
-    // datasheet renders to a screenshot of the requested width.
-    if let Some(png) = chromium_screenshot(&out.join("reports/ems-ca/datasheet.html"), &out) {
-        let bytes = std::fs::read(&png).unwrap();
-        assert!(
-            bytes.len() > 24 && bytes[..8] == *b"\x89PNG\r\n\x1a\n",
-            "screenshot"
-        );
-        assert_eq!(u32::from_be_bytes(bytes[16..20].try_into().unwrap()), 1280);
-        eprintln!(
-            "chromium screenshot of the datasheet: {} bytes",
-            bytes.len()
-        );
-    }
+    // In a real browser (only where Chromium is installed; CI does not need it): screenshots of
+    // the EMS-CA datasheet and the index, no console message, the first screen in the DOM.
+    crate::report_browser::check_pages(&out, "ems-ca");
     // The ranking lists every compound once per scene, in increasing mean friction.
     let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();
     for s in scenes {

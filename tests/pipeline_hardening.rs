@@ -171,6 +171,70 @@ fn names_are_sanitised_so_nothing_is_written_outside_the_output_folder() {
     let _ = std::fs::remove_dir_all(&base);
 }
 
+/// Issue 15, per-compound settings: an export whose column names no reader knows (`T`, `Frq`,
+/// `Mod1`, `Mod2`) fails without a mapping, naming the columns; with `columns` (a table or the
+/// `ingest --columns` string) and `mode` in compounds.toml, `run` fits it, and both forms give the
+/// same fit as the same data under the generic reader's names. A bad key is refused naming it.
+#[test]
+fn compounds_toml_maps_the_columns_of_an_unknown_export() {
+    let base = temp_dir("colmap");
+    let (dir, out) = (base.join("in"), base.join("out"));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = rubber_csv(&[0.0, 20.0, 40.0], 12);
+    let (header, body) = csv.split_once('\n').unwrap();
+    assert_eq!(header, "temperature [°C],frequency [Hz],E' [Pa],E'' [Pa]");
+    std::fs::write(
+        dir.join("odd.csv"),
+        format!("T [°C],Frq [Hz],Mod1 [Pa],Mod2 [Pa]\n{body}"),
+    )
+    .unwrap();
+    std::fs::write(dir.join("plain.csv.ref"), &csv).unwrap();
+    let listing = |columns: &str| {
+        format!(
+            "[[compound]]\nname = \"odd\"\nfiles = [\"odd.csv\"]\nmode = \"tensile\"\n{columns}\n\
+             [[compound]]\nname = \"plain\"\nfiles = [\"plain.csv.ref\"]\nformat = \"generic\"\n"
+        )
+    };
+    std::fs::write(dir.join("compounds.toml"), listing("")).unwrap();
+    let o = run(&dir, &out, &[]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("no frequency column") && err.contains("`Frq`"),
+        "{err}"
+    );
+    let friction = |name: &str| {
+        std::fs::read_to_string(out.join(format!("reports/{name}/friction.csv"))).unwrap()
+    };
+    for columns in [
+        r#"columns = { temp = "T", freq = "Frq", storage = "Mod1", loss = "Mod2" }"#,
+        r#"columns = "temp=T,freq=Frq,storage=Mod1,loss=Mod2""#,
+    ] {
+        std::fs::write(dir.join("compounds.toml"), listing(columns)).unwrap();
+        let o = run(&dir, &out, &["--force"]);
+        assert!(o.status.success(), "{columns}: {}", text(&o.stderr));
+        // Same numbers, so the friction tables agree past their first column header lines.
+        let (a, b) = (friction("odd"), friction("plain"));
+        assert_eq!(
+            a.lines().skip(1).collect::<Vec<_>>(),
+            b.lines().skip(1).collect::<Vec<_>>()
+        );
+    }
+    std::fs::write(
+        dir.join("compounds.toml"),
+        listing(r#"columns = { frq = "Frq" }"#),
+    )
+    .unwrap();
+    let o = run(&dir, &out, &["--force"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        text(&o.stderr).contains("unknown key `frq`"),
+        "{}",
+        text(&o.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&base);
+}
+
 #[test]
 fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
     let dir = temp_dir("untrusted-in");
@@ -341,6 +405,150 @@ fn run_takes_tref_and_a_measurement_json_written_by_ingest() {
     let o = run(&dir, &out, &["--tref", "1e9"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(text(&o.stderr).contains("--tref"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// Issue 15, large files: no pass grows with the size of the file. Two isotherms of 3000 points (more
+/// than `tts::clean::THIN_ABOVE_POINTS` = 1000 each) are thinned to 1000 group means each before the
+/// shifting, so the master curve and the Prony QP see 2000 points, and the fit says so where the
+/// user looks (the datasheet). The 1e6-row figures: `cargo bench --bench large_input`.
+#[test]
+fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
+    let dir = temp_dir("thin-in");
+    let out = temp_dir("thin-out");
+    std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 40.0], 3000)).unwrap();
+    let o = run(&dir, &out, &[]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let fit: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
+            .unwrap();
+    assert_eq!(fit["master_curve"].as_array().unwrap().len(), 2000);
+    assert_eq!(fit["prony_info"]["n_points"].as_u64(), Some(2000));
+    let warnings = fit["tts"]["warnings"].to_string();
+    assert_eq!(
+        warnings
+            .matches("3000 points at distinct frequencies thinned to 1000 means of 3 consecutive")
+            .count(),
+        2,
+        "{warnings}"
+    );
+    let sheet = std::fs::read_to_string(out.join("reports/dense/datasheet.html")).unwrap();
+    assert!(sheet.contains("thinned to 1000 means"));
+    // A small export (20 points per isotherm) is untouched.
+    std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
+    let o = run(&dir, &out, &["--force"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let fit: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
+            .unwrap();
+    assert_eq!(fit["master_curve"].as_array().unwrap().len(), 60);
+    assert!(!fit["tts"]["warnings"].to_string().contains("thinned"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// Issue 15, temperatures: an isotherm at 1e9 °C is refused by every command that reads DMA data
+/// (the check is in the read path, crate::dma::plausible), with one error naming the file, the line
+/// of its first point and the temperature column: `ingest` on the export, `master` and `fit` on a
+/// measurement JSON whose isotherm was edited to 1e9 °C.
+#[test]
+fn ingest_master_and_fit_refuse_an_isotherm_at_1e9_c_naming_file_line_and_column() {
+    let dir = temp_dir("hot-cmds");
+    let hot = dir.join("hot.csv");
+    // Header on line 1, five rows at 0 °C on lines 2–6: the first 1e9 °C row is line 7.
+    std::fs::write(&hot, rubber_csv(&[0.0, 1e9], 5)).unwrap();
+    let o = Command::new(bin())
+        .arg("ingest")
+        .arg(&hot)
+        .output()
+        .unwrap();
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("hot.csv: line 7, column `temperature`") && err.contains("above 1000 °C"),
+        "{err}"
+    );
+    assert_eq!(err.matches("above 1000 °C").count(), 1, "one error: {err}");
+    // A measurement JSON edited by hand: `master` and `fit` refuse it the same way.
+    let good = dir.join("good.csv");
+    std::fs::write(&good, rubber_csv(&[0.0, 20.0, 40.0], 5)).unwrap();
+    let m_json = dir.join("m.json");
+    let o = Command::new(bin())
+        .arg("ingest")
+        .arg(&good)
+        .arg("-o")
+        .arg(&m_json)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let mut m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&m_json).unwrap()).unwrap();
+    let iso = &mut m["isotherms"][2];
+    iso["temp_nominal_c"] = 1e9.into();
+    iso["temp_mean_c"] = 1e9.into();
+    let first_line = iso["points"][0]["line"].as_u64().unwrap();
+    for p in iso["points"].as_array_mut().unwrap() {
+        p["temp_c"] = 1e9.into();
+    }
+    std::fs::write(&m_json, m.to_string()).unwrap();
+    for args in [
+        vec![
+            "master".to_string(),
+            m_json.display().to_string(),
+            "--tref".into(),
+            "20".into(),
+        ],
+        vec![
+            "fit".to_string(),
+            m_json.display().to_string(),
+            "-o".into(),
+            dir.join("f.json").display().to_string(),
+        ],
+    ] {
+        let o = Command::new(bin()).args(&args).output().unwrap();
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
+        assert!(
+            err.contains(&format!(
+                "good.csv: line {first_line}, column `temperature`"
+            )) && err.contains("above 1000 °C"),
+            "{args:?}: {err}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 15, plausibility: one storage modulus 1000× too high in the middle of the 20 °C isotherm
+/// breaks the Prony fit (out of its bounds, exit 3). The data check names file, line, column and
+/// value with the 10³ suggestion, and the fit names the same line and value as the point that breaks
+/// it, in the datasheet. Line: header 1, 12 rows at 0 °C (2–13), the 20 °C row k = 6 is line 20.
+#[test]
+fn a_single_far_off_point_names_its_file_line_and_value() {
+    let dir = temp_dir("one-off-in");
+    let out = temp_dir("one-off-out");
+    let csv = rubber_csv(&[0.0, 20.0, 40.0], 12);
+    let mut lines: Vec<String> = csv.lines().map(String::from).collect();
+    let cells: Vec<&str> = lines[19].split(',').collect();
+    assert_eq!(cells[0], "20");
+    let e1: f64 = cells[2].parse().unwrap();
+    let bad = format!("{},{},{:.6e},{}", cells[0], cells[1], e1 * 1e3, cells[3]);
+    lines[19] = bad;
+    std::fs::write(dir.join("bad.csv"), lines.join("\n") + "\n").unwrap();
+    let o = run(&dir, &out, &[]);
+    assert_eq!(o.status.code(), Some(3), "{}", text(&o.stderr));
+    let sheet = std::fs::read_to_string(out.join("reports/bad/datasheet.html")).unwrap();
+    let value = format!("{:.4e} Pa", e1 * 1e3);
+    assert!(
+        sheet.contains(&format!("line 20: column `E'`: storage modulus {value}"))
+            && sheet.contains("about 10^3 times too high"),
+        "the data check"
+    );
+    assert!(
+        sheet.contains(&format!("bad.csv: line 20: storage modulus {value}"))
+            && sheet.contains("this one point breaks the fit"),
+        "the fit"
+    );
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -51,6 +51,53 @@ fn check_svg(p: &Path, needle: &str) {
     );
 }
 
+/// Every text of the SVG is at least 16 SVG px (≥ 12 px on screen at the 0.75 scale of the
+/// datasheet's two-column layout at 1400 px), and no tick label is in `1.23e-4` form or an
+/// unrounded value such as `5012` (tick labels are 1-2-5 values: at most two significant digits
+/// besides zeros, or a power of ten).
+fn check_legible(p: &Path) {
+    let s = std::fs::read_to_string(p).unwrap();
+    let mut n = 0;
+    for t in s.split("<text").skip(1) {
+        let size: f64 = t
+            .split("font-size=\"")
+            .nth(1)
+            .and_then(|r| r.split('"').next())
+            .and_then(|v| v.parse().ok())
+            .unwrap();
+        assert!(size >= 16.0, "{p:?}: text of {size} px");
+        let text = t
+            .split('>')
+            .nth(1)
+            .unwrap_or("")
+            .split('<')
+            .next()
+            .unwrap_or("")
+            .trim();
+        let is_number = !text.is_empty()
+            && text
+                .chars()
+                .all(|c| c.is_ascii_digit() || "-.·⁰¹²³⁴⁵⁶⁷⁸⁹⁻".contains(c));
+        if is_number {
+            n += 1;
+            let digits: String = text
+                .split('·')
+                .next()
+                .unwrap()
+                .chars()
+                .filter(|c| c.is_ascii_digit())
+                .collect();
+            let significant = digits.trim_matches('0').len();
+            assert!(significant <= 2, "{p:?}: tick label {text}");
+        }
+        assert!(
+            !(text.contains("e-") && text.chars().next().is_some_and(|c| c.is_ascii_digit())),
+            "{p:?}: {text}"
+        );
+    }
+    assert!(n >= 4, "{p:?}: {n} tick labels");
+}
+
 #[test]
 fn ems_ca_plots_are_written_as_png_and_svg() {
     let dir = out_dir();
@@ -143,8 +190,14 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
     }
     check_svg(
         &dir.join("ems_ca_master_fit.svg"),
-        "Master curve and Prony fit",
+        "Master curve of E′ and E″ with the Prony fit",
     );
+    for name in ["master_fit", "spectrum", "shift_factors", "isotherms"] {
+        check_legible(&dir.join(format!("ems_ca_{name}.svg")));
+    }
+    // 21 isotherms: a colour bar, not a legend entry per temperature
+    let iso = std::fs::read_to_string(dir.join("ems_ca_isotherms.svg")).unwrap();
+    assert!(iso.contains("T [°C]") && !iso.contains(">-50 °C<"));
     // No temp files are left behind.
     assert!(std::fs::read_dir(&dir).unwrap().all(|e| !e
         .unwrap()

@@ -114,13 +114,13 @@ fn lsdyna_card_text() {
     };
     let text = cards::lsdyna(&two_terms(), Some(&wlf()), &opts).unwrap();
     // Shear moduli G = E/3 (ν = 0.5): G∞ = 333333.3 Pa (β = 0), 1e6 Pa (β = 2/s), 1333333.3 Pa (β = 1000/s).
-    // BULK is blank for ν = 0.5 (incompressible); card 2 is the blank line.
+    // BULK is blank for ν = 0.5 (incompressible); card 2 is the blank line; TREF = 25 °C = 298.15 K.
     let expected = "\
 $ viscoroll: instantaneous_modulus_pa=8.0000000000000000e+06 kind=tensile poisson=0.5
-$ Units: kg, m, s, Pa, degC. Shear moduli G_i (absolute), decay constants BETA_i = 1/tau_i.
+$ Units: kg, m, s, Pa, K (TREF must be > 0: temperatures in kelvin). Shear moduli G_i (absolute), decay constants BETA_i = 1/tau_i.
 *MAT_GENERAL_VISCOELASTIC
 $      MID        RO      BULK       PCF        EF      TREF         A         B
-         71.100000e3                              2.500000e11.350000e11.412500e2
+         71.100000e3                              2.981500e21.350000e11.412500e2
 $     LCID        NT    BSTART     TRAMP     LCIDK       NTK   BSTARTK    TRAMPK
 
 $       GI     BETAI        KI    BETAKI

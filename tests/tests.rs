@@ -1,5 +1,9 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
 mod auto_vs_richardson;
+mod bands_calibration;
+mod bands_cli;
+mod cards_vendor;
+mod cli_habits;
 mod contact_auto;
 mod contact_cli;
 mod contact_exact;
@@ -21,6 +25,7 @@ mod fuzz_inputs;
 mod golden_outputs;
 mod ingest_cli;
 mod known_truth;
+mod layer_props;
 mod master_cli;
 mod master_plateau;
 mod master_real;
@@ -30,7 +35,9 @@ mod pipeline_cli;
 mod pipeline_hardening;
 mod prony_ems_ca;
 mod prony_terms;
+mod pyvisco_interop;
 mod reference;
+mod report_browser;
 mod report_plots;
 mod seed;
 mod special_functions;

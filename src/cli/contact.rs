@@ -3,7 +3,18 @@
 //!
 //! `--json` prints one object: `lambda`, `beta`, `beta_over_lambda`, `load` (N′), `friction_rho` (ρ·F/N),
 //! `friction` (F/N, only with `--rho`), `n`, `scheme`, `iterations`, `xi`, `pressure`, `creep` (the terms).
+//!
+//! With `--cover H′` (the dimensionless cover thickness h′ = h/(VT), issue 14) the problem is solved on
+//! a rubber cover bonded to a rigid carcass, with `--model auto|half-space|layer|winkler` (default
+//! `auto`) and `--poisson` (default ½): the dimensionless equivalent of `roll --cover-mm`. The JSON then
+//! adds the fields `roll --cover-mm` prints: `model`, `model_reason`, `model_error_estimate`, `cover`
+//! (h′), `cover_over_contact` (h′/λ), `poisson`, `error_estimate`, `tol`, `min_pressure_ratio`,
+//! `min_gap_ratio`, `warnings`.
 
+use crate::contact::body::layer::{
+    self, auto_choice, roll_cover::push_length_warning, solve_cover, BodyAnswer, BodyModel,
+    CoverAnswer, ModelChoice,
+};
 use crate::contact::{self, AutoSettings, ContactSettings, CreepTerm, Scheme};
 use anyhow::{bail, Context};
 
@@ -33,6 +44,16 @@ pub struct Args {
     /// Dimensionless roll radius ρ = R/(VT); with it, the friction coefficient F/N is reported.
     #[arg(long, allow_negative_numbers = true)]
     pub rho: Option<f64>,
+    /// Cover thickness h′ = h/(VT) (dimensionless): solve on a rubber cover bonded to a rigid carcass.
+    #[arg(long, allow_negative_numbers = true)]
+    pub cover: Option<f64>,
+    /// Body with a cover: auto (default: the cheapest within --tol of the layer), half-space, layer,
+    /// winkler (uniaxial columns, the conveyor design tools' model).
+    #[arg(long)]
+    pub model: Option<String>,
+    /// Poisson's ratio of the cover, 0 ≤ ν ≤ 0.5 (used with --cover).
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
+    pub poisson: f64,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -86,6 +107,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         },
         ..ContactSettings::default()
     };
+    if args.cover.is_some() || args.model.is_some() {
+        return run_cover(&args, &terms, &settings);
+    }
     if args.scheme == Scheme::Auto {
         return run_auto(&args, &terms, &settings);
     }
@@ -206,4 +230,207 @@ fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> any
         }
     }
     Ok(())
+}
+
+/// `--cover H′`: the body chosen (or asked for) on the cover, at given load (error-controlled, `--tol`)
+/// or at given λ (the layer by the collocation with `--n` intervals, its estimate from n/2; the
+/// half-space by `--scheme`; `auto` takes the criterion at the given λ).
+fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> anyhow::Result<()> {
+    let name = args.model.as_deref().unwrap_or("auto");
+    let Some(choice) = ModelChoice::parse(name) else {
+        bail!("--model `{name}` is not known (auto, half-space, layer, winkler)");
+    };
+    let Some(h) = args.cover else {
+        bail!("--model {name} needs --cover H' (the cover thickness h/(VT))");
+    };
+    if !(h.is_finite() && h > 0.0) {
+        bail!("--cover must be finite and > 0, got {h}");
+    }
+    let nu = args.poisson;
+    if !(nu.is_finite() && (0.0..=0.5).contains(&nu)) {
+        bail!("--poisson must be in [0, 0.5], got {nu}");
+    }
+    if !(args.tol.is_finite() && (1e-12..=0.1).contains(&args.tol)) {
+        bail!("--tol must be in [1e-12, 0.1], got {}", args.tol);
+    }
+    let c = match (args.lambda, args.load) {
+        (None, Some(load)) => {
+            if !(load.is_finite() && load > 0.0) {
+                bail!("--load must be finite and > 0, got {load}");
+            }
+            solve_cover(terms, load, h, nu, choice, args.tol)?
+        }
+        (Some(lambda), None) => {
+            if !(lambda.is_finite() && lambda > 0.0) {
+                bail!("--lambda must be finite and > 0, got {lambda}");
+            }
+            cover_at_lambda(terms, lambda, h, nu, choice, args, settings)?
+        }
+        (Some(_), Some(_)) => bail!("give only one of --lambda and --load, not both"),
+        (None, None) => bail!("give one of --lambda L (contact length) or --load N' (load)"),
+    };
+    let a = &c.answer;
+    let d = &a.solution;
+    let mut warnings = a.warnings.clone();
+    let friction = args.rho.map(|rho| d.friction_rho / rho);
+    if let Some(rho) = args.rho {
+        // the validity checks of `roll --cover-mm`, in units of V·T
+        let depth = d.beta.max(d.lambda - d.beta).powi(2) / (2.0 * rho);
+        if depth > 0.3 * h {
+            warnings.push(format!(
+                "indentation ≈ {depth:.3e} V·T is {:.0} % of the cover (> 30 %): small-strain layer theory loses validity",
+                100.0 * depth / h
+            ));
+        }
+        push_length_warning(&mut warnings, d.lambda, rho);
+    }
+    if args.json {
+        let mut obj = serde_json::json!({
+            "scheme": d.scheme,
+            "creep": terms,
+            "lambda": d.lambda,
+            "beta": d.beta,
+            "beta_over_lambda": d.beta / d.lambda,
+            "load": d.load,
+            "friction_rho": d.friction_rho,
+            "n": d.n,
+            "iterations": d.iterations,
+            "xi": d.xi,
+            "pressure": d.pressure,
+            "cover": h,
+            "cover_over_contact": h / d.lambda,
+            "poisson": nu,
+            "model": a.model.name(),
+            "model_reason": c.reason,
+            "model_error_estimate": c.model_error_estimate,
+            "error_estimate": a.error_estimate,
+            "tol": args.tol,
+            "min_pressure_ratio": a.min_pressure_ratio,
+            "min_gap_ratio": a.min_gap_ratio,
+            "warnings": warnings,
+        });
+        if let (Some(rho), Some(fr)) = (args.rho, friction) {
+            obj["rho"] = serde_json::json!(rho);
+            obj["friction"] = serde_json::json!(fr);
+        }
+        println!("{obj}");
+    } else {
+        eprintln!(
+            "cover h' = {h}  nu = {nu}  creep terms (f, b): {}",
+            args.creep
+        );
+        eprintln!("body             = {} ({})", a.model.name(), c.reason);
+        eprintln!("lambda           = {:.9}", d.lambda);
+        eprintln!("beta             = {:.9}", d.beta);
+        eprintln!("load N'          = {:.9}", d.load);
+        eprintln!("rho*F/N          = {:.9}", d.friction_rho);
+        if let Some(fr) = friction {
+            eprintln!("F/N              = {fr:.9e}");
+        }
+        eprintln!(
+            "error estimate   = {:.3e}{}",
+            a.error_estimate,
+            c.model_error_estimate
+                .map(|e| format!(", model error estimate (vs the layer) {e:.2e}"))
+                .unwrap_or_default()
+        );
+        for w in &warnings {
+            eprintln!("warning: {w}");
+        }
+    }
+    Ok(())
+}
+
+/// The cover at given λ (see [`run_cover`]).
+fn cover_at_lambda(
+    terms: &[CreepTerm],
+    lambda: f64,
+    h: f64,
+    nu: f64,
+    choice: ModelChoice,
+    args: &Args,
+    settings: &ContactSettings,
+) -> anyhow::Result<CoverAnswer> {
+    let (model, reason, model_err) = match choice {
+        ModelChoice::HalfSpace => (BodyModel::HalfSpace, "half-space asked for (--model half-space)".to_string(), None),
+        ModelChoice::Layer => (BodyModel::Layer, "bonded layer asked for (--model layer)".to_string(), None),
+        ModelChoice::Winkler => (
+            BodyModel::Winkler,
+            "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)".to_string(),
+            None,
+        ),
+        ModelChoice::Auto => match auto_choice(terms, lambda, h, nu, args.tol) {
+            Some((m, e)) => (
+                m,
+                format!(
+                    "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {e:.1e})",
+                    h / lambda,
+                    m.name(),
+                    args.tol
+                ),
+                Some(e),
+            ),
+            None => (
+                BodyModel::Layer,
+                "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".to_string(),
+                None,
+            ),
+        },
+    };
+    let answer = match model {
+        BodyModel::HalfSpace => {
+            let sol = contact::solve_at_lambda(terms, lambda, settings)?;
+            BodyAnswer {
+                model,
+                error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
+                min_pressure_ratio: sol.auto.as_ref().map_or(f64::NAN, |d| d.min_pressure_ratio),
+                min_gap_ratio: sol.auto.as_ref().map_or(f64::NAN, |d| d.min_gap_ratio),
+                warnings: sol.warnings.clone(),
+                solution: sol,
+            }
+        }
+        BodyModel::Layer => {
+            let k = layer::LayerKernel::new(terms, h, nu)?;
+            let n = settings.n.max(4) / 2 * 2;
+            let fine = layer::collocation::solve_at_lambda(&k, lambda, n)?;
+            let coarse = layer::collocation::solve_at_lambda(&k, lambda, n / 2)?;
+            let rel = |a: f64, b: f64| (a - b).abs() / a.abs().max(b.abs()).max(f64::MIN_POSITIVE);
+            let est = rel(fine.beta, coarse.beta)
+                .max(rel(fine.load, coarse.load))
+                .max(rel(fine.friction_rho, coarse.friction_rho));
+            let (min_pressure_ratio, min_gap_ratio) =
+                layer::collocation::contact_checks(&k, &fine)?;
+            BodyAnswer {
+                model,
+                error_estimate: est,
+                min_pressure_ratio,
+                min_gap_ratio,
+                warnings: Vec::new(),
+                solution: fine,
+            }
+        }
+        BodyModel::Winkler | BodyModel::WinklerConstrained => {
+            let columns = if model == BodyModel::Winkler {
+                layer::WinklerColumns::Uniaxial
+            } else {
+                layer::WinklerColumns::Constrained
+            };
+            let w = layer::Winkler::new(terms, columns, h, nu)?.at_lambda(lambda)?;
+            let mut solution = w.solution;
+            solution.warnings.extend(w.warnings.iter().cloned());
+            BodyAnswer {
+                model,
+                error_estimate: 0.0,
+                min_pressure_ratio: w.min_pressure_ratio,
+                min_gap_ratio: w.min_gap_ratio,
+                warnings: w.warnings,
+                solution,
+            }
+        }
+    };
+    Ok(CoverAnswer {
+        answer,
+        reason,
+        model_error_estimate: model_err,
+    })
 }

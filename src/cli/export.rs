@@ -6,9 +6,13 @@
 //! LS-DYNA takes at most 18 Prony cards: a longer spectrum is refitted with at most 18 cards (the
 //! β = 0 equilibrium card included) to the fit file's master curve, or to the spectrum's own E′, E″
 //! (10 points per decade over its relaxation times) when a bare spectrum was given; the refit's RMS
-//! log10 errors are stated in the card and on stderr. A WLF law from a fit file is written only when
-//! it describes the shifts (RMS ≤ [`WLF_RMS_BOUND`] decade and C2 ≤ [`WLF_C2_MAX_K`] K); otherwise
-//! the card gets no shift and says why.
+//! log10 errors are stated in the card and on stderr. A WLF law from a fit file is written when it
+//! describes the shifts ([`crate::report::card_shift`]: RMS ≤ 0.1 decade, 0 < C2 ≤ 1000 K); when it
+//! holds over part of the temperatures only, the WLF fitted over that range is written with the
+//! range and its RMS in a warning in the card; otherwise the card gets no shift and says why.
+//!
+//! `--to pyvisco` writes a fit file's master curve and shift factors in pyvisco's CSV layouts
+//! ([`crate::dma::pyvisco`]): `-o NAME.csv` and `NAME__shift_factors.csv` beside it.
 //!
 //! `--json` prints one object `{ "format", "input", "output", "card" }`. Without `--json` and without
 //! `-o` the card text goes to stdout.
@@ -16,6 +20,7 @@
 use super::output::write_atomic;
 use super::spectrum_input::read_spectrum_input;
 use crate::prony::{fit_prony, log10_errors, MasterPoint, PronySettings};
+use crate::report::card_shift::{card_wlf, CardWlf};
 use crate::report::cards::{self, BulkRelaxation, CardOptions};
 use crate::{RelaxationSpectrum, ShiftLaw};
 use anyhow::Context;
@@ -30,6 +35,9 @@ pub enum Target {
     Ansys,
     /// LS-DYNA `*MAT_GENERAL_VISCOELASTIC`.
     Lsdyna,
+    /// pyvisco's master-curve CSV (`-o NAME.csv`) and shift-factor CSV (`NAME__shift_factors.csv`)
+    /// of a fit file, the layout pyvisco's `load.user_master` and `load.user_shift` read.
+    Pyvisco,
 }
 
 /// Bulk relaxation (Abaqus kᵢ).
@@ -73,41 +81,12 @@ pub struct Args {
     pub json: bool,
 }
 
-/// Largest RMS (log10 decades) of the shifts about a fit file's WLF law for it to go into a card:
-/// 0.1 decade is a 26 % error in every relaxation time, about what the master curve's overlap allows.
-pub const WLF_RMS_BOUND: f64 = 0.1;
-/// Largest C2 (K) of a WLF law that goes into a card: measured polymers have C2 of 30–300 K (WLF's
-/// universal 51.6 K); a C2 of thousands of K is a straight line through the shifts in disguise
-/// (issue 17 found C1 = 26185, C2 = 104763 K at 0.97 decade RMS).
-pub const WLF_C2_MAX_K: f64 = 1000.0;
-
-/// The WLF law of a fit file for a card, or why there is none.
-fn wlf_from_fit(fit: &crate::pipeline::CompoundFit) -> Result<(ShiftLaw, f64), String> {
-    let tts = fit
-        .tts
-        .as_ref()
-        .ok_or("the fit file holds no master-curve shifts")?;
-    let law = tts.wlf.clone().ok_or("the WLF fit of the shifts failed")?;
-    let rms = tts
-        .law_rms_log10
-        .iter()
-        .find(|(n, _)| n == "wlf")
-        .map(|(_, r)| *r)
-        .ok_or("the WLF fit has no RMS")?;
-    let ShiftLaw::Wlf { c1, c2_k, .. } = law else {
-        return Err("the fitted law is not WLF".into());
+/// The WLF law of a fit file for a card ([`card_wlf`] on its table of shifts), or why there is none.
+fn wlf_from_fit(fit: &crate::pipeline::CompoundFit) -> CardWlf {
+    let Some(tts) = fit.tts.as_ref().filter(|t| !t.shifts.is_empty()) else {
+        return CardWlf::Withheld("the fit file holds no master-curve shifts".into());
     };
-    if rms.is_nan() || rms > WLF_RMS_BOUND {
-        return Err(format!(
-            "the WLF fit (C1 = {c1:.4}, C2 = {c2_k:.4} K) misses the shifts by {rms:.3} decade RMS (bound {WLF_RMS_BOUND})"
-        ));
-    }
-    if c2_k.is_nan() || c2_k > WLF_C2_MAX_K {
-        return Err(format!(
-            "the WLF fit is degenerate (C1 = {c1:.4}, C2 = {c2_k:.4} K > {WLF_C2_MAX_K} K)"
-        ));
-    }
-    Ok((law, rms))
+    card_wlf(&tts.shifts, fit.shift_law.t_ref_c())
 }
 
 /// Refit with at most `max_cards` LS-DYNA cards (E∞ takes one): to the fit file's master curve, or
@@ -181,21 +160,123 @@ fn parse_wlf(s: &str) -> anyhow::Result<ShiftLaw> {
     })
 }
 
+/// The shift-factor file written beside pyvisco's master-curve file `NAME.csv`:
+/// `NAME__shift_factors.csv` (the name pyvisco's example pair uses).
+pub fn pyvisco_shift_path(master: &std::path::Path) -> PathBuf {
+    let stem = master
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "master".into());
+    master.with_file_name(format!("{stem}__shift_factors.csv"))
+}
+
+/// `export --to pyvisco`: the fit file's master curve and shifts in pyvisco's two CSV layouts.
+fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> anyhow::Result<()> {
+    let fit = input.fit.as_ref().ok_or_else(|| {
+        anyhow::anyhow!(
+            "{}: --to pyvisco writes a master curve and its shift factors, which only a fit file \
+             holds (a bare spectrum has neither)",
+            args.file.display()
+        )
+    })?;
+    let out = args.output.as_ref().ok_or_else(|| {
+        anyhow::anyhow!("--to pyvisco writes two files: give the master curve's with -o NAME.csv")
+    })?;
+    let shifts: Vec<(f64, f64)> = match (&fit.tts, &fit.shift_law) {
+        (Some(t), _) if !t.shifts.is_empty() => t.shifts.clone(),
+        (_, ShiftLaw::Table { points, .. }) => points.clone(),
+        _ => anyhow::bail!(
+            "{}: the fit file holds no table of shift factors",
+            args.file.display()
+        ),
+    };
+    let t_ref = fit.shift_law.t_ref_c();
+    // pyvisco reads log a_T relative to the master curve's temperature: refer the table to it.
+    let at_ref = fit.shift_law.log10_a_t(t_ref);
+    let shifts: Vec<(f64, f64)> = shifts.iter().map(|&(t, a)| (t, a - at_ref)).collect();
+    let points: Vec<(f64, f64, f64)> = fit
+        .master_curve
+        .iter()
+        .map(|p| (p.reduced_freq_hz, p.storage_pa, p.loss_pa))
+        .collect();
+    let master_text = crate::dma::pyvisco::master_csv(fit.relaxation.kind, &points);
+    let shift_text = crate::dma::pyvisco::shift_csv(&shifts);
+    let shift_out = pyvisco_shift_path(out);
+    if !args.force {
+        for p in [out, &shift_out] {
+            if p.exists() {
+                anyhow::bail!(
+                    "{} exists; not overwritten (use --force to replace it)",
+                    p.display()
+                );
+            }
+        }
+    }
+    write_atomic(out, master_text.as_bytes(), args.force)?;
+    write_atomic(&shift_out, shift_text.as_bytes(), args.force)?;
+    if args.json {
+        let obj = serde_json::json!({
+            "format": "pyvisco",
+            "input": args.file.display().to_string(),
+            "output": out.display().to_string(),
+            "shift_factors": shift_out.display().to_string(),
+            "points": points.len(),
+            "temperatures": shifts.len(),
+            "t_ref_c": t_ref,
+        });
+        println!("{obj}");
+    } else {
+        eprintln!(
+            "viscoroll export: pyvisco master curve ({} points at T_ref = {t_ref} °C) → {}; shift \
+             factors ({} temperatures) → {}",
+            points.len(),
+            out.display(),
+            shifts.len(),
+            shift_out.display()
+        );
+    }
+    Ok(())
+}
+
 /// Run `viscoroll export`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let input = read_spectrum_input(&args.file)?;
+    if args.to == Target::Pyvisco {
+        return export_pyvisco(&args, &input);
+    }
     let mut spectrum = input.spectrum;
     let mut notes: Vec<String> = Vec::new();
     let shift = match (args.wlf.as_deref(), &input.fit) {
         (Some(w), _) => Some(parse_wlf(w)?),
         (None, Some(fit)) => match wlf_from_fit(fit) {
-            Ok((law, rms)) => {
+            CardWlf::Whole { law, rms_log10 } => {
                 notes.push(format!(
-                    "WLF shift fitted to the master curve's shifts: RMS {rms:.3} decade"
+                    "WLF shift fitted to the master curve's shifts: RMS {rms_log10:.3} decade"
                 ));
                 Some(law)
             }
-            Err(why) => {
+            CardWlf::Range {
+                law,
+                rms_log10,
+                t_min_c,
+                t_max_c,
+                used,
+                of,
+                whole,
+            } => {
+                let (c1, c2) = match law {
+                    ShiftLaw::Wlf { c1, c2_k, .. } => (c1, c2_k),
+                    _ => (f64::NAN, f64::NAN),
+                };
+                notes.push(format!(
+                    "WARNING: WLF shift (C1 = {c1:.4}, C2 = {c2:.3} K) fitted over {t_min_c:.2} to \
+                     {t_max_c:.2} degC only, where it holds ({used} of {of} temperatures, RMS \
+                     {rms_log10:.3} decade): over all of them {whole}; outside that range shift \
+                     the spectrum otherwise"
+                ));
+                Some(law)
+            }
+            CardWlf::Withheld(why) => {
                 notes.push(format!(
                     "WARNING: no shift card: {why}; give one with --wlf TREF_C,C1,C2 or shift in the solver"
                 ));
@@ -237,12 +318,19 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Target::Abaqus => ("abaqus", cards::abaqus(&spectrum, shift.as_ref(), &options)),
         Target::Ansys => ("ansys", cards::ansys(&spectrum, shift.as_ref(), &options)),
         Target::Lsdyna => ("lsdyna", cards::lsdyna(&spectrum, shift.as_ref(), &options)),
+        // Written by export_pyvisco before any card work.
+        Target::Pyvisco => (
+            "pyvisco",
+            Err(cards::CardError::Unwritable(
+                "pyvisco files are not a card".into(),
+            )),
+        ),
     };
     let card = card.with_context(|| format!("{}", args.file.display()))?;
     let prefix = match args.to {
         Target::Abaqus => "**",
         Target::Ansys => "!",
-        Target::Lsdyna => "$",
+        Target::Lsdyna | Target::Pyvisco => "$",
     };
     let card: String = notes
         .iter()

@@ -5,16 +5,38 @@
 //! job (`viscoroll run`): shifts on log E′, the table of the shifts found as the shift law, the Prony
 //! QP with its GCV weight (`crate::pipeline::fit_compound`). An existing fit made from the same inputs
 //! with the same settings is reused; a different one is kept unless `--force` is given.
+//!
+//! Instead of a measurement, a master curve already shifted can be fitted: pyvisco's master-curve CSV
+//! with its shift-factor CSV (`--master-curve M.csv --shift-factors S.csv`, read by
+//! [`crate::dma::pyvisco`]); its shift table is the fit's shift law, and the WLF and Arrhenius fits
+//! of that table go into the fit file for the cards.
 
-use crate::pipeline::fit_compound::{fit_or_reuse, FitAction, FitOptions};
+use crate::pipeline::fit_compound::{fit_or_reuse, fit_or_reuse_master, FitAction, FitOptions};
 use anyhow::Context;
 use std::path::PathBuf;
 
 /// Arguments of `viscoroll fit`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Measurement JSON written by `viscoroll ingest -o M.json`.
-    pub measurement: PathBuf,
+    /// Measurement JSON written by `viscoroll ingest -o M.json` (or give --master-curve).
+    #[arg(required_unless_present = "master_curve")]
+    pub measurement: Option<PathBuf>,
+    /// A master curve already shifted, in pyvisco's CSV layout (`f, E_stor, E_loss` over `Hz, MPa,
+    /// MPa`; `G_…` for shear), fitted instead of a measurement; needs --shift-factors.
+    #[arg(
+        long,
+        value_name = "CSV",
+        conflicts_with = "measurement",
+        requires = "shift_factors"
+    )]
+    pub master_curve: Option<PathBuf>,
+    /// pyvisco's shift-factor CSV of the master curve (`T, log_aT` over `C, -`); its row with
+    /// log_aT = 0 is the reference temperature (else give --tref).
+    #[arg(long, value_name = "CSV", requires = "master_curve")]
+    pub shift_factors: Option<PathBuf>,
+    /// Poisson's ratio of the master curve's material (with --master-curve), for tensile ↔ shear.
+    #[arg(long, default_value_t = 0.5, requires = "master_curve")]
+    pub poisson: f64,
     /// Fit file to write, e.g. `fits/NAME.json` (written atomically).
     #[arg(short = 'o', long = "output")]
     pub output: PathBuf,
@@ -50,14 +72,25 @@ pub struct Args {
 
 /// Run `viscoroll fit`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(&args.measurement)
-        .with_context(|| format!("{}: cannot read", args.measurement.display()))?;
-    let value: serde_json::Value = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not JSON", args.measurement.display()))?;
-    // The bare serde of Measurement, or an object holding it under "measurement".
-    let inner = value.get("measurement").cloned().unwrap_or(value);
-    let measurement: crate::Measurement = serde_json::from_value(inner)
-        .with_context(|| format!("{}: not a measurement", args.measurement.display()))?;
+    let source = match (&args.measurement, &args.master_curve, &args.shift_factors) {
+        (Some(m), _, _) => Source::Measurement(read_measurement(m)?),
+        (None, Some(mc), Some(sf)) => {
+            if !(args.poisson > -1.0 && args.poisson <= 0.5) {
+                anyhow::bail!("--poisson {}: must lie in (−1, 0.5]", args.poisson);
+            }
+            let pv = crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?;
+            let master = crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
+                .with_context(|| format!("{}", mc.display()))?;
+            Source::Master(pv.measurement, Box::new(master))
+        }
+        _ => anyhow::bail!("give a measurement JSON, or --master-curve with --shift-factors"),
+    };
+    let input = args
+        .measurement
+        .as_ref()
+        .or(args.master_curve.as_ref())
+        .map(|p| p.display().to_string())
+        .unwrap_or_default();
     let name = match &args.name {
         Some(n) => n.clone(),
         None => args
@@ -78,8 +111,23 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
     }
-    let (fit, action) = fit_or_reuse(&name, &measurement, &args.output, &options, args.force)
-        .with_context(|| format!("{}", args.measurement.display()))?;
+    let (fit, action) = match &source {
+        Source::Measurement(measurement) => {
+            fit_or_reuse(&name, measurement, &args.output, &options, args.force)
+        }
+        Source::Master(measurement, master) => {
+            options.master = master.settings.clone();
+            fit_or_reuse_master(
+                &name,
+                measurement,
+                master,
+                &args.output,
+                &options,
+                args.force,
+            )
+        }
+    }
+    .with_context(|| input.clone())?;
     let action = match action {
         FitAction::Reused => "reused",
         FitAction::Fitted => "fitted",
@@ -148,6 +196,24 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         );
     }
     Ok(())
+}
+
+/// What is fitted: a measurement (master curve built here) or a master curve read already shifted.
+enum Source {
+    Measurement(crate::Measurement),
+    Master(crate::Measurement, Box<crate::tts::MasterCurve>),
+}
+
+/// A measurement JSON: the bare serde of Measurement, or an object holding it under "measurement".
+fn read_measurement(path: &std::path::Path) -> anyhow::Result<crate::Measurement> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("{}: cannot read", path.display()))?;
+    // The bare serde of Measurement, or an object holding it under "measurement"; checked like any
+    // export (crate::dma::plausible).
+    Ok(crate::dma::plausible::measurement_from_json(
+        &path.display().to_string(),
+        &text,
+    )?)
 }
 
 /// `--target-rms E1[,E2]`: one value for both moduli or one each, finite and > 0.

@@ -1,13 +1,14 @@
 //! `viscoroll master`: master curve by time–temperature superposition, with WLF and Arrhenius fits.
 //!
 //! Input: a measurement JSON (the serde of [`crate::Measurement`], as `viscoroll ingest` writes
-//! it); output: a [`MasterCurve`] (printed with `--json`, written with `-o`), a summary on stderr.
+//! it), or pyvisco's master-curve CSV with its shift factors (`--master-curve`, `--shift-factors`:
+//! read already shifted, [`crate::dma::pyvisco`]); output: a [`MasterCurve`] (printed with `--json`, written with `-o`), a summary on stderr.
 
 use crate::tts::{
     build_master_curve, LawChoice, MasterCurve, MasterSettings, ShiftCriterion, ShiftSource,
     TemperatureBasis, VerticalShift,
 };
-use crate::{Measurement, ShiftLaw};
+use crate::ShiftLaw;
 use anyhow::{bail, Context};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -15,8 +16,22 @@ use std::path::{Path, PathBuf};
 /// Arguments of `viscoroll master`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Measurement JSON (serde of `Measurement`, as written by `viscoroll ingest`).
-    pub measurement: PathBuf,
+    /// Measurement JSON (serde of `Measurement`, as written by `viscoroll ingest`), or give
+    /// --master-curve.
+    #[arg(required_unless_present = "master_curve")]
+    pub measurement: Option<PathBuf>,
+    /// A master curve already shifted, in pyvisco's CSV layout (`f, E_stor, E_loss` over `Hz, MPa,
+    /// MPa`), read with --shift-factors instead of shifting a measurement.
+    #[arg(
+        long,
+        value_name = "CSV",
+        conflicts_with = "measurement",
+        requires = "shift_factors"
+    )]
+    pub master_curve: Option<PathBuf>,
+    /// pyvisco's shift-factor CSV (`T, log_aT` over `C, -`) of --master-curve.
+    #[arg(long, value_name = "CSV", requires = "master_curve")]
+    pub shift_factors: Option<PathBuf>,
     /// Reference temperature in °C [default: the middle isotherm's temperature].
     #[arg(long, allow_hyphen_values = true)]
     pub tref: Option<f64>,
@@ -98,11 +113,23 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             bail!("{} exists; use --force to overwrite it", out.display());
         }
     }
-    let text = std::fs::read_to_string(&args.measurement)
-        .with_context(|| format!("cannot read {}", args.measurement.display()))?;
-    let measurement = parse_measurement(&text)
-        .with_context(|| format!("{} is not a measurement JSON", args.measurement.display()))?;
-    let master = build_master_curve(&measurement, &settings)?;
+    let master = match (&args.measurement, &args.master_curve, &args.shift_factors) {
+        (Some(path), _, _) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            // Parsed and checked like any export (impossible temperatures refused, naming file and line).
+            let measurement =
+                crate::dma::plausible::measurement_from_json(&path.display().to_string(), &text)?;
+            build_master_curve(&measurement, &settings)?
+        }
+        (None, Some(mc), Some(sf)) => {
+            // Read already shifted: no shifting; the table of shift factors is the law.
+            let pv = crate::dma::pyvisco::read_master_pair(mc, sf, 0.5, args.tref)?;
+            crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
+                .with_context(|| format!("{}", mc.display()))?
+        }
+        _ => bail!("give a measurement JSON, or --master-curve with --shift-factors"),
+    };
     let json = serde_json::to_string_pretty(&master)?;
     if let Some(out) = &args.output {
         // --force was checked before the work started.
@@ -115,13 +142,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         writeln!(stdout, "{json}")?;
     }
     Ok(())
-}
-
-fn parse_measurement(text: &str) -> anyhow::Result<Measurement> {
-    // The bare serde of Measurement, or an object holding it under "measurement".
-    let value: serde_json::Value = serde_json::from_str(text)?;
-    let inner = value.get("measurement").cloned().unwrap_or(value);
-    Ok(serde_json::from_value(inner)?)
 }
 
 fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {

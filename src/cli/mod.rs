@@ -7,6 +7,7 @@
 //! (clap's full message, with its "a similar argument exists" tips), 3 `run` finished but some
 //! results are not trusted.
 
+mod completions;
 mod contact;
 mod convert;
 mod export;
@@ -17,6 +18,7 @@ mod output;
 mod rank;
 mod roll;
 mod roll_cover;
+mod roll_print;
 mod run;
 mod spectrum_input;
 
@@ -61,23 +63,38 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// The dimensionless problem of the thesis (ch. 3–4): one creep spectrum f:b, at given λ or load N'.
+    #[command(after_help = EXIT_CODES)]
     Contact(contact::Args),
     /// One dimensional scene: a roll on a compound's creep spectrum → friction, contact length, pressure.
+    #[command(after_help = EXIT_CODES)]
     Roll(roll::Args),
     /// Convert a relaxation spectrum to a creep spectrum (exact or Park & Schapery).
+    #[command(after_help = EXIT_CODES)]
     Convert(convert::Args),
     /// Write FEA material cards (Abaqus, ANSYS, LS-DYNA) from a spectrum or fit.
+    #[command(after_help = EXIT_CODES)]
     Export(export::Args),
     /// Read DMA exports and report what was found.
+    #[command(after_help = EXIT_CODES)]
     Ingest(ingest::Args),
     /// Master curve by time–temperature superposition, with WLF and Arrhenius fits.
+    #[command(after_help = EXIT_CODES)]
     Master(master::Args),
     /// Master curve + Prony fit + creep spectrum → a fit file.
+    #[command(after_help = EXIT_CODES)]
     Fit(fit::Args),
     /// The main job: every compound of a folder → fits, friction, datasheets, ranking.
+    #[command(after_help = EXIT_CODES)]
     Run(run::Args),
     /// Rank fit files by predicted rolling friction in a scene.
+    #[command(after_help = EXIT_CODES)]
     Rank(rank::Args),
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell) on stdout.
+    #[command(after_help = EXIT_CODES)]
+    Completions(completions::CompletionArgs),
+    /// Print the man page (roff) on stdout: `viscoroll man > viscoroll.1`, `viscoroll man fit`.
+    #[command(after_help = EXIT_CODES)]
+    Man(completions::ManArgs),
 }
 
 impl Command {
@@ -93,6 +110,7 @@ impl Command {
             Command::Fit(a) => a.json,
             Command::Run(a) => a.json,
             Command::Rank(a) => a.json,
+            Command::Completions(_) | Command::Man(_) => false,
         }
     }
 }
@@ -169,6 +187,8 @@ pub fn run_with(args: Vec<std::ffi::OsString>) -> i32 {
         Command::Fit(args) => fit::run(args),
         Command::Run(args) => run::run(args),
         Command::Rank(args) => rank::run(args),
+        Command::Completions(args) => completions::completions(args),
+        Command::Man(args) => completions::man(args),
     };
     match result {
         Ok(()) => 0,

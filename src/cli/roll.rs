@@ -6,8 +6,12 @@
 //!
 //! `--json` prints one object: `friction`, `contact_length_mm`, `offset_mm`, `resistance_n_per_m`,
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
-//! `rho`, `time_scale_s`, `creep`) and the numerics (`scheme`, `n`, `iterations`).
+//! `rho`, `time_scale_s`, `creep`), the numerics (`scheme`, `n`, `iterations`) and the 90 %
+//! uncertainty band `friction_p05`, `friction_p50`, `friction_p95` (crate::bands: a fit file made by
+//! `viscoroll run` carries the bootstrap ensemble; otherwise null, with the reason in `bands_note`).
+//! With a cover (`--cover-mm`, `--model`) no band is computed yet.
 
+use super::roll_print::{Answer, Shift};
 use crate::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
 use crate::pipeline::roll_fit::{roll_source_at, CreepSource, SourceRoll};
 use anyhow::{bail, Context};
@@ -52,9 +56,35 @@ pub struct Args {
     /// `layer` (bonded to a rigid carcass) or `winkler` (uniaxial columns, as conveyor design tools).
     #[arg(long)]
     pub model: Option<String>,
+    /// Skip the uncertainty band (a fit file made by `viscoroll run` carries the bootstrap ensemble
+    /// it needs; see crate::bands).
+    #[arg(long)]
+    pub no_bands: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
+}
+
+/// The 90 % band of the friction of `r` (crate::bands), or why there is none.
+fn band(
+    args: &Args,
+    source: &CreepSource,
+    scene: &Scene,
+    r: &SourceRoll,
+) -> Result<crate::results::FrictionBand, String> {
+    if args.no_bands {
+        return Err("skipped (--no-bands)".into());
+    }
+    let (CreepSource::Fit(fit), Some(t)) = (source, args.temp_c) else {
+        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file made by `viscoroll run`".into());
+    };
+    let Some(ensemble) = fit.bands.as_ref() else {
+        return Err("this fit file carries no bootstrap ensemble (made by `viscoroll fit` or `run --no-bands`): `viscoroll run` on its measurement adds one".into());
+    };
+    let settings = crate::bands::BandSettings::default();
+    let ratios = crate::bands::scene_ratios(fit, ensemble, scene, &[t], &settings);
+    crate::bands::band_of(r.roll.friction, &ratios[0])
+        .ok_or_else(|| "too few replicate solves succeeded for a band".to_string())
 }
 
 /// Run `viscoroll roll`.
@@ -68,6 +98,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             bail!("{name} must be finite and > 0, got {v}");
         }
     }
+    super::spectrum_input::refuse_fluid_or_relaxation(&args.spectrum)?;
     let source = CreepSource::read(&args.spectrum)
         .with_context(|| format!("cannot read spectrum file {}", args.spectrum.display()))?;
     match (&source, args.temp_c) {
@@ -113,105 +144,37 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let r = roll_source_at(&source, args.temp_c, &scene, &settings)
         .with_context(|| format!("{}", args.spectrum.display()))?;
-    if args.json {
-        print_json(&args, &r);
-    } else {
-        print_text(&args, &r);
-    }
-    // Temperature warnings first, then the solver's (also in the JSON object).
-    for w in &r.warnings {
-        eprintln!("warning: {w}");
-    }
+    let band = band(&args, &source, &scene, &r);
+    print_answer(&args, &r, &band);
     Ok(())
 }
 
-/// `--json`: one object on stdout (fields in the module doc; the `auto` diagnostics when solved so).
-fn print_json(args: &Args, r: &SourceRoll) {
-    let (sol, shifted, warnings) = (&r.roll, &r.shift, &r.warnings);
+/// Print through the shared printer: the `auto` diagnostics in the JSON object, the dimensionless
+/// problem and the numerics in the text.
+fn print_answer(args: &Args, r: &SourceRoll, band: &Result<crate::results::FrictionBand, String>) {
+    let (sol, shifted) = (&r.roll, &r.shift);
     let d = &sol.dimensionless;
-    let auto_info = d.auto.as_ref();
-    let mut obj = serde_json::json!({
-        "friction": sol.friction,
-        "contact_length_mm": sol.contact_length_m * 1e3,
-        "offset_mm": sol.offset_m * 1e3,
-        "resistance_n_per_m": sol.resistance_n_per_m,
-        "max_pressure_mpa": sol.max_pressure_pa * 1e-6,
-        "x_mm": sol.x_m.iter().map(|x| x * 1e3).collect::<Vec<_>>(),
-        "pressure_mpa": sol.pressure_pa.iter().map(|p| p * 1e-6).collect::<Vec<_>>(),
-        "radius_mm": args.radius_mm,
-        "load_n_per_m": args.load_n_per_m,
-        "speed_m_s": args.speed_m_s,
-        "poisson": sol.problem.poisson,
-        "lambda": d.lambda,
-        "beta": d.beta,
-        "load": d.load,
-        "friction_rho": d.friction_rho,
-        "rho": sol.problem.rho,
-        "time_scale_s": sol.problem.time_scale_s,
-        "creep": sol.problem.terms,
-        "scheme": d.scheme,
-        "n": d.n,
-        "iterations": d.iterations,
-        "temp_c": shifted.as_ref().map(|a| a.temp_c),
-        "log10_a_t": shifted.as_ref().map(|a| a.log10_a_t),
-        "extrapolated": shifted.as_ref().map(|a| a.extrapolated),
-        "warnings": warnings,
-    });
-    if let Some(a) = &auto_info {
-        obj["error_estimate"] = serde_json::json!(d.error_estimate);
-        obj["tol"] = serde_json::json!(a.tol);
-        obj["modes_used"] = serde_json::json!(a.modes_used);
-        obj["modes_total"] = serde_json::json!(a.modes_total);
-        obj["modes_lumped"] = serde_json::json!(a.modes_lumped);
-        obj["modes_dropped"] = serde_json::json!(a.modes_dropped);
-        obj["min_pressure_ratio"] = serde_json::json!(a.min_pressure_ratio);
-    }
-    println!("{obj}");
-}
-
-/// The human-readable answer on stderr.
-fn print_text(args: &Args, r: &SourceRoll) {
-    let (sol, shifted, spectrum) = (&r.roll, &r.shift, &r.spectrum);
-    let d = &sol.dimensionless;
-    let auto_info = d.auto.as_ref();
-    if let Some(a) = &shifted {
-        eprintln!(
-            "at {} °C: log10 a_T = {:.4}{}",
-            a.temp_c,
-            a.log10_a_t,
-            if a.extrapolated {
-                " (extrapolated)"
-            } else {
-                ""
-            }
-        );
-    }
-    eprintln!(
-        "roll R = {} mm, N = {} N/m, V = {} m/s on {} ({} terms, nu = {})",
-        args.radius_mm,
-        args.load_n_per_m,
-        args.speed_m_s,
-        args.spectrum.display(),
-        spectrum.terms.len(),
-        sol.problem.poisson
-    );
-    eprintln!("friction F/N        = {:.6e}", sol.friction);
-    eprintln!("resistance          = {:.6e} N/m", sol.resistance_n_per_m);
-    eprintln!("contact length      = {:.6} mm", sol.contact_length_m * 1e3);
-    eprintln!(
-        "offset (centre ahead of lowest point) = {:.6} mm",
-        sol.offset_m * 1e3
-    );
-    eprintln!(
-        "max pressure        = {:.6} MPa",
-        sol.max_pressure_pa * 1e-6
-    );
-    eprintln!(
+    let mut json_extra = serde_json::Map::new();
+    let mut lines_after = vec![format!(
         "dimensionless: lambda = {:.6}, beta = {:.6}, N' = {}, rho = {:.6e}, T = {:.6e} s; {} n = {}, {} solves",
         d.lambda, d.beta, d.load, sol.problem.rho, sol.problem.time_scale_s, d.scheme, d.n, d.iterations
-    );
-    if let Some(a) = &auto_info {
-        eprintln!(
+    )];
+    if let Some(a) = &d.auto {
+        for (k, v) in [
+            ("error_estimate", serde_json::json!(d.error_estimate)),
+            ("tol", serde_json::json!(a.tol)),
+            ("modes_used", serde_json::json!(a.modes_used)),
+            ("modes_total", serde_json::json!(a.modes_total)),
+            ("modes_lumped", serde_json::json!(a.modes_lumped)),
+            ("modes_dropped", serde_json::json!(a.modes_dropped)),
+            (
+                "min_pressure_ratio",
+                serde_json::json!(a.min_pressure_ratio),
+            ),
+        ] {
+            json_extra.insert(k.into(), v);
+        }
+        lines_after.push(format!(
             "auto: error estimate {:.3e} (tol {:e}), modes used {}/{} (lumped {}, dropped {})",
             d.error_estimate.unwrap_or(f64::NAN),
             a.tol,
@@ -219,6 +182,37 @@ fn print_text(args: &Args, r: &SourceRoll) {
             a.modes_total,
             a.modes_lumped,
             a.modes_dropped
-        );
+        ));
     }
+    for (k, v) in [
+        ("friction_p05", band.as_ref().ok().map(|b| b.p05)),
+        ("friction_p50", band.as_ref().ok().map(|b| b.p50)),
+        ("friction_p95", band.as_ref().ok().map(|b| b.p95)),
+    ] {
+        json_extra.insert(k.into(), serde_json::json!(v));
+    }
+    json_extra.insert("bands_note".into(), serde_json::json!(band.as_ref().err()));
+    lines_after.push(match band {
+        Ok(b) => format!(
+            "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
+            b.p05, b.p95, b.p50
+        ),
+        Err(why) => format!("friction band: none: {why}"),
+    });
+    Answer {
+        args,
+        sol,
+        shift: shifted.as_ref().map(|a| Shift {
+            temp_c: a.temp_c,
+            log10_a_t: a.log10_a_t,
+            extrapolated: a.extrapolated,
+        }),
+        terms: r.spectrum.terms.len(),
+        warnings: &r.warnings,
+        json_extra,
+        header_suffix: String::new(),
+        lines_after_header: Vec::new(),
+        lines_after,
+    }
+    .print();
 }

@@ -40,3 +40,55 @@ pub fn read_spectrum_input(path: &Path) -> anyhow::Result<SpectrumInput> {
         fit: None,
     })
 }
+
+/// `roll` takes a creep spectrum or a fit file. A relaxation spectrum given instead is refused with
+/// the step that is missing, and a fluid (E∞ = 0: a relaxation spectrum, or a fit file whose
+/// relaxation has none) with the reason: under a load moving steadily over it a fluid flows without
+/// bound (J(t) ~ t/η₀, docs/MATH.md §4), so the rolling contact has no steady state to solve for.
+pub fn refuse_fluid_or_relaxation(path: &Path) -> anyhow::Result<()> {
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return Ok(()); // the reader that follows reports it
+    };
+    let Ok(value) = serde_json::from_str::<serde_json::Value>(&text) else {
+        return Ok(());
+    };
+    let relaxation = if value.get("format_version").is_some() {
+        value.get("relaxation")
+    } else if value.get("modulus_inf_pa").is_some() && value.get("terms").is_some() {
+        Some(&value)
+    } else {
+        None
+    };
+    let Some(r) = relaxation else { return Ok(()) };
+    let e_inf = r.get("modulus_inf_pa").and_then(|v| v.as_f64());
+    if e_inf == Some(0.0) {
+        let eta: f64 = r
+            .get("terms")
+            .and_then(|t| t.as_array())
+            .map(|ts| {
+                ts.iter()
+                    .map(|t| {
+                        let g = |k: &str| t.get(k).and_then(|v| v.as_f64()).unwrap_or(0.0);
+                        g("modulus_pa") * g("tau_s")
+                    })
+                    .sum()
+            })
+            .unwrap_or(0.0);
+        anyhow::bail!(
+            "{}: modulus_inf_pa = 0, a fluid (zero-shear viscosity η₀ = Σ Eᵢτᵢ = {eta:.3e} Pa·s, \
+             tensile or shear as the spectrum's kind): a steadily rolling contact on a fluid has no \
+             steady state (the body keeps flowing under the moving load, J(t) ~ t/η₀), so roll \
+             needs a solid with an equilibrium modulus E∞ > 0",
+            path.display()
+        );
+    }
+    if value.get("format_version").is_none() {
+        anyhow::bail!(
+            "{}: a relaxation spectrum; roll takes a creep spectrum: convert it first \
+             (`viscoroll convert {} -o creep.json`) or give a fit file",
+            path.display(),
+            path.display()
+        );
+    }
+    Ok(())
+}

@@ -14,6 +14,24 @@ use super::{DataPoint, Measurement};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
+/// The message of an outlier: the value, how far off, and a suggestion — a whole number of decades
+/// off is a slipped unit or exponent, anything else a typo or a bad reading.
+fn outlier_message(what: &str, value: f64, off_log10: f64, threshold: f64) -> String {
+    let decades = off_log10.round();
+    let hint = if decades.abs() >= 1.0 && (off_log10 - decades).abs() < 0.15 {
+        format!(
+            "about 10^{decades} times {}: a slipped exponent or unit in this cell? The value {:.4e} Pa would fit",
+            if decades > 0.0 { "too high" } else { "too low" },
+            value / 10f64.powf(decades)
+        )
+    } else {
+        "a typo or a bad reading? Check the cell".to_string()
+    };
+    format!(
+        "{what} {value:.4e} Pa is {off_log10:.2} decades off the line through its neighbours (threshold {threshold}): {hint}; the point is kept, flagged, and can pull the master curve and the Prony fit"
+    )
+}
+
 /// What is wrong with a point, an isotherm or the measurement (serialised as snake_case strings).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -357,13 +375,19 @@ pub fn run(m: &mut Measurement, set: &CheckSettings) {
                     {
                         let p = &mut iso.points[idx[k]];
                         let line = p.line;
+                        let value = if sel == 0 { p.storage_pa } else { p.loss_pa };
                         add_point_flag(p, Flag::Outlier);
                         let what = if sel == 0 {
                             "storage modulus"
                         } else {
                             "loss modulus"
                         };
-                        push(Flag::Outlier, line, col, format!("{what} is {:.2} decades off the line through its neighbours (threshold {})", r[k], set.outlier_log10));
+                        push(
+                            Flag::Outlier,
+                            line,
+                            col,
+                            outlier_message(what, value, r[k], set.outlier_log10),
+                        );
                     }
                 }
             }

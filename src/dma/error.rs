@@ -158,6 +158,13 @@ pub enum DmaError {
     /// No input file was given.
     #[error("no input files")]
     NoFiles,
+    /// Values no polymer DMA can give ([`super::plausible`]); the message names file, line and
+    /// column.
+    #[error("implausible data: {message}")]
+    Implausible {
+        /// What is impossible, where, and what to check.
+        message: String,
+    },
 }
 
 /// The units accepted for a quantity (words as in `UnknownUnit::quantity`).

@@ -16,6 +16,7 @@ pub mod isotherms;
 pub mod mode_evidence;
 pub mod plausible;
 pub mod proteus;
+pub mod pyvisco;
 mod read;
 pub mod reptate;
 pub mod rheocompass;

@@ -26,30 +26,95 @@ fn median(mut v: Vec<f64>) -> Option<f64> {
     Some(v[v.len() / 2])
 }
 
-/// Refuse impossible temperatures (see the module docs).
+/// Where an isotherm's temperature comes from: the file, the line (or sheet row) of its first point
+/// outside [−273.15, `MAX_TEMP_C`] °C (else of its first point) and the temperature column, if any.
+fn temperature_place(m: &Measurement, iso: &super::Isotherm) -> String {
+    let file = m.sources.get(iso.source).map_or("", |s| s.path.as_str());
+    let bad = |t: f64| !(-273.15..=MAX_TEMP_C).contains(&t);
+    let point = iso
+        .points
+        .iter()
+        .find(|p| p.temp_c.is_some_and(bad))
+        .or(iso.points.first());
+    let mut place = file.to_string();
+    if let Some(p) = point {
+        match &iso.sheet {
+            Some(sheet) => place.push_str(&format!(": sheet `{sheet}` row {}", p.line)),
+            None => place.push_str(&format!(": line {}", p.line)),
+        }
+    }
+    let column = m.sources.get(iso.source).and_then(|s| {
+        ["temperature", "set temperature"]
+            .iter()
+            .find_map(|q| s.columns.iter().find(|c| c.quantity == *q))
+    });
+    if let Some(c) = column {
+        place.push_str(&format!(", column `{}`", c.name));
+    }
+    place
+}
+
+/// Refuse impossible temperatures (see the module docs), naming the file, line and column.
 pub fn refuse_impossible(m: &Measurement) -> Result<(), String> {
     for iso in &m.isotherms {
         for (what, t) in [
             ("nominal", iso.temp_nominal_c),
             ("mean measured", iso.temp_mean_c),
         ] {
-            let file = m.sources.get(iso.source).map_or("", |s| s.path.as_str());
             if t.is_nan() {
                 continue; // a missing temperature is the checks' business
             }
             if t < -273.15 {
                 return Err(format!(
-                    "{file}: isotherm {what} temperature {t} °C is below absolute zero (−273.15 °C): is the column in another unit?"
+                    "{}: isotherm {what} temperature {t} °C is below absolute zero (−273.15 °C): is the column in another unit?",
+                    temperature_place(m, iso)
                 ));
             }
             if t > MAX_TEMP_C {
                 return Err(format!(
-                    "{file}: isotherm {what} temperature {t:e} °C is above {MAX_TEMP_C} °C, where no polymer is measured: the column is damaged or in another unit"
+                    "{}: isotherm {what} temperature {t:e} °C is above {MAX_TEMP_C} °C, where no polymer is measured: the column is damaged or in another unit",
+                    temperature_place(m, iso)
                 ));
             }
         }
     }
     Ok(())
+}
+
+/// Both checks, as every reader applies them: impossible temperatures refused, suspected unit
+/// mix-ups added to `m.warnings`.
+pub fn check(m: &mut Measurement) -> Result<(), super::DmaError> {
+    refuse_impossible(m).map_err(|message| super::DmaError::Implausible { message })?;
+    let w = warnings(m);
+    m.warnings.extend(w);
+    Ok(())
+}
+
+/// A measurement JSON (the serde form of [`Measurement`] that `viscoroll ingest -o` writes, bare or
+/// under `"measurement"`), parsed straight into the type (no JSON tree: a 1e6-point file stays
+/// within its own size) and checked like any export ([`check`]). `name` labels the errors.
+pub fn measurement_from_json(name: &str, text: &str) -> Result<Measurement, super::DmaError> {
+    #[derive(serde::Deserialize)]
+    struct Wrapped {
+        measurement: Measurement,
+    }
+    let mut m = match serde_json::from_str::<Measurement>(text) {
+        Ok(m) => m,
+        Err(bare) => match serde_json::from_str::<Wrapped>(text) {
+            Ok(w) => w.measurement,
+            Err(_) => {
+                return Err(super::DmaError::Structure {
+                    file: name.to_string(),
+                    location: format!("line {}, column {}", bare.line(), bare.column()),
+                    message: format!(
+                        "not a measurement JSON written by `viscoroll ingest`: {bare}"
+                    ),
+                })
+            }
+        },
+    };
+    check(&mut m)?;
+    Ok(m)
 }
 
 /// Warnings, each with a suggestion, for values that look like a unit mix-up.
@@ -163,6 +228,9 @@ mod tests {
     fn impossible_temperatures_are_refused() {
         let e = refuse_impossible(&m(&[20.0, 1e9], |_| 1e7, 1.0)).unwrap_err();
         assert!(e.contains("1e9") && e.contains("above"), "{e}");
+        // The place: the first point of the isotherm (line 0 here; no file or column in this
+        // bare measurement).
+        assert!(e.starts_with(": line 0:"), "{e}");
         let e = refuse_impossible(&m(&[-300.0, 20.0], |_| 1e7, 1.0)).unwrap_err();
         assert!(e.contains("absolute zero"), "{e}");
         assert!(refuse_impossible(&m(&[-100.0, 200.0], |_| 1e7, 1.0)).is_ok());

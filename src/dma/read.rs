@@ -226,6 +226,7 @@ pub fn read_bytes(
     m.isotherms
         .sort_by(|a, b| a.temp_mean_c.total_cmp(&b.temp_mean_c));
     checks::run(&mut m, &opts.checks);
+    super::plausible::check(&mut m)?;
     Ok(m)
 }
 

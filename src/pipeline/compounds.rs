@@ -16,8 +16,20 @@
 //! modulus_unit = "MPa"            # units the file does not state
 //! freq_unit = "Hz"
 //! temp_unit = "°C"
+//! columns = { freq = "Frq", storage = "Mod1", loss = "Mod2" }  # as `ingest --columns` (keys:
+//!                                 # freq, temp, set_temp, storage, loss, complex, tan_delta, phase,
+//!                                 # segment); also the string "freq=Frq,storage=Mod1,loss=Mod2"
 //! tref_c = 20.0                   # reference temperature of the master curve
 //! prony = { terms_per_decade = 1.5 }   # keys of the Prony settings (fit file `settings.prony`)
+//! ```
+//!
+//! A master curve already shifted, in pyvisco's CSV layout, is one compound too: `files` is the
+//! master-curve CSV alone and `shift_factors` its shift-factor CSV (crate::dma::pyvisco):
+//! ```toml
+//! [[compound]]
+//! name = "ems-ca-pyvisco"
+//! files = ["pyvisco-ems-ca/freq_user_master.csv"]
+//! shift_factors = "pyvisco-ems-ca/freq_user_master__shift_factors.csv"
 //! ```
 
 use super::error::{io, PipelineError};
@@ -47,6 +59,8 @@ pub struct CompoundSettings {
     pub tref_c: Option<f64>,
     /// Prony settings.
     pub prony: Option<PronySettings>,
+    /// pyvisco's shift-factor CSV of a master curve given as the compound's one file.
+    pub shift_factors: Option<PathBuf>,
 }
 
 #[derive(Deserialize)]
@@ -76,6 +90,18 @@ struct ListedCompound {
     tref_c: Option<f64>,
     #[serde(default)]
     prony: Option<toml::Table>,
+    #[serde(default)]
+    shift_factors: Option<String>,
+    #[serde(default)]
+    columns: Option<ColumnsSetting>,
+}
+
+/// `columns` of a compound: a table `{ freq = "Frq", … }` or the `ingest --columns` string.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum ColumnsSetting {
+    Spec(String),
+    Table(toml::Table),
 }
 
 impl ListedCompound {
@@ -130,6 +156,30 @@ impl ListedCompound {
             })?);
             any = true;
         }
+        if let Some(c) = &self.columns {
+            o.columns = match c {
+                ColumnsSetting::Spec(spec) => {
+                    crate::dma::ColumnMap::parse(spec).map_err(|e| format!("columns: {e}"))?
+                }
+                ColumnsSetting::Table(t) => {
+                    let mut spec = Vec::new();
+                    for (k, v) in t {
+                        let v = v.as_str().ok_or_else(|| {
+                            format!("columns: `{k}` must be a column name (a string), got {v}")
+                        })?;
+                        if v.contains([',', '=']) {
+                            return Err(format!(
+                                "columns: `{k}` = `{v}`: a column name may not hold `,` or `=`"
+                            ));
+                        }
+                        spec.push(format!("{k}={v}"));
+                    }
+                    crate::dma::ColumnMap::parse(&spec.join(","))
+                        .map_err(|e| format!("columns: {e}"))?
+                }
+            };
+            any = true;
+        }
         if let Some(t) = self.tref_c {
             if !(t.is_finite() && (-273.15..=1000.0).contains(&t)) {
                 return Err(format!(
@@ -159,6 +209,7 @@ impl ListedCompound {
             ingest: any.then_some(o),
             tref_c: self.tref_c,
             prony,
+            shift_factors: None,
         })
     }
 }
@@ -295,10 +346,23 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 }
                 files.extend(got);
             }
-            let settings = c.settings().map_err(|message| PipelineError::Config {
+            let mut settings = c.settings().map_err(|message| PipelineError::Config {
                 path: listing.clone(),
                 message: format!("compound {:?}: {message}", c.name),
             })?;
+            if let Some(sf) = &c.shift_factors {
+                if files.len() != 1 {
+                    return Err(PipelineError::Config {
+                        path: listing.clone(),
+                        message: format!(
+                            "compound {:?}: with shift_factors, `files` must name the one master-curve CSV ({} files found)",
+                            c.name,
+                            files.len()
+                        ),
+                    });
+                }
+                settings.shift_factors = Some(dir.join(sf));
+            }
             out.push(CompoundInput {
                 name: c.name,
                 files,

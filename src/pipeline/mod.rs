@@ -15,7 +15,9 @@ pub mod scenes;
 pub use crate::results::compound_fit;
 pub use crate::results::CompoundFit;
 pub use error::PipelineError;
-pub use fit_compound::{fit_files, fit_measurement, fit_or_reuse, FitOptions};
+pub use fit_compound::{
+    fit_files, fit_master_curve, fit_measurement, fit_or_reuse, fit_or_reuse_master, FitOptions,
+};
 pub use run::{
     run_all, run_all_with_progress, CompoundOutcome, ProgressEvent, RunOptions, RunStatus,
     RunSummary,

@@ -9,10 +9,11 @@
 
 use super::compounds::{discover, CompoundInput};
 use super::error::{io, PipelineError};
-use super::fit_compound::{fit_or_reuse, FitAction, FitOptions};
+use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitAction, FitOptions};
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
+use crate::bands::BandSettings;
 use crate::dma::read_files;
-use crate::report::{index_html, ranking_csv, write_file, write_report};
+use crate::report::{ranking_csv, write_file, write_index, write_report, TanDeltaProxy};
 use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
 use crate::Measurement;
 use rayon::prelude::*;
@@ -38,6 +39,8 @@ pub struct RunOptions {
     pub fit: FitOptions,
     /// Average extrapolated temperatures into the ranking too (marked); default: measured only.
     pub allow_extrapolation: bool,
+    /// Uncertainty bands (crate::bands) with these settings; `None` skips them (`--no-bands`).
+    pub bands: Option<BandSettings>,
 }
 
 impl RunOptions {
@@ -73,12 +76,24 @@ impl RunOptions {
             force: false,
             fit,
             allow_extrapolation: false,
+            bands: Some(BandSettings::default()),
         })
     }
 }
 
 /// Friction of one compound per scene: (scene name, points).
 pub type SceneFriction = Vec<(String, Vec<FrictionPoint>)>;
+
+/// What one compound hands on: its fit, what was done with the fit file, its friction per scene,
+/// per scene and temperature the bootstrap ratios F_b/F̂ (empty without bands: crate::bands) and
+/// why bands are missing, if they are.
+type CompoundResult = (
+    CompoundFit,
+    FitAction,
+    SceneFriction,
+    Vec<Vec<Vec<f64>>>,
+    Option<String>,
+);
 
 /// One ranked fit: Ok((compound, points, standing)) or Err((compound, error)).
 pub type RankedFit = Result<(String, Vec<FrictionPoint>, SceneStanding), (String, String)>;
@@ -123,28 +138,19 @@ fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
         }
         let p = &c.files[0];
         let text = std::fs::read_to_string(p).map_err(io(p))?;
-        return serde_json::from_str(&text).map_err(|e| PipelineError::Setting {
-            field: p.display().to_string(),
-            message: cap_line(&format!(
-                "not a measurement JSON written by `viscoroll ingest`: {e}"
-            )),
-        });
+        return Ok(crate::dma::plausible::measurement_from_json(
+            &p.display().to_string(),
+            &text,
+        )?);
     }
     let ingest = c.settings.ingest.clone().unwrap_or_default();
     Ok(read_files(&c.files, &ingest)?)
 }
 
-/// [`measurement_of`], then the plausibility checks (crate::dma::plausible): impossible
-/// temperatures refused, suspected unit mix-ups added to the measurement's warnings.
+/// [`measurement_of`]: the plausibility checks (crate::dma::plausible) ran in the read path —
+/// impossible temperatures refused, suspected unit mix-ups in the measurement's warnings.
 fn checked_measurement(c: &CompoundInput) -> Result<Measurement, PipelineError> {
-    let mut m = measurement_of(c)?;
-    crate::dma::plausible::refuse_impossible(&m).map_err(|message| PipelineError::Implausible {
-        compound: c.name.clone(),
-        message: cap_line(&message),
-    })?;
-    let w = crate::dma::plausible::warnings(&m);
-    m.warnings.extend(w);
-    Ok(m)
+    measurement_of(c)
 }
 
 /// The fit options of a compound: the run's, with the compound's own settings over them.
@@ -163,24 +169,86 @@ fn one_compound(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
-) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
-    let measurement = checked_measurement(c)?;
-    let (fit, action) = fit_or_reuse(
-        &c.name,
-        &measurement,
-        &fit_path(&opts.out_dir, &c.name),
-        &fit_options(c, opts),
-        opts.force,
-    )?;
+) -> Result<CompoundResult, PipelineError> {
+    let (measurement, fit, action, no_bands) = match &c.settings.shift_factors {
+        None => {
+            let measurement = checked_measurement(c)?;
+            let (fit, action, no_bands) = fit_or_reuse_with_bands(
+                &c.name,
+                &measurement,
+                &fit_path(&opts.out_dir, &c.name),
+                &fit_options(c, opts),
+                opts.force,
+                opts.bands.as_ref(),
+            )?;
+            (measurement, fit, action, no_bands)
+        }
+        Some(sf) => {
+            // A master curve read already shifted (pyvisco's CSV pair).
+            let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
+            let pv =
+                crate::dma::pyvisco::read_master_pair(&c.files[0], sf, poisson, c.settings.tref_c)?;
+            let mut measurement = pv.measurement;
+            crate::dma::plausible::refuse_impossible(&measurement).map_err(|message| {
+                PipelineError::Implausible {
+                    compound: c.name.clone(),
+                    message: cap_line(&message),
+                }
+            })?;
+            let w = crate::dma::plausible::warnings(&measurement);
+            measurement.warnings.extend(w);
+            let master = crate::tts::master_curve_from_reduced(&measurement, &pv.shift_law)?;
+            let mut options = fit_options(c, opts);
+            options.master = master.settings.clone();
+            let (fit, action) = fit_or_reuse_master(
+                &c.name,
+                &measurement,
+                &master,
+                &fit_path(&opts.out_dir, &c.name),
+                &options,
+                opts.force,
+            )?;
+            // The bands resample isotherms; a master curve read already shifted has none.
+            let no_bands = opts.bands.as_ref().map(|_| {
+                "uncertainty bands not computed: a master curve read already shifted has no \
+                 isotherms to resample"
+                    .to_string()
+            });
+            (measurement, fit, action, no_bands)
+        }
+    };
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
     let mut maps = Vec::new();
+    let mut ratios = Vec::new();
+    // (scene, its temperatures) → the friction ratios of each replicate, shared by twin scenes.
+    type SolvedRatios = ((crate::contact::Scene, Vec<f64>), Vec<Vec<f64>>);
+    let mut solved: Vec<SolvedRatios> = Vec::new();
     for spec in &opts.scenes.scene {
-        friction.push((
-            spec.clone(),
-            friction_vs_temperature(&fit, spec, &settings)?,
-        ));
+        let mut points = friction_vs_temperature(&fit, spec, &settings)?;
+        if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
+            // The ratios are solved on the scene's half-space: a covered scene and its half-space
+            // twin (the shipped conveyor-idler pair) share them.
+            let key = (spec.scene(), spec.temps_c.clone());
+            let r = match solved.iter().find(|(k, _)| *k == key) {
+                Some((_, r)) => r.clone(),
+                None => {
+                    let r = crate::bands::scene_ratios(&fit, ensemble, &key.0, &key.1, bs);
+                    solved.push((key, r.clone()));
+                    r
+                }
+            };
+            for (p, r) in points.iter_mut().zip(&r) {
+                if p.error.is_none() {
+                    p.band = crate::bands::band_of(p.friction, r);
+                }
+            }
+            ratios.push(r);
+        } else {
+            ratios.push(Vec::new());
+        }
+        friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         maps.push(super::scenes::friction_maps(
             &fit,
@@ -202,6 +270,8 @@ fn one_compound(
         fit,
         action,
         friction.into_iter().map(|(s, p)| (s.name, p)).collect(),
+        ratios,
+        no_bands,
     ))
 }
 
@@ -211,7 +281,7 @@ fn one_compound_isolated(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
-) -> Result<(CompoundFit, FitAction, SceneFriction), PipelineError> {
+) -> Result<CompoundResult, PipelineError> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| one_compound(c, opts, step)))
         .unwrap_or_else(|payload| {
             let msg = payload
@@ -289,12 +359,19 @@ fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String>
 fn outcome(
     c: &CompoundInput,
     opts: &RunOptions,
-    result: Result<(CompoundFit, FitAction, SceneFriction), PipelineError>,
+    result: Result<CompoundResult, PipelineError>,
     seconds: f64,
 ) -> CompoundOutcome {
     match result {
-        Ok((fit, action, friction)) => {
+        Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
+            let mut warnings = compound_warnings(&fit, &friction);
+            warnings.extend(no_bands);
+            if opts.bands.is_some() {
+                if let Some(e) = &fit.bands {
+                    warnings.extend(e.notes.iter().map(|n| format!("uncertainty bands: {n}")));
+                }
+            }
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
@@ -308,9 +385,16 @@ fn outcome(
                 ),
                 standings: friction
                     .iter()
-                    .map(|(s, p)| standing(s, p, &untrusted, opts.allow_extrapolation))
+                    .enumerate()
+                    .map(|(k, (s, p))| {
+                        let mut st = standing(s, p, &untrusted, opts.allow_extrapolation);
+                        if let Some(r) = ratios.get(k).filter(|r| !r.is_empty()) {
+                            st.band = crate::bands::mean_band(p, r, &st.temps_c);
+                        }
+                        st
+                    })
                     .collect(),
-                warnings: compound_warnings(&fit, &friction),
+                warnings,
                 untrusted,
                 friction,
                 error: None,
@@ -408,7 +492,7 @@ pub fn run_all_with_progress(
     }
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
-    let outcomes: Vec<CompoundOutcome> = compounds
+    let (outcomes, proxies): (Vec<CompoundOutcome>, Vec<Option<TanDeltaProxy>>) = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();
@@ -424,11 +508,15 @@ pub fn run_all_with_progress(
             for _ in done.get()..per {
                 step("skipped");
             }
+            let proxy = r.as_ref().ok().map(|(fit, ..)| TanDeltaProxy::of(fit));
             let out = outcome(c, opts, r, start.elapsed().as_secs_f64());
             log(&log_line(&out));
-            out
+            (out, proxy)
         })
-        .collect();
+        .unzip();
+    let proxies: Vec<TanDeltaProxy> = proxies.into_iter().flatten().collect();
+    let mut outcomes = outcomes;
+    let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
     notes.extend(stale_reports(&reports, &compounds));
     let ranking_path = reports.join("ranking.csv");
@@ -437,18 +525,52 @@ pub fn run_all_with_progress(
         &ranking_path,
         ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
     )?;
-    write_file(
-        &index_path,
-        index_html(&outcomes, &opts.scenes, &notes, opts.allow_extrapolation).as_bytes(),
-    )?;
-    Ok(RunSummary {
+    // the index reads the whole summary (comparisons included), so it is written last
+    let summary = RunSummary {
         compounds: outcomes,
         notes,
         allow_extrapolation: opts.allow_extrapolation,
         ranking_csv: ranking_path,
         index_html: index_path,
-        comparisons: Vec::new(),
-    })
+        comparisons,
+    };
+    write_index(&reports, &summary, &opts.scenes, &proxies)?;
+    Ok(summary)
+}
+
+/// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,
+/// in ranking order), and each standing's `tied_with` filled from the ties.
+fn compare_ranked(
+    outcomes: &mut [CompoundOutcome],
+    scenes: &SceneSet,
+) -> Vec<crate::results::PairComparison> {
+    let mut all = Vec::new();
+    for spec in &scenes.scene {
+        let ranked: Vec<(String, crate::results::FrictionBand)> =
+            crate::report::ranked(outcomes, &spec.name)
+                .into_iter()
+                .filter_map(|(o, s)| s.band.map(|b| (o.compound.clone(), b)))
+                .collect();
+        let pairs = crate::bands::comparisons(&spec.name, &ranked);
+        for o in outcomes.iter_mut() {
+            let name = o.compound.clone();
+            if let Some(st) = o.standings.iter_mut().find(|s| s.scene == spec.name) {
+                st.tied_with = pairs
+                    .iter()
+                    .filter(|p| p.tied && (p.a == name || p.b == name))
+                    .map(|p| {
+                        if p.a == name {
+                            p.b.clone()
+                        } else {
+                            p.a.clone()
+                        }
+                    })
+                    .collect();
+            }
+        }
+        all.extend(pairs);
+    }
+    all
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted

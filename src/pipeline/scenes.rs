@@ -13,8 +13,8 @@ use crate::results::CompoundFit;
 use rayon::prelude::*;
 
 pub use crate::results::scene::{
-    FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec, DEFAULT_SCENES_TOML,
-    GRID_POINTS,
+    FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec, CURVE_POINTS,
+    DEFAULT_SCENES_TOML, GRID_POINTS,
 };
 
 /// Contact settings of the main job: the error-controlled `auto` scheme at its default relative
@@ -144,13 +144,19 @@ pub fn pipeline_map_settings() -> MapSettings {
 }
 
 fn log_grid(values: &[f64]) -> Vec<f64> {
+    log_spaced(values, GRID_POINTS)
+}
+
+/// `n` log-spaced values from the smallest to the largest of `values` (empty unless they span a
+/// range).
+fn log_spaced(values: &[f64], n: usize) -> Vec<f64> {
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
         return vec![];
     }
-    (0..GRID_POINTS)
-        .map(|k| (lo.ln() + (hi.ln() - lo.ln()) * k as f64 / (GRID_POINTS - 1) as f64).exp())
+    (0..n)
+        .map(|k| (lo.ln() + (hi.ln() - lo.ln()) * k as f64 / (n - 1) as f64).exp())
         .collect()
 }
 
@@ -180,20 +186,33 @@ pub fn friction_maps(
         log_grid(&spec.map_loads_n_per_m),
     );
     // (temperature, speed, load, in the grid?) for every point; a_T per temperature
+    // the dense curves lie inside the span of the listed points, so they leave the interpolant's
+    // range (and so every listed and grid value) unchanged
+    let (curve_speeds, curve_loads) = (
+        log_spaced(&spec.map_speeds_m_s, CURVE_POINTS),
+        log_spaced(&spec.map_loads_n_per_m, CURVE_POINTS),
+    );
+    // (temperature, speed, load, kind): 0 listed point, 1 grid, 2 dense curve
     let mut jobs = Vec::new();
     for &t in &spec.map_temps_c {
         for &v in &spec.map_speeds_m_s {
-            jobs.push((t, v, spec.load_n_per_m, false));
+            jobs.push((t, v, spec.load_n_per_m, 0));
         }
         for &n in &spec.map_loads_n_per_m {
-            jobs.push((t, spec.speed_m_s, n, false));
+            jobs.push((t, spec.speed_m_s, n, 0));
         }
         if !speeds.is_empty() && !loads.is_empty() {
             for &v in &speeds {
                 for &n in &loads {
-                    jobs.push((t, v, n, true));
+                    jobs.push((t, v, n, 1));
                 }
             }
+        }
+        for &v in &curve_speeds {
+            jobs.push((t, v, spec.load_n_per_m, 2));
+        }
+        for &n in &curve_loads {
+            jobs.push((t, spec.speed_m_s, n, 2));
         }
     }
     let a_t = |t: f64| {
@@ -232,8 +251,8 @@ pub fn friction_maps(
         error_estimate = curve.error_estimate;
         solves = curve.solves;
     }
-    let (mut points, mut grid) = (Vec::new(), Vec::new());
-    for (&(t, v, n, in_grid), value) in jobs.iter().zip(values) {
+    let (mut points, mut grid, mut curves) = (Vec::new(), Vec::new(), Vec::new());
+    for (&(t, v, n, kind), value) in jobs.iter().zip(values) {
         let p = MapPoint {
             temp_c: t,
             speed_m_s: v,
@@ -241,15 +260,16 @@ pub fn friction_maps(
             friction: value.map_or(f64::NAN, |m| m.friction),
             contact_length_mm: value.map_or(f64::NAN, |m| m.contact_length_m * 1e3),
         };
-        if in_grid {
-            grid.push(p);
-        } else {
-            points.push(p);
+        match kind {
+            0 => points.push(p),
+            1 => grid.push(p),
+            _ => curves.push(p),
         }
     }
     Ok(FrictionMaps {
         points,
         grid,
+        curves,
         error_estimate,
         solves,
         tol: settings.tol,
@@ -317,6 +337,7 @@ fn covered_maps(
         solves: solved.len(),
         points: solved.into_iter().map(|s| s.0).collect(),
         grid: Vec::new(),
+        curves: Vec::new(),
         error_estimate,
         tol,
     }

@@ -32,6 +32,11 @@
 //!   condition of A, not of AᵀA, which the noise-free round trip to 1e-6 needs.
 //! * λ: the rule in [`WeightRule`], over a log-spaced grid; each solve is a few dozen variables.
 //! * Terms whose largest relative contribution to any datum is below `drop_threshold` are dropped.
+//! * Size: A has 2m rows, so a master curve of m = 1e6 points would take gigabytes. Above
+//!   [`THIN_ABOVE_POINTS`] points the curve is first replaced by the means (in log f, log E′, log E″)
+//!   of that many equal-count groups of consecutive points in log-frequency ([`thin_points`]): with
+//!   equal counts, the least squares through the means with equal weights is the least squares
+//!   through all points with count weights, up to a constant (the scatter within the groups).
 //!
 //! # References
 //! * Hansen, P. C. & O'Leary, D. P. (1993), The use of the L-curve in the regularization of discrete
@@ -105,6 +110,13 @@ pub fn fit_prony(
 ) -> Result<PronyFit, PronyError> {
     settings.validate()?;
     check_points(points)?;
+    let thinned;
+    let (points, thinned_from_points) = if points.len() > THIN_ABOVE_POINTS {
+        thinned = thin_points(points, THIN_ABOVE_POINTS);
+        (&thinned[..], Some(points.len()))
+    } else {
+        (points, None)
+    };
     let f_min = points
         .iter()
         .map(|p| p.reduced_freq_hz)
@@ -199,6 +211,7 @@ pub fn fit_prony(
         max_abs_log10_storage: errors.max_storage,
         max_abs_log10_loss: errors.max_loss,
         n_points: points.len(),
+        thinned_from_points,
         n_terms_grid: taus.len(),
         n_terms_kept: spectrum.terms.len(),
         drop_threshold: settings.drop_threshold,
@@ -218,6 +231,43 @@ pub fn fit_prony(
         term_trade: trade,
     };
     Ok(PronyFit { spectrum, info })
+}
+
+/// Above this many master-curve points the QP fits the means of this many groups ([`thin_points`]).
+/// 5000 points resolve any master curve (a Prony series follows ≈ 1 term per decade over ≤ 30
+/// decades) and keep A below 2·5000·(n+1) doubles (≈ 8 MB for 100 terms); real master curves have a
+/// few hundred points and are never thinned.
+pub const THIN_ABOVE_POINTS: usize = 5000;
+
+/// The means (in log10) of `groups` groups of consecutive points in reduced frequency whose sizes
+/// differ by at most one (group g: points ⌊g·m/groups⌋ … ⌊(g+1)·m/groups⌋ − 1 after sorting);
+/// `points` unchanged (sorted) when there are no more than `groups`. Points must be positive.
+pub fn thin_points(points: &[MasterPoint], groups: usize) -> Vec<MasterPoint> {
+    let mut logs: Vec<[f64; 3]> = points
+        .iter()
+        .map(|p| {
+            [
+                p.reduced_freq_hz.log10(),
+                p.storage_pa.log10(),
+                p.loss_pa.log10(),
+            ]
+        })
+        .collect();
+    logs.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let m = logs.len();
+    let groups = groups.clamp(1, m.max(1));
+    (0..groups)
+        .filter_map(|g| {
+            let group = &logs[g * m / groups..(g + 1) * m / groups];
+            let c = group.len() as f64;
+            let mean = |i: usize| group.iter().map(|v| v[i]).sum::<f64>() / c;
+            (c > 0.0).then(|| MasterPoint {
+                reduced_freq_hz: 10f64.powf(mean(0)),
+                storage_pa: 10f64.powf(mean(1)),
+                loss_pa: 10f64.powf(mean(2)),
+            })
+        })
+        .collect()
 }
 
 /// RMS and largest |log10(fit/datum)| of E′ and E″.
@@ -620,6 +670,62 @@ mod tests {
                     d1 < 0.02 && d2 < 0.02,
                     "seed {seed} {rule:?}: E′ {d1:e}, E″ {d2:e}"
                 );
+            }
+        }
+    }
+
+    /// 40 001 noisy points (1 %, as above) are more than [`THIN_ABOVE_POINTS`]: the QP must see
+    /// exactly that many group means (so A stays 2·5000 rows whatever the input), say so, and still
+    /// meet the 2 % bound of the 91-point fit above (the means of ≈ 8 points carry ≈ 0.35 % noise).
+    /// The 91-point curve must not be thinned.
+    #[test]
+    fn a_large_master_curve_is_thinned_before_the_qp() {
+        let settings = PronySettings::default();
+        let (f0, f1) = (1e-3, 1e6);
+        let taus: Vec<f64> = (0..40).map(|j| 10f64.powf(-7.9 + j as f64 / 3.0)).collect();
+        let truth = rubber_like_spectrum(&taus);
+        let small = master_points(&truth, f0, f1, 10.0, 0.01, 1);
+        let fit = fit_prony(&small, ModulusKind::Tensile, 0.5, &settings).unwrap();
+        assert_eq!(fit.info.thinned_from_points, None);
+        assert_eq!(fit.info.n_points, small.len());
+        let pts = master_points(&truth, f0, f1, 40_000.0 / 9.0, 0.01, 1);
+        assert_eq!(pts.len(), 40_001);
+        let fit = fit_prony(&pts, ModulusKind::Tensile, 0.5, &settings).unwrap();
+        assert_eq!(fit.info.thinned_from_points, Some(40_001));
+        assert_eq!(fit.info.n_points, THIN_ABOVE_POINTS);
+        let (d1, d2) = max_rel_dev(&small, &fit.spectrum, &truth);
+        assert!(d1 < 0.02 && d2 < 0.02, "E′ {d1:e}, E″ {d2:e}");
+    }
+
+    /// Equal-count groups: 10 points into 3 groups of 3, 3, 4; means in log10.
+    #[test]
+    fn thin_points_averages_equal_count_groups_in_log() {
+        let pts: Vec<MasterPoint> = (0..10)
+            .rev()
+            .map(|k| MasterPoint {
+                reduced_freq_hz: 10f64.powi(k),
+                storage_pa: 10f64.powi(k + 1),
+                loss_pa: 10f64.powi(2 * k),
+            })
+            .collect();
+        let t = thin_points(&pts, 3);
+        let logs: Vec<[f64; 3]> = t
+            .iter()
+            .map(|p| {
+                [
+                    p.reduced_freq_hz.log10(),
+                    p.storage_pa.log10(),
+                    p.loss_pa.log10(),
+                ]
+            })
+            .collect();
+        // Groups {0,1,2}, {3,4,5}, {6,7,8,9} after sorting: log f means 1, 4, 7.5.
+        for (got, want) in logs
+            .iter()
+            .zip([[1.0, 2.0, 2.0], [4.0, 5.0, 8.0], [7.5, 8.5, 15.0]])
+        {
+            for i in 0..3 {
+                assert!((got[i] - want[i]).abs() < 1e-12, "{got:?} vs {want:?}");
             }
         }
     }

@@ -16,6 +16,8 @@
 //!   −log A = h(θ) = C1(θ−θ₀)/(C2+θ−θ₀)); `*VISCOELASTIC` (v6.5 keywords page: TIME=PRONY, elasticity
 //!   from `*ELASTIC`/`*HYPERELASTIC`). The card must be combined with an elastic definition of the
 //!   instantaneous modulus (`*ELASTIC, MODULI=INSTANTANEOUS`), given in a comment.
+//!   `tests/cards_vendor.rs` reads our *TRS with its own parser and, with Abaqus' form, reproduces
+//!   the EPLEXOR software's own WLF table of EMS-CA (RMS 0.21 decade; the flipped sign 11.9).
 //! - **ANSYS** `TB,PRONY,mat,1,n,SHEAR` then `TBDATA` with pairs `aᵢ, τᵢ` (aᵢ = Gᵢ/G₀ relative to the
 //!   instantaneous modulus), six values per `TBDATA` line with the start index, and
 //!   `TB,SHIFT,mat,1,3,WLF` + `TBDATA,1,T_ref,C1,C2`. Checked against: a real card written by ANSYS 2020 R1
@@ -23,21 +25,30 @@
 //!   `TBDATA,1,a1,t1,a2,t2,a3,t3`, `TBDATA,4,…`) and the ANSYS 18.2 command reference page of `TBDATA`
 //!   (STLOC + up to six constants). The TB,SHIFT WLF constant order (T_ref, C1, C2, with
 //!   log10 A = C1(T−T_ref)/(C2+T−T_ref) for the factor dividing times, i.e. the same C1, C2 as ours) is
-//!   from the ANSYS Material Reference as we remember it; we could not retrieve that page here: check
-//!   it before relying on the shift card.
+//!   from the ANSYS Material Reference as we remember it; we could not retrieve that page here (nor
+//!   an ANSYS-written TB,SHIFT): check it before relying on the shift card. The TB,PRONY layout is
+//!   compared with ANSYS's own card by an independent parser in `tests/cards_vendor.rs`.
 //! - **LS-DYNA** `*MAT_GENERAL_VISCOELASTIC` (MAT_076): card 1 `MID, RO, BULK, PCF, EF, TREF, A, B`,
 //!   card 2 (`LCID, NT, BSTART, TRAMP, LCIDK, NTK, BSTARTK, TRAMPK`) left blank because the Prony terms are
 //!   given directly, then one card `GI, BETAI, KI, BETAKI` per term with *absolute shear* moduli Gᵢ and
 //!   decay constants βᵢ = 1/τᵢ; the equilibrium modulus G∞ is a term with β = 0 (MAT_076 has no separate
 //!   long-term field: G(t) = Σ Gᵢ e^(−βᵢt)). Fixed 10-character fields; numbers are written with the most
-//!   significant digits that fit (5–7). TREF, A, B: WLF shift (A = C1, B = C2). At most 18 terms.
-//!   We could not retrieve the LS-DYNA Keyword User's Manual text through our search tool; the layout
-//!   follows the manual (vol. II, MAT_076) as we know it and a third-party exporter's test we saw
-//!   (G₀ = E/(2(1+ν)), Gᵢ and β = 1/τ). Check before production use.
+//!   significant digits that fit (5–7). TREF, A, B: WLF shift (A = C1, B = C2), TREF in kelvin
+//!   because the keyword requires TREF > 0 (WLF depends on T − TREF only, so A and B do not change;
+//!   the deck's temperatures must then be in K). At most 18 terms.
+//!   Checked against: the keyword definition Ansys publishes in its PyDyna package
+//!   (`keyword_classes/auto/mat_general_viscoelastic.py` and its documentation page: card 1 MID, RO,
+//!   BULK, PCF, EF, TREF, A, B in 10-column fields at columns 1, 11, …, 71; card 2 LCID, NT, BSTART,
+//!   TRAMP, LCIDK, NTK, BSTARTK, TRAMPK; cards 3+ GI, BETAI, KI, BETAKI at columns 1, 11, 21, 31;
+//!   "TREF: reference temperature for shift function (must be greater than zero)"; A: coefficient of
+//!   the Arrhenius and WLF shift, B: of the WLF shift). Until this check TREF was written in °C,
+//!   which LS-DYNA refuses at or below 0 °C (e.g. EMS-CA's −5 °C). The WLF sign convention of A, B
+//!   was not in that source.
 //!
 //! Readers: our own three formats (round trips) and ANSYS `TB,PRON`/`TB,PRONY` cards written by ANSYS
 //! itself (abbreviated keywords, `_MATL` placeholders, `TBFIELD`/`TBIN` lines ignored).
 
+use crate::material::ZERO_CELSIUS_K;
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
 use crate::{ModulusKind, ShiftLaw};
 use serde::{Deserialize, Serialize};
@@ -312,13 +323,15 @@ pub fn lsdyna(
     let blank = " ".repeat(10);
     let mut s = String::new();
     s.push_str(&provenance("$", spectrum, e0));
-    s.push_str("$ Units: kg, m, s, Pa, degC. Shear moduli G_i (absolute), decay constants BETA_i = 1/tau_i.\n");
+    s.push_str("$ Units: kg, m, s, Pa, K (TREF must be > 0: temperatures in kelvin). Shear moduli G_i (absolute), decay constants BETA_i = 1/tau_i.\n");
     s.push_str("*MAT_GENERAL_VISCOELASTIC\n");
     s.push_str(
         "$      MID        RO      BULK       PCF        EF      TREF         A         B\n",
     );
+    // TREF in kelvin: the keyword's definition asks for TREF > 0 (an absolute temperature); WLF
+    // depends on T − TREF only, so A = C1 and B = C2 are the same in K as in °C.
     let (tref, a, b) = match wlf {
-        Some((t, c1, c2)) => (f(t), f(c1), f(c2)),
+        Some((t, c1, c2)) => (f(t + ZERO_CELSIUS_K), f(c1), f(c2)),
         None => (blank.clone(), blank.clone(), blank.clone()),
     };
     let ro = options
@@ -585,7 +598,7 @@ pub fn read_lsdyna(text: &str) -> Result<CardContents, CardError> {
                 let get = |k: usize| v.get(k).copied().unwrap_or(0.0);
                 if get(6) != 0.0 || get(7) != 0.0 {
                     wlf = Some(ShiftLaw::Wlf {
-                        t_ref_c: get(5),
+                        t_ref_c: get(5) - ZERO_CELSIUS_K,
                         c1: get(6),
                         c2_k: get(7),
                     });

@@ -1,66 +1,186 @@
-//! The index page of the main job, `reports/index.html`: per scene the ranked (trusted) compounds
-//! with links to their datasheets, then the compounds listed apart with their reasons; then the
-//! failed compounds, warnings (data flags, extrapolation, contact validity) and notes.
+//! The index page of the main job, `reports/index.html`, and its plots: per scene an overlay of
+//! F/N against temperature for every compound (with bands when the run has them), the ranking
+//! (flags, ties from the pairwise comparisons, and the tan δ proxy's rank beside the rank by
+//! predicted friction), the rank at each temperature, and the compounds listed apart with their
+//! reasons; then the failed compounds, warnings and notes.
 //!
-//! Input: the [`CompoundOutcome`]s, the [`SceneSet`] and the notes of the run; output: HTML text.
-//! Every text from outside (names, messages) is escaped and capped in length before it gets here.
+//! Input: the [`RunSummary`] (outcomes, notes, comparisons), the [`SceneSet`] and the tan δ proxy
+//! of each compound ([`TanDeltaProxy`]); output: `index.html` and `index_SCENE.{svg,png}` in the
+//! reports folder ([`write_index`]). Every text from outside (names, messages) is escaped and
+//! capped in length before it gets here.
 
-use super::html::{esc, STYLE};
+use super::chart::{Axis, Chart, Curve, Mark};
+use super::datasheet::friction_curve;
+use super::error::{write_file, ReportError};
+use super::html::{esc, num, plot_pair, STYLE};
+use super::plots;
 use super::ranking::{apart, ranked, temps_text};
-use crate::results::{CompoundOutcome, SceneSet, SceneSpec};
+use crate::results::{
+    CompoundFit, CompoundOutcome, PairComparison, RunSummary, SceneSet, SceneSpec,
+};
 use std::fmt::Write as _;
+use std::path::Path;
 
-/// The table of one scene: ranked compounds, then those listed apart.
-fn scene_section(
-    outcomes: &[CompoundOutcome],
-    spec: &SceneSpec,
-    allow_extrapolation: bool,
-) -> String {
-    let mut h = format!(
-        "<h2>{}</h2><p>{} (R = {} mm, {} N/m, {} m/s, {} temperatures)</p><table><tr><th>rank</th><th>compound</th><th>mean F/N</th><th>temperatures averaged (°C)</th></tr>",
-        esc(&spec.name),
-        esc(&spec.description),
-        spec.roll_radius_mm,
-        spec.load_n_per_m,
-        spec.speed_m_s,
-        spec.temps_c.len()
-    );
-    for (i, (o, s)) in ranked(outcomes, &spec.name).iter().enumerate() {
-        let temps: Vec<String> = s
-            .temps_c
-            .iter()
-            .map(|t| {
-                if s.extrapolated_temps_c.contains(t) {
-                    format!("{t}*")
-                } else {
-                    t.to_string()
-                }
-            })
-            .collect();
-        let left_out = if !allow_extrapolation && !s.extrapolated_temps_c.is_empty() {
-            format!(
-                " <span class=\"warn\">(extrapolated, left out: {})</span>",
-                temps_text(&s.extrapolated_temps_c)
-            )
+/// The temperature (°C) and frequency (Hz) of the tan δ proxy: the rolling-resistance indicator
+/// compound developers read off a DMA temperature sweep (tan δ at 60 °C, 10 Hz), the same for every
+/// scene so the proxy ranks compounds once.
+pub const PROXY_TEMP_C: f64 = 60.0;
+/// See [`PROXY_TEMP_C`].
+pub const PROXY_FREQ_HZ: f64 = 10.0;
+
+/// A compound's tan δ proxy.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TanDeltaProxy {
+    /// The compound.
+    pub compound: String,
+    /// tan δ at [`PROXY_TEMP_C`] and [`PROXY_FREQ_HZ`] (NaN where the shift law is undefined).
+    pub tan_delta: f64,
+    /// [`PROXY_TEMP_C`] lies outside the measured temperatures (the shift law is extrapolated).
+    pub extrapolated: bool,
+}
+
+impl TanDeltaProxy {
+    /// The proxy of a fit.
+    pub fn of(fit: &CompoundFit) -> Self {
+        Self {
+            compound: fit.compound.clone(),
+            tan_delta: super::datasheet::tan_delta_at(fit, PROXY_TEMP_C, PROXY_FREQ_HZ),
+            extrapolated: fit
+                .measured_range_c()
+                .map_or(true, |(a, b)| !(a..=b).contains(&PROXY_TEMP_C)),
+        }
+    }
+}
+
+/// The comparison of `a` and `b` in `scene` as P(a lower than b) and tied, if the run made one.
+fn compare(cmp: &[PairComparison], scene: &str, a: &str, b: &str) -> Option<(f64, bool)> {
+    cmp.iter().filter(|c| c.scene == scene).find_map(|c| {
+        if c.a == a && c.b == b {
+            Some((c.prob_a_lower, c.tied))
+        } else if c.a == b && c.b == a {
+            Some((1.0 - c.prob_a_lower, c.tied))
         } else {
-            String::new()
+            None
+        }
+    })
+}
+
+/// Ranks 1… of the ranked compounds by tan δ proxy (lower first; NaN last), in the order given.
+fn proxy_ranks(names: &[&str], proxies: &[TanDeltaProxy]) -> Vec<Option<usize>> {
+    let value = |n: &str| {
+        proxies
+            .iter()
+            .find(|p| p.compound == n)
+            .map(|p| p.tan_delta)
+            .filter(|v| v.is_finite())
+    };
+    let mut order: Vec<(usize, f64)> = names
+        .iter()
+        .enumerate()
+        .filter_map(|(i, n)| value(n).map(|v| (i, v)))
+        .collect();
+    order.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let mut ranks = vec![None; names.len()];
+    for (r, (i, _)) in order.into_iter().enumerate() {
+        ranks[i] = Some(r + 1);
+    }
+    ranks
+}
+
+/// The flags of a compound in a scene: extrapolated temperatures, contact validity warnings.
+fn flags(o: &CompoundOutcome, scene: &str, allow_extrapolation: bool) -> String {
+    let mut f: Vec<String> = Vec::new();
+    if let Some(s) = o.standing(scene) {
+        if !s.extrapolated_temps_c.is_empty() {
+            f.push(format!(
+                "extrapolated at {} °C ({})",
+                temps_text(&s.extrapolated_temps_c),
+                if allow_extrapolation {
+                    "averaged"
+                } else {
+                    "left out"
+                }
+            ));
+        }
+    }
+    if let Some((_, pts)) = o.friction.iter().find(|(s, _)| s == scene) {
+        let warned: Vec<String> = pts
+            .iter()
+            .filter(|p| !p.warnings.is_empty())
+            .map(|p| p.temp_c.to_string())
+            .collect();
+        if !warned.is_empty() {
+            f.push(format!("validity warnings at {} °C", warned.join(" ")));
+        }
+    }
+    esc(&f.join("; "))
+}
+
+/// The ranking table of one scene, then the per-temperature ranks, then those listed apart.
+fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy]) -> String {
+    let outcomes = &summary.compounds;
+    let allow = summary.allow_extrapolation;
+    let list = ranked(outcomes, &spec.name);
+    let names: Vec<&str> = list.iter().map(|(o, _)| o.compound.as_str()).collect();
+    let pranks = proxy_ranks(&names, proxies);
+    let banded = !summary.comparisons.is_empty();
+    if list.is_empty() {
+        return format!(
+            "<p class=\"bad\">No compound ranked in this scene.</p>{}",
+            apart_table(outcomes, &spec.name)
+        );
+    }
+    let mut h = String::from("<table><tr><th>rank</th><th class=\"l\">compound</th><th>mean F/N</th><th>vs next</th><th>tan δ 60 °C, 10 Hz</th><th>rank by tan δ</th><th class=\"l\">flags</th></tr>");
+    for (i, (o, s)) in list.iter().enumerate() {
+        let next = list.get(i + 1).map(|(n, _)| n.compound.as_str());
+        let vs = match next.and_then(|n| compare(&summary.comparisons, &spec.name, &o.compound, n))
+        {
+            Some((p, true)) => format!("<span class=\"tie\">tied (P = {p:.2})</span>"),
+            Some((p, false)) => format!("P(lower) = {p:.2}"),
+            None if next.is_some() && !banded => "–".into(),
+            None => String::new(),
         };
+        let proxy = proxies.iter().find(|p| p.compound == o.compound);
+        let (pv, pr) = (
+            proxy.map_or("–".to_string(), |p| {
+                format!(
+                    "{:.4}{}",
+                    p.tan_delta,
+                    if p.extrapolated { "*" } else { "" }
+                )
+            }),
+            pranks[i],
+        );
+        let misranked = pr.is_some_and(|r| r != i + 1);
         let _ = write!(
             h,
-            "<tr><td>{}</td><td class=\"l\"><a href=\"{n}/datasheet.html\">{n}</a></td><td>{:.4e}</td><td class=\"l\">{}{left_out}</td></tr>",
+            "<tr><td>{}</td><td class=\"l\"><a href=\"{n}/datasheet.html\">{n}</a></td><td>{}</td><td class=\"l\">{vs}</td><td>{pv}</td><td{}>{}</td><td class=\"l warn\">{}</td></tr>",
             i + 1,
-            s.mean_friction.unwrap_or(f64::NAN),
-            temps.join(" "),
+            s.mean_friction.map_or("–".into(), num),
+            if misranked { " class=\"warn\" title=\"the proxy ranks this compound elsewhere\"" } else { "" },
+            pr.map_or("–".into(), |r| r.to_string()),
+            flags(o, &spec.name, allow),
             n = esc(&o.compound)
         );
     }
     h.push_str("</table>");
-    if allow_extrapolation {
-        h.push_str("<p>* extrapolated shift law (outside the measured temperatures), averaged because of --allow-extrapolation.</p>");
+    if !banded {
+        h.push_str("<p>No pairwise comparisons in this run (bands not computed): ranks are not tested for ties.</p>");
     }
-    let apart = apart(outcomes, &spec.name);
+    if proxies.iter().any(|p| p.extrapolated) {
+        let _ = write!(h, "<p>* {PROXY_TEMP_C} °C lies outside the compound's measured temperatures (the shift law is extrapolated).</p>");
+    }
+    h.push_str(&per_temperature(&list, spec));
+    h.push_str(&apart_table(outcomes, &spec.name));
+    h
+}
+
+/// The compounds of a scene listed apart, with their reasons (empty when there are none).
+fn apart_table(outcomes: &[CompoundOutcome], scene: &str) -> String {
+    let mut h = String::new();
+    let apart = apart(outcomes, scene);
     if !apart.is_empty() {
-        h.push_str("<h3 class=\"bad\">Not ranked (not trusted or failed)</h3><table><tr><th>compound</th><th>mean F/N</th><th>reasons</th></tr>");
+        h.push_str("<h3 class=\"bad\">Not ranked (not trusted or failed)</h3><table><tr><th class=\"l\">compound</th><th>mean F/N</th><th class=\"l\">reasons</th></tr>");
         for (o, s, reasons) in apart {
             let link = if o.error.is_none() {
                 format!(
@@ -73,8 +193,7 @@ fn scene_section(
             let _ = write!(
                 h,
                 "<tr><td class=\"l\">{link}</td><td>{}</td><td class=\"l bad\">{}</td></tr>",
-                s.and_then(|s| s.mean_friction)
-                    .map_or(String::from("–"), |f| format!("{f:.4e}")),
+                s.and_then(|s| s.mean_friction).map_or("–".into(), num),
                 reasons
                     .iter()
                     .map(|r| esc(r))
@@ -87,25 +206,135 @@ fn scene_section(
     h
 }
 
-/// The index page's HTML.
-pub fn index_html(
-    outcomes: &[CompoundOutcome],
-    scenes: &SceneSet,
-    notes: &[String],
-    allow_extrapolation: bool,
+/// The rank of each ranked compound at each temperature of the scene (1 = lowest F/N there), F/N
+/// in the cell's tooltip; a rank that differs from the overall one is marked.
+fn per_temperature(
+    list: &[(&CompoundOutcome, &crate::results::SceneStanding)],
+    spec: &SceneSpec,
 ) -> String {
-    let rule = if allow_extrapolation {
-        "every temperature that computed, extrapolated ones included (marked *)"
+    if list.len() < 2 {
+        return String::new();
+    }
+    let at = |o: &CompoundOutcome, t: f64| {
+        o.friction
+            .iter()
+            .find(|(s, _)| *s == spec.name)
+            .and_then(|(_, p)| p.iter().find(|p| p.temp_c == t))
+            .filter(|p| p.error.is_none() && p.friction.is_finite())
+            .map(|p| p.friction)
+    };
+    let mut h = String::from("<details open><summary>Rank at each temperature (1 = lowest F/N)</summary><table><tr><th class=\"l\">compound</th>");
+    for t in &spec.temps_c {
+        let _ = write!(h, "<th>{t} °C</th>");
+    }
+    h.push_str("</tr>");
+    // ranks per temperature
+    let ranks: Vec<Vec<Option<(usize, f64)>>> = spec
+        .temps_c
+        .iter()
+        .map(|&t| {
+            let mut v: Vec<(usize, f64)> = list
+                .iter()
+                .enumerate()
+                .filter_map(|(i, (o, _))| at(o, t).map(|f| (i, f)))
+                .collect();
+            v.sort_by(|a, b| a.1.total_cmp(&b.1));
+            let mut r = vec![None; list.len()];
+            for (k, (i, f)) in v.into_iter().enumerate() {
+                r[i] = Some((k + 1, f));
+            }
+            r
+        })
+        .collect();
+    for (i, (o, _)) in list.iter().enumerate() {
+        let _ = write!(h, "<tr><td class=\"l\">{}</td>", esc(&o.compound));
+        for col in &ranks {
+            match col[i] {
+                Some((r, f)) => {
+                    let _ = write!(
+                        h,
+                        "<td{} title=\"F/N = {}\">{r}</td>",
+                        if r != i + 1 { " class=\"warn\"" } else { "" },
+                        num(f)
+                    );
+                }
+                None => h.push_str("<td>–</td>"),
+            }
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table></details>");
+    h
+}
+
+/// The overlay of one scene: F/N against temperature of every compound that computed, with bands.
+fn overlay_chart(outcomes: &[CompoundOutcome], spec: &SceneSpec) -> Chart {
+    let ranked_names: Vec<&str> = ranked(outcomes, &spec.name)
+        .iter()
+        .map(|(o, _)| o.compound.as_str())
+        .collect();
+    let mut curves: Vec<Curve> = Vec::new();
+    // ranked compounds first, in rank order, then the others (dashed)
+    for n in &ranked_names {
+        if let Some(o) = outcomes.iter().find(|o| o.compound == *n) {
+            if let Some((_, pts)) = o.friction.iter().find(|(s, _)| *s == spec.name) {
+                curves.push(friction_curve(&o.compound, pts));
+            }
+        }
+    }
+    for o in outcomes
+        .iter()
+        .filter(|o| o.error.is_none() && !ranked_names.contains(&o.compound.as_str()))
+    {
+        if let Some((_, pts)) = o.friction.iter().find(|(s, _)| *s == spec.name) {
+            let mut c = friction_curve(&format!("{} (not ranked)", o.compound), pts);
+            c.mark = Mark::Dashed;
+            curves.push(c);
+        }
+    }
+    Chart {
+        title: format!("{}: F/N against temperature", spec.name),
+        x: Axis::lin("temperature [°C]"),
+        y: Axis::log("F/N"),
+        curves,
+        colour_bar: None,
+    }
+}
+
+/// The index page's HTML; `overlays` holds the embedded overlay plot of each scene, in scene order
+/// (an empty string for none).
+pub fn index_html(
+    summary: &RunSummary,
+    scenes: &SceneSet,
+    proxies: &[TanDeltaProxy],
+    overlays: &[String],
+) -> String {
+    let rule = if summary.allow_extrapolation {
+        "every temperature that computed, extrapolated ones included"
     } else {
         "the measured temperatures only"
     };
     let mut h = format!(
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p>viscoroll {}; F/N averaged per scene over {rule}, lowest first. Compounds whose fit is out of its quality bounds or whose friction failed at a temperature are listed apart, never ranked.</p>",
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p class=\"sub\">viscoroll {}; F/N averaged per scene over {rule}, lowest first. Compounds whose fit is out of its quality bounds or whose friction failed at a temperature are listed apart, never ranked. The tan δ proxy (tan δ at {PROXY_TEMP_C} °C and {PROXY_FREQ_HZ} Hz, the same for every scene) is ranked among the ranked compounds, lower first; where its rank differs from the rank by predicted friction it is marked.</p>",
         env!("CARGO_PKG_VERSION")
     );
-    for spec in &scenes.scene {
-        h.push_str(&scene_section(outcomes, spec, allow_extrapolation));
+    for (k, spec) in scenes.scene.iter().enumerate() {
+        let _ = write!(
+            h,
+            "<h2>{}</h2><p>{} (R = {} mm, {} N/m, {} m/s{}, {} temperatures)</p><section class=\"first\"><div>{}</div><div>{}</div></section>",
+            esc(&spec.name),
+            esc(&spec.description),
+            spec.roll_radius_mm,
+            spec.load_n_per_m,
+            spec.speed_m_s,
+            spec.cover_thickness_mm
+                .map_or(String::new(), |c| format!(", {c} mm cover")),
+            spec.temps_c.len(),
+            scene_tables(summary, spec, proxies),
+            overlays.get(k).map_or("", String::as_str)
+        );
     }
+    let outcomes = &summary.compounds;
     let failed: Vec<&CompoundOutcome> = outcomes.iter().filter(|o| o.error.is_some()).collect();
     if !failed.is_empty() {
         h.push_str("<h2 class=\"bad\">Failed compounds</h2><ul>");
@@ -123,8 +352,17 @@ pub fn index_html(
         .iter()
         .filter(|o| !o.warnings.is_empty() || !o.untrusted.is_empty())
         .collect();
+    let notes = &summary.notes;
     if !warned.is_empty() || !notes.is_empty() {
-        h.push_str("<h2>Warnings and notes</h2><ul>");
+        let n: usize = warned
+            .iter()
+            .map(|o| o.warnings.len() + o.untrusted.len())
+            .sum::<usize>()
+            + notes.len();
+        let _ = write!(
+            h,
+            "<h2>Warnings and notes</h2><details><summary>{n} warnings and notes</summary><ul>"
+        );
         for o in warned {
             for w in o
                 .untrusted
@@ -138,10 +376,34 @@ pub fn index_html(
         for n in notes {
             let _ = write!(h, "<li>{}</li>", esc(n));
         }
-        h.push_str("</ul>");
+        h.push_str("</ul></details>");
     }
     h.push_str("</body></html>\n");
     h
+}
+
+/// Write the overlay plots (`index_SCENE.{svg,png}`) and `index.html` into `dir`.
+pub fn write_index(
+    dir: &Path,
+    summary: &RunSummary,
+    scenes: &SceneSet,
+    proxies: &[TanDeltaProxy],
+) -> Result<(), ReportError> {
+    let mut overlays = Vec::new();
+    for spec in &scenes.scene {
+        let chart = overlay_chart(&summary.compounds, spec);
+        overlays.push(if chart.curves.is_empty() {
+            String::new()
+        } else {
+            plot_pair(dir, &format!("index_{}", spec.name), |p| {
+                plots::plot_chart(&chart, "overlay", p)
+            })?
+        });
+    }
+    write_file(
+        &dir.join("index.html"),
+        index_html(summary, scenes, proxies, &overlays).as_bytes(),
+    )
 }
 
 #[cfg(test)]
@@ -149,19 +411,95 @@ mod tests {
     use super::*;
     use crate::report::ranking::tests::outcome;
 
+    fn summary(outcomes: Vec<CompoundOutcome>, comparisons: Vec<PairComparison>) -> RunSummary {
+        RunSummary {
+            compounds: outcomes,
+            notes: vec![],
+            allow_extrapolation: false,
+            ranking_csv: "r.csv".into(),
+            index_html: "i.html".into(),
+            comparisons,
+        }
+    }
+
+    fn proxy(n: &str, v: f64) -> TanDeltaProxy {
+        TanDeltaProxy {
+            compound: n.into(),
+            tan_delta: v,
+            extrapolated: false,
+        }
+    }
+
     #[test]
     fn untrusted_compounds_show_apart_with_reasons_and_markup_is_escaped() {
         let scenes = SceneSet::shipped();
         let s = &scenes.scene[0].name;
-        let outcomes = [
+        let outcomes = vec![
             outcome("<b>x</b>", s, &[(1e-6, false)], &["fit out of bounds"]),
             outcome("good", s, &[(1e-3, false)], &[]),
         ];
-        let h = index_html(&outcomes, &scenes, &[], false);
+        let h = index_html(&summary(outcomes, vec![]), &scenes, &[], &[]);
         assert!(h.contains("Not ranked") && h.contains("fit out of bounds"));
         assert!(h.contains("&lt;b&gt;x&lt;/b&gt;") && !h.contains("<b>x</b>"));
         let ranked_part = &h[..h.find("Not ranked").unwrap()];
         assert!(ranked_part.contains("good/datasheet.html"));
         assert!(!ranked_part.contains("&lt;b&gt;x"));
+    }
+
+    #[test]
+    fn ties_the_proxy_rank_and_per_temperature_ranks_are_shown() {
+        let scenes = SceneSet::shipped();
+        let s = scenes.scene[0].name.clone();
+        // a lowest on average, but b lower at the first temperature; the proxy orders them b, a
+        let outcomes = vec![
+            outcome("a", &s, &[(2e-4, false), (1e-4, false)], &[]),
+            outcome("b", &s, &[(1e-4, false), (4e-4, false)], &[]),
+        ];
+        let cmp = vec![PairComparison {
+            scene: s.clone(),
+            a: "b".into(),
+            b: "a".into(),
+            prob_a_lower: 0.4,
+            tied: true,
+        }];
+        let proxies = [proxy("a", 0.2), proxy("b", 0.1)];
+        let h = index_html(&summary(outcomes, cmp), &scenes, &proxies, &[]);
+        let table = &h[h.find("<table>").unwrap()..h.find("</table>").unwrap()];
+        // a is first; its comparison with b is the reversed pair: P(a lower) = 1 − 0.4
+        assert!(table.contains("tied (P = 0.60)"), "{table}");
+        // the proxy ranks a second: marked as a misrank
+        let row_a = &table[table.find("a/datasheet").unwrap()..];
+        assert!(row_a.contains("0.2000") && row_a.contains("class=\"warn\" title=\"the proxy"));
+        // per temperature: a is rank 2 at 0 °C and 1 at 10 °C
+        let per_t = &h[h.find("Rank at each temperature").unwrap()..];
+        let row = &per_t[per_t.find("<td class=\"l\">a</td>").unwrap()..];
+        let row = &row[..row.find("</tr>").unwrap()];
+        // (the helper's points are at 0 and 10 °C; the scene's other temperatures show –)
+        assert!(
+            row.contains("<td class=\"warn\" title=\"F/N = 2.00·10⁻⁴\">2</td><td title=\"F/N = 1.00·10⁻⁴\">1</td>"),
+            "{row}"
+        );
+    }
+
+    #[test]
+    fn the_overlay_draws_bands_and_sets_unranked_compounds_apart() {
+        let scenes = SceneSet::shipped();
+        let s = scenes.scene[0].name.clone();
+        let mut good = outcome("good", &s, &[(1e-4, false), (2e-4, false)], &[]);
+        for p in &mut good.friction[0].1 {
+            p.band = Some(crate::results::FrictionBand {
+                p05: 0.9 * p.friction,
+                p50: p.friction,
+                p95: 1.1 * p.friction,
+            });
+        }
+        let bad = outcome("bad", &s, &[(3e-4, false), (4e-4, false)], &["flagged"]);
+        let c = overlay_chart(&[bad, good], &scenes.scene[0]);
+        assert_eq!(c.curves.len(), 2);
+        assert_eq!(c.curves[0].name, "good");
+        assert_eq!(c.curves[0].band.len(), 2);
+        assert!((c.curves[0].band[1].2 - 2.2e-4).abs() < 1e-18);
+        assert_eq!(c.curves[1].mark, Mark::Dashed);
+        assert!(c.curves[1].name.contains("not ranked"));
     }
 }

@@ -6,7 +6,9 @@
 //! [`crate::fsutil`]). CSV goes through the csv crate ([`csv_text`]). Imports only downward
 //! (results and the stages); the pipeline calls it.
 
+pub mod card_shift;
 pub mod cards;
+pub mod chart;
 pub mod csv_text;
 pub mod datasheet;
 pub mod error;
@@ -14,8 +16,9 @@ pub mod html;
 pub mod index;
 pub mod plots;
 pub mod ranking;
+pub mod ticks;
 
 pub use datasheet::write_report;
 pub use error::{write_file, ReportError};
-pub use index::index_html;
+pub use index::{index_html, write_index, TanDeltaProxy};
 pub use ranking::{ranked, ranking_csv};

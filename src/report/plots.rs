@@ -1,11 +1,16 @@
 //! Plots of a compound's fit (plotters; SVG or PNG chosen by the file extension): raw isotherms, the
-//! master curve with the Prony fit, log a_T with the WLF and Arrhenius laws, and the spectrum.
+//! master curve with the Prony fit, log a_T with the WLF and Arrhenius laws, the spectrum, line
+//! charts of friction, and heat maps. Every x–y plot is a [`Chart`] ([`super::chart`]).
 //!
-//! Input: [`Measurement`], [`MasterPoint`]s, [`RelaxationSpectrum`], [`ShiftLaw`]s; output: image
-//! files, written atomically (temp file + rename). Text is drawn with DejaVu Sans embedded in the
+//! Input: [`Measurement`], [`MasterPoint`]s, [`RelaxationSpectrum`], [`ShiftLaw`]s, [`Chart`]s;
+//! output: image files, written atomically (temp file + rename). Text is drawn with DejaVu Sans embedded in the
 //! binary (assets/fonts/, Bitstream Vera licence), registered with plotters' `ab_glyph` backend, so
 //! PNG works on machines with no font libraries. The library never prints; errors are [`PlotError`].
 
+use super::chart::{
+    self, draw_chart, Axis, Chart, ColourBar, Curve, Mark, Ticked, TICK_PX, TITLE_PX,
+};
+use super::ticks::{log_tick_label, log_ticks};
 use crate::prony::kernel::dynamic_moduli_pa;
 use crate::prony::MasterPoint;
 use crate::{Measurement, RelaxationSpectrum, ShiftLaw};
@@ -101,152 +106,16 @@ macro_rules! render_to {
     }};
 }
 
-type LogLogChart<'a, DB> = ChartContext<'a, DB, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
-
-/// The common set-up of the log–log charts: white background, caption, margins, mesh with labels
-/// and exponent tick labels.
-fn log_log_chart<'a, DB: DrawingBackend>(
-    root: &'a DrawingArea<DB, Shift>,
-    caption: &str,
-    xr: (f64, f64),
-    yr: (f64, f64),
-    x_desc: &str,
-    y_desc: &str,
-) -> Result<LogLogChart<'a, DB>, String> {
-    root.fill(&WHITE).map_err(e)?;
-    let mut chart = ChartBuilder::on(root)
-        .caption(caption, ("sans-serif", 22))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d((xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale())
-        .map_err(e)?;
-    chart
-        .configure_mesh()
-        .x_desc(x_desc)
-        .y_desc(y_desc)
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .draw()
-        .map_err(e)?;
-    Ok(chart)
-}
-
-/// The legend box of every chart: white, framed, at `position`, labels of `size` px.
-fn legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
-    chart: &mut ChartContext<'a, DB, CT>,
-    position: SeriesLabelPosition,
-    size: u32,
-) -> Result<(), String> {
-    chart
-        .configure_series_labels()
-        .position(position)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .label_font(("sans-serif", size))
-        .draw()
-        .map_err(e)
-}
-
-/// Colour of temperature `t` within [`lo`, `hi`]: blue (cold) → red (hot).
-fn temp_colour(t: f64, lo: f64, hi: f64) -> RGBColor {
-    let s = if hi > lo {
-        ((t - lo) / (hi - lo)).clamp(0.0, 1.0)
-    } else {
-        0.5
-    };
-    let hsl = HSLColor(0.66 * (1.0 - s), 0.85, 0.45);
-    let (r, g, b) = hsl.rgb();
-    RGBColor(r, g, b)
-}
-
-/// Padded log range [lo/pad, hi·pad] of positive values.
-fn log_range(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
-    let (lo, hi) = values
-        .filter(|v| v.is_finite() && *v > 0.0)
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
-    (hi > 0.0).then(|| {
-        let pad = if hi > lo { (hi / lo).powf(0.03) } else { 2.0 };
-        (lo / pad, hi * pad)
-    })
-}
-
-fn e<E: std::fmt::Display>(err: E) -> String {
-    err.to_string()
-}
-
-/// Raw isotherms: log f vs log E′ (filled dots, lines) and E″ (open dots), coloured by temperature.
-pub fn plot_isotherms(m: &Measurement, path: &Path) -> Result<(), PlotError> {
-    let pts = || m.isotherms.iter().flat_map(|i| i.points.iter());
-    let xr = log_range(pts().map(|p| p.freq_hz));
-    let yr = log_range(pts().flat_map(|p| [p.storage_pa, p.loss_pa]));
-    let (Some(xr), Some(yr)) = (xr, yr) else {
+/// Draw `chart` to `path` (SVG or PNG by the extension); [`PlotError::NoData`] when no point can
+/// be drawn.
+pub fn plot_chart(chart: &Chart, what: &'static str, path: &Path) -> Result<(), PlotError> {
+    if chart::ranges(chart).is_none() {
         return Err(PlotError::NoData {
-            what: "isotherms",
-            reason: "no point with positive frequency and moduli",
+            what,
+            reason: "no point with finite values (positive on a log axis)",
         });
-    };
-    render_to!(path, draw_isotherms(m, xr, yr))
-}
-
-fn draw_isotherms<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    m: &Measurement,
-    xr: (f64, f64),
-    yr: (f64, f64),
-) -> DrawResult {
-    let sym = if m.kind == crate::ModulusKind::Shear {
-        ("G′", "G″")
-    } else {
-        ("E′", "E″")
-    };
-    let mut chart = log_log_chart(
-        root,
-        &format!("Isotherms: {} (filled), {} (open)", sym.0, sym.1),
-        xr,
-        yr,
-        "frequency f [Hz]",
-        "modulus [Pa]",
-    )?;
-    let (lo, hi) = m
-        .isotherms
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), i| {
-            (lo.min(i.temp_nominal_c), hi.max(i.temp_nominal_c))
-        });
-    for iso in &m.isotherms {
-        let c = temp_colour(iso.temp_nominal_c, lo, hi);
-        let ok: Vec<_> = iso.points.iter().filter(|p| p.freq_hz > 0.0).collect();
-        let s: Vec<(f64, f64)> = ok
-            .iter()
-            .filter(|p| p.storage_pa > 0.0)
-            .map(|p| (p.freq_hz, p.storage_pa))
-            .collect();
-        let l: Vec<(f64, f64)> = ok
-            .iter()
-            .filter(|p| p.loss_pa > 0.0)
-            .map(|p| (p.freq_hz, p.loss_pa))
-            .collect();
-        let (s, l) = (thinned(&s), thinned(&l));
-        chart
-            .draw_series(LineSeries::new(s.iter().copied(), c.stroke_width(1)))
-            .map_err(e)?
-            .label(format!("{:.0} °C", iso.temp_nominal_c))
-            .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
-        chart
-            .draw_series(s.iter().map(|&p| Circle::new(p, 3, c.filled())))
-            .map_err(e)?;
-        chart
-            .draw_series(LineSeries::new(l.iter().copied(), c.stroke_width(1)))
-            .map_err(e)?;
-        chart
-            .draw_series(l.iter().map(|&p| Circle::new(p, 3, c.stroke_width(1))))
-            .map_err(e)?;
     }
-    legend(&mut chart, SeriesLabelPosition::LowerRight, 12)?;
-    Ok(())
+    render_to!(path, draw_chart(chart))
 }
 
 /// Most markers drawn per series: a 1e6-point export would otherwise put 1e6 circles into every SVG
@@ -259,91 +128,166 @@ pub fn thinned<T: Copy>(v: &[T]) -> Vec<T> {
     v.iter().step_by(k).copied().collect()
 }
 
-/// Master curve (points) with the Prony fit (lines): E′ and E″ against reduced frequency.
+/// The symbols of a measurement's moduli: (storage, loss).
+pub fn symbols(kind: crate::ModulusKind) -> (&'static str, &'static str) {
+    if kind == crate::ModulusKind::Shear {
+        ("G′", "G″")
+    } else {
+        ("E′", "E″")
+    }
+}
+
+/// Raw isotherms: storage modulus (filled dots, lines) and loss modulus (open circles) against
+/// frequency, coloured by temperature with a colour bar.
+pub fn isotherms_chart(m: &Measurement) -> Chart {
+    let (lo, hi) = m
+        .isotherms
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), i| {
+            (lo.min(i.temp_nominal_c), hi.max(i.temp_nominal_c))
+        });
+    let sym = symbols(m.kind);
+    let mut curves = Vec::new();
+    for iso in &m.isotherms {
+        let s = if hi > lo {
+            (iso.temp_nominal_c - lo) / (hi - lo)
+        } else {
+            0.5
+        };
+        let c = chart::ramp(s);
+        let k = iso.points.len().div_ceil(MAX_MARKERS).max(1);
+        let pts: Vec<&crate::dma::DataPoint> = iso.points.iter().step_by(k).collect();
+        curves.push(
+            Curve::new(
+                "",
+                pts.iter().map(|p| (p.freq_hz, p.storage_pa)).collect(),
+                Mark::LineDots,
+            )
+            .coloured(c),
+        );
+        curves.push(
+            Curve::new(
+                "",
+                pts.iter().map(|p| (p.freq_hz, p.loss_pa)).collect(),
+                Mark::LineCircles,
+            )
+            .coloured(c),
+        );
+    }
+    Chart {
+        title: format!("Isotherms: {} (dots), {} (circles)", sym.0, sym.1),
+        x: Axis::log("frequency f [Hz]"),
+        y: Axis::log("modulus [Pa]"),
+        curves,
+        colour_bar: Some(ColourBar {
+            label: "T [°C]".into(),
+            lo,
+            hi,
+        }),
+    }
+}
+
+/// Raw isotherms (see [`isotherms_chart`]).
+pub fn plot_isotherms(m: &Measurement, path: &Path) -> Result<(), PlotError> {
+    plot_chart(&isotherms_chart(m), "isotherms", path)
+}
+
+/// The Prony fit sampled at 20 points per decade over the reduced frequencies of `points`:
+/// (f, E′, E″).
+pub fn fit_curve(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Vec<(f64, f64, f64)> {
+    let (l0, l1) = points
+        .iter()
+        .filter(|p| p.reduced_freq_hz > 0.0 && p.reduced_freq_hz.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            let l = p.reduced_freq_hz.log10();
+            (a.min(l), b.max(l))
+        });
+    if !l0.is_finite() {
+        return vec![];
+    }
+    let n = ((l1 - l0) * 20.0).ceil().clamp(2.0, 2000.0) as usize;
+    (0..=n)
+        .map(|k| {
+            let f = 10f64.powf(l0 + (l1 - l0) * k as f64 / n as f64);
+            let (s, l) = dynamic_moduli_pa(spectrum, 2.0 * std::f64::consts::PI * f);
+            (f, s, l)
+        })
+        .collect()
+}
+
+/// Master curve (points) with the Prony fit (lines): storage and loss modulus against reduced
+/// frequency.
+pub fn master_chart(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Chart {
+    let (blue, red) = (chart::PALETTE[0], chart::PALETTE[1]);
+    let sym = symbols(spectrum.kind);
+    let pts = thinned(points);
+    let fit = fit_curve(points, spectrum);
+    Chart {
+        title: format!("Master curve of {} and {} with the Prony fit", sym.0, sym.1),
+        x: Axis::log("reduced frequency a_T·f [Hz]"),
+        y: Axis::log("modulus [Pa]"),
+        curves: vec![
+            Curve::new(
+                format!("{} data", sym.0),
+                pts.iter()
+                    .map(|p| (p.reduced_freq_hz, p.storage_pa))
+                    .collect(),
+                Mark::Dots,
+            )
+            .coloured(blue),
+            Curve::new(
+                format!("{} data", sym.1),
+                pts.iter().map(|p| (p.reduced_freq_hz, p.loss_pa)).collect(),
+                Mark::Circles,
+            )
+            .coloured(red),
+            Curve::new(
+                format!("{} Prony fit", sym.0),
+                fit.iter().map(|p| (p.0, p.1)).collect(),
+                Mark::Line,
+            )
+            .coloured(blue),
+            Curve::new(
+                format!("{} Prony fit", sym.1),
+                fit.iter().map(|p| (p.0, p.2)).collect(),
+                Mark::Line,
+            )
+            .coloured(red),
+        ],
+        colour_bar: None,
+    }
+}
+
+/// Master curve with the Prony fit (see [`master_chart`]).
 pub fn plot_master_fit(
     points: &[MasterPoint],
     spectrum: &RelaxationSpectrum,
     path: &Path,
 ) -> Result<(), PlotError> {
-    let xr = log_range(points.iter().map(|p| p.reduced_freq_hz));
-    let yr = log_range(points.iter().flat_map(|p| [p.storage_pa, p.loss_pa]));
-    let (Some(xr), Some(yr)) = (xr, yr) else {
+    if points.is_empty() {
         return Err(PlotError::NoData {
             what: "master curve",
             reason: "no point with positive frequency and moduli",
         });
-    };
-    render_to!(path, draw_master(points, spectrum, xr, yr))
+    }
+    plot_chart(&master_chart(points, spectrum), "master curve", path)
 }
 
-fn draw_master<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    points: &[MasterPoint],
-    spectrum: &RelaxationSpectrum,
-    xr: (f64, f64),
-    yr: (f64, f64),
-) -> DrawResult {
-    let mut chart = log_log_chart(
-        root,
-        "Master curve and Prony fit",
-        xr,
-        yr,
-        "reduced frequency a_T·f [Hz]",
-        "modulus [Pa]",
-    )?;
-    let (blue, red) = (RGBColor(30, 90, 200), RGBColor(210, 50, 40));
-    let points = &thinned(points)[..];
-    chart
-        .draw_series(
-            points
-                .iter()
-                .map(|p| Circle::new((p.reduced_freq_hz, p.storage_pa), 3, blue.filled())),
-        )
-        .map_err(e)?
-        .label("storage (data)")
-        .legend(move |(x, y)| Circle::new((x + 8, y), 4, blue.filled()));
-    chart
-        .draw_series(
-            points
-                .iter()
-                .map(|p| Circle::new((p.reduced_freq_hz, p.loss_pa), 3, red.stroke_width(1))),
-        )
-        .map_err(e)?
-        .label("loss (data)")
-        .legend(move |(x, y)| Circle::new((x + 8, y), 4, red.stroke_width(1)));
-    // The fit on a fine grid: 20 points per decade.
-    let (l0, l1) = (xr.0.log10(), xr.1.log10());
-    let n = ((l1 - l0) * 20.0).ceil().max(2.0) as usize;
-    let curve: Vec<(f64, (f64, f64))> = (0..=n)
-        .map(|k| {
-            let f = 10f64.powf(l0 + (l1 - l0) * k as f64 / n as f64);
-            (
-                f,
-                dynamic_moduli_pa(spectrum, 2.0 * std::f64::consts::PI * f),
-            )
-        })
-        .collect();
-    chart
-        .draw_series(LineSeries::new(
-            curve.iter().map(|&(f, (s, _))| (f, s)),
-            blue.stroke_width(2),
-        ))
-        .map_err(e)?
-        .label("storage (Prony fit)")
-        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], blue.stroke_width(2)));
-    chart
-        .draw_series(LineSeries::new(
-            curve
-                .iter()
-                .filter(|c| c.1 .1 >= yr.0)
-                .map(|&(f, (_, l))| (f, l)),
-            red.stroke_width(2),
-        ))
-        .map_err(e)?
-        .label("loss (Prony fit)")
-        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], red.stroke_width(2)));
-    legend(&mut chart, SeriesLabelPosition::UpperLeft, 14)?;
-    Ok(())
+/// A shift law in a legend entry.
+fn law_label(name: &str, law: &ShiftLaw) -> String {
+    match law {
+        ShiftLaw::Wlf { t_ref_c, c1, c2_k } => {
+            format!("{name}: C1 = {c1:.2}, C2 = {c2_k:.1} K, T_ref = {t_ref_c:.1} °C")
+        }
+        ShiftLaw::Arrhenius {
+            t_ref_c,
+            activation_energy_j_per_mol,
+        } => format!(
+            "{name}: E_a = {:.0} kJ/mol, T_ref = {t_ref_c:.1} °C",
+            activation_energy_j_per_mol / 1e3
+        ),
+        ShiftLaw::Table { t_ref_c, .. } => format!("{name}: table, T_ref = {t_ref_c:.1} °C"),
+    }
 }
 
 /// log10 a_T against temperature: the shifts found (points) and the WLF and Arrhenius laws (lines).
@@ -364,182 +308,65 @@ pub fn plot_shift_factors(
             reason: "no finite (T, log a_T) pair",
         });
     }
-    render_to!(path, draw_shifts(&finite, laws))
-}
-
-fn draw_shifts<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    shifts: &[(f64, f64)],
-    laws: &[(&str, &ShiftLaw)],
-) -> DrawResult {
-    root.fill(&WHITE).map_err(e)?;
-    let (t0, t1) = shifts
+    let (t0, t1) = finite
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
             (a.min(p.0), b.max(p.0))
         });
-    let (t0, t1) = if t1 > t0 {
-        (t0, t1)
-    } else {
-        (t0 - 1.0, t1 + 1.0)
-    };
     let n = 200;
-    let curves: Vec<Vec<(f64, f64)>> = laws
+    let mut curves: Vec<Curve> = laws
         .iter()
-        .map(|(_, law)| {
-            (0..=n)
+        .enumerate()
+        .map(|(i, (name, law))| {
+            let pts = (0..=n)
                 .map(|k| t0 + (t1 - t0) * k as f64 / n as f64)
                 .map(|t| (t, law.log10_a_t(t)))
                 .filter(|p| p.1.is_finite())
-                .collect()
+                .collect();
+            Curve::new(law_label(name, law), pts, Mark::Line).coloured(chart::PALETTE[1 + i])
         })
         .collect();
-    let ys = shifts
-        .iter()
-        .map(|p| p.1)
-        .chain(curves.iter().flatten().map(|p| p.1));
-    let (y0, y1) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
-        (a.min(y), b.max(y))
-    });
-    let pad = ((y1 - y0) * 0.05).max(0.5);
-    let dt = (t1 - t0) * 0.03;
-    let mut chart = ChartBuilder::on(root)
-        .caption("Shift factors log a_T", ("sans-serif", 22))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d((t0 - dt)..(t1 + dt), (y0 - pad)..(y1 + pad))
-        .map_err(e)?;
-    chart
-        .configure_mesh()
-        .x_desc("temperature T [°C]")
-        .y_desc("log10 a_T")
-        .draw()
-        .map_err(e)?;
-    let palette = [
-        RGBColor(210, 50, 40),
-        RGBColor(30, 140, 60),
-        RGBColor(130, 60, 170),
-    ];
-    for (i, ((name, law), curve)) in laws.iter().zip(&curves).enumerate() {
-        let c = palette[i % palette.len()];
-        let label = match law {
-            ShiftLaw::Wlf { t_ref_c, c1, c2_k } => {
-                format!("{name}: C1 = {c1:.2}, C2 = {c2_k:.1} K, T_ref = {t_ref_c:.2} °C")
-            }
-            ShiftLaw::Arrhenius {
-                t_ref_c,
-                activation_energy_j_per_mol,
-            } => {
-                format!(
-                    "{name}: E_a = {:.0} kJ/mol, T_ref = {t_ref_c:.2} °C",
-                    activation_energy_j_per_mol / 1e3
-                )
-            }
-            ShiftLaw::Table { t_ref_c, .. } => format!("{name}: table, T_ref = {t_ref_c:.2} °C"),
-        };
-        chart
-            .draw_series(LineSeries::new(curve.iter().copied(), c.stroke_width(2)))
-            .map_err(e)?
-            .label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2)));
-    }
-    chart
-        .draw_series(shifts.iter().map(|&p| Circle::new(p, 4, BLACK.filled())))
-        .map_err(e)?
-        .label("shifts found")
-        .legend(|(x, y)| Circle::new((x + 8, y), 4, BLACK.filled()));
-    legend(&mut chart, SeriesLabelPosition::UpperRight, 14)?;
-    Ok(())
-}
-
-/// The relaxation spectrum: a stem Eᵢ at each τᵢ (log–log), E∞ stated in the caption.
-pub fn plot_spectrum(spectrum: &RelaxationSpectrum, path: &Path) -> Result<(), PlotError> {
-    let xr = log_range(spectrum.terms.iter().map(|t| t.tau_s));
-    let yr = log_range(spectrum.terms.iter().map(|t| t.modulus_pa));
-    let (Some(xr), Some(yr)) = (xr, yr) else {
-        return Err(PlotError::NoData {
-            what: "spectrum",
-            reason: "no term with positive strength and time",
-        });
+    curves.push(Curve::new("shifts found", finite, Mark::Dots).coloured(BLACK));
+    let c = Chart {
+        title: "Shift factors log10 a_T".into(),
+        x: Axis::lin("temperature T [°C]"),
+        y: Axis::lin("log10 a_T"),
+        curves,
+        colour_bar: None,
     };
-    // Stems start a decade below the smallest strength so every term is visible.
-    let yr = (yr.0 / 10.0, yr.1 * 2.0);
-    render_to!(path, draw_spectrum(spectrum, xr, yr))
+    plot_chart(&c, "shift factors", path)
 }
 
-fn draw_spectrum<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    spectrum: &RelaxationSpectrum,
-    xr: (f64, f64),
-    yr: (f64, f64),
-) -> DrawResult {
-    let mut chart = log_log_chart(
-        root,
-        &format!(
+/// The relaxation spectrum: a stem Eᵢ at each τᵢ (log–log), E∞ stated in the title.
+pub fn plot_spectrum(spectrum: &RelaxationSpectrum, path: &Path) -> Result<(), PlotError> {
+    let c = Chart {
+        title: format!(
             "Relaxation spectrum: {} terms, E∞ = {:.3e} Pa",
             spectrum.terms.len(),
             spectrum.modulus_inf_pa
         ),
-        xr,
-        yr,
-        "relaxation time τ [s]",
-        "strength E_i [Pa]",
-    )?;
-    let c = RGBColor(30, 90, 200);
-    chart
-        .draw_series(spectrum.terms.iter().map(|t| {
-            PathElement::new(
-                vec![(t.tau_s, yr.0), (t.tau_s, t.modulus_pa)],
-                c.stroke_width(2),
-            )
-        }))
-        .map_err(e)?;
-    chart
-        .draw_series(
+        x: Axis::log("relaxation time τ [s]"),
+        y: Axis::log("strength E_i [Pa]"),
+        curves: vec![Curve::new(
+            "",
             spectrum
                 .terms
                 .iter()
-                .map(|t| Circle::new((t.tau_s, t.modulus_pa), 4, c.filled())),
-        )
-        .map_err(e)?;
-    Ok(())
+                .map(|t| (t.tau_s, t.modulus_pa))
+                .collect(),
+            Mark::Stems,
+        )],
+        colour_bar: None,
+    };
+    plot_chart(&c, "spectrum", path)
 }
-
-/// A short label for an axis value: three significant digits, exponent form outside [0.01, 1e4).
-fn short(v: f64) -> String {
-    let a = v.abs();
-    if a == 0.0 {
-        "0".into()
-    } else if !(0.01..1e4).contains(&a) {
-        format!("{v:.2e}")
-    } else {
-        let decimals = (2 - a.log10().floor() as i32).max(0) as usize;
-        let t = format!("{v:.decimals$}");
-        if t.contains('.') {
-            t.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            t
-        }
-    }
-}
-
-/// Series colours of the line charts.
-const PALETTE: [RGBColor; 7] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(255, 127, 14),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-];
 
 /// One named curve: (x, y) points.
 pub type Series = (String, Vec<(f64, f64)>);
 
-/// Curves of positive y on a log axis against x, linear or (when `log_x`) logarithmic: the friction
-/// against temperature, speed and load. Points with y ≤ 0 or non-finite values are left out.
+/// Curves of positive y on a log axis against x, linear or (when `log_x`) logarithmic, each a line
+/// with dots: the friction against temperature, speed and load. Points with y ≤ 0 or non-finite
+/// values are left out.
 pub fn plot_lines(
     title: &str,
     x_label: &str,
@@ -548,92 +375,24 @@ pub fn plot_lines(
     log_x: bool,
     path: &Path,
 ) -> Result<(), PlotError> {
-    // Both axes are drawn in log10 on linear coordinates labelled with 10^v (so short log ranges,
-    // under a decade, still get evenly spaced tick labels); x stays linear unless `log_x`.
-    let pts: Vec<Series> = series
-        .iter()
-        .map(|(n, p)| {
-            let kept = p
-                .iter()
-                .filter(|(x, y)| x.is_finite() && y.is_finite() && *y > 0.0 && (!log_x || *x > 0.0))
-                .map(|&(x, y)| (if log_x { x.log10() } else { x }, y.log10()))
-                .collect();
-            (n.clone(), kept)
-        })
-        .collect();
-    let range = |f: &dyn Fn(&(f64, f64)) -> f64| {
-        pts.iter()
-            .flat_map(|s| s.1.iter().map(f))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                (a.min(v), b.max(v))
-            })
+    let c = Chart {
+        title: title.into(),
+        x: Axis {
+            label: x_label.into(),
+            log: log_x,
+        },
+        y: Axis::log(y_label),
+        curves: series
+            .iter()
+            .map(|(n, p)| Curve::new(n.clone(), p.clone(), Mark::LineDots))
+            .collect(),
+        colour_bar: None,
     };
-    let ((x0, x1), (y0, y1)) = (range(&|p| p.0), range(&|p| p.1));
-    if !x0.is_finite() {
-        return Err(PlotError::NoData {
-            what: "line chart",
-            reason: "no point with finite x and positive y",
-        });
-    }
-    let padded = |a: f64, b: f64, min: f64| {
-        let pad = if b > a { 0.04 * (b - a) } else { min };
-        (a - pad, b + pad)
-    };
-    let xr = padded(x0, x1, 0.5);
-    let yr = padded(y0, y1, 0.1);
-    render_to!(
-        path,
-        draw_lines(title, x_label, y_label, &pts, log_x, xr, yr)
-    )
+    plot_chart(&c, "line chart", path)
 }
 
-#[allow(clippy::too_many_arguments)]
-fn draw_lines<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    series: &[Series],
-    log_x: bool,
-    xr: (f64, f64),
-    yr: (f64, f64),
-) -> DrawResult {
-    root.fill(&WHITE).map_err(e)?;
-    let mut chart = ChartBuilder::on(root)
-        .caption(title, ("sans-serif", 22))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(80)
-        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-        .map_err(e)?;
-    let x_fmt = |v: &f64| {
-        if log_x {
-            short(10f64.powf(*v))
-        } else {
-            short(*v)
-        }
-    };
-    chart
-        .configure_mesh()
-        .x_desc(x_label)
-        .y_desc(y_label)
-        .x_label_formatter(&x_fmt)
-        .y_label_formatter(&|v| format!("{:.2e}", 10f64.powf(*v)))
-        .draw()
-        .map_err(e)?;
-    for (i, (name, p)) in series.iter().enumerate() {
-        let c = PALETTE[i % PALETTE.len()];
-        chart
-            .draw_series(LineSeries::new(p.iter().copied(), c.stroke_width(2)))
-            .map_err(e)?
-            .label(name.as_str())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2)));
-        chart
-            .draw_series(p.iter().map(|&q| Circle::new(q, 3, c.filled())))
-            .map_err(e)?;
-    }
-    legend(&mut chart, SeriesLabelPosition::UpperRight, 14)?;
-    Ok(())
+fn e<E: std::fmt::Display>(err: E) -> String {
+    err.to_string()
 }
 
 /// One panel of a heat map: its title and z\[i\]\[j\] at (x\[i\], y\[j\]).
@@ -710,30 +469,34 @@ fn draw_heatmaps<DB: DrawingBackend>(
     zr: (f64, f64),
 ) -> DrawResult {
     root.fill(&WHITE).map_err(e)?;
-    let body = root.titled(title, ("sans-serif", 22)).map_err(e)?;
+    let body = root.titled(title, ("sans-serif", TITLE_PX)).map_err(e)?;
     let h = body.dim_in_pixel().1;
-    let (maps, bar) = body.split_vertically(h.saturating_sub(90));
+    let (maps, bar) = body.split_vertically(h.saturating_sub(100));
     let (xe, ye) = (log_edges(x), log_edges(y));
-    let tick = |v: &f64| short(10f64.powf(*v));
+    let tick = |v: &f64| log_tick_label(*v);
     for (area, panel) in maps
         .split_evenly((1, panels.len().max(1)))
         .iter()
         .zip(panels)
     {
+        let (x0, x1, y0, y1) = (xe[0], xe[xe.len() - 1], ye[0], ye[ye.len() - 1]);
         let mut chart = ChartBuilder::on(area)
-            .caption(&panel.title, ("sans-serif", 16))
+            .caption(&panel.title, ("sans-serif", TICK_PX + 2))
             .margin(8)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
-            .build_cartesian_2d(xe[0]..xe[xe.len() - 1], ye[0]..ye[ye.len() - 1])
+            .x_label_area_size(56)
+            .y_label_area_size(86)
+            .build_cartesian_2d(
+                Ticked::new(x0, x1, log_ticks(x0, x1)),
+                Ticked::new(y0, y1, log_ticks(y0, y1)),
+            )
             .map_err(e)?;
         chart
             .configure_mesh()
             .disable_mesh()
             .x_desc(x_label)
             .y_desc(y_label)
-            .x_labels(5)
-            .y_labels(6)
+            .label_style(("sans-serif", TICK_PX))
+            .axis_desc_style(("sans-serif", TICK_PX))
             .x_label_formatter(&tick)
             .y_label_formatter(&tick)
             .draw()
@@ -757,17 +520,16 @@ fn draw_heatmaps<DB: DrawingBackend>(
         .margin_left(120)
         .margin_right(120)
         .margin_top(10)
-        .x_label_area_size(45)
-        .build_cartesian_2d(zr.0..zr.1, 0.0..1.0)
+        .x_label_area_size(50)
+        .build_cartesian_2d(Ticked::new(zr.0, zr.1, log_ticks(zr.0, zr.1)), 0.0..1.0)
         .map_err(e)?;
     cb.configure_mesh()
         .disable_mesh()
         .disable_y_axis()
         .x_desc(z_label)
-        .x_labels(6)
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .x_label_formatter(&|v| format!("{:.2e}", 10f64.powf(*v)))
+        .label_style(("sans-serif", TICK_PX))
+        .axis_desc_style(("sans-serif", TICK_PX))
+        .x_label_formatter(&|v| log_tick_label(*v))
         .draw()
         .map_err(e)?;
     let n = 100;

@@ -65,7 +65,10 @@ pub fn temps_text(t: &[f64]) -> String {
 /// `reports/ranking.csv`: per scene, the ranked compounds (`rank` 1, 2, …; `trusted` true), then
 /// those listed apart (`rank` empty, `trusted` false, reasons in `note`). `temps_c` holds the
 /// temperatures averaged; `extrapolated_temps_c` those outside the measured ones (averaged only
-/// with `allow_extrapolation`); `failed_temps_c` those that could not be computed.
+/// with `allow_extrapolation`); `failed_temps_c` those that could not be computed;
+/// `mean_friction_p05/p50/p95` the 90 % band of the mean (crate::bands; empty with `--no-bands`) and
+/// `tied_with` the ranked compounds whose order against this one is not significant (P(A < B)
+/// strictly between 0.05 and 0.95, crate::bands::compare; space-separated).
 pub fn ranking_csv(
     outcomes: &[CompoundOutcome],
     scenes: &SceneSet,
@@ -92,6 +95,10 @@ pub fn ranking_csv(
             note,
             models,
             warnings,
+            band(s, |b| b.p05),
+            band(s, |b| b.p50),
+            band(s, |b| b.p95),
+            s.map_or(String::new(), |s| s.tied_with.join(" ")),
         ]
     };
     for spec in &scenes.scene {
@@ -139,9 +146,19 @@ pub fn ranking_csv(
             "note",
             "model",
             "warnings",
+            "mean_friction_p05",
+            "mean_friction_p50",
+            "mean_friction_p95",
+            "tied_with",
         ],
         rows,
     )
+}
+
+/// A percentile of the band of a standing's mean friction, as printed (empty without one).
+fn band(s: Option<&SceneStanding>, pick: fn(&crate::results::FrictionBand) -> f64) -> String {
+    s.and_then(|s| s.band.as_ref())
+        .map_or(String::new(), |b| format!("{:e}", pick(b)))
 }
 
 /// The bodies solved for `o` in `scene` (space-separated, contact::body::layer) and its points'

@@ -58,6 +58,10 @@ pub struct CompoundFit {
     pub quality: Vec<QualityFigure>,
     /// Resolved settings of every stage, so the fit can be reproduced.
     pub settings: FitSettings,
+    /// The bootstrap ensemble of the uncertainty bands (crate::bands); `None` when bands were not
+    /// computed (`viscoroll fit`, `run --no-bands`) or in older files.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bands: Option<super::band_ensemble::BandEnsemble>,
     /// Tool, version and input hashes.
     pub provenance: Provenance,
 }
@@ -267,6 +271,7 @@ impl CompoundFit {
                 stages: BTreeMap::new(),
             },
             provenance: Provenance::for_inputs(inputs),
+            bands: None,
         }
     }
 

@@ -6,10 +6,12 @@
 //! solutions); output: types that are saved, read back and written into reports. Imports only the
 //! stages below it (dma, tts, prony, creep, contact's `Scene`).
 
+pub mod band_ensemble;
 pub mod compound_fit;
 pub mod outcome;
 pub mod scene;
 
+pub use band_ensemble::{BandEnsemble, BandReplicate, ScatterEstimate};
 pub use compound_fit::{
     CompoundFit, CompoundFitError, FitSettings, InputHash, MeasurementSummary, Provenance,
     QualityFigure, TtsSummary, COMPOUND_FIT_FORMAT_VERSION,
@@ -17,4 +19,6 @@ pub use compound_fit::{
 pub use outcome::{
     cap_line, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary, SceneStanding,
 };
-pub use scene::{FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec};
+pub use scene::{
+    FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec,
+};

@@ -45,6 +45,12 @@ pub struct SceneStanding {
     pub failed_temps_c: Vec<f64>,
     /// Why the compound is not ranked among trusted ones in this scene (empty: it is).
     pub untrusted: Vec<String>,
+    /// Uncertainty band of `mean_friction` (crate::bands; `None` with `--no-bands` or without a
+    /// mean).
+    pub band: Option<super::scene::FrictionBand>,
+    /// The ranked compounds of this scene whose order against this one is not significant (see
+    /// [`PairComparison::tied`]); empty with `--no-bands`.
+    pub tied_with: Vec<String>,
 }
 
 impl SceneStanding {
@@ -98,6 +104,8 @@ pub fn standing(
             .collect(),
         failed_temps_c: failed.iter().map(|p| p.temp_c).collect(),
         untrusted,
+        band: None,
+        tied_with: Vec::new(),
     }
 }
 

@@ -283,6 +283,9 @@ impl FrictionPoint {
 /// Points per axis of the 2-D (speed × load) map, log-spaced over the listed speeds and loads.
 pub const GRID_POINTS: usize = 30;
 
+/// Points of each dense speed and load curve of a half-space scene's maps ([`FrictionMaps::curves`]).
+pub const CURVE_POINTS: usize = 40;
+
 /// One point of a friction map (speed or load varied at a temperature).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct MapPoint {
@@ -308,6 +311,12 @@ pub struct FrictionMaps {
     /// F/N on a [`GRID_POINTS`]² grid of speed × load (log-spaced between the smallest and largest
     /// listed speed and load) at every map temperature; empty unless both lists span a range.
     pub grid: Vec<MapPoint>,
+    /// F/N against speed (at the scene's load) and against load (at the scene's speed) at
+    /// [`CURVE_POINTS`] log-spaced values between the smallest and largest listed one, at every map
+    /// temperature, from the same interpolant as `points` (for the datasheet's curves); empty for
+    /// covered scenes, whose maps are solved point by point.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub curves: Vec<MapPoint>,
     /// Interpolation error estimate of the reduced curve (relative, on F/N and contact length).
     pub error_estimate: f64,
     /// Contact solves made for the curve.

@@ -1,7 +1,8 @@
 //! First phase of the master curve: each isotherm of a [`Measurement`] cleaned for shifting — finite,
 //! positive f, E′ and E″ in log10, sorted by frequency, repeated frequencies merged (mean of the
 //! logs); isotherms with fewer than 3 distinct frequencies skipped with a warning; sorted by
-//! temperature, a repeated temperature an error.
+//! temperature, a repeated temperature an error. An isotherm of more than [`THIN_ABOVE_POINTS`]
+//! distinct frequencies is thinned ([`thin`]) so that no later pass grows with the size of the file.
 
 use super::error::TtsError;
 use super::settings::TemperatureBasis;
@@ -24,6 +25,70 @@ pub(super) struct Clean {
     pub log_l: Vec<f64>,
     /// Points left out or merged.
     pub dropped: usize,
+}
+
+/// An isotherm with more distinct frequencies than this is thinned to this many points. Real DMA
+/// sweeps have 10–100 points per isotherm (the shipped exports at most a few hundred), so they are
+/// never thinned; 1000 points still resolve a curve over 3 decades at 300 per decade, far beyond
+/// the ≈ 1 term per decade a Prony series can follow.
+pub const THIN_ABOVE_POINTS: usize = 1000;
+
+/// What [`thin`] did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Thinned {
+    /// Points before thinning.
+    pub from: usize,
+    /// Largest RMS deviation of log10 E′ from its group mean, decades.
+    pub scatter_storage_log10: f64,
+    /// Same for log10 E″.
+    pub scatter_loss_log10: f64,
+}
+
+/// Replace (x, ys, yl) — sorted by x — by the means of `max` groups of consecutive points whose sizes
+/// differ by at most one (group g holds points ⌊g·n/max⌋ … ⌊(g+1)·n/max⌋ − 1), when n > `max`.
+///
+/// Equal counts make every mean stand for the same number of points, so a least-squares fit through
+/// the means with equal weights is the fit through all points with count weights: for a model that
+/// is linear over a group, Σ_groups Σ_k (y_k − m)² = Σ_groups [k·(ȳ − m)² + Σ_k (y_k − ȳ)²], whose
+/// second term does not depend on the model. The group width in log f is n/max times the spacing of
+/// the points, so the model's curvature inside a group is negligible for any n this triggers on.
+pub(super) fn thin(
+    x: &mut Vec<f64>,
+    ys: &mut Vec<f64>,
+    yl: &mut Vec<f64>,
+    max: usize,
+) -> Option<Thinned> {
+    let n = x.len();
+    if n <= max || max == 0 {
+        return None;
+    }
+    let rms = |v: &[f64], mean: f64| {
+        (v.iter().map(|y| (y - mean) * (y - mean)).sum::<f64>() / v.len() as f64).sqrt()
+    };
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (mut nx, mut ns, mut nl) = (
+        Vec::with_capacity(max),
+        Vec::with_capacity(max),
+        Vec::with_capacity(max),
+    );
+    let (mut sc_s, mut sc_l) = (0.0f64, 0.0f64);
+    for g in 0..max {
+        let (a, b) = (g * n / max, (g + 1) * n / max);
+        let (ms, ml) = (mean(&ys[a..b]), mean(&yl[a..b]));
+        nx.push(mean(&x[a..b]));
+        sc_s = sc_s.max(rms(&ys[a..b], ms));
+        sc_l = sc_l.max(rms(&yl[a..b], ml));
+        ns.push(ms);
+        nl.push(ml);
+    }
+    *x = nx;
+    *ys = ns;
+    *yl = nl;
+    Some(Thinned {
+        from: n,
+        scatter_storage_log10: sc_s,
+        scatter_loss_log10: sc_l,
+    })
 }
 
 /// Clean every isotherm of `m` (see the module docs).
@@ -75,6 +140,22 @@ pub(super) fn clean(
             ll.push(pts[k..j].iter().map(|p| p.2).sum::<f64>() / c);
             k = j;
         }
+        if let Some(t) = thin(&mut x, &mut ls, &mut ll, THIN_ABOVE_POINTS) {
+            warnings.push(format!(
+                "isotherm {index} ({temp} °C): {} points at distinct frequencies thinned to {} means \
+                 of {} consecutive points in log-frequency (largest RMS scatter within a group: \
+                 {:.2e} decade in log E′, {:.2e} in log E″); the shifts and the Prony fit use the means",
+                t.from,
+                x.len(),
+                if t.from % x.len() == 0 {
+                    format!("{}", t.from / x.len())
+                } else {
+                    format!("{}–{}", t.from / x.len(), t.from.div_ceil(x.len()))
+                },
+                t.scatter_storage_log10,
+                t.scatter_loss_log10
+            ));
+        }
         let dropped = iso.points.len() - x.len();
         if x.len() < 3 {
             warnings.push(format!(
@@ -110,4 +191,27 @@ pub(super) fn clean(
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn thinning_keeps_small_input_and_averages_equal_groups() {
+        let mut x: Vec<f64> = (0..10).map(f64::from).collect();
+        let mut ys = x.clone();
+        let mut yl: Vec<f64> = x.iter().map(|v| 2.0 * v).collect();
+        assert_eq!(thin(&mut x, &mut ys, &mut yl, 10), None);
+        assert_eq!(x.len(), 10);
+        let t = thin(&mut x, &mut ys, &mut yl, 3).unwrap();
+        // Groups {0,1,2}, {3,4,5}, {6,7,8,9}: means 1, 4, 7.5; log E″ twice that.
+        assert_eq!(x, vec![1.0, 4.0, 7.5]);
+        assert_eq!(ys, x);
+        assert_eq!(yl, vec![2.0, 8.0, 15.0]);
+        assert_eq!(t.from, 10);
+        // RMS about the mean of {6,7,8,9} is √1.25, the largest.
+        assert!((t.scatter_storage_log10 - 1.25f64.sqrt()).abs() < 1e-15);
+        assert!((t.scatter_loss_log10 - 2.0 * 1.25f64.sqrt()).abs() < 1e-15);
+    }
 }

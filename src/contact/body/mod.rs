@@ -155,3 +155,6 @@ fn winkler_columns(body: &Body) -> layer::WinklerColumns {
         _ => layer::WinklerColumns::Uniaxial,
     }
 }
+
+#[cfg(test)]
+mod dispatch_tests;

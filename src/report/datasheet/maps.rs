@@ -3,14 +3,43 @@
 //!
 //! Input: a scene and its [`FrictionMaps`]; output: SVG/PNG files and the HTML that embeds them.
 
+use crate::report::chart::{Axis, Chart, Curve, Mark, PALETTE};
 use crate::report::error::ReportError;
 use crate::report::html::plot_pair;
 use crate::report::plots;
-use crate::results::{FrictionMaps, SceneSpec};
+use crate::results::{FrictionMaps, MapPoint, SceneSpec};
 use std::path::Path;
 
-/// F/N against the listed speeds (at the scene's load) and loads (at the scene's speed), one plot
-/// each, one curve per map temperature.
+/// The points of `pts` on the speed curve (at the scene's load; `by_speed`) or the load curve (at
+/// the scene's speed) at temperature `t`, as (speed or load, F/N) sorted by x.
+fn on_curve(spec: &SceneSpec, pts: &[MapPoint], t: f64, by_speed: bool) -> Vec<(f64, f64)> {
+    let mut v: Vec<(f64, f64)> = pts
+        .iter()
+        .filter(|p| {
+            p.temp_c == t
+                && if by_speed {
+                    p.load_n_per_m == spec.load_n_per_m
+                } else {
+                    p.speed_m_s == spec.speed_m_s
+                }
+        })
+        .map(|p| {
+            let x = if by_speed {
+                p.speed_m_s
+            } else {
+                p.load_n_per_m
+            };
+            (x, p.friction)
+        })
+        .collect();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    v.dedup_by(|a, b| a.0 == b.0);
+    v
+}
+
+/// F/N against speed (at the scene's load) and load (at the scene's speed), one plot each, per map
+/// temperature a line through the map's dense curve ([`FrictionMaps::curves`], 40 points) and the
+/// listed points as dots; a scene without dense curves (a cover) shows the listed points joined.
 pub fn speed_and_load_plots(
     dir: &Path,
     spec: &SceneSpec,
@@ -24,47 +53,38 @@ pub fn speed_and_load_plots(
         if list.is_empty() {
             continue;
         }
-        let series: Vec<(String, Vec<(f64, f64)>)> = spec
-            .map_temps_c
-            .iter()
-            .map(|&t| {
-                let pts: Vec<(f64, f64)> = map
-                    .points
-                    .iter()
-                    .filter(|p| {
-                        p.temp_c == t
-                            && if by_speed {
-                                p.load_n_per_m == spec.load_n_per_m && list.contains(&p.speed_m_s)
-                            } else {
-                                p.speed_m_s == spec.speed_m_s && list.contains(&p.load_n_per_m)
-                            }
-                    })
-                    .map(|p| {
-                        let x = if by_speed {
-                            p.speed_m_s
-                        } else {
-                            p.load_n_per_m
-                        };
-                        (x, p.friction)
-                    })
-                    .collect();
-                (format!("{t} °C"), pts)
-            })
-            .collect();
+        let mut curves = Vec::new();
+        for (i, &t) in spec.map_temps_c.iter().enumerate() {
+            let colour = PALETTE[i % PALETTE.len()];
+            let listed: Vec<(f64, f64)> = on_curve(spec, &map.points, t, by_speed)
+                .into_iter()
+                .filter(|p| list.contains(&p.0))
+                .collect();
+            let dense = on_curve(spec, &map.curves, t, by_speed);
+            if dense.len() >= 2 {
+                curves.push(Curve::new(format!("{t} °C"), dense, Mark::Line).coloured(colour));
+                curves.push(Curve::new("", listed, Mark::Dots).coloured(colour));
+            } else {
+                curves.push(
+                    Curve::new(format!("{t} °C (listed points)"), listed, Mark::LineDots)
+                        .coloured(colour),
+                );
+            }
+        }
+        let chart = Chart {
+            title: format!("{}: F/N against {label}", spec.name),
+            x: Axis::log(label),
+            y: Axis::log("F/N"),
+            curves,
+            colour_bar: None,
+        };
         let stem = format!(
             "friction_{}_{}",
             spec.name,
             if by_speed { "speed" } else { "load" }
         );
         html.push_str(&plot_pair(dir, &stem, |p| {
-            plots::plot_lines(
-                &format!("{}: F/N against {label}", spec.name),
-                label,
-                "F/N",
-                &series,
-                true,
-                p,
-            )
+            plots::plot_chart(&chart, "friction map", p)
         })?);
     }
     Ok(html)

@@ -6,13 +6,19 @@
 //! assembled from one function per section ([`sections`]); the tables are in [`tables`], the map
 //! plots in [`maps`].
 
+pub mod curves;
+#[cfg(test)]
+pub mod fixture;
 pub mod maps;
 pub mod sections;
+pub mod summary;
 pub mod tables;
 pub mod tan_delta;
+pub mod transitions;
 
 pub use tan_delta::{tan_delta_at, tan_delta_peak};
 
+use super::chart::{Axis, Chart, Curve, Mark};
 use super::error::{io, write_file, ReportError};
 use super::html::{esc, plot_pair, STYLE};
 use super::plots;
@@ -69,31 +75,66 @@ fn fit_plots(
     Ok((iso, master, shift))
 }
 
-/// F/N against temperature, one curve per scene.
+/// F/N against temperature, one curve per scene, with its band when there is one.
 fn friction_plot(
     dir: &Path,
     fit: &CompoundFit,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
 ) -> Result<String, ReportError> {
-    let series: Vec<(String, Vec<(f64, f64)>)> = friction
-        .iter()
-        .map(|(s, p)| {
-            (
-                s.name.clone(),
-                p.iter().map(|p| (p.temp_c, p.friction)).collect(),
-            )
-        })
-        .collect();
+    let chart = Chart {
+        title: format!("{}: rolling friction F/N", fit.compound),
+        x: Axis::lin("temperature [°C]"),
+        y: Axis::log("F/N"),
+        curves: friction
+            .iter()
+            .map(|(s, p)| friction_curve(&s.name, p))
+            .collect(),
+        colour_bar: None,
+    };
     plot_pair(dir, "friction", |p| {
-        plots::plot_lines(
-            &format!("{}: rolling friction F/N against temperature", fit.compound),
-            "temperature [°C]",
-            "F/N",
-            &series,
-            false,
-            p,
-        )
+        plots::plot_chart(&chart, "friction", p)
     })
+}
+
+/// One scene's F/N against temperature as a curve with its band (the p05…p95 of each point that
+/// has one).
+pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
+    let mut c = Curve::new(
+        name,
+        pts.iter().map(|p| (p.temp_c, p.friction)).collect(),
+        Mark::LineDots,
+    );
+    c.band = pts
+        .iter()
+        .filter_map(|p| p.band.map(|b| (p.temp_c, b.p05, b.p95)))
+        .collect();
+    c
+}
+
+/// The viscoelastic curves: temperature sweeps, master curves, E(t) and J(t), isotherms and shift
+/// factors, as one grid of plots.
+fn curve_plots(
+    dir: &Path,
+    fit: &CompoundFit,
+    measurement: &Measurement,
+) -> Result<String, ReportError> {
+    let (sweep, sweep_tan) = curves::temperature_sweeps(fit, measurement);
+    let (relax, creep) = curves::relaxation_and_creep(fit);
+    let mut h = String::new();
+    for (stem, chart) in [
+        ("sweep_moduli", Some(sweep)),
+        ("sweep_tan_delta", Some(sweep_tan)),
+        ("master_tan_delta", Some(curves::master_tan_delta(fit))),
+        ("relaxation_modulus", Some(relax)),
+        ("creep_compliance", creep),
+    ] {
+        if let Some(c) = chart {
+            h.push_str(&plot_pair(dir, stem, |p| {
+                plots::plot_chart(&c, "curve", p)
+            })?);
+        }
+    }
+    Ok(h)
 }
 
 /// The map section: the plots against speed and load, the grid heat maps, with their CSV files named.
@@ -113,7 +154,7 @@ fn map_section(
     if !curves.is_empty() {
         let _ = write!(
             h,
-            "<h3>Friction against speed and load</h3><p>Values in <a href=\"friction_map.csv\">friction_map.csv</a>.</p>{curves}"
+            "<h3>Friction against speed and load</h3><p>Values in <a href=\"friction_map.csv\">friction_map.csv</a>.</p><div class=\"grid\">{curves}</div>"
         );
     }
     if !grids.is_empty() {
@@ -165,29 +206,46 @@ pub fn write_report(
     let friction_svg = friction_plot(dir, fit, friction)?;
     let maps_html = map_section(dir, friction, maps)?;
     let (iso_svg, master_svg, shift_svg) = fit_plots(dir, fit, measurement)?;
+    let curves_html = curve_plots(dir, fit, measurement)?;
 
+    let created = fit
+        .provenance
+        .created_utc
+        .as_deref()
+        .map_or(String::new(), |d| format!(", fitted {}", esc(d)));
     let mut h = format!(
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{0} datasheet</title>\n<!-- {1} -->\n<style>{STYLE}</style></head><body>\n<h1>{0}: viscoelastic datasheet</h1>\n<p>Made by {1}.</p>\n",
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>{0} datasheet</title>\n<style>{STYLE}</style></head><body>\n<h1>{0}</h1><p class=\"sub\">Viscoelastic datasheet and rolling friction · {1} {2}{created}</p>\n",
         esc(&fit.compound),
-        esc(&prov)
+        esc(&fit.provenance.tool),
+        esc(&fit.provenance.tool_version),
     );
-    h.push_str(&sections::trust(fit, friction, allow_extrapolation));
-    h.push_str(&sections::sources(fit));
-    h.push_str(&sections::test_conditions(fit));
-    let _ = write!(h, "<h2>Raw isotherms</h2>{iso_svg}");
+    h.push_str(&summary::first_screen(
+        fit,
+        friction,
+        allow_extrapolation,
+        &friction_svg,
+    ));
     let _ = write!(
         h,
-        "<h2>Master curve and Prony fit</h2><p>Reference temperature {:.2} °C.</p>{master_svg}",
-        fit.shift_law.t_ref_c()
+        "<h2>Viscoelastic curves</h2><p>Lines: the Prony fit shifted by the law used ({}); points: the measurement. Reference temperature {:.2} °C.</p><div class=\"grid\">{master_svg}{curves_html}{iso_svg}{shift_svg}</div>",
+        esc(&sections::law_text(&fit.shift_law)),
+        fit.shift_law.t_ref_c(),
     );
-    h.push_str(&sections::shift_factors(fit, &shift_svg));
-    h.push_str(&sections::quality(fit));
-    h.push_str(&sections::tan_delta(fit));
-    h.push_str(&sections::friction(friction, &friction_svg));
+    h.push_str(&sections::shift_factors(fit, ""));
+    h.push_str(&sections::friction(friction, ""));
+    h.push_str(&sections::trust(fit, friction, allow_extrapolation));
     h.push_str(&maps_html);
+    h.push_str(&sections::quality(fit));
+    h.push_str(&sections::test_conditions(fit));
+    h.push_str(&sections::sources(fit));
     h.push_str(&sections::prony(fit));
     h.push_str(&sections::creep(fit));
     h.push_str(&sections::fea_cards(fit));
+    let _ = write!(
+        h,
+        "<details><summary>Provenance</summary><p>Made by {}.</p></details>",
+        esc(&prov)
+    );
     h.push_str("</body></html>\n");
     write_file(&dir.join("datasheet.html"), h.as_bytes())
 }

@@ -36,7 +36,7 @@ pub fn trust(
     allow_extrapolation: bool,
 ) -> String {
     let reasons = fit.untrusted_reasons();
-    let mut h = String::from("<h2>Trust</h2>");
+    let mut h = String::from("<h3>Standing in the ranking</h3>");
     if reasons.is_empty() {
         h.push_str("<p>Every quality figure of the fit is within its bound.</p>");
     } else {
@@ -74,8 +74,9 @@ pub fn trust(
 
 /// Source files with format and SHA-256.
 pub fn sources(fit: &CompoundFit) -> String {
-    let mut h = String::from(
-        "<h2>Source files</h2><table><tr><th>file</th><th>format</th><th>SHA-256</th></tr>",
+    let mut h = format!(
+        "<details><summary>Source files and their SHA-256 ({})</summary><table><tr><th>file</th><th>format</th><th>SHA-256</th></tr>",
+        fit.measurement.sources.len()
     );
     for s in &fit.measurement.sources {
         let _ = write!(
@@ -87,6 +88,21 @@ pub fn sources(fit: &CompoundFit) -> String {
         );
     }
     h.push_str("</table>");
+    for s in &fit.measurement.sources {
+        if !s.metadata.is_empty() {
+            let _ = write!(
+                h,
+                "<details><summary>Metadata of {} ({} entries)</summary><table>{}</table></details>",
+                esc(&s.path),
+                s.metadata.len(),
+                s.metadata
+                    .iter()
+                    .map(|(k, v)| format!("<tr><td class=\"l\">{}</td><td class=\"l\">{}</td></tr>", esc(k), esc(v)))
+                    .collect::<String>()
+            );
+        }
+    }
+    h.push_str("</details>");
     h
 }
 
@@ -95,7 +111,7 @@ pub fn test_conditions(fit: &CompoundFit) -> String {
     let m = &fit.measurement;
     let (tlo, thi) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
     let mut h = format!(
-        "<h2>Test conditions</h2><table><tr><th>mode</th><th>Poisson's ratio</th><th>isotherms</th><th>points</th><th>temperatures (°C)</th><th>frequencies (Hz)</th></tr><tr><td class=\"l\">{:?}</td><td>{}</td><td>{}</td><td>{}</td><td>{tlo:.1} … {thi:.1}</td><td>{:.3} … {:.3}</td></tr></table>",
+        "<h2>Measurement</h2><table><tr><th>mode</th><th>Poisson's ratio</th><th>isotherms</th><th>points</th><th>temperatures (°C)</th><th>frequencies (Hz)</th></tr><tr><td class=\"l\">{:?}</td><td>{}</td><td>{}</td><td>{}</td><td>{tlo:.1} … {thi:.1}</td><td>{:.3} … {:.3}</td></tr></table>",
         m.kind, m.poisson, m.n_isotherms, m.n_points, m.freq_min_hz, m.freq_max_hz
     );
     if !m.warnings.is_empty() {
@@ -115,7 +131,7 @@ pub fn test_conditions(fit: &CompoundFit) -> String {
 /// The law used, both fitted laws with their RMS, and the shift-factor plot.
 pub fn shift_factors(fit: &CompoundFit, shift_svg: &str) -> String {
     let mut h = format!(
-        "<h2>Shift factors</h2><p>Law used: {}.</p><ul>",
+        "<h3>Shift laws</h3><p>Law used: {}.</p><ul>",
         esc(&law_text(&fit.shift_law))
     );
     if let Some(t) = &fit.tts {
@@ -133,7 +149,7 @@ pub fn shift_factors(fit: &CompoundFit, shift_svg: &str) -> String {
 /// The quality figures against their bounds, and the master curve's flags and warnings.
 pub fn quality(fit: &CompoundFit) -> String {
     let mut h = String::from(
-        "<h2>Quality flags</h2><table><tr><th>figure</th><th>value</th><th>bound</th><th>flag</th></tr>",
+        "<h2>Fit quality</h2><table><tr><th>figure</th><th>value</th><th>bound</th><th>flag</th></tr>",
     );
     for q in &fit.quality {
         let _ = write!(
@@ -189,62 +205,43 @@ pub fn tan_delta(fit: &CompoundFit) -> String {
     h
 }
 
-/// The scenes, the friction plot and the table of F/N per scene and temperature with its notes.
+/// The scenes and (collapsed) the table of F/N per scene and temperature with its band, contact
+/// length and notes; `friction_svg` (may be empty) goes between them.
 pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str) -> String {
-    let mut h = String::from("<h2>Rolling friction</h2><table><tr><th>scene</th><th>radius (mm)</th><th>load (N/m)</th><th>speed (m/s)</th><th>description</th></tr>");
+    let mut h = String::from("<h2>Rolling friction: scenes and details</h2><table><tr><th class=\"l\">scene</th><th>radius (mm)</th><th>load (N/m)</th><th>speed (m/s)</th><th>cover (mm)</th><th class=\"l\">description</th></tr>");
     for (s, _) in friction {
         let _ = write!(
             h,
-            "<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"l\">{}</td></tr>",
+            "<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"l\">{}</td></tr>",
             esc(&s.name),
             s.roll_radius_mm,
             s.load_n_per_m,
             s.speed_m_s,
+            s.cover_thickness_mm.map_or("–".into(), |c| c.to_string()),
             esc(&s.description)
         );
     }
-    h.push_str("</table>");
-    // Which body each covered scene was solved on, and why (contact::body::layer::roll_cover): one line per
-    // body, with the temperatures it was chosen at and the reason given at the first of them.
-    for (s, pts) in friction {
-        let Some(c) = s.cover_thickness_mm else {
-            continue;
-        };
-        let mut bodies: Vec<(&str, Vec<f64>, &str)> = Vec::new();
-        for p in pts.iter().filter(|p| !p.model.is_empty()) {
-            match bodies.iter_mut().find(|b| b.0 == p.model) {
-                Some(b) => b.1.push(p.temp_c),
-                None => bodies.push((&p.model, vec![p.temp_c], &p.model_reason)),
-            }
-        }
-        for (model, temps, reason) in bodies {
-            let temps: Vec<String> = temps.iter().map(|t| t.to_string()).collect();
-            let _ = write!(
-                h,
-                "<p>{}: {c} mm cover bonded to a rigid carcass; body solved at {} °C: {} ({}).</p>",
-                esc(&s.name),
-                temps.join(", "),
-                esc(model),
-                esc(reason)
-            );
-        }
-    }
-    let _ = write!(h, "{friction_svg}<table><tr><th>scene</th><th>T (°C)</th><th>F/N</th><th>F* (N/m)</th><th>contact (mm)</th><th>note</th></tr>");
+    let rows: usize = friction.iter().map(|(_, p)| p.len()).sum();
+    let _ = write!(h, "</table>{friction_svg}<details><summary>Friction table ({rows} rows; also in <a href=\"friction.csv\">friction.csv</a>)</summary><table><tr><th>scene</th><th>T (°C)</th><th>F/N</th><th>p05</th><th>p95</th><th>F* (N/m)</th><th>contact (mm)</th><th>body</th><th>note</th></tr>");
     for (s, pts) in friction {
         for p in pts {
             let note = esc(&p.note());
+            let (p05, p95) = p.band.map_or(("–".to_string(), "–".to_string()), |b| {
+                (format!("{:.4e}", b.p05), format!("{:.4e}", b.p95))
+            });
             let _ = write!(
                 h,
-                "<tr><td class=\"l\">{}</td><td>{}</td><td>{:.4e}</td><td>{:.4}</td><td>{:.3}</td><td class=\"l\">{note}</td></tr>",
+                "<tr><td class=\"l\">{}</td><td>{}</td><td>{:.4e}</td><td>{p05}</td><td>{p95}</td><td>{:.4}</td><td>{:.3}</td><td class=\"l\">{}</td><td class=\"l\">{note}</td></tr>",
                 esc(&s.name),
                 p.temp_c,
                 p.friction,
                 p.resistance_n_per_m,
-                p.contact_length_mm
+                p.contact_length_mm,
+                esc(&p.model)
             );
         }
     }
-    h.push_str("</table>");
+    h.push_str("</table></details>");
     h
 }
 
@@ -252,7 +249,7 @@ pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str
 pub fn prony(fit: &CompoundFit) -> String {
     let r = &fit.relaxation;
     let mut h = format!(
-        "<h2>Prony series (relaxation, {:?}, at T_ref)</h2><p>E∞ = {:.4e} Pa, {} terms; RMS log10 error E′ {:.4}, E″ {:.4}.</p><table><tr><th>i</th><th>τ<sub>i</sub> (s)</th><th>E<sub>i</sub> (Pa)</th></tr>",
+        "<h2>Spectra and FEA cards</h2><details><summary>Prony series (relaxation, {:?}, at T_ref): E∞ = {:.4e} Pa, {} terms; RMS log10 error E′ {:.4}, E″ {:.4}</summary><table><tr><th>i</th><th>τ<sub>i</sub> (s)</th><th>E<sub>i</sub> (Pa)</th></tr>",
         r.kind, r.modulus_inf_pa, r.terms.len(), fit.prony_info.rms_log10_storage, fit.prony_info.rms_log10_loss
     );
     for (i, t) in r.terms.iter().enumerate() {
@@ -264,7 +261,7 @@ pub fn prony(fit: &CompoundFit) -> String {
             t.modulus_pa
         );
     }
-    h.push_str("</table>");
+    h.push_str("</table></details>");
     h
 }
 
@@ -274,8 +271,9 @@ pub fn creep(fit: &CompoundFit) -> String {
         return String::new();
     };
     let mut h = format!(
-        "<h2>Creep spectrum (exact conversion, at T_ref)</h2><p>J_g = {:.4e} 1/Pa.</p><table><tr><th>j</th><th>τ<sub>j</sub> (s)</th><th>J<sub>j</sub> (1/Pa)</th></tr>",
-        c.compliance_glassy_per_pa
+        "<details><summary>Creep spectrum (exact conversion, at T_ref): J_g = {:.4e} 1/Pa, {} terms</summary><table><tr><th>j</th><th>τ<sub>j</sub> (s)</th><th>J<sub>j</sub> (1/Pa)</th></tr>",
+        c.compliance_glassy_per_pa,
+        c.terms.len()
     );
     for (i, t) in c.terms.iter().enumerate() {
         let _ = write!(
@@ -286,7 +284,7 @@ pub fn creep(fit: &CompoundFit) -> String {
             t.compliance_per_pa
         );
     }
-    h.push_str("</table>");
+    h.push_str("</table></details>");
     h
 }
 
@@ -302,7 +300,7 @@ pub fn fea_cards(fit: &CompoundFit) -> String {
             _ => None,
         });
     let opts = cards::CardOptions::default();
-    let mut h = String::from("<h2>FEA cards</h2>");
+    let mut h = String::new();
     for (name, text) in [
         ("Abaqus", cards::abaqus(&fit.relaxation, wlf, &opts)),
         ("ANSYS", cards::ansys(&fit.relaxation, wlf, &opts)),
@@ -310,12 +308,16 @@ pub fn fea_cards(fit: &CompoundFit) -> String {
     ] {
         match text {
             Ok(t) => {
-                let _ = write!(h, "<h3>{name}</h3><pre>{}</pre>", esc(&t));
+                let _ = write!(
+                    h,
+                    "<details><summary>{name} card</summary><pre>{}</pre></details>",
+                    esc(&t)
+                );
             }
             Err(e) => {
                 let _ = write!(
                     h,
-                    "<h3>{name}</h3><p class=\"bad\">{}</p>",
+                    "<p class=\"bad\">{name} card: {}</p>",
                     esc(&e.to_string())
                 );
             }

@@ -9,8 +9,9 @@ use crate::report::csv_text::csv_text;
 use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
 
 /// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated,
-/// error, `note` (every flag of the row: failure, extrapolation, contact validity) and `model` (the
-/// body solved, contact::body::layer). The
+/// error, `note` (every flag of the row: failure, extrapolation, contact validity), `model` (the
+/// body solved, contact::body::layer) and `friction_p05`, `friction_p50`, `friction_p95` (the 90 %
+/// uncertainty band, crate::bands; empty with `--no-bands`). The
 /// compound's own flags (`flags`: why its fit is not trusted) come first as `#` lines and, when there
 /// are any, lead every row's note with `fit not trusted`.
 pub fn friction_csv(
@@ -36,6 +37,9 @@ pub fn friction_csv(
                     (true, n) => format!("fit not trusted; {n}"),
                 },
                 p.model.clone(),
+                band_text(p.band.map(|b| b.p05)),
+                band_text(p.band.map(|b| b.p50)),
+                band_text(p.band.map(|b| b.p95)),
             ]
         })
     });
@@ -54,9 +58,17 @@ pub fn friction_csv(
             "error",
             "note",
             "model",
+            "friction_p05",
+            "friction_p50",
+            "friction_p95",
         ],
         rows,
     )
+}
+
+/// A band percentile as printed (empty without bands).
+pub fn band_text(v: Option<f64>) -> String {
+    v.map_or(String::new(), |v| format!("{v:e}"))
 }
 
 /// `friction_map.csv`: F/N against the listed speeds and loads at every map temperature.

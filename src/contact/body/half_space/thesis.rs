@@ -56,7 +56,21 @@ pub fn solve_at_lambda(
     let h = lambda / n as f64;
     // a[k + n] = A(k), k = −n..=n.
     let a = kernel.hat_averages(n, h);
-    let at = |k: i64| a[(k + n as i64) as usize];
+    solve_hat_system(&a, n, lambda, "thesis")
+}
+
+/// Assemble and solve the collocation system above for the hat averages `a` of any kernel of the form
+/// K(ξ) + const (a[k + c] = A(k), c = a.len()/2 ≥ n; the bonded layer's kernel uses it too,
+/// [`crate::contact::body::layer::collocation`]); `scheme` names the result.
+pub fn solve_hat_system(
+    a: &[f64],
+    n: usize,
+    lambda: f64,
+    scheme: &str,
+) -> Result<DimensionlessSolution, ContactError> {
+    let h = lambda / n as f64;
+    let centre = (a.len() / 2) as i64;
+    let at = |k: i64| a[(k + centre) as usize];
     let xi = |i: usize| lambda * (i as f64) / (n as f64);
 
     let mut m = DMatrix::<f64>::zeros(n, n);
@@ -84,7 +98,7 @@ pub fn solve_at_lambda(
         (s + pressure[j], sx + pressure[j] * (xs[j] - beta))
     });
     Ok(DimensionlessSolution {
-        scheme: "thesis".to_string(),
+        scheme: scheme.to_string(),
         lambda,
         beta,
         load: 2.0 * h * sum_q,

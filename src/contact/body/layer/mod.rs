@@ -20,7 +20,7 @@ pub mod winkler;
 pub use collocation::{LayerAnswer, LayerSettings};
 pub use compliance::WinklerColumns;
 pub use kernel::LayerKernel;
-pub use roll_cover::{roll_cover, CoverRoll, ModelChoice};
+pub use roll_cover::{auto_choice, roll_cover, solve_cover, CoverAnswer, CoverRoll, ModelChoice};
 pub use winkler::{Winkler, WinklerAnswer};
 
 use crate::contact::error::ContactError;
@@ -118,5 +118,7 @@ pub fn winkler_at_load(
     })
 }
 
+#[cfg(test)]
+mod elastic_check;
 #[cfg(test)]
 mod tests;

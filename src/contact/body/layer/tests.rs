@@ -343,13 +343,19 @@ fn criterion_table() {
             scene.dimensionless(&spec).unwrap().terms
         }),
     ];
-    println!("| spectrum | ν | h/λ_layer | half-space vs layer (λ, ρF/N) | constrained Winkler vs layer (λ, ρF/N) |");
-    println!("|---|---|---|---|---|");
+    println!("| spectrum | ν | h/λ_layer | half-space vs layer (λ, ρF/N) | constrained Winkler vs layer (λ, ρF/N) | C_W measured |");
+    println!("|---|---|---|---|---|---|");
     for (name, terms) in &cases {
-        for nu in [0.5, 0.3] {
+        for nu in [0.5, 0.49, 0.45, 0.3, 0.2, 0.0] {
             let n0 = 64;
             let hs = thesis_at_load(terms, load, n0);
-            for hr in [0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0] {
+            // the half-space law does not depend on ν much: the thick rows at ν = ½ and 0.3 only
+            let ratios: &[f64] = if nu == 0.5 || nu == 0.3 {
+                &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0]
+            } else {
+                &[0.01, 0.03, 0.1, 0.3, 1.0]
+            };
+            for &hr in ratios {
                 let h = hr * hs.lambda;
                 // n resolving h; the half-space at the same n
                 let n = ((8.0 / hr) as usize).clamp(n0, 400);
@@ -366,17 +372,25 @@ fn criterion_table() {
                 let w = Winkler::new(terms, WinklerColumns::Constrained, h, nu)
                     .ok()
                     .map(|w| w.at_load(load, &LoadSettings::default()).unwrap().solution);
-                let d_w = w
+                // C_W = (largest relative difference)·(1 − 2ν)/(h/λ): the constant of the rule
+                // C_W·(h/λ)/(1 − 2ν) ≤ tol of `roll_cover` (ρF/N counted only where it is not ≈ 0)
+                let (d_w, c_w) = w
                     .map(|w| {
-                        format!(
-                            "{:.1e}, {:.1e}",
-                            rel(w.lambda, l.lambda),
-                            rel(w.friction_rho, l.friction_rho)
+                        let dl = rel(w.lambda, l.lambda);
+                        let df = rel(w.friction_rho, l.friction_rho);
+                        let d = if l.friction_rho.abs() > 1e-9 * l.lambda {
+                            dl.max(df)
+                        } else {
+                            dl
+                        };
+                        (
+                            format!("{dl:.1e}, {df:.1e}"),
+                            format!("{:.2}", d * (1.0 - 2.0 * nu) / (h / l.lambda)),
                         )
                     })
-                    .unwrap_or_else(|| "rigid".into());
+                    .unwrap_or_else(|| ("rigid".into(), "—".into()));
                 println!(
-                    "| {name} | {nu} | {:.3} | {:.1e}, {:.1e} | {d_w} |",
+                    "| {name} | {nu} | {:.3} | {:.1e}, {:.1e} | {d_w} | {c_w} |",
                     h / l.lambda,
                     d_hs.0,
                     d_hs.1

@@ -1,0 +1,25 @@
+//! The typed error of the bands stage.
+
+use thiserror::Error;
+
+/// Why an uncertainty band could not be computed.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum BandError {
+    /// The fit's residuals are not finite (the scatter cannot be estimated).
+    #[error("the scatter cannot be estimated: {0}")]
+    Scatter(String),
+    /// Too few replicates refitted (each failure's reason is in the message).
+    #[error("only {ok} of {asked} bootstrap refits succeeded (first failure: {first})")]
+    TooFewReplicates {
+        /// Succeeded.
+        ok: usize,
+        /// Asked for.
+        asked: usize,
+        /// The first failure's reason.
+        first: String,
+    },
+    /// The band settings are out of range.
+    #[error("band settings: {0}")]
+    Settings(String),
+}

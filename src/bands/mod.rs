@@ -1,0 +1,95 @@
+//! Stage `bands`: uncertainty bands on every friction number, from the measurement's own scatter
+//! propagated through the shifts, the Prony fit, the creep conversion and the contact solve by a
+//! bootstrap (docs/MATH.md §15).
+//!
+//! Input: a compound's [`MasterCurve`](crate::tts::MasterCurve), its measurement and its
+//! [`CompoundFit`](crate::results::CompoundFit); output: a
+//! [`BandEnsemble`](crate::results::BandEnsemble) of refitted replicates (saved in the fit file),
+//! and from it [`FrictionBand`](crate::results::FrictionBand)s per scene and temperature, bands of
+//! a scene's mean friction and [`PairComparison`](crate::results::PairComparison)s. Sits above
+//! results, tts, prony, creep and contact, below pipeline.
+//!
+//! The math (docs/MATH.md §15):
+//!
+//! 1. Scatter from the data. The residual of master point p against the fitted Prony series,
+//!    r_p = ln(E′_p/Ê′(ω_p)) and likewise for E″ (eq. 15.1), holds the isotherm overlap mismatch and
+//!    the fit residual together. The shift stage's least squares over the isotherm overlaps gives
+//!    each isotherm's standard error σ_k of log a_T relative to the reference isotherm; the drift of
+//!    an isotherm's point temperatures gives σ_T,k = sd(T_points)/√n (0 when the file has none).
+//! 2. Shifts (eq. 15.2). The shifts are found pairwise outwards from the reference, so their errors
+//!    add up along the chain: replicate shifts are a random walk δ_k = δ_(k∓1) + √(σ_k² − M_k²)·z
+//!    from the reference (δ = 0) to either end (M_k the largest σ inside k), which keeps each σ_k
+//!    and the correlation of neighbours. The law at T_k gets δ_k + (d log a_T/dT)·σ_T,k·z.
+//! 3. Moduli (eq. 15.3, wild residual bootstrap): E′*_p = Ê′(ω_p)·exp(z_p r_p), E″ alike, placed at
+//!    the reduced frequency ω_p·10^δ_k of its isotherm k. Each replicate is refitted (eq. 15.4): the
+//!    Prony QP at the fit's own λ (the λ search is not redone: one QP instead of twelve), then the
+//!    exact creep conversion.
+//! 4. Contact: each replicate's creep spectrum, shifted by its own law log a_T(T) + δ(T) (δ linear
+//!    between isotherms, constant beyond the ends), is rolled at the scene's temperatures; the ratio
+//!    F_b/F̂ to the fit's own friction solved at the same tolerance carries the scatter.
+//! 5. Band (eq. 15.5): with d_b = ln(F_b/F̂), mean m and standard deviation s over the replicates,
+//!    p50 = F·e^m and p05, p95 = F·e^(m ∓ 1.645 s) (log-normal: smoother than empirical 5 %
+//!    quantiles of 32 replicates). A covered scene's points take the half-space's ratios (eq. 15.6).
+//!    The band of a scene mean takes per replicate the mean of F_t·ratio_(b,t).
+//! 6. Pairs (eq. 15.7): P(F_A < F_B) = Φ((ln p50_B − ln p50_A)/√(s_A² + s_B²)), compounds
+//!    independent (separate measurements); tied when it lies strictly between 0.05 and 0.95.
+//!
+//! Left out: the contact solver's own error (≤ its tolerance, far below the bands), the choice of
+//! shift law beyond the measured temperatures (the offsets are held constant there, so an
+//! extrapolated point's band is no wider than the nearest isotherm's), systematic errors of the
+//! instrument (clamping, compliance, thermocouple calibration) that the data cannot show, and the
+//! covered body's own sensitivity to the moduli.
+
+pub mod compare;
+pub mod ensemble;
+pub mod error;
+pub mod friction;
+pub mod rng;
+
+pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
+pub use ensemble::build_ensemble;
+pub use error::BandError;
+pub use friction::{band_of, mean_band, scene_ratios};
+
+/// Settings of the bands.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BandSettings {
+    /// Bootstrap replicates (default 32: the log standard deviation of a band is then known to
+    /// about 1/√(2·31) ≈ 13 %).
+    pub replicates: usize,
+    /// Seed of the resampling.
+    pub seed: u64,
+    /// Relative tolerance of the replicates' contact solves (default 1e-4: the narrowest bands
+    /// measured are ±0.5 %, fifty times wider; the nominal friction of the ratio is solved at the
+    /// same tolerance, so most of the solver error cancels in F_b/F̂).
+    pub contact_tol: f64,
+}
+
+impl Default for BandSettings {
+    fn default() -> Self {
+        Self {
+            replicates: 32,
+            seed: 16,
+            contact_tol: 1e-4,
+        }
+    }
+}
+
+impl BandSettings {
+    /// Check: 8 … 10 000 replicates, tolerance in [1e-8, 1e-2].
+    pub fn validate(&self) -> Result<(), BandError> {
+        if !(8..=10_000).contains(&self.replicates) {
+            return Err(BandError::Settings(format!(
+                "replicates must be in 8 … 10000, got {}",
+                self.replicates
+            )));
+        }
+        if !(self.contact_tol.is_finite() && (1e-8..=1e-2).contains(&self.contact_tol)) {
+            return Err(BandError::Settings(format!(
+                "contact_tol must be in [1e-8, 1e-2], got {}",
+                self.contact_tol
+            )));
+        }
+        Ok(())
+    }
+}

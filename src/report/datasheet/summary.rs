@@ -1,0 +1,406 @@
+//! The first screen of a datasheet: the sample as the export describes it (material, instrument,
+//! date, operator, geometry), the quality verdict, the glass transition at 1 Hz three ways, tan δ
+//! at 0 and 60 °C (10 Hz), and the friction of each scene at its temperatures with bands, the body
+//! each scene was solved on and why. No hashes here (they are at the end of the page).
+//!
+//! Input: a [`CompoundFit`] and its friction per scene; output: HTML text.
+
+use super::tan_delta::tan_delta_at;
+use super::transitions::{onset, peak, Quantity};
+use crate::report::html::{esc, num, num_band};
+use crate::results::{standing, CompoundFit, FrictionPoint, SceneSpec};
+use std::fmt::Write as _;
+
+/// Metadata keys read for each line of the sample table, in order of preference (compared without
+/// case): the names TRIOS, EPLEXOR, Proteus, RheoCompass and generic exports use.
+const KEYS: [(&str, &[&str]); 5] = [
+    (
+        "Material",
+        &[
+            "material / remark",
+            "material",
+            "sample name",
+            "sample",
+            "specimen",
+            "compound",
+        ],
+    ),
+    (
+        "Instrument",
+        &[
+            "instrument type",
+            "instrument name",
+            "instrument",
+            "device",
+            "measuring device",
+        ],
+    ),
+    (
+        "Date",
+        &[
+            "date / time",
+            "run date",
+            "date/time",
+            "date",
+            "start time",
+            "measurement date",
+        ],
+    ),
+    (
+        "Operator",
+        &[
+            "operator name",
+            "operator",
+            "logged-in user at run start",
+            "user",
+        ],
+    ),
+    (
+        "Geometry",
+        &[
+            "sample shape",
+            "geometry name",
+            "geometry",
+            "measuring system",
+            "clamp",
+        ],
+    ),
+];
+
+/// Longest metadata value shown (characters).
+const MAX_VALUE: usize = 80;
+
+/// The sample's metadata lines (label, value), from the first source file that has each; values
+/// that are placeholders (`Anonymous`, `xxx`, `MM/DD/YYYY`) are left out.
+pub fn sample_lines(fit: &CompoundFit) -> Vec<(&'static str, String)> {
+    let placeholder = |v: &str| {
+        let v = v.trim().to_lowercase();
+        v.is_empty() || v == "anonymous" || v == "xxx" || v == "mm/dd/yyyy"
+    };
+    let mut out = Vec::new();
+    for (label, keys) in KEYS {
+        let found = keys.iter().find_map(|k| {
+            fit.measurement.sources.iter().find_map(|s| {
+                s.metadata
+                    .iter()
+                    .find(|(mk, v)| mk.trim().eq_ignore_ascii_case(k) && !placeholder(v))
+                    .map(|(_, v)| v.clone())
+            })
+        });
+        if let Some(v) = found {
+            let mut v: String = v.chars().take(MAX_VALUE).collect();
+            if label == "Geometry" {
+                for (k, unit) in [("thickness", "mm"), ("width", "mm"), ("length", "mm")] {
+                    if let Some(x) = fit.measurement.sources.iter().find_map(|s| {
+                        s.metadata
+                            .iter()
+                            .find(|(mk, _)| mk.eq_ignore_ascii_case(k))
+                            .and_then(|(_, v)| v.trim().parse::<f64>().ok())
+                    }) {
+                        let _ = write!(v, ", {k} {x:.3} {unit}");
+                    }
+                }
+            }
+            out.push((label, v));
+        }
+    }
+    out
+}
+
+/// The facts column: sample, measurement, verdict, transitions and tan δ.
+fn facts(fit: &CompoundFit) -> String {
+    let m = &fit.measurement;
+    let mut h = String::from("<table class=\"kv\">");
+    for (label, v) in sample_lines(fit) {
+        let _ = write!(h, "<tr><td>{label}</td><td>{}</td></tr>", esc(&v));
+    }
+    let formats: Vec<&str> = {
+        let mut f: Vec<&str> = m.sources.iter().map(|s| s.format.as_str()).collect();
+        f.dedup();
+        f
+    };
+    let (tlo, thi) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
+    let _ = write!(
+        h,
+        "<tr><td>Export</td><td>{} ({} file{})</td></tr><tr><td>Measured</td><td>{:?}, ν = {}; {} isotherms {tlo:.0} … {thi:.0} °C, {} … {} Hz</td></tr></table>",
+        esc(&formats.join(", ")),
+        m.sources.len(),
+        if m.sources.len() == 1 { "" } else { "s" },
+        m.kind,
+        m.poisson,
+        m.n_isotherms,
+        num(m.freq_min_hz),
+        num(m.freq_max_hz)
+    );
+    let reasons = fit.untrusted_reasons();
+    if reasons.is_empty() {
+        let _ = write!(
+            h,
+            "<p class=\"ok\"><b>Quality: trusted.</b> Every quality figure is within its bound ({} figures).</p>",
+            fit.quality.len()
+        );
+    } else {
+        let _ =
+            write!(
+            h,
+            "<p class=\"bad\"><b>Quality: not trusted</b> (listed apart in the ranking): {}</p>",
+            reasons.iter().map(|r| esc(r)).collect::<Vec<_>>().join("; ")
+        );
+    }
+    let t = |v: Option<(f64, f64)>| {
+        v.map_or("outside the measured temperatures".to_string(), |(t, _)| {
+            format!("{t:.1} °C")
+        })
+    };
+    let (loss, tan) = (
+        peak(fit, Quantity::Loss, 1.0),
+        peak(fit, Quantity::TanDelta, 1.0),
+    );
+    let sym = crate::report::plots::symbols(fit.relaxation.kind);
+    let _ = write!(
+        h,
+        "<table class=\"kv\"><tr><td>T<sub>g</sub> at 1 Hz, {} peak</td><td><b>{}</b></td></tr><tr><td>tan δ peak at 1 Hz</td><td>{}{}</td></tr><tr><td>onset of the {} drop, 1 Hz</td><td>{}</td></tr>",
+        sym.1,
+        t(loss),
+        t(tan),
+        tan.map_or(String::new(), |(_, v)| format!(" (tan δ = {v:.3})")),
+        sym.0,
+        onset(fit, 1.0).map_or("outside the measured temperatures".to_string(), |t| format!("{t:.1} °C"))
+    );
+    for tc in [0.0, 60.0] {
+        let out = fit
+            .measured_range_c()
+            .is_some_and(|(a, b)| tc < a || tc > b);
+        let _ = write!(
+            h,
+            "<tr><td>tan δ at {tc} °C, 10 Hz</td><td>{:.4}{}</td></tr>",
+            tan_delta_at(fit, tc, 10.0),
+            if out {
+                " <span class=\"warn\">(extrapolated shift law)</span>"
+            } else {
+                ""
+            }
+        );
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// The bodies a scene was solved on: (body, temperatures, reason given at the first of them).
+fn bodies(pts: &[FrictionPoint]) -> Vec<(&str, Vec<f64>, &str)> {
+    let mut v: Vec<(&str, Vec<f64>, &str)> = Vec::new();
+    for p in pts.iter().filter(|p| !p.model.is_empty()) {
+        match v.iter_mut().find(|b| b.0 == p.model) {
+            Some(b) => b.1.push(p.temp_c),
+            None => v.push((&p.model, vec![p.temp_c], &p.model_reason)),
+        }
+    }
+    v
+}
+
+/// The friction matrix: a row per scene, a column per temperature, F/N with its band; then the
+/// body of each scene and why.
+pub fn friction_matrix(
+    fit: &CompoundFit,
+    friction: &[(SceneSpec, Vec<FrictionPoint>)],
+    allow_extrapolation: bool,
+) -> String {
+    let mut temps: Vec<f64> = friction
+        .iter()
+        .flat_map(|(_, p)| p.iter().map(|p| p.temp_c))
+        .collect();
+    temps.sort_by(f64::total_cmp);
+    temps.dedup();
+    let banded = friction
+        .iter()
+        .any(|(_, p)| p.iter().any(|p| p.band.is_some()));
+    let mut h = format!(
+        "<h2>Rolling friction F/N</h2><p>Per scene and temperature{}; <span class=\"warn\">*</span> extrapolated shift law (outside the measured temperatures){}. The mean is the ranking's figure.</p><table><tr><th class=\"l\">scene</th><th>mean</th>",
+        if banded {
+            ", with the 90 % band (p05–p95) below each value"
+        } else {
+            " (no uncertainty bands in this run)"
+        },
+        if allow_extrapolation {
+            ", averaged because of --allow-extrapolation"
+        } else {
+            ", left out of the mean"
+        }
+    );
+    for t in &temps {
+        let _ = write!(h, "<th>{t} °C</th>");
+    }
+    h.push_str("</tr>");
+    let reasons = fit.untrusted_reasons();
+    for (spec, pts) in friction {
+        let s = standing(&spec.name, pts, &reasons, allow_extrapolation);
+        let _ = write!(
+            h,
+            "<tr><td class=\"l\">{}</td><td class=\"{}\">{}</td>",
+            esc(&spec.name),
+            if s.trusted() { "" } else { "bad" },
+            s.mean_friction.map_or("–".into(), num)
+        );
+        for t in &temps {
+            match pts.iter().find(|p| p.temp_c == *t) {
+                None => h.push_str("<td></td>"),
+                Some(p) if p.error.is_some() || !p.friction.is_finite() => {
+                    let _ = write!(
+                        h,
+                        "<td class=\"bad\" title=\"{}\">failed</td>",
+                        esc(p.error.as_deref().unwrap_or("not finite"))
+                    );
+                }
+                Some(p) => {
+                    let (v, b) = num_band(p.friction, p.band.map(|b| (b.p05, b.p95)));
+                    let _ = write!(
+                        h,
+                        "<td{}>{v}{}{}</td>",
+                        if p.warnings.is_empty() {
+                            String::new()
+                        } else {
+                            format!(" class=\"warn\" title=\"{}\"", esc(&p.warnings.join("; ")))
+                        },
+                        if p.extrapolated {
+                            "<span class=\"warn\">*</span>"
+                        } else {
+                            ""
+                        },
+                        if b.is_empty() {
+                            String::new()
+                        } else {
+                            format!("<span class=\"band\">{b}</span>")
+                        }
+                    );
+                }
+            }
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table><ul>");
+    for (spec, pts) in friction {
+        let geometry = format!(
+            "R = {} mm, {} N/m, {} m/s",
+            spec.roll_radius_mm, spec.load_n_per_m, spec.speed_m_s
+        );
+        match spec.cover_thickness_mm {
+            None => {
+                let _ = write!(
+                    h,
+                    "<li><b>{}</b> ({geometry}): half-space of the compound (no cover in the scene).</li>",
+                    esc(&spec.name)
+                );
+            }
+            Some(c) => {
+                let list: Vec<String> = bodies(pts)
+                    .into_iter()
+                    .map(|(model, temps, reason)| {
+                        let t: Vec<String> = temps.iter().map(|t| t.to_string()).collect();
+                        format!("{} at {} °C ({})", esc(model), t.join(", "), esc(reason))
+                    })
+                    .collect();
+                let _ = write!(
+                    h,
+                    "<li><b>{}</b> ({geometry}): {c} mm cover bonded to a rigid carcass, solved as {}.</li>",
+                    esc(&spec.name),
+                    if list.is_empty() {
+                        "– (no point solved)".to_string()
+                    } else {
+                        list.join("; ")
+                    }
+                );
+            }
+        }
+    }
+    h.push_str("</ul>");
+    h
+}
+
+/// The first screen: facts beside the friction plot, then the friction matrix.
+pub fn first_screen(
+    fit: &CompoundFit,
+    friction: &[(SceneSpec, Vec<FrictionPoint>)],
+    allow_extrapolation: bool,
+    friction_svg: &str,
+) -> String {
+    format!(
+        "<section class=\"first\"><div>{}</div><div>{friction_svg}</div></section>{}",
+        facts(fit),
+        friction_matrix(fit, friction, allow_extrapolation)
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::datasheet::fixture::fit_with;
+    use crate::results::FrictionBand;
+
+    fn demo_fit() -> CompoundFit {
+        let spectrum = serde_json::from_value(serde_json::json!({
+            "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": 1e6,
+            "terms": [{"tau_s": 1.0, "modulus_pa": 1e8}]
+        }))
+        .unwrap();
+        let law = crate::ShiftLaw::Arrhenius {
+            t_ref_c: 0.0,
+            activation_energy_j_per_mol: 200e3,
+        };
+        fit_with(spectrum, law, (-60.0, 60.0))
+    }
+
+    fn point(t: f64, f: f64, band: Option<FrictionBand>) -> FrictionPoint {
+        FrictionPoint {
+            temp_c: t,
+            log10_a_t: 0.0,
+            friction: f,
+            resistance_n_per_m: f * 1e4,
+            contact_length_mm: 1.0,
+            extrapolated: t > 60.0,
+            error: None,
+            model: "layer".into(),
+            model_reason: "cover thin against the contact".into(),
+            warnings: vec![],
+            band,
+        }
+    }
+
+    #[test]
+    fn first_screen_shows_metadata_verdict_transitions_and_banded_friction_without_hashes() {
+        let fit = demo_fit();
+        let mut spec = crate::results::SceneSet::shipped().scene[0].clone();
+        spec.cover_thickness_mm = Some(5.0);
+        let band = FrictionBand {
+            p05: 1.1e-4,
+            p50: 1.2e-4,
+            p95: 1.35e-4,
+        };
+        let friction = vec![(
+            spec,
+            vec![point(20.0, 1.2e-4, Some(band)), point(80.0, 2e-4, None)],
+        )];
+        let h = first_screen(&fit, &friction, false, "<svg></svg>");
+        // metadata escaped, the placeholder-free operator shown
+        assert!(
+            h.contains("SBR &lt;tread&gt;") && h.contains("A. Tester"),
+            "{h}"
+        );
+        assert!(h.contains("Quality: trusted"));
+        assert!(h.contains("T<sub>g</sub> at 1 Hz") && h.contains("tan δ at 60 °C, 10 Hz"));
+        // the band in the value's power of ten, the extrapolated point marked
+        assert!(
+            h.contains("1.20·10⁻⁴") && h.contains("1.10–1.35 ·10⁻⁴"),
+            "{h}"
+        );
+        assert!(h.contains("2.00·10⁻⁴<span class=\"warn\">*</span>"));
+        // the body and its reason
+        assert!(
+            h.contains("layer at 20, 80 °C (cover thin against the contact)"),
+            "{h}"
+        );
+        assert!(
+            !h.to_lowercase().contains("sha"),
+            "hashes on the first screen"
+        );
+    }
+}

@@ -1,0 +1,214 @@
+//! The uncertainty bands through the CLI (issue 16, item 1): `run` writes them in friction.csv,
+//! ranking.csv and the JSON summary (pairs and ties), `roll` on a fit file gives the same band as the
+//! report's row, `--no-bands` skips them without moving any other number, and a fit made without
+//! them gets its ensemble added when a later run asks for bands.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn bin() -> &'static str {
+    env!("CARGO_BIN_EXE_viscoroll")
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("viscoroll-bands-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Two compounds of data/ (the two fast ones), one export file each at the top of `dir`.
+fn two_compounds(dir: &Path) {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
+    std::fs::copy(
+        data.join("pyvisco-ems-ca/freq_Eplexor_raw.xls"),
+        dir.join("ems.xls"),
+    )
+    .unwrap();
+    std::fs::copy(
+        data.join("trios-aresg2-lims/frequency_sweep_tts.txt"),
+        dir.join("trios.txt"),
+    )
+    .unwrap();
+}
+
+fn run(dir: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
+    Command::new(bin())
+        .arg("run")
+        .arg(dir)
+        .arg("--out")
+        .arg(out)
+        .arg("--json")
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
+/// (header, rows) of a CSV file without its `#` lines.
+fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let body: String = text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let mut rd = csv::ReaderBuilder::new().from_reader(body.as_bytes());
+    let header = rd.headers().unwrap().iter().map(str::to_string).collect();
+    let rows = rd
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_string).collect())
+        .collect();
+    (header, rows)
+}
+
+fn col(header: &[String], name: &str) -> usize {
+    header
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name}"))
+}
+
+#[test]
+fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
+    let dir = temp_dir("in");
+    two_compounds(&dir);
+    let out = temp_dir("out");
+    let o = run(&dir, &out, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+
+    // friction.csv: p05 < p50 < p95 at every row, the friction itself inside its band (its own
+    // replicates scatter around it: a friction outside its 90 % band would mean a broken ratio).
+    let (h, rows) = table(&out.join("reports/ems/friction.csv"));
+    let (f, p05, p50, p95) = (
+        col(&h, "friction"),
+        col(&h, "friction_p05"),
+        col(&h, "friction_p50"),
+        col(&h, "friction_p95"),
+    );
+    assert_eq!(p95, h.len() - 1, "the band columns come last");
+    for r in &rows {
+        let v = |i: usize| r[i].parse::<f64>().unwrap();
+        assert!(v(p05) < v(p50) && v(p50) < v(p95), "{r:?}");
+        assert!(v(p05) < v(f) && v(f) < v(p95), "{r:?}");
+    }
+
+    // The summary's pairs: one per scene for two ranked compounds, tied exactly when P(A < B) lies
+    // strictly between 0.05 and 0.95; ranking.csv's tied_with says the same.
+    let pairs = summary["comparisons"].as_array().unwrap();
+    let n_scenes = summary["compounds"][0]["standings"]
+        .as_array()
+        .unwrap()
+        .len();
+    assert_eq!(pairs.len(), n_scenes);
+    let (rh, rrows) = table(&out.join("reports/ranking.csv"));
+    for p in pairs {
+        let prob = p["prob_a_lower"].as_f64().unwrap();
+        assert!((0.0..=1.0).contains(&prob));
+        assert_eq!(p["tied"].as_bool().unwrap(), prob > 0.05 && prob < 0.95);
+        let a_row = rrows
+            .iter()
+            .find(|r| {
+                r[col(&rh, "scene")] == p["scene"].as_str().unwrap()
+                    && r[col(&rh, "compound")] == p["a"].as_str().unwrap()
+            })
+            .unwrap();
+        assert_eq!(
+            a_row[col(&rh, "tied_with")] == p["b"].as_str().unwrap(),
+            p["tied"].as_bool().unwrap()
+        );
+        // The ranking's order is the lower mean first: P(A < B) ≥ 0.5 up to the band's skew.
+        assert!(prob > 0.3, "{p}");
+    }
+    for r in &rrows {
+        let v = |n: &str| r[col(&rh, n)].parse::<f64>().unwrap();
+        assert!(
+            v("mean_friction_p05") < v("mean_friction")
+                && v("mean_friction") < v("mean_friction_p95"),
+            "{r:?}"
+        );
+    }
+
+    // roll on the fit file: the same band as the report's row (same ensemble, same ratios).
+    let half_space = rows
+        .iter()
+        .find(|r| r[0] == "conveyor-idler-half-space")
+        .unwrap();
+    let o = Command::new(bin())
+        .arg("roll")
+        .arg(out.join("fits/ems.json"))
+        .args(["--temp-c", &half_space[1], "--json"])
+        .args([
+            "--radius-mm",
+            "66.5",
+            "--load-n-per-m",
+            "10000",
+            "--speed-m-s",
+            "4",
+        ])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(
+        v["friction"].as_f64().unwrap(),
+        half_space[f].parse::<f64>().unwrap()
+    );
+    for (key, i) in [
+        ("friction_p05", p05),
+        ("friction_p50", p50),
+        ("friction_p95", p95),
+    ] {
+        assert_eq!(
+            v[key].as_f64().unwrap(),
+            half_space[i].parse::<f64>().unwrap(),
+            "{key}"
+        );
+    }
+    // roll --no-bands, and a bare spectrum: no band, with the reason.
+    let o = Command::new(bin())
+        .arg("roll")
+        .arg(out.join("fits/ems.json"))
+        .args(["--temp-c", "20", "--json", "--no-bands"])
+        .args([
+            "--radius-mm",
+            "66.5",
+            "--load-n-per-m",
+            "10000",
+            "--speed-m-s",
+            "4",
+        ])
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(
+        v["friction_p05"].is_null() && v["bands_note"].as_str().unwrap().contains("--no-bands")
+    );
+
+    // --no-bands: the band columns empty, no pairs, every other cell as with bands.
+    let out2 = temp_dir("nobands");
+    let o = run(&dir, &out2, &["--no-bands"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s2: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(s2["comparisons"].as_array().unwrap().is_empty());
+    let (h2, rows2) = table(&out2.join("reports/ems/friction.csv"));
+    assert_eq!(h, h2);
+    for (a, b) in rows.iter().zip(&rows2) {
+        assert_eq!(a[..p05], b[..p05]);
+        assert!(b[p05..].iter().all(String::is_empty));
+    }
+    let fit2 = std::fs::read_to_string(out2.join("fits/ems.json")).unwrap();
+    assert!(!fit2.contains("\"bands\""));
+
+    // A later run with bands on that output reuses the fit and adds its ensemble: the same bands.
+    let o = run(&dir, &out2, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("ems: reused fit"));
+    let (_, rows3) = table(&out2.join("reports/ems/friction.csv"));
+    assert_eq!(rows, rows3);
+    let fit3 = std::fs::read_to_string(out2.join("fits/ems.json")).unwrap();
+    assert!(fit3.contains("\"bands\""));
+    for d in [dir, out, out2] {
+        let _ = std::fs::remove_dir_all(d);
+    }
+}

@@ -1,0 +1,180 @@
+//! Property test of the covered bodies (issue 14, "Numbers to reach": the error estimate honoured over
+//! the full range): random spectra over 24 decades (1–30 terms, retardation rates log-uniform over
+//! 1e−12…1e12 in units of 1/T, J∞/J_g log-uniform in 1.5…1e3), covers h/λ log-uniform from 1e−3 to
+//! 1e3 (λ the half-space contact length at N′ = ¼), ν uniform on [0, ½] (one case in four exactly ½),
+//! solved by `auto` at tol 1e−3 (the main job's `COVER_TOL`). Properties:
+//!
+//! 1. every answer is finite with λ > 0, and a body other than the layer is chosen only with a model
+//!    error estimate ≤ tol;
+//! 2. an answer that misses the tolerance says so (a "tolerance not reached" warning);
+//! 3. the estimate is honoured: the answer differs from the bonded layer's (reference: tol 2e−5,
+//!    n ≤ 1024) by at most its error estimate + its model error estimate + the reference's own
+//!    estimate, for ρF/N and λ — checked wherever the reference is computable (h/λ ≥ 0.02, so that
+//!    n = 1024 intervals resolve the cover 20 times, and the reference met 1e−4) and the answer claims
+//!    its tolerance. The other cases (thin covers on the Winkler or flagged) are counted and printed.
+//!
+//! The seed comes from `VISCOROLL_SEED` (tests/seed.rs). CI runs [`CI_CASES`]; the larger sweep is
+//! `#[ignore]`d: `cargo test --release --test tests layer_props::sweep -- --ignored --nocapture`.
+
+use viscoroll::contact::body::layer::{
+    layer_at_load, solve_cover, BodyModel, LayerSettings, ModelChoice,
+};
+use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+use viscoroll::contact::CreepTerm;
+
+/// Cases in CI (each: a half-space solve, the `auto` answer and a layer reference at tol 2e−5).
+const CI_CASES: usize = 6;
+const TOL: f64 = 1e-3;
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        (lo.ln() + (hi / lo).ln() * self.next()).exp()
+    }
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    if a == b {
+        0.0
+    } else {
+        (a - b).abs() / b.abs()
+    }
+}
+
+/// (checked, unchecked) counts over `cases` random cases.
+fn run(seed: u64, cases: usize) -> (usize, usize) {
+    let mut rng = Rng(seed);
+    let load = 0.25;
+    let (mut checked, mut unchecked) = (0, 0);
+    for case in 0..cases {
+        let m = 1 + (rng.next() * 30.0) as usize;
+        let ratio = rng.log_uniform(1.5, 1e3);
+        let weights: Vec<f64> = (0..m).map(|_| rng.next() + 0.05).collect();
+        let wsum: f64 = weights.iter().sum();
+        let terms: Vec<CreepTerm> = weights
+            .iter()
+            .map(|w| {
+                let b = rng.log_uniform(1e-12, 1e12);
+                CreepTerm {
+                    f: (ratio - 1.0) * w / wsum * b,
+                    b,
+                }
+            })
+            .collect();
+        let hr = rng.log_uniform(1e-3, 1e3);
+        let nu = if rng.next() < 0.25 {
+            0.5
+        } else {
+            0.5 * rng.next()
+        };
+        let hs = solve_auto_at_load(
+            &terms,
+            load,
+            &AutoSettings {
+                tol: 1e-6,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let h = hr * hs.lambda;
+        let label = format!("case {case}: {m} terms, J∞/J_g {ratio:.3e}, h/λ {hr:.3e}, ν {nu:.3}");
+        let a = solve_cover(&terms, load, h, nu, ModelChoice::Auto, TOL)
+            .unwrap_or_else(|e| panic!("{label}: {e}"));
+        let s = &a.answer.solution;
+        // 1. finite, λ > 0; a cheaper body only within tol
+        assert!(
+            s.lambda.is_finite() && s.lambda > 0.0 && s.friction_rho.is_finite(),
+            "{label}"
+        );
+        if a.answer.model != BodyModel::Layer {
+            let e = a.model_error_estimate.expect("model error estimate");
+            assert!(
+                e <= TOL,
+                "{label}: {} with model error {e}",
+                a.answer.model.name()
+            );
+        }
+        // 2. a missed tolerance is said
+        let flagged = a
+            .answer
+            .warnings
+            .iter()
+            .any(|w| w.contains("tolerance not reached"));
+        if a.answer.error_estimate > TOL {
+            assert!(
+                flagged,
+                "{label}: estimate {} unflagged",
+                a.answer.error_estimate
+            );
+        }
+        // 3. honoured estimate against the layer reference
+        let h_over_l = h / s.lambda;
+        if flagged || h_over_l < 0.02 || a.answer.model == BodyModel::WinklerConstrained {
+            println!(
+                "{label}: {} (h/λ {h_over_l:.2e}, estimate {:.1e}{}): no reference",
+                a.answer.model.name(),
+                a.answer.error_estimate,
+                if flagged { ", flagged" } else { "" }
+            );
+            unchecked += 1;
+            continue;
+        }
+        let r = layer_at_load(
+            &terms,
+            load,
+            h,
+            nu,
+            &LayerSettings {
+                tol: 2e-5,
+                n_max: 1024,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        if r.error_estimate > 1e-4 {
+            println!(
+                "{label}: reference estimate {:.1e}: unchecked",
+                r.error_estimate
+            );
+            unchecked += 1;
+            continue;
+        }
+        let allowed =
+            a.answer.error_estimate + a.model_error_estimate.unwrap_or(0.0) + r.error_estimate;
+        let ef = rel(s.friction_rho, r.solution.friction_rho);
+        let el = rel(s.lambda, r.solution.lambda);
+        println!(
+            "{label}: {} n {}: error ρF/N {ef:.1e}, λ {el:.1e} ≤ {allowed:.1e} (estimate {:.1e}, model {:.1e}, reference {:.1e})",
+            a.answer.model.name(),
+            s.n,
+            a.answer.error_estimate,
+            a.model_error_estimate.unwrap_or(0.0),
+            r.error_estimate
+        );
+        assert!(ef <= allowed && el <= allowed, "{label}");
+        checked += 1;
+    }
+    (checked, unchecked)
+}
+
+#[test]
+fn estimate_honoured_over_the_issue_range() {
+    let seed = crate::seed::seed("layer_props::estimate_honoured_over_the_issue_range");
+    let (checked, unchecked) = run(seed, CI_CASES);
+    println!("checked {checked}, without reference {unchecked}");
+}
+
+#[test]
+#[ignore]
+fn sweep() {
+    let seed = crate::seed::seed("layer_props::sweep");
+    let (checked, unchecked) = run(seed, 60);
+    println!("checked {checked}, without reference {unchecked}");
+}
