@@ -287,12 +287,11 @@ fn creep_sweep(values: &[f64]) {
     assert!(peak_mb < 2048.0, "peak memory {peak_mb} MB");
 }
 
-// Not yet in CI: this sweep finds a panic (debug) / unbounded allocation (release) in
-// special::bessel::scaled_bessel_i, reached from the auto scheme's exp_coefficients when μ = b·λ is
-// astronomically large (b = 1e300): n_keep = √(83 μ) overflows usize. A guard (an error, or lumping
-// such a mode as instantaneous) belongs in the auto scheme; until then the sweep would fail CI.
+// This sweep found a panic (debug) / unbounded allocation (release) in special::bessel's series,
+// reached from the auto scheme when μ = (b + f)·λ/2 of a kept mode was astronomically large (f = 1e300,
+// b = 1): n_keep = √(83 μ) overflowed usize. The auto scheme now refuses f/b > 1e15
+// (auto::settings::MAX_MODE_STRENGTH) with an OutOfRange error.
 #[test]
-#[ignore = "finds the open scaled_bessel_i overflow for b ≈ 1e300 (issue 15): --ignored extreme_creep"]
 fn extreme_creep_terms_give_an_answer_or_an_error_in_bounded_memory() {
     creep_sweep(&[1e-300, 1e-100, 1e-6, 1.0, 1e6, 1e100, 1e300]);
 }

@@ -39,6 +39,9 @@ impl Default for AutoSettings {
     }
 }
 
+/// Largest strength f/b of one creep term the auto scheme takes (see [`validate`]).
+pub const MAX_MODE_STRENGTH: f64 = 1e15;
+
 pub(super) fn validate(terms: &[CreepTerm], tol: f64) -> Result<(), ContactError> {
     for (index, t) in terms.iter().enumerate() {
         if !(t.f >= 0.0 && t.f.is_finite() && t.b > 0.0 && t.b.is_finite()) {
@@ -46,6 +49,22 @@ pub(super) fn validate(terms: &[CreepTerm], tol: f64) -> Result<(), ContactError
                 index,
                 f: t.f,
                 b: t.b,
+            });
+        }
+    }
+    // A mode's μ = (1 + f/b)·c sizes its Chebyshev series (√(83μ) orders, special::bessel), so an
+    // absurd strength f/b would ask for an unbounded series (b ≈ 1, f ≈ 1e300 overflowed it). A
+    // polymer's J∞/J_g spans about 3–4 decades (glassy ~1 GPa to rubbery ~1 MPa); 1e15 leaves
+    // eleven more and keeps every kept mode's series bounded.
+    for t in terms {
+        let r = t.f / t.b;
+        if r > MAX_MODE_STRENGTH {
+            return Err(ContactError::OutOfRange {
+                scheme: "auto",
+                quantity: "f/b of a creep term",
+                value: r,
+                bound: "at most",
+                limit: MAX_MODE_STRENGTH,
             });
         }
     }
