@@ -3,23 +3,13 @@
 //! report's row, `--no-bands` skips them without moving any other number, and a fit made without
 //! them gets its ensemble added when a later run asks for bands.
 
+use crate::support::{bin, col, data_dir, run_main, table, temp_dir};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-fn bin() -> &'static str {
-    env!("CARGO_BIN_EXE_viscoroll")
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-bands-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
 /// Two compounds of data/ (the two fast ones), one export file each at the top of `dir`.
 fn two_compounds(dir: &Path) {
-    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
+    let data = data_dir();
     std::fs::copy(
         data.join("pyvisco-ems-ca/freq_Eplexor_raw.xls"),
         dir.join("ems.xls"),
@@ -32,48 +22,31 @@ fn two_compounds(dir: &Path) {
     .unwrap();
 }
 
-fn run(dir: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
+/// `viscoroll roll FIT --json` in the conveyor-idler scene (66.5 mm, 10 kN/m, 4 m/s) at `temp_c`.
+fn roll_idler(fit: &Path, temp_c: &str, extra: &[&str]) -> std::process::Output {
     Command::new(bin())
-        .arg("run")
-        .arg(dir)
-        .arg("--out")
-        .arg(out)
-        .arg("--json")
+        .arg("roll")
+        .arg(fit)
+        .args(["--temp-c", temp_c, "--json"])
+        .args([
+            "--radius-mm",
+            "66.5",
+            "--load-n-per-m",
+            "10000",
+            "--speed-m-s",
+            "4",
+        ])
         .args(extra)
         .output()
         .unwrap()
 }
 
-/// (header, rows) of a CSV file without its `#` lines.
-fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let body: String = text
-        .lines()
-        .filter(|l| !l.starts_with('#'))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let mut rd = csv::ReaderBuilder::new().from_reader(body.as_bytes());
-    let header = rd.headers().unwrap().iter().map(str::to_string).collect();
-    let rows = rd
-        .records()
-        .map(|r| r.unwrap().iter().map(str::to_string).collect())
-        .collect();
-    (header, rows)
-}
-
-fn col(header: &[String], name: &str) -> usize {
-    header
-        .iter()
-        .position(|h| h == name)
-        .unwrap_or_else(|| panic!("no column {name}"))
-}
-
 #[test]
 fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
-    let dir = temp_dir("in");
+    let dir = temp_dir("bands-in");
     two_compounds(&dir);
-    let out = temp_dir("out");
-    let o = run(&dir, &out, &[]);
+    let out = temp_dir("bands-out");
+    let o = run_main(&dir, &out, &["--json"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let summary: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
 
@@ -134,20 +107,7 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
         .iter()
         .find(|r| r[0] == "conveyor-idler-half-space")
         .unwrap();
-    let o = Command::new(bin())
-        .arg("roll")
-        .arg(out.join("fits/ems.json"))
-        .args(["--temp-c", &half_space[1], "--json"])
-        .args([
-            "--radius-mm",
-            "66.5",
-            "--load-n-per-m",
-            "10000",
-            "--speed-m-s",
-            "4",
-        ])
-        .output()
-        .unwrap();
+    let o = roll_idler(&out.join("fits/ems.json"), &half_space[1], &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(
@@ -166,28 +126,15 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
         );
     }
     // roll --no-bands, and a bare spectrum: no band, with the reason.
-    let o = Command::new(bin())
-        .arg("roll")
-        .arg(out.join("fits/ems.json"))
-        .args(["--temp-c", "20", "--json", "--no-bands"])
-        .args([
-            "--radius-mm",
-            "66.5",
-            "--load-n-per-m",
-            "10000",
-            "--speed-m-s",
-            "4",
-        ])
-        .output()
-        .unwrap();
+    let o = roll_idler(&out.join("fits/ems.json"), "20", &["--no-bands"]);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(
         v["friction_p05"].is_null() && v["bands_note"].as_str().unwrap().contains("--no-bands")
     );
 
     // --no-bands: the band columns empty, no pairs, every other cell as with bands.
-    let out2 = temp_dir("nobands");
-    let o = run(&dir, &out2, &["--no-bands"]);
+    let out2 = temp_dir("bands-nobands");
+    let o = run_main(&dir, &out2, &["--json", "--no-bands"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let s2: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(s2["comparisons"].as_array().unwrap().is_empty());
@@ -201,7 +148,7 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
     assert!(!fit2.contains("\"bands\""));
 
     // A later run with bands on that output reuses the fit and adds its ensemble: the same bands.
-    let o = run(&dir, &out2, &[]);
+    let o = run_main(&dir, &out2, &["--json"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stderr).contains("ems: reused fit"));
     let (_, rows3) = table(&out2.join("reports/ems/friction.csv"));

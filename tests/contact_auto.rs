@@ -233,8 +233,7 @@ fn cli_contact_auto_and_roll_default_report_error_and_modes() {
     assert_eq!(v["modes_used"], 1);
     assert_eq!(v["modes_total"], 1);
 
-    let dir = std::env::temp_dir().join(format!("viscoroll-auto-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::support::temp_dir("auto");
     let spec = dir.join("spec.json");
     std::fs::write(
         &spec,

@@ -1,34 +1,17 @@
 //! `viscoroll contact` and `viscoroll roll` end to end: JSON fields, Table 1 through the CLI, and bad
 //! arguments (one-line error, exit code 1, no panic).
 
+use crate::support::{self, num, viscoroll as run};
 use std::process::{Command, Output};
 
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_viscoroll"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
 fn json(out: &Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8(out.stdout.clone()).unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(
         text.trim().lines().count(),
         1,
         "exactly one JSON line on stdout: {text}"
     );
-    serde_json::from_str(text.trim()).unwrap()
-}
-
-fn num(v: &serde_json::Value, key: &str) -> f64 {
-    v[key]
-        .as_f64()
-        .unwrap_or_else(|| panic!("field {key} missing or not a number in {v}"))
+    support::json(out)
 }
 
 fn one_line_error(args: &[&str], needle: &str) {

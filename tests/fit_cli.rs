@@ -1,29 +1,14 @@
 //! `viscoroll fit` end to end on a synthetic measurement from a known spectrum and WLF law: the fit
 //! file reproduces the true moduli, is reused on a re-run, and is not replaced without `--force`.
 
-use std::path::PathBuf;
-use std::process::Command;
+use crate::support::{temp_dir, viscoroll};
 use viscoroll::pipeline::compound_fit::CompoundFit;
 use viscoroll::testdata::{broad_spectrum, synthetic_measurement, SyntheticSettings};
 use viscoroll::ShiftLaw;
 
-fn scratch() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-fit-cli-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn viscoroll(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_viscoroll"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
 #[test]
 fn fit_writes_reuses_and_refuses() {
-    let dir = scratch();
+    let dir = temp_dir("fit-cli");
     let law = ShiftLaw::Wlf {
         t_ref_c: 20.0,
         c1: 10.0,

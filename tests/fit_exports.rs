@@ -2,40 +2,14 @@
 //! 18 cards, refit stated), the WLF law of a fit file goes into a card only when it holds, and
 //! `convert` reads a fit file's spectrum.
 
-use std::path::PathBuf;
-use std::process::Command;
+use crate::support::{temp_dir, viscoroll};
 use viscoroll::report::cards::{read_lsdyna, LSDYNA_MAX_TERMS};
 use viscoroll::testdata::{broad_spectrum, synthetic_measurement, SyntheticSettings};
 use viscoroll::ShiftLaw;
 
-fn scratch() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-fit-exports-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-/// A folder of one test's own (tests run in parallel in one process: `scratch` is the first test's).
-fn own_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "viscoroll-fit-exports-{tag}-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn viscoroll(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_viscoroll"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
 #[test]
 fn cards_and_creep_from_a_fit_file() {
-    let dir = scratch();
+    let dir = temp_dir("fit-exports");
     // Shifts from an exact WLF law: the fit file's WLF fit must reproduce it and go into the card.
     let law = ShiftLaw::Wlf {
         t_ref_c: 20.0,
@@ -100,7 +74,7 @@ fn cards_and_creep_from_a_fit_file() {
 
 #[test]
 fn a_wlf_that_holds_over_part_of_the_shifts_goes_into_the_card_with_its_range() {
-    let dir = own_dir("range");
+    let dir = temp_dir("fit-exports-range");
     // Shifts: exact WLF (C1 = 8.86, C2 = 101.6 K at 20 °C) from −10 to 60 °C, and below −10 °C a
     // glassy straight line of 0.05 decade/K. WLF over all of them misses (or degenerates); over
     // −10…60 °C it is exact.
@@ -158,7 +132,7 @@ fn a_wlf_that_holds_over_part_of_the_shifts_goes_into_the_card_with_its_range() 
 
 #[test]
 fn roll_refuses_a_fluid_and_a_relaxation_spectrum_with_the_reason() {
-    let dir = own_dir("fluid");
+    let dir = temp_dir("fit-exports-fluid");
     let melt = serde_json::json!({
         "kind": "shear", "poisson": 0.5, "modulus_inf_pa": 0.0,
         "terms": [{"modulus_pa": 1e5, "tau_s": 0.1}, {"modulus_pa": 1e4, "tau_s": 10.0}]

@@ -7,8 +7,8 @@
 //! Columns are matched by name and rows by position, so new columns may be added without touching the
 //! golden files; a golden column that disappears fails.
 
+use crate::support::{data_dir, run_main, table, temp_dir};
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 /// Relative tolerance: the refactor must not change the arithmetic, only where it lives. 1e-12 leaves
 /// room for a reordered sum of a few terms (a few ulps), nothing more.
@@ -16,23 +16,6 @@ const REL_TOL: f64 = 1e-12;
 
 fn golden() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/golden")
-}
-
-/// (header, rows) of a CSV file, skipping `#` comment lines.
-fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let body: String = text
-        .lines()
-        .filter(|l| !l.starts_with('#'))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let mut rd = csv::ReaderBuilder::new().from_reader(body.as_bytes());
-    let header = rd.headers().unwrap().iter().map(str::to_string).collect();
-    let rows = rd
-        .records()
-        .map(|r| r.unwrap().iter().map(str::to_string).collect())
-        .collect();
-    (header, rows)
 }
 
 fn same_value(want: &str, got: &str) -> bool {
@@ -75,17 +58,9 @@ fn compare(want_path: &Path, got_path: &Path) {
 
 #[test]
 fn main_job_reproduces_the_captured_friction_tables_maps_and_ranking() {
-    let out = std::env::temp_dir().join(format!("viscoroll-golden-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&out);
-    let status = Command::new(env!("CARGO_BIN_EXE_viscoroll"))
-        .arg("run")
-        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("data"))
-        .arg("--scenes")
-        .arg(golden().join("scenes.toml"))
-        .arg("--out")
-        .arg(&out)
-        .output()
-        .unwrap();
+    let out = temp_dir("golden");
+    let scenes = golden().join("scenes.toml");
+    let status = run_main(&data_dir(), &out, &["--scenes", scenes.to_str().unwrap()]);
     assert!(
         status.status.success(),
         "run failed: {}",

@@ -1,18 +1,9 @@
 //! `viscoroll master` end to end on a synthetic measurement (known WLF law).
 
+use crate::support::{temp_dir, viscoroll};
 use std::path::PathBuf;
-use std::process::Command;
 use viscoroll::testdata::{broad_spectrum, synthetic_measurement, SyntheticSettings};
 use viscoroll::ShiftLaw;
-
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "viscoroll-master-cli-{}-{name}",
-        std::process::id()
-    ));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 fn truth() -> ShiftLaw {
     ShiftLaw::Wlf {
@@ -30,16 +21,9 @@ fn write_measurement(dir: &std::path::Path) -> PathBuf {
     p
 }
 
-fn viscoroll(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_viscoroll"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
 #[test]
 fn json_output_is_one_object_with_the_shifts() {
-    let dir = scratch("json");
+    let dir = temp_dir("master-cli-json");
     let m = write_measurement(&dir);
     let out = viscoroll(&["master", m.to_str().unwrap(), "--tref", "20", "--json"]);
     assert!(
@@ -62,7 +46,7 @@ fn json_output_is_one_object_with_the_shifts() {
 
 #[test]
 fn given_wlf_and_output_file_and_no_overwrite() {
-    let dir = scratch("given");
+    let dir = temp_dir("master-cli-given");
     let m = write_measurement(&dir);
     let o = dir.join("mc.json");
     let args = [
@@ -93,7 +77,7 @@ fn given_wlf_and_output_file_and_no_overwrite() {
 
 #[test]
 fn bad_arguments_fail_with_one_line() {
-    let dir = scratch("bad");
+    let dir = temp_dir("master-cli-bad");
     let m = write_measurement(&dir);
     for shift in ["wlf:10", "wlf:a,b", "nonsense"] {
         let out = viscoroll(&[

@@ -8,30 +8,9 @@
 //! scale, F/N = (ρF/N)/ρ) moves at least one of these numbers by far more than the tolerances.
 
 use crate::reference::{exact_sls, hertz, rel, temp_dir, Expected, Kind, SceneSi, Sls};
+use crate::support::{json, num, viscoroll as run};
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_viscoroll"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("one JSON object on stdout")
-}
-
-fn num(v: &serde_json::Value, key: &str) -> f64 {
-    v[key]
-        .as_f64()
-        .unwrap_or_else(|| panic!("field {key} missing or not a number in {v}"))
-}
+use std::process::Command;
 
 /// A tensile SLS with ν = 0.3 (E₀ = 1 GPa, E∞ = 4 MPa, τ_r = 20 µs: τ_c = 5 ms) and a shear one
 /// with ν = 0.42 (G₀ = 0.3 GPa, G∞ = 1.5 MPa, τ_r = 0.1 ms: τ_c = 20 ms).

@@ -3,34 +3,9 @@
 //! and the relaxed Hertz lengths (an independent closed form), fits are reused, a different fit is
 //! not overwritten without --force, and a broken compound fails alone.
 
+use crate::support::{bin, data_dir, run_main, temp_dir};
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-fn bin() -> &'static str {
-    env!("CARGO_BIN_EXE_viscoroll")
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-pipe-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn data() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("data")
-}
-
-fn run(dir: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
-    Command::new(bin())
-        .arg("run")
-        .arg(dir)
-        .arg("--out")
-        .arg(out)
-        .args(extra)
-        .output()
-        .unwrap()
-}
 
 const COMPOUNDS: [&str; 3] = ["ems-ca", "dmasuite-tensile", "trios-aresg2-lims"];
 
@@ -62,15 +37,15 @@ fn hertz_length_mm(radius_mm: f64, load_n_per_m: f64, e_pa: f64, nu: f64) -> f64
 
 #[test]
 fn run_on_shipped_data_then_rank_roll_and_reuse() {
-    let out = temp_dir("main");
-    let o = run(&data(), &out, &["--json"]);
+    let out = temp_dir("pipe-main");
+    let o = run_main(&data_dir(), &out, &["--json"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
     let summary: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(summary["compounds"].as_array().unwrap().len(), 3);
 
     let scenes: toml::Value =
-        toml::from_str(&std::fs::read_to_string(data().join("scenes.toml")).unwrap()).unwrap();
+        toml::from_str(&std::fs::read_to_string(data_dir().join("scenes.toml")).unwrap()).unwrap();
     let scenes = scenes["scene"].as_array().unwrap();
     for name in COMPOUNDS {
         let fit_path = out.join("fits").join(format!("{name}.json"));
@@ -321,9 +296,9 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
     // A fit file needs --temp-c; a bare spectrum refuses it (it has no shift law).
     let o = roll(&out.join("fits/ems-ca.json"), None);
     assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("--temp-c"));
-    let o = roll(&data().join("spectra/example_creep.json"), Some("20"));
+    let o = roll(&data_dir().join("spectra/example_creep.json"), Some("20"));
     assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("no shift law"));
-    assert!(roll(&data().join("spectra/example_creep.json"), None)
+    assert!(roll(&data_dir().join("spectra/example_creep.json"), None)
         .status
         .success());
 
@@ -354,7 +329,7 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
     assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("no such scene"));
 
     // Re-run: fits reused; a changed fit file is kept unless --force.
-    let o = run(&data(), &out, &[]);
+    let o = run_main(&data_dir(), &out, &[]);
     assert!(o.status.success());
     assert_eq!(
         String::from_utf8_lossy(&o.stderr)
@@ -371,7 +346,7 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
         1,
     );
     std::fs::write(&p, &text).unwrap();
-    let o = run(&data(), &out, &[]);
+    let o = run_main(&data_dir(), &out, &[]);
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--force"));
     assert_eq!(
@@ -379,7 +354,7 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
         text,
         "the changed fit was overwritten"
     );
-    let o = run(&data(), &out, &["--force"]);
+    let o = run_main(&data_dir(), &out, &["--force"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert_ne!(std::fs::read_to_string(&p).unwrap(), text);
     std::fs::remove_dir_all(&out).unwrap();
@@ -387,16 +362,16 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
 
 #[test]
 fn a_broken_compound_fails_alone() {
-    let dir = temp_dir("broken-in");
-    let out = temp_dir("broken-out");
+    let dir = temp_dir("pipe-broken-in");
+    let out = temp_dir("pipe-broken-out");
     std::fs::copy(
-        data().join("trios-aresg2-lims/frequency_sweep_tts.txt"),
+        data_dir().join("trios-aresg2-lims/frequency_sweep_tts.txt"),
         dir.join("lsr.txt"),
     )
     .unwrap();
     std::fs::write(dir.join("junk.csv"), "this is not,a DMA export\n1,2\n").unwrap();
     std::fs::write(dir.join("notes.md"), "skipped").unwrap();
-    let o = run(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &[]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(

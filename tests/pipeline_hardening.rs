@@ -5,31 +5,10 @@
 //! numbers out of range, `--tref` and measurement JSON. Inputs are synthetic exports of a known
 //! rubber-like material, written by [`rubber_csv`].
 
+use crate::support::{bin, run_main, temp_dir};
 use std::io::Write as _;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn bin() -> &'static str {
-    env!("CARGO_BIN_EXE_viscoroll")
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-hard-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn run(dir: &Path, out: &Path, extra: &[&str]) -> Output {
-    Command::new(bin())
-        .arg("run")
-        .arg(dir)
-        .arg("--out")
-        .arg(out)
-        .args(extra)
-        .output()
-        .unwrap()
-}
+use std::path::Path;
+use std::process::Command;
 
 fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
@@ -66,10 +45,10 @@ fn zip_of(parts: &[(&str, &[u8])]) -> Vec<u8> {
 
 #[test]
 fn an_empty_folder_exits_1_with_a_message_and_one_json_object() {
-    let dir = temp_dir("empty-in");
-    let out = temp_dir("empty-out");
+    let dir = temp_dir("hard-empty-in");
+    let out = temp_dir("hard-empty-out");
     std::fs::write(dir.join("notes.md"), "not an export").unwrap();
-    let o = run(&dir, &out, &["--json"]);
+    let o = run_main(&dir, &out, &["--json"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(
         text(&o.stderr).contains("no DMA export"),
@@ -86,8 +65,8 @@ fn an_empty_folder_exits_1_with_a_message_and_one_json_object() {
 
 #[test]
 fn bad_files_fail_alone_and_the_good_compound_still_gets_its_report() {
-    let dir = temp_dir("bad-in");
-    let out = temp_dir("bad-out");
+    let dir = temp_dir("hard-bad-in");
+    let out = temp_dir("hard-bad-out");
     std::fs::write(dir.join("good.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
     // An isotherm at 1e9 °C: refused at ingest (it used to hang the shift-law fits).
     std::fs::write(dir.join("hot.csv"), rubber_csv(&[0.0, 1e9], 20)).unwrap();
@@ -112,7 +91,7 @@ fn bad_files_fail_alone_and_the_good_compound_still_gets_its_report() {
     long.push('\n');
     std::fs::write(dir.join("long.csv"), long).unwrap();
 
-    let o = run(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &[]);
     let err = text(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(out.join("reports/good/datasheet.html").is_file(), "{err}");
@@ -138,7 +117,7 @@ fn bad_files_fail_alone_and_the_good_compound_still_gets_its_report() {
 
 #[test]
 fn names_are_sanitised_so_nothing_is_written_outside_the_output_folder() {
-    let base = temp_dir("names");
+    let base = temp_dir("hard-names");
     let (dir, out) = (base.join("in"), base.join("out"));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0, 40.0], 12)).unwrap();
@@ -147,7 +126,7 @@ fn names_are_sanitised_so_nothing_is_written_outside_the_output_folder() {
         .map(|n| format!("[[compound]]\nname = \"{n}\"\nfiles = [\"a.csv\"]\n"))
         .collect();
     std::fs::write(dir.join("compounds.toml"), listing).unwrap();
-    let o = run(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &[]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     // Only `in` and `out` under the base folder; nothing at /abs.
     let mut top: Vec<String> = std::fs::read_dir(&base)
@@ -177,7 +156,7 @@ fn names_are_sanitised_so_nothing_is_written_outside_the_output_folder() {
 /// same fit as the same data under the generic reader's names. A bad key is refused naming it.
 #[test]
 fn compounds_toml_maps_the_columns_of_an_unknown_export() {
-    let base = temp_dir("colmap");
+    let base = temp_dir("hard-colmap");
     let (dir, out) = (base.join("in"), base.join("out"));
     std::fs::create_dir_all(&dir).unwrap();
     let csv = rubber_csv(&[0.0, 20.0, 40.0], 12);
@@ -196,7 +175,7 @@ fn compounds_toml_maps_the_columns_of_an_unknown_export() {
         )
     };
     std::fs::write(dir.join("compounds.toml"), listing("")).unwrap();
-    let o = run(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &[]);
     let err = text(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(
@@ -211,7 +190,7 @@ fn compounds_toml_maps_the_columns_of_an_unknown_export() {
         r#"columns = "temp=T,freq=Frq,storage=Mod1,loss=Mod2""#,
     ] {
         std::fs::write(dir.join("compounds.toml"), listing(columns)).unwrap();
-        let o = run(&dir, &out, &["--force"]);
+        let o = run_main(&dir, &out, &["--force"]);
         assert!(o.status.success(), "{columns}: {}", text(&o.stderr));
         // Same numbers, so the friction tables agree past their first column header lines.
         let (a, b) = (friction("odd"), friction("plain"));
@@ -225,7 +204,7 @@ fn compounds_toml_maps_the_columns_of_an_unknown_export() {
         listing(r#"columns = { frq = "Frq" }"#),
     )
     .unwrap();
-    let o = run(&dir, &out, &["--force"]);
+    let o = run_main(&dir, &out, &["--force"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(
         text(&o.stderr).contains("unknown key `frq`"),
@@ -237,8 +216,8 @@ fn compounds_toml_maps_the_columns_of_an_unknown_export() {
 
 #[test]
 fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
-    let dir = temp_dir("untrusted-in");
-    let out = temp_dir("untrusted-out");
+    let dir = temp_dir("hard-untrusted-in");
+    let out = temp_dir("hard-untrusted-out");
     std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
     // One Prony term per five decades cannot follow the data: RMS log10 errors far above bounds.
     std::fs::write(
@@ -246,7 +225,7 @@ fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
         "[[compound]]\nname = \"coarse\"\nfiles = [\"a.csv\"]\nprony = { terms_per_decade = 0.2 }\n[[compound]]\nname = \"fine\"\nfiles = [\"a.csv\"]\n",
     )
     .unwrap();
-    let o = run(&dir, &out, &["--json"]);
+    let o = run_main(&dir, &out, &["--json"]);
     assert_eq!(o.status.code(), Some(3), "{}", text(&o.stderr));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["kind"], "untrusted_results");
@@ -281,8 +260,8 @@ fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
 
 #[test]
 fn two_runs_on_one_output_folder_both_succeed_and_leftovers_are_handled() {
-    let dir = temp_dir("twice-in");
-    let out = temp_dir("twice-out");
+    let dir = temp_dir("hard-twice-in");
+    let out = temp_dir("hard-twice-out");
     std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0, 40.0], 15)).unwrap();
     // A temp file of a killed run (pid above Linux's pid_max, so never alive) and the report of a
     // compound that is gone from the input.
@@ -351,7 +330,7 @@ fn usage_errors_are_printed_in_full_with_a_suggestion() {
 
 #[test]
 fn scene_numbers_out_of_range_are_refused_naming_the_field() {
-    let dir = temp_dir("scene-in");
+    let dir = temp_dir("hard-scene-in");
     std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0], 5)).unwrap();
     for (key, v) in [
         ("speed_m_s", "1e300"),
@@ -385,8 +364,8 @@ fn scene_numbers_out_of_range_are_refused_naming_the_field() {
 
 #[test]
 fn run_takes_tref_and_a_measurement_json_written_by_ingest() {
-    let dir = temp_dir("json-in");
-    let out = temp_dir("json-out");
+    let dir = temp_dir("hard-json-in");
+    let out = temp_dir("hard-json-out");
     let csv = dir.join("raw.csv.keep");
     std::fs::write(&csv, rubber_csv(&[0.0, 20.0, 40.0], 15)).unwrap();
     let o = Command::new(bin())
@@ -397,12 +376,12 @@ fn run_takes_tref_and_a_measurement_json_written_by_ingest() {
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let o = run(&dir, &out, &["--tref", "20"]);
+    let o = run_main(&dir, &out, &["--tref", "20"]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     let fit: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("fits/m.json")).unwrap()).unwrap();
     assert_eq!(fit["shift_law"]["t_ref_c"].as_f64(), Some(20.0));
-    let o = run(&dir, &out, &["--tref", "1e9"]);
+    let o = run_main(&dir, &out, &["--tref", "1e9"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(text(&o.stderr).contains("--tref"));
     let _ = std::fs::remove_dir_all(&dir);
@@ -415,10 +394,10 @@ fn run_takes_tref_and_a_measurement_json_written_by_ingest() {
 /// user looks (the datasheet). The 1e6-row figures: `cargo bench --bench large_input`.
 #[test]
 fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
-    let dir = temp_dir("thin-in");
-    let out = temp_dir("thin-out");
+    let dir = temp_dir("hard-thin-in");
+    let out = temp_dir("hard-thin-out");
     std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 40.0], 3000)).unwrap();
-    let o = run(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &[]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     let fit: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
@@ -437,7 +416,7 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
     assert!(sheet.contains("thinned to 1000 means"));
     // A small export (20 points per isotherm) is untouched.
     std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
-    let o = run(&dir, &out, &["--force"]);
+    let o = run_main(&dir, &out, &["--force"]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     let fit: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
@@ -454,7 +433,7 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
 /// measurement JSON whose isotherm was edited to 1e9 °C.
 #[test]
 fn ingest_master_and_fit_refuse_an_isotherm_at_1e9_c_naming_file_line_and_column() {
-    let dir = temp_dir("hot-cmds");
+    let dir = temp_dir("hard-hot-cmds");
     let hot = dir.join("hot.csv");
     // Header on line 1, five rows at 0 °C on lines 2–6: the first 1e9 °C row is line 7.
     std::fs::write(&hot, rubber_csv(&[0.0, 1e9], 5)).unwrap();
@@ -525,8 +504,8 @@ fn ingest_master_and_fit_refuse_an_isotherm_at_1e9_c_naming_file_line_and_column
 /// it, in the datasheet. Line: header 1, 12 rows at 0 °C (2–13), the 20 °C row k = 6 is line 20.
 #[test]
 fn a_single_far_off_point_names_its_file_line_and_value() {
-    let dir = temp_dir("one-off-in");
-    let out = temp_dir("one-off-out");
+    let dir = temp_dir("hard-one-off-in");
+    let out = temp_dir("hard-one-off-out");
     let csv = rubber_csv(&[0.0, 20.0, 40.0], 12);
     let mut lines: Vec<String> = csv.lines().map(String::from).collect();
     let cells: Vec<&str> = lines[19].split(',').collect();
@@ -535,7 +514,7 @@ fn a_single_far_off_point_names_its_file_line_and_value() {
     let bad = format!("{},{},{:.6e},{}", cells[0], cells[1], e1 * 1e3, cells[3]);
     lines[19] = bad;
     std::fs::write(dir.join("bad.csv"), lines.join("\n") + "\n").unwrap();
-    let o = run(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &[]);
     assert_eq!(o.status.code(), Some(3), "{}", text(&o.stderr));
     let sheet = std::fs::read_to_string(out.join("reports/bad/datasheet.html")).unwrap();
     let value = format!("{:.4e} Pa", e1 * 1e3);
@@ -572,7 +551,7 @@ fn peak_rss_mb() -> f64 {
 #[ignore = "a measurement, not a check: run with --ignored --nocapture"]
 fn large_csv_ingest_and_fit_timings() {
     use viscoroll::dma::{read_files, IngestOptions};
-    let dir = temp_dir("large");
+    let dir = temp_dir("hard-large");
     let path = dir.join("large.csv");
     std::fs::write(&path, rubber_csv(&[0.0, 40.0], 500_000)).unwrap();
     let bytes = std::fs::metadata(&path).unwrap().len();

@@ -4,22 +4,16 @@
 //! beside the Prony series ANSYS fitted to the same curve (the `.MPL` card of pyvisco's
 //! verification folder; the folder holds no Prony numbers from pyvisco itself).
 
+use crate::support::temp_dir;
 use std::path::PathBuf;
 use std::process::Command;
-use viscoroll::dma::pyvisco::{master_csv, read_master_pair, shift_csv};
+use viscoroll::dma::pyvisco::{master_csv, read_master_pair, shift_csv, PyviscoMaster};
 use viscoroll::{ModulusKind, ShiftLaw};
 
 fn data(p: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("data/pyvisco-ems-ca")
         .join(p)
-}
-
-fn scratch(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-pyvisco-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 fn viscoroll(args: &[&str]) -> std::process::Output {
@@ -49,15 +43,23 @@ fn master_rows(path: &std::path::Path) -> Vec<[f64; 3]> {
         .collect()
 }
 
+/// The shipped pair's paths: (master curve, shift factors).
+fn shipped_paths() -> (PathBuf, PathBuf) {
+    (
+        data("freq_user_master.csv"),
+        data("freq_user_master__shift_factors.csv"),
+    )
+}
+
+/// The shipped pair read by our reader (ν = 0.5, reference temperature from the table).
+fn shipped_pair() -> PyviscoMaster {
+    let (mc, sf) = shipped_paths();
+    read_master_pair(&mc, &sf, 0.5, None).unwrap()
+}
+
 #[test]
 fn the_shipped_pair_reads_with_its_units_and_reference() {
-    let pv = read_master_pair(
-        &data("freq_user_master.csv"),
-        &data("freq_user_master__shift_factors.csv"),
-        0.5,
-        None,
-    )
-    .unwrap();
+    let pv = shipped_pair();
     // The shift table's row with log_aT = 0 is −5 °C, pyvisco's RefT for this curve (its
     // verification notebook calls user_master(data, 'freq', RefT=-5, 'E')).
     assert_eq!(pv.t_ref_c, -5.0);
@@ -82,13 +84,7 @@ fn the_shipped_pair_reads_with_its_units_and_reference() {
 
 #[test]
 fn read_write_read_is_equal_to_rounding() {
-    let pv = read_master_pair(
-        &data("freq_user_master.csv"),
-        &data("freq_user_master__shift_factors.csv"),
-        0.5,
-        None,
-    )
-    .unwrap();
+    let pv = shipped_pair();
     let pts: Vec<(f64, f64, f64)> = pv.measurement.isotherms[0]
         .points
         .iter()
@@ -97,7 +93,7 @@ fn read_write_read_is_equal_to_rounding() {
     let ShiftLaw::Table { points: shifts, .. } = &pv.shift_law else {
         panic!("not a table")
     };
-    let dir = scratch("rw");
+    let dir = temp_dir("pyvisco-rw");
     let (m, s) = (dir.join("m.csv"), dir.join("m__shift_factors.csv"));
     std::fs::write(&m, master_csv(ModulusKind::Tensile, &pts)).unwrap();
     std::fs::write(&s, shift_csv(shifts)).unwrap();
@@ -141,11 +137,8 @@ fn rms(spectrum: &viscoroll::RelaxationSpectrum, rows: &[[f64; 3]]) -> (f64, f64
 
 #[test]
 fn fit_export_fit_round_trip_and_the_ansys_fit_beside_ours() {
-    let dir = scratch("cli");
-    let (mc, sf) = (
-        data("freq_user_master.csv"),
-        data("freq_user_master__shift_factors.csv"),
-    );
+    let dir = temp_dir("pyvisco-cli");
+    let (mc, sf) = shipped_paths();
     let fit1 = dir.join("fits/pv.json");
     let f1 = fit1.to_str().unwrap();
     viscoroll(&[
@@ -222,11 +215,8 @@ fn fit_export_fit_round_trip_and_the_ansys_fit_beside_ours() {
 
 #[test]
 fn run_takes_a_pyvisco_master_curve_listed_in_compounds_toml() {
-    let dir = scratch("run");
-    let (mc, sf) = (
-        data("freq_user_master.csv"),
-        data("freq_user_master__shift_factors.csv"),
-    );
+    let dir = temp_dir("pyvisco-run");
+    let (mc, sf) = shipped_paths();
     std::fs::write(
         dir.join("compounds.toml"),
         format!(
@@ -269,10 +259,7 @@ fn run_takes_a_pyvisco_master_curve_listed_in_compounds_toml() {
 
 #[test]
 fn master_reads_the_pyvisco_pair_as_a_master_curve() {
-    let (mc, sf) = (
-        data("freq_user_master.csv"),
-        data("freq_user_master__shift_factors.csv"),
-    );
+    let (mc, sf) = shipped_paths();
     let o = viscoroll(&[
         "master",
         "--master-curve",

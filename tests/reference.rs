@@ -22,6 +22,7 @@
 //! Hertz line contact (Johnson, *Contact Mechanics*, 1985, §4.3, eq. 4.45 and 4.46; plane strain):
 //! half-width a = √(4N*R/(πE*)), peak pressure p₀ = 2N*/(πa), E* = E/(1−ν²) for a rigid roll.
 
+pub use crate::support::temp_dir;
 use std::f64::consts::PI;
 use viscoroll::contact::CreepTerm;
 use viscoroll::contact::{one_term_at_load, OneTermExact};
@@ -192,14 +193,6 @@ pub fn hertz(scene: &SceneSi, e_star: f64) -> (f64, f64) {
 /// Relative difference a/b − 1.
 pub fn rel(a: f64, b: f64) -> f64 {
     a / b - 1.0
-}
-
-/// A fresh temporary folder for one test (removed by the caller).
-pub fn temp_dir(tag: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 /// The thesis scheme with Richardson's extrapolation R = 2X(1280) − X(640) at a given contact

@@ -1,18 +1,11 @@
 //! `viscoroll convert` and `viscoroll export` end to end: exit codes, one JSON object on stdout,
 //! refusals with a one-line error.
 
-use std::path::PathBuf;
+use crate::support::temp_dir;
 use std::process::Command;
 
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_viscoroll"))
-}
-
-fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("viscoroll-spectra-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 const SPECTRUM: &str = r#"{ "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": 1e6,
@@ -20,7 +13,7 @@ const SPECTRUM: &str = r#"{ "kind": "tensile", "poisson": 0.5, "modulus_inf_pa":
 
 #[test]
 fn convert_prints_one_json_object_with_its_checks() {
-    let d = dir("convert");
+    let d = temp_dir("spectra-convert");
     let f = d.join("relax.json");
     std::fs::write(&f, SPECTRUM).unwrap();
     let out = bin()
@@ -71,7 +64,7 @@ fn convert_prints_one_json_object_with_its_checks() {
 
 #[test]
 fn convert_refuses_a_fluid_in_one_line() {
-    let d = dir("fluid");
+    let d = temp_dir("spectra-fluid");
     let f = d.join("fluid.json");
     std::fs::write(
         &f,
@@ -90,7 +83,7 @@ fn convert_refuses_a_fluid_in_one_line() {
 
 #[test]
 fn export_writes_each_card() {
-    let d = dir("export");
+    let d = temp_dir("spectra-export");
     let f = d.join("relax.json");
     std::fs::write(&f, SPECTRUM).unwrap();
     for (to, marker) in [

@@ -44,3 +44,4 @@ mod special_functions;
 mod spectra_cards;
 mod spectra_cli;
 mod spectra_exact;
+mod support;

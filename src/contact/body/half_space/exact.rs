@@ -58,6 +58,7 @@
 //! (∫γ ln|ξ+ζ| → (f/b)·O(bλ·ln bλ)), Hertz with the glassy compliance.
 
 use crate::contact::error::ContactError;
+use crate::contact::load::{iterate, Brent, Keep, Seen, Verdict};
 use crate::contact::{CreepTerm, DimensionlessSolution};
 use crate::special::gauss_legendre::Integrator;
 use crate::special::{one_minus_one_plus_c_i0, scaled_bessel_i};
@@ -266,16 +267,16 @@ pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, Cont
     let glassy = 2.0 * load.sqrt();
     let relaxed = 2.0 * ((1.0 + term.f / term.b) * load).sqrt();
     let ln_target = load.ln();
-    let eval = |t: f64| -> Result<(f64, OneTermExact), ContactError> {
+    let mut eval = |t: f64| -> Result<(f64, OneTermExact), ContactError> {
         let sol = one_term_at_lambda(term, t.exp())?;
         Ok((sol.load.ln() - ln_target, sol))
     };
-    let mut iterations = 0usize;
+    let mut solves = 0usize;
     let mut lo = glassy.ln() - 1e-9;
     let mut hi = relaxed.ln() + 1e-9;
     let (mut f_lo, mut s_lo) = eval(lo)?;
     let (mut f_hi, mut s_hi) = eval(hi)?;
-    iterations += 2;
+    solves += 2;
     let mut widen = 0;
     while f_lo > 0.0 || f_hi < 0.0 {
         widen += 1;
@@ -291,60 +292,41 @@ pub fn one_term_at_load(term: CreepTerm, load: f64) -> Result<OneTermExact, Cont
         if f_lo > 0.0 {
             lo -= 0.1 * widen as f64;
             (f_lo, s_lo) = eval(lo)?;
+            solves += 1;
         }
         if f_hi < 0.0 {
             hi += 0.1 * widen as f64;
             (f_hi, s_hi) = eval(hi)?;
+            solves += 1;
         }
-        iterations += 1;
     }
     if f_lo == 0.0 {
-        s_lo.iterations = iterations;
+        s_lo.iterations = solves;
         return Ok(s_lo);
     }
     if f_hi == 0.0 {
-        s_hi.iterations = iterations;
+        s_hi.iterations = solves;
         return Ok(s_hi);
     }
-    // Brent–Dekker: inverse quadratic / secant steps kept inside the bracket, bisection otherwise.
-    let (mut a, mut fa) = (lo, f_lo);
-    let (mut b, mut fb, mut sb) = (hi, f_hi, s_hi);
-    let (mut c, mut fc) = (a, fa);
-    let mut d = b - a;
-    let mut e = d;
-    for _ in 0..200 {
-        if (fb > 0.0) == (fc > 0.0) {
-            c = a;
-            fc = fa;
-            d = b - a;
-            e = d;
+    // The crate's one load loop with Brent's rule, ln λ to ~4 ulp (λ is then exact to a few 1e-16
+    // relative), at most 200 steps; the answer is the last solve (the root estimate).
+    let mut rule = Brent::new((lo, f_lo), (hi, f_hi), 4.0);
+    let seen = Seen {
+        solves,
+        g: f_hi,
+        sol: s_hi,
+    };
+    let found = iterate(seen, &mut rule, Keep::Last, &mut eval, &mut |t| {
+        let p = t.proposal;
+        if p.width <= p.tol || p.resid == 0.0 || t.steps >= 200 {
+            Verdict::Done
+        } else {
+            Verdict::Go
         }
-        if fc.abs() < fb.abs() {
-            a = b;
-            b = c;
-            c = a;
-            fa = fb;
-            fb = fc;
-            fc = fa;
-        }
-        // ln λ to ~4 ulp: λ is then exact to a few 1e-16 relative.
-        let tol = 4.0 * f64::EPSILON * b.abs().max(1.0);
-        let m = 0.5 * (c - b);
-        if m.abs() <= tol || fb == 0.0 {
-            break;
-        }
-        (d, e) = crate::special::brent::brent_step((a, b, c), (fa, fb, fc), m, tol, (d, e), true);
-        a = b;
-        fa = fb;
-        b += if d.abs() > tol { d } else { tol.copysign(m) };
-        let (v, s) = eval(b)?;
-        fb = v;
-        sb = s;
-        iterations += 1;
-    }
-    // `sb` is the solution at the last iterate b (the root estimate).
-    sb.iterations = iterations;
-    Ok(sb)
+    })?;
+    let mut sol = found.sol;
+    sol.iterations = found.solves;
+    Ok(sol)
 }
 
 impl OneTermExact {

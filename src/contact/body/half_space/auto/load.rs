@@ -15,6 +15,7 @@ use super::reduction::{
 };
 use super::settings::{budgets, quad_for, validate, AutoSettings};
 use crate::contact::error::ContactError;
+use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Verdict};
 use crate::contact::{CreepTerm, DimensionlessSolution};
 
 /// Solve at given load N′ > 0: rounds of mode selection (at the last λ), load loop and measured
@@ -233,91 +234,86 @@ struct LoopResult {
 }
 
 /// Safeguarded secant on g(u) = ln N′(eᵘ) + ln(1 + k·e^{−u}) − ln N′₀ inside the bracket (a, b),
-/// where k·e^{−u} = g_N·W(λ) is the lumping correction of N′ (k = g_N·Σwᵢλ, independent of λ).
+/// where k·e^{−u} = g_N·W(λ) is the lumping correction of N′ (k = g_N·Σwᵢλ, independent of λ): the
+/// crate's one load loop ([`iterate`]) with the rule [`SafeSecant`], started from the guess (its
+/// model slope) or from a solution already made, stopped when the step or the bracket is shorter
+/// than 0.05·tol.
 #[allow(clippy::too_many_arguments)]
 fn load_loop(
     red: &Reduction,
     target: f64,
     k: f64,
-    (mut a, mut b): (f64, f64),
+    (a, b): (f64, f64),
     start: Start,
     tol: f64,
     q: QuadratureSettings,
     max_iter: usize,
 ) -> Result<LoopResult, ContactError> {
     let gval = |s: &LambdaSolution| s.load.ln() + (1.0 + k / s.lambda).ln() - target;
-    let eval = |u: f64| -> (f64, (LambdaSolution, f64, f64)) {
-        let s = solve_reduced_checked(red, u.exp(), q);
-        (gval(&s.0), s)
+    let ln_fr = |s: &LambdaSolution| s.friction_rho.abs().max(1e-300).ln();
+    let small = 0.05 * tol;
+    // (u, ln ρF/N) of every iterate in order, for d ln(ρF/N)/d ln λ
+    let mut history: Vec<(f64, f64)> = Vec::new();
+    let (u0, first, slope0, mut dfr, solves) = match start {
+        Start::Guess(lam0, slope0) => {
+            let u = lam0.ln().clamp(a, b);
+            (u, solve_reduced_checked(red, u.exp(), q), slope0, 1.0, 1)
+        }
+        Start::Solved(s, slope, dfr) => (s.0.lambda.ln(), s, slope, dfr, 0),
     };
-    let (mut u, mut g, (mut sol, mut num_fr, mut num_ld), mut slope, mut dfr, mut iters) =
-        match start {
-            Start::Guess(lam0, slope0) => {
-                let u = lam0.ln().clamp(a, b);
-                let (g, s) = eval(u);
-                (u, g, s, slope0, 1.0, 1)
-            }
-            Start::Solved(s, slope, dfr) => (s.0.lambda.ln(), gval(&s.0), s, slope, dfr, 0),
-        };
-    let mut prev: Option<(f64, f64, f64)> = None; // (u, g, ln fr)
-    let last_step;
-    loop {
-        if g < 0.0 {
-            a = a.max(u);
-        } else {
-            b = b.min(u);
-        }
-        if g == 0.0 {
+    let g0 = gval(&first.0);
+    history.push((u0, ln_fr(&first.0)));
+    let mut rule = SafeSecant::new((a, b), slope0, small);
+    rule.observe(u0, g0);
+    let (mut last_step, mut on_root) = (0.0, false);
+    let seen = Seen {
+        solves,
+        g: g0,
+        sol: first,
+    };
+    let mut eval = |u: f64| -> Result<(f64, (LambdaSolution, f64, f64)), ContactError> {
+        let s = solve_reduced_checked(red, u.exp(), q);
+        history.push((u, ln_fr(&s.0)));
+        Ok((gval(&s.0), s))
+    };
+    let found = iterate(seen, &mut rule, Keep::Last, &mut eval, &mut |t| {
+        let p = t.proposal;
+        if p.resid == 0.0 {
+            on_root = true;
             last_step = 0.0;
-            break;
+            return Verdict::Done;
         }
-        // secant with the previous point, else the last slope (2 = elastic), kept in the bracket
-        let s = match prev {
-            Some((up, gp, _)) if (u - up).abs() > 0.0 && (g - gp) / (u - up) > 0.0 => {
-                (g - gp) / (u - up)
-            }
-            _ => slope,
-        };
-        slope = s;
-        let mut un = u - g / s;
-        // a converged secant step may land on the bracket end it starts from: no bisection then
-        if !(un > a && un < b) && (g / s).abs() >= 0.05 * tol {
-            un = 0.5 * (a + b);
+        if p.step < small || p.width < small {
+            last_step = p.step.min(p.width);
+            return Verdict::Done;
         }
-        let step = (un - u).abs();
-        let lnfr = sol.friction_rho.abs().max(1e-300).ln();
-        if let Some((up, _, lfp)) = prev {
-            // only from steps long enough that round-off in ρF/N does not dominate
-            if (u - up).abs() > 1e-4 {
-                dfr = ((lnfr - lfp) / (u - up)).clamp(-10.0, 10.0);
-            }
-        }
-        prev = Some((u, g, lnfr));
-        if step < 0.05 * tol || (b - a) < 0.05 * tol {
-            last_step = step.min(b - a);
-            break;
-        }
-        if iters >= max_iter {
-            return Err(ContactError::NotConverged {
-                iterations: iters,
-                lambda_lo: a.exp(),
-                lambda_hi: b.exp(),
-                residual: g.exp_m1().abs(),
+        if t.solves >= max_iter {
+            return Verdict::Fail(ContactError::NotConverged {
+                iterations: t.solves,
+                lambda_lo: p.bracket.0.exp(),
+                lambda_hi: p.bracket.1.exp(),
+                residual: p.resid.exp_m1().abs(),
             });
         }
-        u = un;
-        let (gn, sn) = eval(u);
-        g = gn;
-        (sol, num_fr, num_ld) = sn;
-        iters += 1;
+        Verdict::Go
+    })?;
+    // d ln(ρF/N)/d ln λ from the last pair of iterates far enough apart that round-off in ρF/N
+    // does not dominate (an iterate that hit the root exactly is not differenced)
+    let pairs = history.len() - usize::from(on_root);
+    for w in history[..pairs].windows(2) {
+        let ((up, lfp), (u, lf)) = (w[0], w[1]);
+        if (u - up).abs() > 1e-4 {
+            dfr = ((lf - lfp) / (u - up)).clamp(-10.0, 10.0);
+        }
     }
+    let (sol, num_fr, num_ld) = found.sol;
     Ok(LoopResult {
         sol,
         num_fr,
         num_ld,
-        iterations: iters,
+        iterations: found.solves,
         last_step,
-        slope,
+        slope: rule.slope,
         dfr,
     })
 }

@@ -1,0 +1,95 @@
+//! Helpers shared by the integration tests (one copy instead of one per file): the built binary,
+//! fresh scratch folders, the shipped data, running the main job, and reading the CSV tables it
+//! writes (comment lines `# …` skipped, parsed with the csv crate).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Path of the `viscoroll` binary cargo built for these tests.
+pub fn bin() -> &'static str {
+    env!("CARGO_BIN_EXE_viscoroll")
+}
+
+/// `viscoroll ARGS…`, its output (status, stdout, stderr); no check on the status.
+pub fn viscoroll(args: &[&str]) -> Output {
+    Command::new(bin())
+        .args(args)
+        .output()
+        .expect("the viscoroll binary runs")
+}
+
+/// A fresh, empty folder `viscoroll-TAG-PID` in the system temp folder (removed first if a
+/// previous run left it). Tags must differ between tests that run at the same time.
+pub fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("viscoroll-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The shipped data folder (`data/`: DMA exports, compounds.toml, scenes.toml).
+pub fn data_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("data")
+}
+
+/// `viscoroll run DIR --out OUT EXTRA…` (the main job), its output; no check on the status.
+pub fn run_main(dir: &Path, out: &Path, extra: &[&str]) -> Output {
+    Command::new(bin())
+        .arg("run")
+        .arg(dir)
+        .arg("--out")
+        .arg(out)
+        .args(extra)
+        .output()
+        .expect("the viscoroll binary runs")
+}
+
+/// stderr as text (lossy), for assertion messages.
+pub fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A CSV table written by the main job: its header and rows as text, `#` comment lines skipped.
+pub fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let body: String = text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let mut rd = csv::ReaderBuilder::new().from_reader(body.as_bytes());
+    let header = rd.headers().unwrap().iter().map(str::to_string).collect();
+    let rows = rd
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_string).collect())
+        .collect();
+    (header, rows)
+}
+
+/// Index of the column `name` in `header` (panics naming it if absent).
+pub fn col(header: &[String], name: &str) -> usize {
+    header
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
+}
+
+/// The column `name` of the CSV table at `path`, as text, one entry a row.
+pub fn column(path: &Path, name: &str) -> Vec<String> {
+    let (header, rows) = table(path);
+    let c = col(&header, name);
+    rows.into_iter().map(|mut r| r.swap_remove(c)).collect()
+}
+
+/// The one JSON object a `--json` command printed on stdout (the command must have succeeded).
+pub fn json(out: &Output) -> serde_json::Value {
+    assert!(out.status.success(), "failed: {}", stderr(out));
+    serde_json::from_slice(&out.stdout).expect("one JSON object on stdout")
+}
+
+/// The number `v[key]` (panics naming the field if it is missing or not a number).
+pub fn num(v: &serde_json::Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("field {key} missing or not a number in {v}"))
+}
