@@ -4,7 +4,7 @@
 //! them gets its ensemble added when a later run asks for bands.
 
 use crate::support::{bin, col, data_dir, run_main, table, temp_dir};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 /// Two compounds of data/ (the two fast ones), one export file each at the top of `dir`.

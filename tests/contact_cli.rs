@@ -2,7 +2,7 @@
 //! arguments (one-line error, exit code 1, no panic).
 
 use crate::support::{self, num, viscoroll as run};
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn json(out: &Output) -> serde_json::Value {
     let text = String::from_utf8_lossy(&out.stdout);

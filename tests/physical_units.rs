@@ -10,7 +10,6 @@
 use crate::reference::{exact_sls, hertz, rel, temp_dir, Expected, Kind, SceneSi, Sls};
 use crate::support::{json, num, viscoroll as run};
 use std::path::Path;
-use std::process::Command;
 
 /// A tensile SLS with ν = 0.3 (E₀ = 1 GPa, E∞ = 4 MPa, τ_r = 20 µs: τ_c = 5 ms) and a shear one
 /// with ν = 0.42 (G₀ = 0.3 GPa, G∞ = 1.5 MPa, τ_r = 0.1 ms: τ_c = 20 ms).

@@ -5,7 +5,7 @@
 //! numbers out of range, `--tref` and measurement JSON. Inputs are synthetic exports of a known
 //! rubber-like material, written by [`rubber_csv`].
 
-use crate::support::{bin, run_main, temp_dir};
+use crate::support::{bin, fit_warning_lines_and_notes, run_main, temp_dir};
 use std::io::Write as _;
 use std::path::Path;
 use std::process::Command;
@@ -414,6 +414,22 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
     );
     let sheet = std::fs::read_to_string(out.join("reports/dense/datasheet.html")).unwrap();
     assert!(sheet.contains("thinned to 1000 means"));
+    // friction.csv: each fit warning once in full in the header, its code in every row's note.
+    let csv_path = out.join("reports/dense/friction.csv");
+    let (header_lines, notes) = fit_warning_lines_and_notes(&csv_path);
+    assert_eq!(
+        header_lines
+            .iter()
+            .filter(|l| l.contains("thinned to 1000 means"))
+            .count(),
+        2,
+        "{header_lines:?}"
+    );
+    let codes = format!("fit warnings F1–F{} (header)", header_lines.len());
+    assert!(!notes.is_empty());
+    for n in &notes {
+        assert!(n.ends_with(&codes), "{n:?} does not point at {codes}");
+    }
     // A small export (20 points per isotherm) is untouched.
     std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
     let o = run_main(&dir, &out, &["--force"]);
@@ -423,6 +439,8 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
             .unwrap();
     assert_eq!(fit["master_curve"].as_array().unwrap().len(), 60);
     assert!(!fit["tts"]["warnings"].to_string().contains("thinned"));
+    let (header_lines, _) = fit_warning_lines_and_notes(&csv_path);
+    assert!(header_lines.iter().all(|l| !l.contains("thinned")));
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&out);
 }

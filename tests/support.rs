@@ -93,3 +93,18 @@ pub fn num(v: &serde_json::Value, key: &str) -> f64 {
         .as_f64()
         .unwrap_or_else(|| panic!("field {key} missing or not a number in {v}"))
 }
+
+/// The `# fit warning Fk: …` lines of a friction.csv (checked to be numbered F1, F2, … in order)
+/// and its note column.
+pub fn fit_warning_lines_and_notes(path: &Path) -> (Vec<String>, Vec<String>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let lines: Vec<String> = text
+        .lines()
+        .filter(|l| l.starts_with("# fit warning F"))
+        .map(str::to_string)
+        .collect();
+    for (k, l) in lines.iter().enumerate() {
+        assert!(l.starts_with(&format!("# fit warning F{}: ", k + 1)), "{l}");
+    }
+    (lines, column(path, "note"))
+}

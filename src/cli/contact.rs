@@ -131,27 +131,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let friction = args.rho.map(|rho| sol.friction_rho / rho);
     if args.json {
-        let mut obj = serde_json::json!({
-            "scheme": sol.scheme,
-            "creep": terms,
-            "lambda": sol.lambda,
-            "beta": sol.beta,
-            "beta_over_lambda": sol.beta / sol.lambda,
-            "load": sol.load,
-            "friction_rho": sol.friction_rho,
-            "n": sol.n,
-            "iterations": sol.iterations,
-            "xi": sol.xi,
-            "pressure": sol.pressure,
-        });
-        if let (Some(rho), Some(fr)) = (args.rho, friction) {
-            obj["rho"] = serde_json::json!(rho);
-            obj["friction"] = serde_json::json!(fr);
-        }
+        let mut obj = solution_json(&sol, &terms);
         if let Some(e) = sol.error_estimate {
             obj["error_estimate"] = serde_json::json!(e);
         }
-        println!("{obj}");
+        print_json(obj, args.rho, friction);
     } else {
         eprintln!(
             "scheme {}  n = {}  load iterations = {}",
@@ -197,11 +181,7 @@ fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> any
         let mut obj = serde_json::to_value(&sol)?;
         obj["creep"] = serde_json::json!(terms);
         obj["beta_over_lambda"] = serde_json::json!(d.beta / d.lambda);
-        if let (Some(rho), Some(fr)) = (args.rho, friction) {
-            obj["rho"] = serde_json::json!(rho);
-            obj["friction"] = serde_json::json!(fr);
-        }
-        println!("{obj}");
+        print_json(obj, args.rho, friction);
     } else {
         eprintln!(
             "scheme auto  tol = {:e}  modes used {}/{} (lumped {}, dropped {})  load solves = {}",
@@ -285,18 +265,8 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
         push_length_warning(&mut warnings, d.lambda, rho);
     }
     if args.json {
-        let mut obj = serde_json::json!({
-            "scheme": d.scheme,
-            "creep": terms,
-            "lambda": d.lambda,
-            "beta": d.beta,
-            "beta_over_lambda": d.beta / d.lambda,
-            "load": d.load,
-            "friction_rho": d.friction_rho,
-            "n": d.n,
-            "iterations": d.iterations,
-            "xi": d.xi,
-            "pressure": d.pressure,
+        let mut obj = solution_json(d, terms);
+        let cover = serde_json::json!({
             "cover": h,
             "cover_over_contact": h / d.lambda,
             "poisson": nu,
@@ -309,11 +279,10 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
             "min_gap_ratio": a.min_gap_ratio,
             "warnings": warnings,
         });
-        if let (Some(rho), Some(fr)) = (args.rho, friction) {
-            obj["rho"] = serde_json::json!(rho);
-            obj["friction"] = serde_json::json!(fr);
+        if let (Some(o), serde_json::Value::Object(extra)) = (obj.as_object_mut(), cover) {
+            o.extend(extra);
         }
-        println!("{obj}");
+        print_json(obj, args.rho, friction);
     } else {
         eprintln!(
             "cover h' = {h}  nu = {nu}  creep terms (f, b): {}",
@@ -433,4 +402,31 @@ fn cover_at_lambda(
         reason,
         model_error_estimate: model_err,
     })
+}
+
+/// The fields every `contact --json` answer carries: scheme, creep terms, λ, β, β/λ, N′, ρF/N, n,
+/// solves, and the pressure Q′(ξ).
+fn solution_json(d: &contact::DimensionlessSolution, terms: &[CreepTerm]) -> serde_json::Value {
+    serde_json::json!({
+        "scheme": d.scheme,
+        "creep": terms,
+        "lambda": d.lambda,
+        "beta": d.beta,
+        "beta_over_lambda": d.beta / d.lambda,
+        "load": d.load,
+        "friction_rho": d.friction_rho,
+        "n": d.n,
+        "iterations": d.iterations,
+        "xi": d.xi,
+        "pressure": d.pressure,
+    })
+}
+
+/// Print the one JSON object, with `rho` and `friction` = (ρF/N)/ρ when `--rho` was given.
+fn print_json(mut obj: serde_json::Value, rho: Option<f64>, friction: Option<f64>) {
+    if let (Some(rho), Some(fr)) = (rho, friction) {
+        obj["rho"] = serde_json::json!(rho);
+        obj["friction"] = serde_json::json!(fr);
+    }
+    println!("{obj}");
 }

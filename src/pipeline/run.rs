@@ -257,9 +257,11 @@ fn one_compound(
         )?);
         step(&format!("maps {}", spec.name));
     }
+    let fit_level = fit_warnings(&fit, no_bands.as_deref(), opts.bands.is_some());
     write_report(
         &fit,
         &measurement,
+        &fit_level,
         &friction,
         &maps,
         opts.allow_extrapolation,
@@ -306,9 +308,9 @@ pub fn run_all(
     run_all_with_progress(opts, log, &|_| {})
 }
 
-/// The warnings of a compound: data flags of its fit, then per scene the extrapolated temperatures,
-/// failed points and contact warnings (each distinct warning once per scene).
-fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String> {
+/// The data flags of a fit: the master curve's flags and warnings (a thinned isotherm, a far-off
+/// point behind an out-of-bounds fit), then the ingest warnings.
+fn data_warnings(fit: &CompoundFit) -> Vec<String> {
     let mut warnings: Vec<String> = Vec::new();
     if let Some(t) = &fit.tts {
         warnings.extend(t.flags.iter().map(|f| format!("master curve: {f}")));
@@ -320,6 +322,33 @@ fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String>
             .iter()
             .map(|w| format!("ingest: {w}")),
     );
+    warnings
+}
+
+/// The bands' warnings: why they were not computed (`no_bands`), else the ensemble's notes (when
+/// bands were asked for).
+fn band_warnings(fit: &CompoundFit, no_bands: Option<&str>, bands_on: bool) -> Vec<String> {
+    let mut warnings: Vec<String> = no_bands.iter().map(|s| s.to_string()).collect();
+    if bands_on {
+        if let Some(e) = &fit.bands {
+            warnings.extend(e.notes.iter().map(|n| format!("uncertainty bands: {n}")));
+        }
+    }
+    warnings
+}
+
+/// The warnings of the fit that hold for every friction row (data flags, then the bands'), one
+/// line each: friction.csv writes them once with a code per row.
+fn fit_warnings(fit: &CompoundFit, no_bands: Option<&str>, bands_on: bool) -> Vec<String> {
+    let mut warnings = data_warnings(fit);
+    warnings.extend(band_warnings(fit, no_bands, bands_on));
+    warnings.into_iter().map(|w| cap_line(&w)).collect()
+}
+
+/// The warnings of a compound: data flags of its fit, then per scene the extrapolated temperatures,
+/// failed points and contact warnings (each distinct warning once per scene).
+fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String> {
+    let mut warnings = data_warnings(fit);
     for (scene, pts) in friction {
         let ext: Vec<String> = pts
             .iter()
@@ -366,12 +395,11 @@ fn outcome(
         Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
             let mut warnings = compound_warnings(&fit, &friction);
-            warnings.extend(no_bands);
-            if opts.bands.is_some() {
-                if let Some(e) = &fit.bands {
-                    warnings.extend(e.notes.iter().map(|n| format!("uncertainty bands: {n}")));
-                }
-            }
+            warnings.extend(band_warnings(
+                &fit,
+                no_bands.as_deref(),
+                opts.bands.is_some(),
+            ));
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),

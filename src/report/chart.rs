@@ -259,33 +259,61 @@ const BAR_W: u32 = 120;
 /// Characters per legend line before wrapping.
 const LEGEND_CHARS: usize = 18;
 
-/// A legend entry broken into lines of at most [`LEGEND_CHARS`] characters (at spaces where
-/// possible), at most three lines, the last cut with `…`.
+/// A legend entry broken into lines of at most [`LEGEND_CHARS`] characters, only at spaces or
+/// after a hyphen, underscore or slash (`conveyor-idler-` / `half-space`, never inside a word); a
+/// single piece longer than a line is shortened with `…`; at most three lines, the last cut with
+/// `…`.
 fn wrap(name: &str) -> Vec<String> {
+    // the pieces a line may break after, each with whether a space stood before it
+    let mut pieces: Vec<(String, bool)> = Vec::new();
+    for (k, word) in name.split(' ').enumerate() {
+        let mut cur = String::new();
+        let mut spaced = k > 0;
+        for ch in word.chars() {
+            cur.push(ch);
+            if matches!(ch, '-' | '_' | '/') {
+                pieces.push((std::mem::take(&mut cur), spaced));
+                spaced = false;
+            }
+        }
+        if !cur.is_empty() {
+            pieces.push((cur, spaced));
+        }
+    }
     let mut lines: Vec<String> = vec![String::new()];
-    for word in name.split(' ') {
+    for (piece, spaced) in pieces {
+        let piece = ellipsised(&piece, LEGEND_CHARS);
         let cur = lines.last_mut().expect("never empty");
-        if cur.is_empty() || cur.chars().count() + 1 + word.chars().count() <= LEGEND_CHARS {
-            if !cur.is_empty() {
+        let len = cur.chars().count();
+        let sep = usize::from(spaced && len > 0);
+        if len == 0 || len + sep + piece.chars().count() <= LEGEND_CHARS {
+            if sep == 1 {
                 cur.push(' ');
             }
-            cur.push_str(word);
+            cur.push_str(&piece);
         } else {
-            lines.push(word.to_string());
+            lines.push(piece);
         }
     }
-    let mut out: Vec<String> = Vec::new();
-    for l in lines {
-        let mut chars: Vec<char> = l.chars().collect();
-        while chars.len() > LEGEND_CHARS {
-            out.push(chars.drain(..LEGEND_CHARS).collect());
-        }
-        out.push(chars.into_iter().collect());
+    if lines.len() > 3 {
+        lines.truncate(3);
+        let last = ellipsised(&lines[2], LEGEND_CHARS - 1);
+        lines[2] = if last.ends_with('…') {
+            last
+        } else {
+            format!("{last}…")
+        };
     }
-    if out.len() > 3 {
-        out.truncate(3);
-        out[2].push('…');
+    lines
+}
+
+/// `s` cut to at most `n` characters, the last one `…` when it was cut.
+fn ellipsised(s: &str, n: usize) -> String {
+    if s.chars().count() <= n {
+        return s.to_string();
     }
+    let mut out: String = s.chars().take(n.saturating_sub(1)).collect();
+    out.push('…');
     out
 }
 
@@ -553,10 +581,22 @@ mod tests {
         let w = wrap("WLF: C1 = 13.50, C2 = 141.2 K");
         assert_eq!(w.join(" "), "WLF: C1 = 13.50, C2 = 141.2 K");
         assert!(w.len() == 2 && w.iter().all(|l| l.chars().count() <= LEGEND_CHARS));
+        // long names break after hyphens and underscores, never inside a word
+        let w = wrap("conveyor-idler-half-space");
+        assert_eq!(w, ["conveyor-idler-", "half-space"]);
+        let w = wrap("trios_aresg2_lims_frequency_sweep");
+        assert_eq!(w.concat(), "trios_aresg2_lims_frequency_sweep");
+        assert!(
+            w.iter().all(|l| l.ends_with('_') || l.ends_with("sweep")),
+            "{w:?}"
+        );
+        // a word longer than a line is shortened, not split; more than three lines are cut
         let w = wrap(&"x".repeat(100));
+        assert_eq!(w, [format!("{}…", "x".repeat(LEGEND_CHARS - 1))]);
+        let w = wrap("a-b-c-d-e-f-g-h-i-j-k-l-m-n-o-p-q-r-s-t-u-v-w-x-y-z-a-b-c-d");
         assert_eq!(w.len(), 3);
         assert!(w[2].ends_with('…'));
-        assert!(w.iter().all(|l| l.chars().count() <= LEGEND_CHARS + 1));
+        assert!(w.iter().all(|l| l.chars().count() <= LEGEND_CHARS));
     }
 
     #[test]

@@ -40,7 +40,9 @@ fn round_to_step(v: f64, step: f64) -> f64 {
 
 /// Ticks on a log axis whose range is [lo, hi] in log10 of the value: decades (every 2nd, 5th,
 /// 10th… decade over a wide span), with the 2 and 5 of each decade added when the span is under
-/// three decades, and 1, 2, 3, 5 (or 1…9 if those give fewer than three ticks) under one. Returned as log10 of the tick values.
+/// three decades. Under one decade: the 1, 2 and 5 of each decade when they give at least three
+/// ticks, else linear 1-2-5 ticks of the values (6000, 7000, 8000 or 1020, 1040 … — never a run of
+/// mantissas 1…9). Returned as log10 of the tick values.
 pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     if !(lo.is_finite() && hi.is_finite() && hi > lo) {
         return vec![];
@@ -53,17 +55,14 @@ pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
             .filter(|t| *t >= lo - 1e-9 && *t <= hi + 1e-9)
             .count()
     };
-    let mantissas: &[f64] = if span < 1.0 {
-        if within(&[1.0, 2.0, 3.0, 5.0]) >= 3 {
-            &[1.0, 2.0, 3.0, 5.0]
-        } else {
-            &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
-        }
-    } else if span < 3.0 {
-        &[1.0, 2.0, 5.0]
-    } else {
-        &[1.0]
-    };
+    if span < 1.0 && within(&[1.0, 2.0, 5.0]) < 3 {
+        return linear_ticks(10f64.powf(lo), 10f64.powf(hi))
+            .into_iter()
+            .filter(|v| *v > 0.0)
+            .map(f64::log10)
+            .collect();
+    }
+    let mantissas: &[f64] = if span < 3.0 { &[1.0, 2.0, 5.0] } else { &[1.0] };
     let every = if mantissas.len() > 1 {
         1
     } else {
@@ -205,10 +204,31 @@ mod tests {
             .collect();
         assert_eq!(t.len(), 4, "{t:?}"); // 5·10⁻⁴, 10⁻³, 2·10⁻³, 5·10⁻³
         assert!(t.iter().all(|v| is_125(*v)), "{t:?}");
-        // under a decade: 1, 2, 3, 5 (1000, 2000, 3000), or every integer mantissa when those
-        // give fewer than three ticks (6000 … 9000)
-        assert_eq!(log_ticks(3.0, 3.5).len(), 3);
-        assert_eq!(log_ticks(3.75, 3.99).len(), 4);
+        // under a decade: 1, 2, 5 when they give three ticks, else linear
+        // 1-2-5 steps of the values: 1000 … 3000 by 500, 6000 … 9500 by 500, 1000 … 1120 by 20
+        let values = |lo: f64, hi: f64| -> Vec<f64> {
+            log_ticks(lo, hi).iter().map(|l| 10f64.powf(*l)).collect()
+        };
+        let v = values(-3.0, -2.1); // 10⁻³, 2·10⁻³, 5·10⁻³
+        assert!(v.len() == 3 && v.iter().all(|x| is_125(*x)), "{v:?}");
+        for (lo, hi, step) in [(3.0, 3.5, 500.0), (3.75, 3.99, 500.0), (3.0, 3.05, 20.0)] {
+            let v = values(lo, hi);
+            assert!(v.len() >= 3, "{lo}..{hi}: {v:?}");
+            for w in v.windows(2) {
+                assert!(
+                    (w[1] - w[0] - step).abs() < 1e-9 * step,
+                    "{lo}..{hi}: {v:?}"
+                );
+            }
+            assert!(v
+                .iter()
+                .all(|x| (x / step - (x / step).round()).abs() < 1e-9));
+            // the labels are the plain multiples (no 5623.41…)
+            for t in log_ticks(lo, hi) {
+                let l = log_tick_label(t);
+                assert!(l.len() <= 4 && !l.contains('·'), "{l}");
+            }
+        }
         // 6 decades: each decade
         assert_eq!(log_ticks(-0.5, 5.5).len(), 6);
     }

@@ -208,10 +208,9 @@ mod tests {
     use crate::report::datasheet::fixture::fit_with;
     use crate::ShiftLaw;
 
-    #[test]
-    fn creep_compliance_and_relaxation_modulus_are_reciprocal_at_the_ends() {
-        // E(t) and J(t) of one material: J(0) = 1/E(0) and J(∞) = 1/E(∞) (docs/MATH.md §4), so
-        // E·J → 1 at both ends of a wide enough time range.
+    /// A fit of one relaxation term (τ = 1 s, E₀ = 101 MPa, E∞ = 1 MPa) with an Arrhenius law
+    /// (200 kJ/mol about 0 °C) measured over `range` (°C).
+    fn one_term_fit(range: (f64, f64)) -> crate::results::CompoundFit {
         let spectrum = serde_json::from_value(serde_json::json!({
             "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": 1e6,
             "terms": [{"tau_s": 1.0, "modulus_pa": 1e8}]
@@ -221,7 +220,14 @@ mod tests {
             t_ref_c: 0.0,
             activation_energy_j_per_mol: 200e3,
         };
-        let fit = fit_with(spectrum, law, (-40.0, 40.0));
+        fit_with(spectrum, law, range)
+    }
+
+    #[test]
+    fn creep_compliance_and_relaxation_modulus_are_reciprocal_at_the_ends() {
+        // E(t) and J(t) of one material: J(0) = 1/E(0) and J(∞) = 1/E(∞) (docs/MATH.md §4), so
+        // E·J → 1 at both ends of a wide enough time range.
+        let fit = one_term_fit((-40.0, 40.0));
         let (e, j) = relaxation_and_creep(&fit);
         let j = j.unwrap();
         let (ep, jp) = (&e.curves[0].points, &j.curves[0].points);
@@ -238,16 +244,7 @@ mod tests {
 
     #[test]
     fn sweeps_at_1_hz_and_10_hz_shift_the_loss_peak_up_in_temperature() {
-        let spectrum = serde_json::from_value(serde_json::json!({
-            "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": 1e6,
-            "terms": [{"tau_s": 1.0, "modulus_pa": 1e8}]
-        }))
-        .unwrap();
-        let law = ShiftLaw::Arrhenius {
-            t_ref_c: 0.0,
-            activation_energy_j_per_mol: 200e3,
-        };
-        let fit = fit_with(spectrum, law, (-60.0, 60.0));
+        let fit = one_term_fit((-60.0, 60.0));
         let m = crate::Measurement {
             sources: vec![],
             kind: crate::ModulusKind::Tensile,

@@ -175,10 +175,12 @@ fn map_section(
 
 /// Write `dir/` (plots, friction tables, datasheet.html) for one compound; `maps` has one entry per
 /// scene of `friction`, in the same order; `allow_extrapolation` as in the ranking (the datasheet
-/// shows the compound's standing per scene by the same rule).
+/// shows the compound's standing per scene by the same rule); `fit_warnings` are the warnings of
+/// the fit that hold for every row (friction.csv writes them once, with a code per row).
 pub fn write_report(
     fit: &CompoundFit,
     measurement: &Measurement,
+    fit_warnings: &[String],
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     maps: &[FrictionMaps],
     allow_extrapolation: bool,
@@ -192,7 +194,7 @@ pub fn write_report(
     let tol = maps.first().map_or(f64::NAN, |m| m.tol);
     write_file(
         &dir.join("friction.csv"),
-        tables::friction_csv(&prov, &flags, friction).as_bytes(),
+        tables::friction_csv(&prov, &flags, fit_warnings, friction).as_bytes(),
     )?;
     write_file(
         &dir.join("friction_map.csv"),

@@ -13,14 +13,20 @@ use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
 /// body solved, contact::body::layer) and `friction_p05`, `friction_p50`, `friction_p95` (the 90 %
 /// uncertainty band, crate::bands; empty with `--no-bands`). The
 /// compound's own flags (`flags`: why its fit is not trusted) come first as `#` lines and, when there
-/// are any, lead every row's note with `fit not trusted`.
+/// are any, lead every row's note with `fit not trusted`. The fit's warnings (`fit_warnings`: the
+/// data, the master curve, the bands; the same for every row) are written once in full as
+/// `# fit warning Fk: …` lines, and every row's note ends with their codes ([`fit_warning_codes`]),
+/// so a reader of one row knows to look up.
 pub fn friction_csv(
     prov: &str,
     flags: &[String],
+    fit_warnings: &[String],
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
 ) -> String {
     let untrusted = !flags.is_empty();
+    let codes = fit_warning_codes(fit_warnings.len());
     let rows = friction.iter().flat_map(|(spec, pts)| {
+        let codes = codes.clone();
         pts.iter().map(move |p| {
             vec![
                 spec.name.clone(),
@@ -31,11 +37,7 @@ pub fn friction_csv(
                 format!("{:.6}", p.log10_a_t),
                 p.extrapolated.to_string(),
                 p.error.as_deref().unwrap_or("").replace(['\r', '\n'], " "),
-                match (untrusted, p.note()) {
-                    (false, n) => n,
-                    (true, n) if n.is_empty() => "fit not trusted".to_string(),
-                    (true, n) => format!("fit not trusted; {n}"),
-                },
+                row_note(untrusted, p.note(), &codes),
                 p.model.clone(),
                 band_text(p.band.map(|b| b.p05)),
                 band_text(p.band.map(|b| b.p50)),
@@ -45,6 +47,12 @@ pub fn friction_csv(
     });
     let mut comments = vec![prov.to_string()];
     comments.extend(flags.iter().map(|f| format!("not trusted: {f}")));
+    comments.extend(
+        fit_warnings
+            .iter()
+            .enumerate()
+            .map(|(k, w)| format!("fit warning F{}: {}", k + 1, w.replace(['\r', '\n'], " "))),
+    );
     csv_text(
         &comments,
         &[
@@ -64,6 +72,32 @@ pub fn friction_csv(
         ],
         rows,
     )
+}
+
+/// The pointer a row's note carries to the `# fit warning` lines: `fit warning F1 (header)`,
+/// `fit warnings F1–F4 (header)`; empty without fit warnings.
+pub fn fit_warning_codes(n: usize) -> String {
+    match n {
+        0 => String::new(),
+        1 => "fit warning F1 (header)".into(),
+        n => format!("fit warnings F1–F{n} (header)"),
+    }
+}
+
+/// A row's note: `fit not trusted` first when it is not, the point's own flags, the fit warnings'
+/// codes last.
+fn row_note(untrusted: bool, point: String, codes: &str) -> String {
+    let parts = [
+        if untrusted { "fit not trusted" } else { "" },
+        point.as_str(),
+        codes,
+    ];
+    parts
+        .iter()
+        .filter(|p| !p.is_empty())
+        .copied()
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// A band percentile as printed (empty without bands).
@@ -151,8 +185,14 @@ mod tests {
             ),
             p(false, Some("no root, bracket [1, 2]"), vec![]),
         ];
-        let text = friction_csv("prov", &["prony_rms out of bound".into()], &[(spec, pts)]);
+        let text = friction_csv(
+            "prov",
+            &["prony_rms out of bound".into()],
+            &[],
+            &[(spec.clone(), pts.clone())],
+        );
         assert!(text.contains("# not trusted: prony_rms out of bound"));
+        assert!(!text.contains("fit warning"));
         let body: String = text
             .lines()
             .filter(|l| !l.starts_with('#'))
@@ -166,5 +206,29 @@ mod tests {
         assert!(rows[1][8].contains("extrapolated") && rows[1][8].contains("0.570"));
         assert!(rows[2][8].contains("failed: no root, bracket [1, 2]"));
         assert_eq!(&rows[2][7], "no root, bracket [1, 2]");
+
+        // Fit warnings: once in full in the header, a code at the end of every row's note.
+        let warnings = [
+            "master curve: isotherm at 20 °C thinned from 40000 to 1000 points".to_string(),
+            "uncertainty bands not computed: the ensemble failed".to_string(),
+        ];
+        let text = friction_csv("prov", &[], &warnings, &[(spec, pts)]);
+        assert!(text.contains("# fit warning F1: master curve: isotherm at 20 °C thinned"));
+        assert!(text.contains("# fit warning F2: uncertainty bands not computed"));
+        let body: String = text
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(body.as_bytes())
+            .records()
+            .map(|r| r.unwrap())
+            .collect();
+        assert_eq!(&rows[0][8], "fit warnings F1–F2 (header)");
+        assert!(
+            rows[1][8].contains("0.570") && rows[1][8].ends_with("; fit warnings F1–F2 (header)")
+        );
+        assert!(rows[2][8].starts_with("failed: no root"));
+        assert_eq!(fit_warning_codes(1), "fit warning F1 (header)");
     }
 }
