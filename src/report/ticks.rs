@@ -11,6 +11,12 @@ const MAX_TICKS: usize = 9;
 /// Ticks on a linear axis over [lo, hi]: multiples of the smallest step in {1, 2, 5}·10ᵏ that
 /// gives at most [`MAX_TICKS`] ticks (empty for an empty or non-finite range).
 pub fn linear_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    ticks_of_step(lo, hi, |_| true)
+}
+
+/// Multiples of the smallest step in {1, 2, 5}·10ᵏ over [lo, hi] that give at most [`MAX_TICKS`]
+/// ticks and that `accept` takes (empty for an empty or non-finite range).
+fn ticks_of_step(lo: f64, hi: f64, accept: impl Fn(&[f64]) -> bool) -> Vec<f64> {
     if !(lo.is_finite() && hi.is_finite() && hi > lo) {
         return vec![];
     }
@@ -23,9 +29,12 @@ pub fn linear_ticks(lo: f64, hi: f64) -> Vec<f64> {
             let last = (hi / step).floor();
             if last - first + 1.0 <= MAX_TICKS as f64 {
                 // multiples of the step, rounded to the step's decimals so labels print exactly
-                return (first as i64..=last as i64)
+                let t: Vec<f64> = (first as i64..=last as i64)
                     .map(|i| round_to_step(i as f64 * step, step))
                     .collect();
+                if t.len() < 2 || accept(&t) {
+                    return t;
+                }
             }
         }
         k += 1;
@@ -41,8 +50,9 @@ fn round_to_step(v: f64, step: f64) -> f64 {
 /// Ticks on a log axis whose range is [lo, hi] in log10 of the value: decades (every 2nd, 5th,
 /// 10th… decade over a wide span), with the 2 and 5 of each decade added when the span is under
 /// three decades. Under one decade: the 1, 2 and 5 of each decade when they give at least three
-/// ticks, else linear 1-2-5 ticks of the values (6000, 7000, 8000 or 1020, 1040 … — never a run of
-/// mantissas 1…9). Returned as log10 of the tick values.
+/// ticks, else linear 1-2-5 ticks of the values (6000, 7000, 8000 or 1020, 1040 …), with a step
+/// large enough that no two ticks stand closer than a tenth of the axis (linear ticks crowd at
+/// the top of a log axis). Returned as log10 of the tick values.
 pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     if !(lo.is_finite() && hi.is_finite() && hi > lo) {
         return vec![];
@@ -56,7 +66,11 @@ pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
             .count()
     };
     if span < 1.0 && within(&[1.0, 2.0, 5.0]) < 3 {
-        return linear_ticks(10f64.powf(lo), 10f64.powf(hi))
+        let apart = |t: &[f64]| {
+            t.windows(2)
+                .all(|w| w[0] > 0.0 && (w[1] / w[0]).log10() >= 0.1 * span)
+        };
+        return ticks_of_step(10f64.powf(lo), 10f64.powf(hi), apart)
             .into_iter()
             .filter(|v| *v > 0.0)
             .map(f64::log10)
@@ -205,13 +219,20 @@ mod tests {
         assert_eq!(t.len(), 4, "{t:?}"); // 5·10⁻⁴, 10⁻³, 2·10⁻³, 5·10⁻³
         assert!(t.iter().all(|v| is_125(*v)), "{t:?}");
         // under a decade: 1, 2, 5 when they give three ticks, else linear
-        // 1-2-5 steps of the values: 1000 … 3000 by 500, 6000 … 9500 by 500, 1000 … 1120 by 20
+        // 1-2-5 steps of the values, no two ticks closer than a tenth of the axis: 1000 … 3000 by
+        // 500, 6000 … 9000 by 1000 (by 500, 9000 and 9500 would touch), 1000 … 1120 by 20, and
+        // 10000 … 40000 by 10000 (by 5000, 35000 and 40000 would touch)
         let values = |lo: f64, hi: f64| -> Vec<f64> {
             log_ticks(lo, hi).iter().map(|l| 10f64.powf(*l)).collect()
         };
         let v = values(-3.0, -2.1); // 10⁻³, 2·10⁻³, 5·10⁻³
         assert!(v.len() == 3 && v.iter().all(|x| is_125(*x)), "{v:?}");
-        for (lo, hi, step) in [(3.0, 3.5, 500.0), (3.75, 3.99, 500.0), (3.0, 3.05, 20.0)] {
+        for (lo, hi, step) in [
+            (3.0, 3.5, 500.0),
+            (3.75, 3.99, 1000.0),
+            (3.0, 3.05, 20.0),
+            (4.0, 40000f64.log10(), 10000.0),
+        ] {
             let v = values(lo, hi);
             assert!(v.len() >= 3, "{lo}..{hi}: {v:?}");
             for w in v.windows(2) {
@@ -223,10 +244,13 @@ mod tests {
             assert!(v
                 .iter()
                 .all(|x| (x / step - (x / step).round()).abs() < 1e-9));
+            assert!(v
+                .windows(2)
+                .all(|w| (w[1] / w[0]).log10() >= 0.1 * (hi - lo)));
             // the labels are the plain multiples (no 5623.41…)
             for t in log_ticks(lo, hi) {
                 let l = log_tick_label(t);
-                assert!(l.len() <= 4 && !l.contains('·'), "{l}");
+                assert!(l.len() <= 5 && !l.contains('·'), "{l}");
             }
         }
         // 6 decades: each decade
