@@ -160,6 +160,19 @@ pub fn grid_csv(prov: &str, tol: f64, scenes: &[(&SceneSpec, &FrictionMaps)]) ->
 mod tests {
     use super::*;
 
+    /// The data rows of a CSV text, `#` lines skipped.
+    fn records(text: &str) -> Vec<csv::StringRecord> {
+        let body: String = text
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        csv::Reader::from_reader(body.as_bytes())
+            .records()
+            .map(|r| r.unwrap())
+            .collect()
+    }
+
     #[test]
     fn every_flag_of_a_point_reaches_the_note_column() {
         let spec = crate::results::SceneSet::shipped().scene[0].clone();
@@ -193,15 +206,7 @@ mod tests {
         );
         assert!(text.contains("# not trusted: prony_rms out of bound"));
         assert!(!text.contains("fit warning"));
-        let body: String = text
-            .lines()
-            .filter(|l| !l.starts_with('#'))
-            .map(|l| format!("{l}\n"))
-            .collect();
-        let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(body.as_bytes())
-            .records()
-            .map(|r| r.unwrap())
-            .collect();
+        let rows = records(&text);
         assert_eq!(&rows[0][8], "fit not trusted");
         assert!(rows[1][8].contains("extrapolated") && rows[1][8].contains("0.570"));
         assert!(rows[2][8].contains("failed: no root, bracket [1, 2]"));
@@ -215,15 +220,7 @@ mod tests {
         let text = friction_csv("prov", &[], &warnings, &[(spec, pts)]);
         assert!(text.contains("# fit warning F1: master curve: isotherm at 20 °C thinned"));
         assert!(text.contains("# fit warning F2: uncertainty bands not computed"));
-        let body: String = text
-            .lines()
-            .filter(|l| !l.starts_with('#'))
-            .map(|l| format!("{l}\n"))
-            .collect();
-        let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(body.as_bytes())
-            .records()
-            .map(|r| r.unwrap())
-            .collect();
+        let rows = records(&text);
         assert_eq!(&rows[0][8], "fit warnings F1–F2 (header)");
         assert!(
             rows[1][8].contains("0.570") && rows[1][8].ends_with("; fit warnings F1–F2 (header)")
