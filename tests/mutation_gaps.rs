@@ -197,10 +197,11 @@ fn rear_scan_finds_the_interior_minimum_of_the_gap() {
 /// Re[Φ(k)·Δ·(sinc²(kΔ/2)e^{ikjΔ} − 1)] dk up to one constant) against an independent composite
 /// quadrature of the differences A_D(j) − A_D(0), whose integrand R/k·Re[Φ Δ sinc² (e^{ikjΔ} − 1)]
 /// is finite at k = 0: 20-point Gauss–Legendre panels of width ¼ in ln k from 1e−12 to 1/X, then of
-/// width 0.05/X in k (0.05 radian of e^{ikx}, |x| ≤ X) up to 30/h′, where R < 1e−24. X = (m+1)Δ = 4.1
-/// > 1 puts the library's split between its log and its linear panels at k = 1/X, which is what the
-/// surviving mutant moved (to k = X: log panels of width ½ in ln k across several radians of the
-/// oscillation).
+/// width 0.05/X in k (0.05 radian of e^{ikx}, |x| ≤ X) up to 30/h′, where R < 1e−24. X = (m+1)Δ = 41
+/// puts the library's split between its log and its linear panels at k = 1/X; the surviving mutant
+/// moved it to k = X (here past k_hi = 27/h′: log panels of width ½ in ln k up to k_hi, across
+/// hundreds of radians of the oscillation). With X = 4.1 that mutant was still within 1e−11 (10-point
+/// panels of ~1 radian): a long contact against the layer (λ ≫ h′) is the case it breaks.
 #[test]
 fn layer_kernel_correction_matches_an_independent_quadrature() {
     use viscoroll::contact::body::layer::compliance::layer_defect;
@@ -208,7 +209,7 @@ fn layer_kernel_correction_matches_an_independent_quadrature() {
     use viscoroll::contact::CreepTerm;
     use viscoroll::special::gauss_legendre::gauss_legendre;
     let terms = [CreepTerm { f: 5.0, b: 0.5 }, CreepTerm { f: 20.0, b: 0.05 }];
-    let (h, nu, m, delta) = (1.0, 0.45, 40usize, 0.1);
+    let (h, nu, m, delta) = (1.0, 0.45, 40usize, 1.0);
     let k = LayerKernel::new(&terms, h, nu).expect("kernel");
     let a = k.correction_hat_averages(m, delta);
     let x_max = (m as f64 + 1.0) * delta;
@@ -268,8 +269,9 @@ fn layer_kernel_correction_matches_an_independent_quadrature() {
         worst = worst.max((got + want[j]).abs());
     }
     eprintln!("layer kernel correction: worst |ΔA_D| error {worst:.3e} (scale {scale:.3e})");
-    // Both rules converge exponentially (module doc): measured 8e−13 against a scale of 20 (4e−14
-    // relative), so 1e−11 of the scale leaves a margin of ~200 for other platforms.
+    // Both rules converge exponentially (module doc): measured 7.8e−11 against a scale of 685
+    // (1.1e−13 relative), so 1e−11 of the scale leaves a margin of ~90 for other platforms (the
+    // mutant with the split at k = X: 0.2).
     assert!(
         worst < 1e-11 * scale.max(1.0),
         "{worst:e} vs scale {scale:e}"
