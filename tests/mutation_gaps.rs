@@ -277,3 +277,26 @@ fn layer_kernel_correction_matches_an_independent_quadrature() {
         "{worst:e} vs scale {scale:e}"
     );
 }
+
+/// The load loop's contract (`contact::load::solve_at_load`): a sum Σfᵢ/bᵢ (J∞/J_g − 1) that is not
+/// finite and ≥ 0 is refused with a typed error before any solve. Surviving mutant: the check's
+/// `&&` made `||` (infinite or negative sums passed).
+#[test]
+fn the_load_loop_refuses_a_bad_sum_of_f_over_b() {
+    use viscoroll::contact::load::{solve_at_load, LoadSettings};
+    use viscoroll::contact::{ContactError, DimensionlessSolution};
+    for bad in [f64::NAN, f64::INFINITY, -1.0] {
+        let r = solve_at_load(
+            1.0,
+            bad,
+            &LoadSettings::default(),
+            |_: f64| -> Result<DimensionlessSolution, ContactError> {
+                panic!("solved with Σf/b = {bad}")
+            },
+        );
+        assert!(
+            matches!(r, Err(ContactError::BadValue { .. })),
+            "Σf/b = {bad}: {r:?}"
+        );
+    }
+}
