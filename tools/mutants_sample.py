@@ -10,7 +10,12 @@ Why not `cargo mutants --re`: cargo-mutants 27.1 lists its "delete field … fro
 whatever `--re`/`--exclude-re` say, so a named sample cannot be selected with it.
 
 usage (from the repository root, on a clean tree):
-  tools/mutants_sample.py GROUP N SEED OUT.tsv 'GLOB[,GLOB…]' [-- TEST FILTER ARGS…]
+  tools/mutants_sample.py [--timeout S] [--names FILE | --exclude FILE] GROUP N SEED OUT.tsv 'GLOB[,GLOB…]' [-- TEST FILTER ARGS…]
+--timeout S: seconds allowed for the test run of one mutant (default 600; take ~3× the unmutated run).
+--names FILE: run exactly the mutants named in FILE (one name a line, or the 4th column of a TSV this
+script wrote, e.g. its `missed` lines, to rerun survivors after new tests), not a random sample.
+--exclude FILE: leave the mutants named in FILE (same forms) out of the frame before drawing, to
+enlarge an earlier sample with a new seed without drawing a mutant twice.
 e.g.
   nice -n 10 tools/mutants_sample.py contact 18 19 mutants.tsv 'src/contact/**,!src/contact/maps/**' \
       -- contact physical_units auto_vs_richardson golden_outputs results spectra_exact
@@ -54,6 +59,18 @@ def apply(m):
 def main():
     argv = sys.argv[1:]
     filt = argv[argv.index("--") + 1 :] if "--" in argv else []
+    argv = argv[: argv.index("--")] if "--" in argv else argv
+    timeout, names, exclude = 600, None, set()
+    while argv and argv[0].startswith("--"):
+        opt, val, argv = argv[0], argv[1], argv[2:]
+        if opt == "--timeout":
+            timeout = int(val)
+        elif opt == "--names":
+            names = [l.rstrip("\n").split("\t")[-1] for l in open(val) if l.strip()]
+        elif opt == "--exclude":
+            exclude = {l.rstrip("\n").split("\t")[-1] for l in open(val) if l.strip()}
+        else:
+            sys.exit(f"unknown option {opt}")
     group, n, seed, out, globs = argv[:5]
     globs = globs.split(",")
     if subprocess.run(["git", "diff", "--quiet", "--", "src"]).returncode != 0:
@@ -64,9 +81,18 @@ def main():
     frame = [
         m
         for m in json.loads(listing)
-        if in_group(m["file"], globs) and not EXCLUDE.search(m["name"])
+        if in_group(m["file"], globs)
+        and not EXCLUDE.search(m["name"])
+        and m["name"] not in exclude
     ]
-    sample = random.Random(int(seed)).sample(frame, min(int(n), len(frame)))
+    if names is not None:
+        by_name = {m["name"]: m for m in frame}
+        missing = [x for x in names if x not in by_name]
+        if missing:
+            sys.exit(f"not in the frame (source moved?): {missing}")
+        sample = [by_name[x] for x in names]
+    else:
+        sample = random.Random(int(seed)).sample(frame, min(int(n), len(frame)))
     print(f"{group}: {len(sample)} of {len(frame)} mutants", file=sys.stderr)
     test = ["nice", "-n", "10", "cargo", "test", "-q", "--lib", "--test", "tests"]
     with open(out, "a") as tsv:
@@ -78,7 +104,7 @@ def main():
                     res = "unviable"
                 else:
                     try:
-                        r = subprocess.run(test + ["--"] + filt, capture_output=True, timeout=600)
+                        r = subprocess.run(test + ["--"] + filt, capture_output=True, timeout=timeout)
                         if r.returncode == 0:
                             res = "missed"
                         else:
