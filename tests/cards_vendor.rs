@@ -7,6 +7,17 @@
 //! - Abaqus `*VISCOELASTIC, TIME=PRONY` / `*TRS, DEFINITION=WLF`: Abaqus Keywords Reference (v2016)
 //!   `*TRS` ("data line: reference temperature θ₀, C1, C2"; DEFINITION=WLF the default) and the
 //!   Analysis User's Guide "Time domain viscoelasticity" (v2016 §22.7.1: −log A = C1(θ−θ₀)/(C2+θ−θ₀)).
+//! - ANSYS `TB,SHIFT`: the TB command reference Ansys ships in PyMAPDL (`ansys/pymapdl`,
+//!   `src/ansys/mapdl/core/_commands/prep7/materials.py`, `tb`, text of the Mechanical APDL 2023 R2
+//!   Command Reference): for Lab = SHIFT, "NTEMP: Allows one temperature"; "NPTS: 3 for TBOPT = WLF,
+//!   2 for TBOPT = TN"; TBOPT WLF (Williams-Landel-Ferry), TN (Tool-Narayanaswamy), FICT, PLIN, USER.
+//!   The order and meaning of the constants are on the Material Reference page that could not be
+//!   retrieved (see `report::cards`), so they are checked against our own documented form only.
+//! - Abaqus `*TRS, DEFINITION=ARRHENIUS`: Keywords Reference (v2016) `*TRS` (one data line, θ₀ first;
+//!   "you need to specify the universal gas constant and absolute zero using the *PHYSICAL
+//!   CONSTANTS option") and the Abaqus/3DEXPERIENCE materials guide, "Thermorheologically simple
+//!   temperature effects" (ln A = (E₀/R)(1/(θ−θ_Z) − 1/(θ₀−θ_Z)); inputs reference temperature and
+//!   activation energy).
 //! - LS-DYNA `*MAT_GENERAL_VISCOELASTIC`: the keyword definition Ansys publishes in PyDyna
 //!   (`mat_general_viscoelastic.py`: 10-column fields; card 1 MID RO BULK PCF EF TREF A B, card 2
 //!   LCID … TRAMPK, cards 3+ GI BETAI KI BETAKI; "TREF … must be greater than zero").
@@ -206,22 +217,151 @@ fn abaqus_trs_carries_the_vendor_wlf_with_abaqus_sign() {
 }
 
 #[test]
-fn ansys_tb_shift_carries_tref_c1_c2_in_that_order() {
-    // The order (T_r, C1, C2) is the one our writer documents; the ANSYS Material Reference page on
-    // TB,SHIFT could not be retrieved here, so this checks our layout and the law's numbers, not
-    // ANSYS's documentation.
-    let ((t0, c1, c2), _) = eplexor_wlf_and_table();
-    let law = ShiftLaw::Wlf {
+fn ansys_tb_shift_fields_follow_the_tb_command_reference() {
+    // TB,Lab,MAT,NTEMP,NPTS,TBOPT (Command Reference): Lab = SHIFT allows one temperature; NPTS is
+    // 3 for TBOPT = WLF and 2 for TBOPT = TN.
+    let ((t0, c1, c2), table) = eplexor_wlf_and_table();
+    let wlf = ShiftLaw::Wlf {
         t_ref_c: t0,
         c1,
         c2_k: c2,
     };
-    let card = cards::ansys(&spectrum(), Some(&law), &CardOptions::default()).unwrap();
+    let card = cards::ansys(&spectrum(), Some(&wlf), &CardOptions::default()).unwrap();
     let t = apdl_tables(&card);
     let shift = t.iter().find(|t| t.tb[0].starts_with("SHIF")).unwrap();
+    assert_eq!(shift.tb[1], "1"); // MAT
+    assert_eq!(shift.tb[2], "1"); // NTEMP: one temperature
+    assert_eq!(shift.tb[3], "3"); // NPTS for WLF
     assert_eq!(shift.tb[4], "WLF");
-    assert_eq!(shift.tb[3], "3");
+    // Constants: the order (T_r, C1, C2) is our documented one (not checked against ANSYS: the
+    // Material Reference page could not be retrieved), with the vendor's numbers exactly.
     assert_eq!(shift.constants, vec![25.0, 13.5, 141.19]);
+    // The form log10 A = C1(T−T_r)/(C2+T−T_r), A dividing relaxation times (τ(T) = τ(T_r)/A), as
+    // our card documents it: A = 1/a_T reproduces the EPLEXOR table with its own constants (RMS
+    // 0.21 decade, as for Abaqus); the other sign misses by > 10 decades.
+    let (tr, k1, k2) = (shift.constants[0], shift.constants[1], shift.constants[2]);
+    let log_a = |t: f64| -(k1 * (t - tr) / (k2 + t - tr));
+    assert!(rms(log_a, &table) < 0.25);
+    assert!(rms(|t| -log_a(t), &table) > 10.0);
+
+    // An Arrhenius law goes in as TN: NPTS = 2, constants T_r and H/R = E_a/R (K).
+    let ea = 1.5e5;
+    let arr = ShiftLaw::Arrhenius {
+        t_ref_c: 25.0,
+        activation_energy_j_per_mol: ea,
+    };
+    let card = cards::ansys(&spectrum(), Some(&arr), &CardOptions::default()).unwrap();
+    let t = apdl_tables(&card);
+    let shift = t.iter().find(|t| t.tb[0].starts_with("SHIF")).unwrap();
+    assert_eq!((shift.tb[2].as_str(), shift.tb[3].as_str()), ("1", "2"));
+    assert_eq!(shift.tb[4], "TN");
+    assert_eq!(shift.constants.len(), 2);
+    assert_eq!(shift.constants[0], 25.0);
+    // R = 8.314462618 J/(mol K) (CODATA 2018, exact since the 2019 SI): H/R to 1e-12.
+    let h_over_r = ea / 8.314_462_618;
+    assert!((shift.constants[1] / h_over_r - 1.0).abs() < 1e-12);
+    // TN without fictive temperature, A = exp[(H/R)(1/T_r − 1/T)] in kelvin, gives our law's shift
+    // (A = 1/a_T) at every temperature from −50 to 100 °C, to round-off.
+    for k in 0..16 {
+        let t_c = -50.0 + 10.0 * k as f64;
+        let (t, t_r) = (t_c + 273.15, shift.constants[0] + 273.15);
+        let ln_a = shift.constants[1] * (1.0 / t_r - 1.0 / t);
+        let ours = arr.log10_a_t(t_c);
+        assert!(
+            (-ln_a / std::f64::consts::LN_10 - ours).abs() < 1e-12 * (1.0 + ours.abs()),
+            "{t_c}"
+        );
+    }
+    assert!(card.contains("TOFFST,273.15"));
+}
+
+#[test]
+fn abaqus_trs_arrhenius_follows_the_documented_form() {
+    let ea = 1.2e5;
+    let law = ShiftLaw::Arrhenius {
+        t_ref_c: 20.0,
+        activation_energy_j_per_mol: ea,
+    };
+    let (card, notes) = cards::card(
+        cards::CardTarget::Abaqus,
+        &spectrum(),
+        Some(&law),
+        &CardOptions::default(),
+    )
+    .unwrap();
+    // Independent reading: the data lines after `*TRS, DEFINITION=ARRHENIUS`.
+    let mut block = String::new();
+    let mut trs = vec![];
+    for l in card.lines() {
+        if l.starts_with("**") {
+            continue;
+        }
+        if l.starts_with('*') {
+            block = l.to_uppercase().replace(' ', "");
+            continue;
+        }
+        if block == "*TRS,DEFINITION=ARRHENIUS" {
+            trs.push(
+                l.split(',')
+                    .map(|x| x.trim().parse::<f64>().unwrap())
+                    .collect::<Vec<_>>(),
+            );
+        }
+    }
+    // One data line: θ₀, E₀ (J/mol), our numbers exactly.
+    assert_eq!(trs, vec![vec![20.0, ea]]);
+    // R and θ_Z are model data (*PHYSICAL CONSTANTS): stated in the card and in the notes.
+    for text in [card.as_str(), notes.join("\n").as_str()] {
+        assert!(
+            text.contains("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.15"),
+            "{text}"
+        );
+    }
+    // Abaqus' form with θ_Z = −273.15 and R = 8.314462618: ln A = (E₀/R)(1/(θ−θ_Z) − 1/(θ₀−θ_Z)),
+    // A dividing times like a_T, equals our law at −50…100 °C; the flipped sign does not.
+    let (th0, e0) = (trs[0][0], trs[0][1]);
+    let ln_a = |th: f64| e0 / 8.314_462_618 * (1.0 / (th + 273.15) - 1.0 / (th0 + 273.15));
+    for k in 0..16 {
+        let th = -50.0 + 10.0 * k as f64;
+        let ours = law.log10_a_t(th);
+        assert!((ln_a(th) / std::f64::consts::LN_10 - ours).abs() < 1e-12 * (1.0 + ours.abs()));
+        if th != th0 {
+            assert!((-ln_a(th) / std::f64::consts::LN_10 - ours).abs() > 0.1);
+        }
+    }
+    // Our reader takes the card back.
+    let back = cards::read_abaqus(&card).unwrap();
+    assert_eq!(back.shift, Some(law));
+}
+
+#[test]
+fn lsdyna_writes_no_arrhenius_shift_and_says_why() {
+    let law = ShiftLaw::Arrhenius {
+        t_ref_c: 20.0,
+        activation_energy_j_per_mol: 1.2e5,
+    };
+    let err = cards::lsdyna(&spectrum(), Some(&law), &CardOptions::default()).unwrap_err();
+    assert!(
+        matches!(err, cards::CardError::ShiftUnsupported { .. }),
+        "{err}"
+    );
+    let (card, notes) = cards::card(
+        cards::CardTarget::Lsdyna,
+        &spectrum(),
+        Some(&law),
+        &CardOptions::default(),
+    )
+    .unwrap();
+    // The card is the one without a shift (TREF, A, B blank), and the warning says why.
+    assert_eq!(
+        card,
+        cards::lsdyna(&spectrum(), None, &CardOptions::default()).unwrap()
+    );
+    assert!(
+        notes.len() == 1 && notes[0].starts_with("WARNING: no shift in the LS-DYNA card"),
+        "{notes:?}"
+    );
+    assert!(notes[0].contains("tabulated shift"), "{notes:?}");
 }
 
 #[test]

@@ -213,7 +213,14 @@ fn wrong_inputs_are_refused() {
         t_ref_c: 0.0,
         activation_energy_j_per_mol: 1e5,
     };
-    assert!(cards::abaqus(&two_terms(), Some(&arr), &CardOptions::default()).is_err());
+    // Arrhenius: Abaqus and ANSYS carry it (*TRS ARRHENIUS, TB,SHIFT TN); LS-DYNA has no documented
+    // form for it (cards_vendor.rs); a table of shifts goes into no card.
+    assert!(cards::lsdyna(&two_terms(), Some(&arr), &CardOptions::default()).is_err());
+    let table = ShiftLaw::Table {
+        t_ref_c: 0.0,
+        points: vec![(0.0, 0.0), (10.0, -1.0)],
+    };
+    assert!(cards::abaqus(&two_terms(), Some(&table), &CardOptions::default()).is_err());
     let many = RelaxationSpectrum {
         terms: (0..20)
             .map(|k| RelaxationTerm {

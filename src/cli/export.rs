@@ -9,7 +9,10 @@
 //! log10 errors are stated in the card and on stderr. A WLF law from a fit file is written when it
 //! describes the shifts ([`crate::report::card_shift`]: RMS ≤ 0.1 decade, 0 < C2 ≤ 1000 K); when it
 //! holds over part of the temperatures only, the WLF fitted over that range is written with the
-//! range and its RMS in a warning in the card; otherwise the card gets no shift and says why.
+//! range and its RMS in a warning in the card. A fit whose master curve used Arrhenius, or whose WLF
+//! is withheld while an Arrhenius fit of its shifts holds, gets an Arrhenius shift where the target
+//! has one (Abaqus `*TRS, DEFINITION=ARRHENIUS`, ANSYS `TB,SHIFT … TN`; LS-DYNA none, said why);
+//! otherwise the card gets no shift and says why.
 //!
 //! `--to pyvisco` writes a fit file's master curve and shift factors in pyvisco's CSV layouts
 //! ([`crate::dma::pyvisco`]): `-o NAME.csv` and `NAME__shift_factors.csv` beside it.
@@ -20,7 +23,7 @@
 use super::output::write_atomic;
 use super::spectrum_input::read_spectrum_input;
 use crate::prony::{fit_prony, log10_errors, MasterPoint, PronySettings};
-use crate::report::card_shift::{card_wlf, CardWlf};
+use crate::report::card_shift::{card_shift, CardShift};
 use crate::report::cards::{self, BulkRelaxation, CardOptions};
 use crate::{RelaxationSpectrum, ShiftLaw};
 use anyhow::Context;
@@ -58,7 +61,8 @@ pub struct Args {
     #[arg(long, value_enum)]
     pub to: Target,
     /// WLF shift law "TREF_C,C1,C2" (reference temperature in °C, C1, C2 in K) for *TRS / TB,SHIFT /
-    /// TREF,A,B; omitted: from a fit file its WLF law if it describes the shifts, else no shift card.
+    /// TREF,A,B; omitted: from a fit file its WLF law if it describes the shifts, else its Arrhenius
+    /// law (Abaqus, ANSYS), else no shift card.
     #[arg(long, value_name = "TREF_C,C1,C2")]
     pub wlf: Option<String>,
     /// Material id (ANSYS MAT, LS-DYNA MID).
@@ -81,12 +85,10 @@ pub struct Args {
     pub json: bool,
 }
 
-/// The WLF law of a fit file for a card ([`card_wlf`] on its table of shifts), or why there is none.
-fn wlf_from_fit(fit: &crate::pipeline::CompoundFit) -> CardWlf {
-    let Some(tts) = fit.tts.as_ref().filter(|t| !t.shifts.is_empty()) else {
-        return CardWlf::Withheld("the fit file holds no master-curve shifts".into());
-    };
-    card_wlf(&tts.shifts, fit.shift_law.t_ref_c())
+/// The shift law of a fit file for a card ([`card_shift`] on its table of shifts and its law).
+fn shift_from_fit(fit: &crate::pipeline::CompoundFit) -> CardShift {
+    let shifts = fit.tts.as_ref().map(|t| t.shifts.as_slice()).unwrap_or(&[]);
+    card_shift(shifts, &fit.shift_law)
 }
 
 /// Refit with at most `max_cards` LS-DYNA cards (E∞ takes one): to the fit file's master curve, or
@@ -248,41 +250,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let mut notes: Vec<String> = Vec::new();
     let shift = match (args.wlf.as_deref(), &input.fit) {
         (Some(w), _) => Some(parse_wlf(w)?),
-        (None, Some(fit)) => match wlf_from_fit(fit) {
-            CardWlf::Whole { law, rms_log10 } => {
-                notes.push(format!(
-                    "WLF shift fitted to the master curve's shifts: RMS {rms_log10:.3} decade"
-                ));
-                Some(law)
-            }
-            CardWlf::Range {
-                law,
-                rms_log10,
-                t_min_c,
-                t_max_c,
-                used,
-                of,
-                whole,
-            } => {
-                let (c1, c2) = match law {
-                    ShiftLaw::Wlf { c1, c2_k, .. } => (c1, c2_k),
-                    _ => (f64::NAN, f64::NAN),
-                };
-                notes.push(format!(
-                    "WARNING: WLF shift (C1 = {c1:.4}, C2 = {c2:.3} K) fitted over {t_min_c:.2} to \
-                     {t_max_c:.2} degC only, where it holds ({used} of {of} temperatures, RMS \
-                     {rms_log10:.3} decade): over all of them {whole}; outside that range shift \
-                     the spectrum otherwise"
-                ));
-                Some(law)
-            }
-            CardWlf::Withheld(why) => {
-                notes.push(format!(
-                    "WARNING: no shift card: {why}; give one with --wlf TREF_C,C1,C2 or shift in the solver"
-                ));
-                None
-            }
-        },
+        (None, Some(fit)) => {
+            let chosen = shift_from_fit(fit);
+            notes.extend(chosen.notes);
+            chosen.law
+        }
         (None, None) => None,
     };
     if args.to == Target::Lsdyna {
@@ -314,19 +286,22 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         },
         density_kg_m3: args.density_kg_m3,
     };
-    let (name, card) = match args.to {
-        Target::Abaqus => ("abaqus", cards::abaqus(&spectrum, shift.as_ref(), &options)),
-        Target::Ansys => ("ansys", cards::ansys(&spectrum, shift.as_ref(), &options)),
-        Target::Lsdyna => ("lsdyna", cards::lsdyna(&spectrum, shift.as_ref(), &options)),
+    let (name, target) = match args.to {
+        Target::Abaqus => ("abaqus", cards::CardTarget::Abaqus),
+        Target::Ansys => ("ansys", cards::CardTarget::Ansys),
+        Target::Lsdyna => ("lsdyna", cards::CardTarget::Lsdyna),
         // Written by export_pyvisco before any card work.
-        Target::Pyvisco => (
-            "pyvisco",
-            Err(cards::CardError::Unwritable(
-                "pyvisco files are not a card".into(),
-            )),
-        ),
+        Target::Pyvisco => anyhow::bail!("pyvisco files are not a card"),
     };
-    let card = card.with_context(|| format!("{}", args.file.display()))?;
+    let (card, card_notes) = cards::card(target, &spectrum, shift.as_ref(), &options)
+        .with_context(|| format!("{}", args.file.display()))?;
+    let dropped = card_notes.iter().any(|n| n.contains("no shift in the"));
+    notes.extend(card_notes);
+    let shift_label = match (&shift, dropped) {
+        (Some(ShiftLaw::Wlf { .. }), false) => " + WLF shift",
+        (Some(ShiftLaw::Arrhenius { .. }), false) => " + Arrhenius shift",
+        _ => "",
+    };
     let prefix = match args.to {
         Target::Abaqus => "**",
         Target::Ansys => "!",
@@ -359,7 +334,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         eprintln!(
             "viscoroll export: {name} card, {} terms{}",
             spectrum.terms.len(),
-            if shift.is_some() { " + WLF shift" } else { "" }
+            shift_label
         );
     }
     Ok(())

@@ -7,8 +7,14 @@
 //! "Holds" means RMS ≤ [`WLF_RMS_BOUND`] decade and 0 < C2 ≤ [`WLF_C2_MAX_K`] K, C1 > 0. The range
 //! must contain T_ref because the cards' WLF is referred to the Prony data's temperature (Abaqus
 //! *TRS θ₀, ANSYS TB,SHIFT T_r, LS-DYNA TREF): log10 a_T(T_ref) = 0 is part of the law.
+//!
+//! [`card_shift`] chooses the law a fit's cards carry, with the warnings to show: the fit's own
+//! Arrhenius law when it used one, else WLF as above, else (WLF withheld) an Arrhenius fit of the
+//! shifts when it holds (RMS ≤ [`WLF_RMS_BOUND`], E_a > 0), else none and why. Abaqus and ANSYS
+//! carry Arrhenius (`*TRS, DEFINITION=ARRHENIUS`; `TB,SHIFT … TN`); LS-DYNA does not
+//! (`report::cards::LSDYNA_NO_ARRHENIUS`).
 
-use crate::tts::fit_laws::fit_wlf;
+use crate::tts::fit_laws::{fit_arrhenius, fit_wlf};
 use crate::ShiftLaw;
 
 /// Largest RMS (log10 decades) of the shifts about a WLF law for it to go into a card: 0.1 decade is
@@ -129,6 +135,125 @@ pub fn card_wlf(shifts: &[(f64, f64)], t_ref_c: f64) -> CardWlf {
     }
 }
 
+/// The shift law for a fit's cards and what to say about it (notes starting `WARNING:` are warnings).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CardShift {
+    /// The law, if any can go into a card.
+    pub law: Option<ShiftLaw>,
+    /// What the cards' reader should know (RMS, range, fallbacks, why none).
+    pub notes: Vec<String>,
+}
+
+/// The shift law for the cards of a fit whose master curve found `shifts` (°C, log10 a_T at
+/// `law_in_use`'s T_ref) with `law_in_use` (see the module doc for the order of choice).
+pub fn card_shift(shifts: &[(f64, f64)], law_in_use: &ShiftLaw) -> CardShift {
+    let t_ref_c = law_in_use.t_ref_c();
+    let pts: Vec<(f64, f64)> = shifts
+        .iter()
+        .copied()
+        .filter(|p| p.0.is_finite() && p.1.is_finite())
+        .collect();
+    let rms_about = |law: &ShiftLaw| -> Option<f64> {
+        (!pts.is_empty()).then(|| {
+            (pts.iter()
+                .map(|&(t, a)| (law.log10_a_t(t) - a).powi(2))
+                .sum::<f64>()
+                / pts.len() as f64)
+                .sqrt()
+        })
+    };
+    if let ShiftLaw::Arrhenius {
+        activation_energy_j_per_mol: ea,
+        ..
+    } = *law_in_use
+    {
+        let rms = rms_about(law_in_use)
+            .map(|r| format!(", RMS {r:.3} decade about the shifts"))
+            .unwrap_or_default();
+        return CardShift {
+            law: Some(law_in_use.clone()),
+            notes: vec![format!(
+                "Arrhenius shift, the master curve's own law (E_a = {:.1} kJ/mol{rms})",
+                ea / 1e3
+            )],
+        };
+    }
+    if pts.is_empty() {
+        return match law_in_use {
+            ShiftLaw::Wlf { .. } => CardShift {
+                law: Some(law_in_use.clone()),
+                notes: vec!["WLF shift as given (no table of shifts to check it against)".into()],
+            },
+            _ => CardShift {
+                law: None,
+                notes: vec![
+                    "WARNING: no shift card: no master-curve shifts and no WLF or Arrhenius law"
+                        .into(),
+                ],
+            },
+        };
+    }
+    match card_wlf(&pts, t_ref_c) {
+        CardWlf::Whole { law, rms_log10 } => CardShift {
+            law: Some(law),
+            notes: vec![format!(
+                "WLF shift fitted to the master curve's shifts: RMS {rms_log10:.3} decade"
+            )],
+        },
+        CardWlf::Range {
+            law,
+            rms_log10,
+            t_min_c,
+            t_max_c,
+            used,
+            of,
+            whole,
+        } => {
+            let (c1, c2) = match law {
+                ShiftLaw::Wlf { c1, c2_k, .. } => (c1, c2_k),
+                _ => (f64::NAN, f64::NAN),
+            };
+            CardShift {
+                law: Some(law),
+                notes: vec![format!(
+                    "WARNING: WLF shift (C1 = {c1:.4}, C2 = {c2:.3} K) fitted over {t_min_c:.2} to \
+                     {t_max_c:.2} degC only, where it holds ({used} of {of} temperatures, RMS \
+                     {rms_log10:.3} decade): over all of them {whole}; outside that range shift \
+                     the spectrum otherwise"
+                )],
+            }
+        }
+        CardWlf::Withheld(why) => match fit_arrhenius(&pts, t_ref_c) {
+            Ok(f) if f.rms_log10 <= WLF_RMS_BOUND && f.activation_energy_j_per_mol > 0.0 => {
+                CardShift {
+                    law: Some(f.law()),
+                    notes: vec![format!(
+                        "WARNING: WLF withheld ({why}); an Arrhenius shift fitted to the same shifts \
+                         goes into the cards instead (E_a = {:.1} kJ/mol, RMS {:.3} decade)",
+                        f.activation_energy_j_per_mol / 1e3,
+                        f.rms_log10
+                    )],
+                }
+            }
+            Ok(f) => CardShift {
+                law: None,
+                notes: vec![format!(
+                    "WARNING: no shift card: {why}; nor does Arrhenius hold (E_a = {:.1} kJ/mol, \
+                     RMS {:.3} decade, bound {WLF_RMS_BOUND}); shift in the solver",
+                    f.activation_energy_j_per_mol / 1e3,
+                    f.rms_log10
+                )],
+            },
+            Err(e) => CardShift {
+                law: None,
+                notes: vec![format!(
+                    "WARNING: no shift card: {why}; nor can Arrhenius be fitted ({e}); shift in the solver"
+                )],
+            },
+        },
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -224,5 +349,51 @@ mod tests {
             CardWlf::Withheld(why) => assert!(why.contains("no run"), "{why}"),
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn a_straight_line_withholds_wlf_and_takes_arrhenius() {
+        // log10 a_T falling by 0.05 decade per K over 0…60 °C: WLF's best fit runs to C2 → ∞ (a
+        // straight line; degenerate), while the Arrhenius curve 1/T bends by only a few hundredths
+        // of a decade over 60 K at ~300 K, well inside 0.1 decade.
+        let pts: Vec<(f64, f64)> = (0..7)
+            .map(|k| {
+                let t = 10.0 * k as f64;
+                (t, -0.05 * (t - 20.0))
+            })
+            .collect();
+        let law_in_use = ShiftLaw::Table {
+            t_ref_c: 20.0,
+            points: pts.clone(),
+        };
+        let c = card_shift(&pts, &law_in_use);
+        let Some(ShiftLaw::Arrhenius {
+            t_ref_c,
+            activation_energy_j_per_mol: ea,
+        }) = c.law
+        else {
+            panic!("{c:?}")
+        };
+        assert_eq!(t_ref_c, 20.0);
+        // The slope at T_ref: d log10 a/dT = −E_a/(R ln10 T²) = −0.05/K, so E_a ≈ 0.05 R ln10 T_ref²
+        // (≈ 82 kJ/mol); the fit weighs the whole span, so within 10 %.
+        let want = 0.05 * 8.314_462_618 * std::f64::consts::LN_10 * 293.15f64.powi(2);
+        assert!((ea / want - 1.0).abs() < 0.1, "{ea} vs {want}");
+        assert!(
+            c.notes[0].starts_with("WARNING: WLF withheld"),
+            "{:?}",
+            c.notes
+        );
+    }
+
+    #[test]
+    fn the_fits_own_arrhenius_law_is_kept() {
+        let law = ShiftLaw::Arrhenius {
+            t_ref_c: 25.0,
+            activation_energy_j_per_mol: 1.2e5,
+        };
+        let c = card_shift(&[], &law);
+        assert_eq!(c.law, Some(law));
+        assert!(!c.notes[0].starts_with("WARNING"));
     }
 }

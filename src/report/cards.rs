@@ -1,7 +1,8 @@
 //! FEA material cards from a [`RelaxationSpectrum`] (+ optional WLF [`ShiftLaw`]), and readers of such
 //! cards back into spectra: Abaqus, ANSYS Mechanical APDL, LS-DYNA.
 //!
-//! Input: [`RelaxationSpectrum`], [`ShiftLaw`], [`CardOptions`]; output: card text (`String`). Readers:
+//! Input: [`RelaxationSpectrum`], [`ShiftLaw`] (WLF or Arrhenius), [`CardOptions`]; output: card text
+//! (`String`); [`card`] adds the warnings a shift law brings. Readers:
 //! [`read_abaqus`], [`read_ansys`], [`read_lsdyna`] → [`CardContents`] → [`CardContents::to_spectrum`].
 //! Units are SI (Pa, s, temperatures in °C as in the shift law); each card says so in a comment.
 //!
@@ -23,11 +24,24 @@
 //!   `TB,SHIFT,mat,1,3,WLF` + `TBDATA,1,T_ref,C1,C2`. Checked against: a real card written by ANSYS 2020 R1
 //!   (`data/pyvisco-ems-ca/ansys_prony_terms_freq_user_master.MPL`: `TB,PRON,_MATL,1,27,SHEA`,
 //!   `TBDATA,1,a1,t1,a2,t2,a3,t3`, `TBDATA,4,…`) and the ANSYS 18.2 command reference page of `TBDATA`
-//!   (STLOC + up to six constants). The TB,SHIFT WLF constant order (T_ref, C1, C2, with
-//!   log10 A = C1(T−T_ref)/(C2+T−T_ref) for the factor dividing times, i.e. the same C1, C2 as ours) is
-//!   from the ANSYS Material Reference as we remember it; we could not retrieve that page here (nor
-//!   an ANSYS-written TB,SHIFT): check it before relying on the shift card. The TB,PRONY layout is
-//!   compared with ANSYS's own card by an independent parser in `tests/cards_vendor.rs`.
+//!   (STLOC + up to six constants). TB,SHIFT's fields are checked against the TB command reference
+//!   Ansys ships in PyMAPDL (`ansys/pymapdl`, `_commands/prep7/materials.py`, `tb`, Mechanical APDL
+//!   2023 R2 text: Lab = SHIFT "allows one temperature"; NPTS = 3 for TBOPT = WLF, 2 for TBOPT = TN;
+//!   TBOPT WLF, TN, FICT, PLIN, USER). Not checked against ANSYS (its Material Reference page
+//!   `ans_mat/evis.html` and any ANSYS-written TB,SHIFT card could not be retrieved here): the
+//!   order of the constants (T_r, C1, C2 for WLF; T_r, H/R for TN) and the forms
+//!   log10 A = C1(T−T_r)/(C2+T−T_r) and A = exp[(H/R)(1/T_r − 1/T)] for the factor A that divides
+//!   relaxation times (τ(T) = τ(T_r)/A, so A = 1/a_T and ANSYS's C1, C2 are ours). WELSIM's manual,
+//!   which follows the ANSYS conventions, states the same WLF form and τ(T) = τ(T_r)/A. An
+//!   Arrhenius law goes in as TN without fictive temperature (H = E_a), in absolute temperatures:
+//!   the card says to set TOFFST,273.15 for a °C model. The TB,PRONY layout is compared with
+//!   ANSYS's own card by an independent parser in `tests/cards_vendor.rs`.
+//! - **Abaqus Arrhenius**: `*TRS, DEFINITION=ARRHENIUS` with one data line θ₀, E₀ (Keywords
+//!   Reference v2016 `*TRS`: "you need to specify the universal gas constant and absolute zero using
+//!   the *PHYSICAL CONSTANTS option"; the form ln A = (E₀/R)(1/(θ−θ_Z) − 1/(θ₀−θ_Z)) from the
+//!   Abaqus/3DEXPERIENCE materials guide "Thermorheologically simple temperature effects").
+//!   *PHYSICAL CONSTANTS is model data (once per model), so the card states it in a comment and
+//!   [`card`] returns it as a note.
 //! - **LS-DYNA** `*MAT_GENERAL_VISCOELASTIC` (MAT_076): card 1 `MID, RO, BULK, PCF, EF, TREF, A, B`,
 //!   card 2 (`LCID, NT, BSTART, TRAMP, LCIDK, NTK, BSTARTK, TRAMPK`) left blank because the Prony terms are
 //!   given directly, then one card `GI, BETAI, KI, BETAKI` per term with *absolute shear* moduli Gᵢ and
@@ -42,13 +56,15 @@
 //!   TRAMP, LCIDK, NTK, BSTARTK, TRAMPK; cards 3+ GI, BETAI, KI, BETAKI at columns 1, 11, 21, 31;
 //!   "TREF: reference temperature for shift function (must be greater than zero)"; A: coefficient of
 //!   the Arrhenius and WLF shift, B: of the WLF shift). Until this check TREF was written in °C,
-//!   which LS-DYNA refuses at or below 0 °C (e.g. EMS-CA's −5 °C). The WLF sign convention of A, B
-//!   was not in that source.
+//!   which LS-DYNA refuses at or below 0 °C (e.g. EMS-CA's −5 °C). The WLF sign convention and log
+//!   base of A, B were not in that source, nor the form of the Arrhenius shift, so an Arrhenius law
+//!   is refused for LS-DYNA ([`LSDYNA_NO_ARRHENIUS`]; [`card`] writes the card without it and says
+//!   so).
 //!
 //! Readers: our own three formats (round trips) and ANSYS `TB,PRON`/`TB,PRONY` cards written by ANSYS
 //! itself (abbreviated keywords, `_MATL` placeholders, `TBFIELD`/`TBIN` lines ignored).
 
-use crate::material::ZERO_CELSIUS_K;
+use crate::material::{GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
 use crate::{ModulusKind, ShiftLaw};
 use serde::{Deserialize, Serialize};
@@ -60,13 +76,24 @@ pub enum CardError {
     /// The spectrum cannot be written (e.g. E₀ ≤ 0).
     #[error("cannot write the card: {0}")]
     Unwritable(String),
-    /// The shift law is not WLF (the only one the cards carry).
-    #[error("the {format} card carries a WLF shift only; the shift law given is {law}")]
+    /// The shift law is a table (the cards carry WLF or Arrhenius laws only).
+    #[error(
+        "the {format} card carries a WLF or Arrhenius shift only; the shift law given is {law}"
+    )]
     ShiftNotWlf {
         /// Card format.
         format: &'static str,
         /// The law found.
         law: &'static str,
+    },
+    /// The target code has no documented form for the shift law given (the card without a shift can
+    /// still be written: [`card`] does so and says why).
+    #[error("the {format} card cannot carry this shift law: {why}")]
+    ShiftUnsupported {
+        /// Card format.
+        format: &'static str,
+        /// Why.
+        why: String,
     },
     /// A line of a card could not be parsed.
     #[error("line {line}: {message}")]
@@ -184,17 +211,25 @@ fn fixed_width(x: f64, width: usize) -> String {
     format!("{:>width$}", format!("{x:.0e}"))
 }
 
-fn wlf_of(
-    law: Option<&ShiftLaw>,
-    format: &'static str,
-) -> Result<Option<(f64, f64, f64)>, CardError> {
+/// The shift law as a card writes it.
+enum CardLaw {
+    /// (T_ref °C, C1, C2 K).
+    Wlf(f64, f64, f64),
+    /// (T_ref °C, E_a J/mol).
+    Arrhenius(f64, f64),
+}
+
+fn shift_of(law: Option<&ShiftLaw>, format: &'static str) -> Result<Option<CardLaw>, CardError> {
     match law {
         None => Ok(None),
-        Some(ShiftLaw::Wlf { t_ref_c, c1, c2_k }) => Ok(Some((*t_ref_c, *c1, *c2_k))),
-        Some(ShiftLaw::Arrhenius { .. }) => Err(CardError::ShiftNotWlf {
-            format,
-            law: "Arrhenius",
-        }),
+        Some(ShiftLaw::Wlf { t_ref_c, c1, c2_k }) => Ok(Some(CardLaw::Wlf(*t_ref_c, *c1, *c2_k))),
+        Some(ShiftLaw::Arrhenius {
+            t_ref_c,
+            activation_energy_j_per_mol,
+        }) => Ok(Some(CardLaw::Arrhenius(
+            *t_ref_c,
+            *activation_energy_j_per_mol,
+        ))),
         Some(ShiftLaw::Table { .. }) => Err(CardError::ShiftNotWlf {
             format,
             law: "a table",
@@ -233,7 +268,7 @@ pub fn abaqus(
     options: &CardOptions,
 ) -> Result<String, CardError> {
     let e0 = checked(spectrum)?;
-    let wlf = wlf_of(shift, "Abaqus")?;
+    let law = shift_of(shift, "Abaqus")?;
     let mut s = String::new();
     s.push_str(&provenance("**", spectrum, e0));
     s.push_str(
@@ -254,9 +289,22 @@ pub fn abaqus(
         };
         s.push_str(&format!("{}, {}, {}\n", sci(g), sci(k), sci(t.tau_s)));
     }
-    if let Some((t_ref, c1, c2)) = wlf {
-        s.push_str("*TRS, DEFINITION=WLF\n");
-        s.push_str(&format!("{}, {}, {}\n", sci(t_ref), sci(c1), sci(c2)));
+    match law {
+        Some(CardLaw::Wlf(t_ref, c1, c2)) => {
+            s.push_str("*TRS, DEFINITION=WLF\n");
+            s.push_str(&format!("{}, {}, {}\n", sci(t_ref), sci(c1), sci(c2)));
+        }
+        Some(CardLaw::Arrhenius(t_ref, ea)) => {
+            // ln A = (E0/R)(1/(θ − θ_Z) − 1/(θ0 − θ_Z)); R and θ_Z come from *PHYSICAL CONSTANTS,
+            // which is model data (one per model), so it is stated here, not written.
+            s.push_str(&format!(
+                "** *TRS ARRHENIUS needs in the model: *PHYSICAL CONSTANTS, ABSOLUTE ZERO={}, UNIVERSAL GAS CONSTANT={}\n",
+                -ZERO_CELSIUS_K, GAS_CONSTANT_J_PER_MOL_K
+            ));
+            s.push_str("*TRS, DEFINITION=ARRHENIUS\n");
+            s.push_str(&format!("{}, {}\n", sci(t_ref), sci(ea)));
+        }
+        None => {}
     }
     Ok(s)
 }
@@ -268,7 +316,7 @@ pub fn ansys(
     options: &CardOptions,
 ) -> Result<String, CardError> {
     let e0 = checked(spectrum)?;
-    let wlf = wlf_of(shift, "ANSYS")?;
+    let law = shift_of(shift, "ANSYS")?;
     let m = options.material_id;
     let mut s = String::new();
     s.push_str(&provenance("!", spectrum, e0));
@@ -289,14 +337,29 @@ pub fn ansys(
         let vals: Vec<String> = chunk.iter().map(|&v| sci(v)).collect();
         s.push_str(&format!("TBDATA,{},{}\n", 6 * c + 1, vals.join(",")));
     }
-    if let Some((t_ref, c1, c2)) = wlf {
-        s.push_str(&format!("TB,SHIFT,{m},1,3,WLF\n"));
-        s.push_str(&format!(
-            "TBDATA,1,{},{},{}\n",
-            sci(t_ref),
-            sci(c1),
-            sci(c2)
-        ));
+    match law {
+        Some(CardLaw::Wlf(t_ref, c1, c2)) => {
+            s.push_str(&format!("TB,SHIFT,{m},1,3,WLF\n"));
+            s.push_str(&format!(
+                "TBDATA,1,{},{},{}\n",
+                sci(t_ref),
+                sci(c1),
+                sci(c2)
+            ));
+        }
+        Some(CardLaw::Arrhenius(t_ref, ea)) => {
+            // Tool–Narayanaswamy without fictive temperature: A = exp[(H/R)(1/T_r − 1/T)] in
+            // absolute temperatures, constants T_r and H/R; with E_a = H this is our Arrhenius law
+            // (A = 1/a_T).
+            s.push_str("! Tool-Narayanaswamy shift (Arrhenius): absolute temperatures, so with degC use TOFFST,273.15\n");
+            s.push_str(&format!("TB,SHIFT,{m},1,2,TN\n"));
+            s.push_str(&format!(
+                "TBDATA,1,{},{}\n",
+                sci(t_ref),
+                sci(ea / GAS_CONSTANT_J_PER_MOL_K)
+            ));
+        }
+        None => {}
     }
     Ok(s)
 }
@@ -311,7 +374,16 @@ pub fn lsdyna(
     options: &CardOptions,
 ) -> Result<String, CardError> {
     let e0 = checked(spectrum)?;
-    let wlf = wlf_of(shift, "LS-DYNA")?;
+    let wlf = match shift_of(shift, "LS-DYNA")? {
+        None => None,
+        Some(CardLaw::Wlf(t, c1, c2)) => Some((t, c1, c2)),
+        Some(CardLaw::Arrhenius(..)) => {
+            return Err(CardError::ShiftUnsupported {
+                format: "LS-DYNA",
+                why: LSDYNA_NO_ARRHENIUS.into(),
+            })
+        }
+    };
     let g = spectrum.to_kind(ModulusKind::Shear);
     let n = g.terms.len() + usize::from(g.modulus_inf_pa > 0.0);
     if n > LSDYNA_MAX_TERMS {
@@ -362,6 +434,73 @@ pub fn lsdyna(
     Ok(s)
 }
 
+/// Why the LS-DYNA card carries no Arrhenius shift.
+pub const LSDYNA_NO_ARRHENIUS: &str = "*MAT_GENERAL_VISCOELASTIC's A is the coefficient of \
+its Arrhenius and its WLF shift (keyword definition in PyDyna), but the form of its Arrhenius shift (log \
+base, sign, units of A) is in no source we could check, and it takes no tabulated shift (its only load curve, \
+LCID, is a relaxation curve to fit, not a shift): give the shift in the deck";
+
+/// The three card formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CardTarget {
+    /// [`abaqus`].
+    Abaqus,
+    /// [`ansys`].
+    Ansys,
+    /// [`lsdyna`].
+    Lsdyna,
+}
+
+impl CardTarget {
+    /// The name used in messages.
+    pub fn name(self) -> &'static str {
+        match self {
+            CardTarget::Abaqus => "Abaqus",
+            CardTarget::Ansys => "ANSYS",
+            CardTarget::Lsdyna => "LS-DYNA",
+        }
+    }
+}
+
+/// The card for `target` with the shift law it can carry, and the warnings that go with it: a law
+/// the target has no documented form for is left out (the card without it is written) and said so;
+/// an Arrhenius law says what else the model needs (Abaqus *PHYSICAL CONSTANTS, ANSYS TOFFST).
+pub fn card(
+    target: CardTarget,
+    spectrum: &RelaxationSpectrum,
+    shift: Option<&ShiftLaw>,
+    options: &CardOptions,
+) -> Result<(String, Vec<String>), CardError> {
+    let write = |law: Option<&ShiftLaw>| match target {
+        CardTarget::Abaqus => abaqus(spectrum, law, options),
+        CardTarget::Ansys => ansys(spectrum, law, options),
+        CardTarget::Lsdyna => lsdyna(spectrum, law, options),
+    };
+    let mut notes = vec![];
+    match write(shift) {
+        Ok(text) => {
+            if let Some(ShiftLaw::Arrhenius { .. }) = shift {
+                notes.push(match target {
+                    CardTarget::Abaqus => format!(
+                        "the Abaqus card's *TRS, DEFINITION=ARRHENIUS needs *PHYSICAL CONSTANTS, ABSOLUTE ZERO={}, UNIVERSAL GAS CONSTANT={} in the model",
+                        -ZERO_CELSIUS_K, GAS_CONSTANT_J_PER_MOL_K
+                    ),
+                    _ => "the ANSYS card's shift is TB,SHIFT Tool-Narayanaswamy (TN: T_r, H/R = E_a/R), in absolute temperatures: with degC in the model, set TOFFST,273.15".into(),
+                });
+            }
+            Ok((text, notes))
+        }
+        Err(e @ (CardError::ShiftUnsupported { .. } | CardError::ShiftNotWlf { .. })) => {
+            notes.push(format!(
+                "WARNING: no shift in the {} card: {e}",
+                target.name()
+            ));
+            Ok((write(None)?, notes))
+        }
+        Err(e) => Err(e),
+    }
+}
+
 fn parse_f64(tok: &str, line: usize) -> Result<f64, CardError> {
     let t = tok.trim();
     if t.is_empty() {
@@ -408,6 +547,7 @@ pub fn read_abaqus(text: &str) -> Result<CardContents, CardError> {
         None,
         Prony,
         Wlf,
+        Arrhenius,
     }
     let mut block = Block::None;
     let mut found = false;
@@ -429,6 +569,8 @@ pub fn read_abaqus(text: &str) -> Result<CardContents, CardError> {
                 && (!up.contains("DEFINITION=") || up.contains("DEFINITION=WLF"))
             {
                 Block::Wlf
+            } else if up.starts_with("*TRS") && up.contains("DEFINITION=ARRHENIUS") {
+                Block::Arrhenius
             } else {
                 Block::None
             };
@@ -462,6 +604,19 @@ pub fn read_abaqus(text: &str) -> Result<CardContents, CardError> {
                 });
                 block = Block::None;
             }
+            Block::Arrhenius => {
+                if v.len() < 2 {
+                    return Err(CardError::Parse {
+                        line: i + 1,
+                        message: "expected theta_0, E_0".into(),
+                    });
+                }
+                c.shift = Some(ShiftLaw::Arrhenius {
+                    t_ref_c: v[0],
+                    activation_energy_j_per_mol: v[1],
+                });
+                block = Block::None;
+            }
             Block::None => {}
         }
     }
@@ -480,10 +635,12 @@ pub fn read_ansys(text: &str) -> Result<CardContents, CardError> {
         None,
         PronyShear,
         Wlf,
+        Tn,
     }
     let mut table = Table::None;
     let mut prony: Vec<f64> = vec![];
     let mut wlf: Vec<f64> = vec![];
+    let mut shift_kind = Table::None;
     let mut found = false;
     for (i, raw) in text.lines().enumerate() {
         let line = raw.trim();
@@ -506,15 +663,23 @@ pub fn read_ansys(text: &str) -> Result<CardContents, CardError> {
                 .get(5)
                 .map(|s| s.to_ascii_uppercase())
                 .unwrap_or_default();
-            table = if lab.starts_with("PRON") && (opt.is_empty() || opt.starts_with("SHEA")) {
+            let t = if lab.starts_with("PRON") && (opt.is_empty() || opt.starts_with("SHEA")) {
                 found = true;
                 prony.clear();
                 Table::PronyShear
             } else if lab.starts_with("SHIF") && opt.starts_with("WLF") {
+                wlf.clear();
                 Table::Wlf
+            } else if lab.starts_with("SHIF") && opt == "TN" {
+                wlf.clear();
+                Table::Tn
             } else {
                 Table::None
             };
+            if matches!(t, Table::Wlf | Table::Tn) {
+                shift_kind = t;
+            }
+            table = t;
         } else if cmd.starts_with("TBDA") {
             let start = parse_f64(fields.get(1).copied().unwrap_or("1"), i + 1)? as usize;
             if start == 0 {
@@ -525,7 +690,7 @@ pub fn read_ansys(text: &str) -> Result<CardContents, CardError> {
             }
             let target = match table {
                 Table::PronyShear => &mut prony,
-                Table::Wlf => &mut wlf,
+                Table::Wlf | Table::Tn => &mut wlf,
                 Table::None => continue,
             };
             for (k, tok) in fields.iter().skip(2).enumerate() {
@@ -544,11 +709,17 @@ pub fn read_ansys(text: &str) -> Result<CardContents, CardError> {
         prony.push(0.0);
     }
     c.terms = prony.chunks(2).map(|p| (p[0], p[1])).collect();
-    if wlf.len() >= 3 {
+    // The last TB,SHIFT table read decides the law.
+    if shift_kind == Table::Wlf && wlf.len() >= 3 {
         c.shift = Some(ShiftLaw::Wlf {
             t_ref_c: wlf[0],
             c1: wlf[1],
             c2_k: wlf[2],
+        });
+    } else if shift_kind == Table::Tn && wlf.len() >= 2 {
+        c.shift = Some(ShiftLaw::Arrhenius {
+            t_ref_c: wlf[0],
+            activation_energy_j_per_mol: wlf[1] * GAS_CONSTANT_J_PER_MOL_K,
         });
     }
     Ok(c)

@@ -3,8 +3,8 @@
 //! FEA cards. Each takes the fit (and what else it shows) and returns HTML text.
 
 use super::tan_delta::{tan_delta_at, tan_delta_peak};
-use crate::report::cards;
 use crate::report::html::esc;
+use crate::report::{card_shift, cards};
 use crate::results::{CompoundFit, FrictionPoint, SceneSpec};
 use crate::ShiftLaw;
 use std::fmt::Write as _;
@@ -288,26 +288,35 @@ pub fn creep(fit: &CompoundFit) -> String {
     h
 }
 
-/// Abaqus, ANSYS and LS-DYNA cards with the WLF law when there is one (a card that cannot be
-/// written says why).
+/// Abaqus, ANSYS and LS-DYNA cards with the shift law each can carry (`card_shift`: WLF where it
+/// holds, else Arrhenius; a card that cannot be written says why), with the warnings about the law.
 pub fn fea_cards(fit: &CompoundFit) -> String {
-    let wlf = fit
-        .tts
-        .as_ref()
-        .and_then(|t| t.wlf.as_ref())
-        .or(match fit.shift_law {
-            ShiftLaw::Wlf { .. } => Some(&fit.shift_law),
-            _ => None,
-        });
+    let shifts = fit.tts.as_ref().map(|t| t.shifts.as_slice()).unwrap_or(&[]);
+    let chosen = card_shift::card_shift(shifts, &fit.shift_law);
     let opts = cards::CardOptions::default();
     let mut h = String::new();
-    for (name, text) in [
-        ("Abaqus", cards::abaqus(&fit.relaxation, wlf, &opts)),
-        ("ANSYS", cards::ansys(&fit.relaxation, wlf, &opts)),
-        ("LS-DYNA", cards::lsdyna(&fit.relaxation, wlf, &opts)),
+    let note = |h: &mut String, n: &str| {
+        let class = if n.starts_with("WARNING") {
+            "warn"
+        } else {
+            "l"
+        };
+        let _ = write!(h, "<p class=\"{class}\">{}</p>", esc(n));
+    };
+    for n in &chosen.notes {
+        note(&mut h, &format!("FEA cards' shift: {n}"));
+    }
+    for target in [
+        cards::CardTarget::Abaqus,
+        cards::CardTarget::Ansys,
+        cards::CardTarget::Lsdyna,
     ] {
-        match text {
-            Ok(t) => {
+        let name = target.name();
+        match cards::card(target, &fit.relaxation, chosen.law.as_ref(), &opts) {
+            Ok((t, notes)) => {
+                for n in &notes {
+                    note(&mut h, &format!("{name} card: {n}"));
+                }
                 let _ = write!(
                     h,
                     "<details><summary>{name} card</summary><pre>{}</pre></details>",
