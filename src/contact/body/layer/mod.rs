@@ -15,6 +15,7 @@ pub mod collocation;
 pub mod compliance;
 pub mod kernel;
 pub mod roll_cover;
+pub mod spectral;
 pub mod winkler;
 
 pub use collocation::{LayerAnswer, LayerSettings};

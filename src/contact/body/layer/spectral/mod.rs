@@ -1,0 +1,11 @@
+//! A spectrally convergent solver of the bonded viscoelastic layer at given λ and at given load
+//! (issue 14, "Numbers to reach").
+//!
+//! (Module doc: see the end of this work; draft.)
+
+pub mod at_lambda;
+pub mod layer_term;
+pub mod volterra;
+
+#[cfg(test)]
+mod tests;
