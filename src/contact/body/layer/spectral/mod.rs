@@ -4,6 +4,7 @@
 //! (Module doc: see the end of this work; draft.)
 
 pub mod at_lambda;
+pub mod at_load;
 pub mod layer_term;
 pub mod volterra;
 

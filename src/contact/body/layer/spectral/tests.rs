@@ -97,3 +97,39 @@ fn viscoelastic_layer_against_the_hat_scheme() {
         }
     }
 }
+
+#[test]
+fn at_load_against_the_hat_scheme() {
+    use super::at_load::{solve_spectral_at_load, SpectralSettings};
+    use crate::contact::body::layer::{collocation, LayerKernel, LayerSettings};
+    let terms = vec![CreepTerm { f: 3.0, b: 0.5 }, CreepTerm { f: 20.0, b: 4.0 }];
+    let (load, h, nu) = (0.1, 0.3, 0.3);
+    let k = LayerKernel::new(&terms, h, nu).unwrap();
+    let hat = collocation::solve_layer_at_load(
+        &k,
+        load,
+        &LayerSettings {
+            tol: 1e-5,
+            n_max: 1024,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    for tol in [1e-4, 1e-6, 1e-8] {
+        let s = solve_spectral_at_load(&terms, load, h, nu, &SpectralSettings { tol, p_max: 96 })
+            .unwrap()
+            .unwrap();
+        eprintln!(
+            "tol {tol}: λ {} F {} est {:.1e} iters {} p {} warn {:?} | hat λ {} F {} est {:.1e}",
+            s.solution.lambda,
+            s.solution.friction_rho,
+            s.error_estimate,
+            s.solution.iterations,
+            s.solution.n,
+            s.warnings,
+            hat.solution.lambda,
+            hat.solution.friction_rho,
+            hat.error_estimate
+        );
+    }
+}
