@@ -64,6 +64,12 @@ pub struct LayerSettings {
     pub n_max: usize,
     /// Load loop settings.
     pub load: LoadSettings,
+    /// Solve by the spectral solver ([`super::spectral`]) first, this hat scheme only where the
+    /// cover is too thin for it (default true; `layer_at_load`).
+    pub spectral: bool,
+    /// Largest degree of the spectral solver's layer term (default 48; module doc of
+    /// [`super::spectral`]: the switch to this scheme).
+    pub p_max: usize,
 }
 
 impl Default for LayerSettings {
@@ -73,6 +79,8 @@ impl Default for LayerSettings {
             n_start: 32,
             n_max: 1024,
             load: LoadSettings::default(),
+            spectral: true,
+            p_max: 48,
         }
     }
 }

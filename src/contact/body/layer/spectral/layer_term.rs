@@ -22,10 +22,11 @@
 //! # Quadrature
 //! κ ∈ [κ_lo, 1]: 8-point Gauss–Legendre panels of width 1 in ln κ (the poles of Φ(κ/L) at
 //! κ = −ic_i lie π/2 off the real axis in ln κ: ellipse parameter ≥ 6, error ≲ 6^{−16}); below
-//! κ_lo = 1e−8·min(c_min, 1) the integrand is O(κ) and negligible. κ ∈ [1, κ_hi], κ_hi = 27L/h′
-//! (R < 1e−20 beyond): 12-point panels of width ≤ 1 (at most two radians of e^{iκ(t±1)}, and
-//! J_{k+1} oscillates slower). Only orders k + 1 ≤ κ_hi + 12κ_hi^{1/3} + 30 carry weight
-//! (J_n(κ) < 1e−20 beyond for κ ≤ κ_hi). J_n by Miller's backward recurrence normalised by
+//! κ_lo = 1e−8·min(c_min, 1) the integrand is O(κ) and negligible. κ ∈ [1, κ_hi], κ_hi = 20L/h′
+//! (R < 2e−15 beyond, T_MAX): 16-point panels of width ≤ 4 (at most eight radians of e^{iκ(t±1)},
+//! J_{k+1} oscillates slower; the Gauss error for e^{iωx} with ω = 4 on 16 nodes is ~(eω/64)^{32}
+//! < 1e−20). At a node κ only orders k + 1 ≤ κ + 12κ^{1/3} + 30 carry weight (J_n(κ) < 1e−20
+//! beyond), which keeps the log region cheap. J_n by Miller's backward recurrence normalised by
 //! J₀ + 2ΣJ₂ₖ = 1 (A&S 9.1.46, 9.12).
 
 use crate::contact::body::half_space::modes::Modes;
@@ -34,8 +35,8 @@ use crate::special::chebyshev::lobatto_coefficients;
 use crate::special::gauss_legendre::gauss_legendre;
 use std::f64::consts::PI;
 
-/// R(t) < 1e−20 beyond t = κh′/L = 27.
-const T_MAX: f64 = 27.0;
+/// R(t) < 2e−15 beyond t = κh′/L = 20 ((4t²/κ)e^{−2t}, module doc of `compliance`).
+const T_MAX: f64 = 20.0;
 
 /// J₀…J_nmax at x > 0 (Miller's backward recurrence, normalised by J₀ + 2ΣJ₂ₖ = 1).
 pub fn bessel_j(x: f64, nmax: usize) -> Vec<f64> {
@@ -91,8 +92,8 @@ fn nodes(c_min: f64, kappa_hi: f64, thickness_over_l: f64, nu: f64) -> Vec<(f64,
         }
     }
     if kappa_hi > k_mid {
-        let (gx, gw) = gauss_legendre(12);
-        let np = (kappa_hi - k_mid).ceil().max(1.0) as usize;
+        let (gx, gw) = gauss_legendre(16);
+        let np = ((kappa_hi - k_mid) / 4.0).ceil().max(1.0) as usize;
         for p in 0..np {
             let a = k_mid + (kappa_hi - k_mid) * p as f64 / np as f64;
             let b = k_mid + (kappa_hi - k_mid) * (p + 1) as f64 / np as f64;
@@ -128,9 +129,11 @@ impl LayerTerm {
                 pr += f * b / d;
                 pi += f * kk / d;
             }
-            let j = bessel_j(kappa, orders);
+            // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there)
+            let used = orders_needed(kappa).min(orders);
+            let j = bessel_j(kappa, used);
             // (k+1)(−i)^k J_{k+1}: (−i)^k = 1, −i, −1, i
-            for k in 0..orders {
+            for k in 0..used {
                 let v = (k + 1) as f64 * j[k + 1];
                 let (r, i) = match k % 4 {
                     0 => (v, 0.0),
@@ -147,8 +150,8 @@ impl LayerTerm {
                 let ww = PI * w;
                 // Im[(re + i·im)(c + i·s)] = re·s + im·c
                 let (a, b) = (ww * s, ww * c);
-                for k in 0..orders {
-                    row[k] += je_re[k] * a + je_im[k] * b;
+                for ((r, jr), ji) in row[..used].iter_mut().zip(&je_re).zip(&je_im) {
+                    *r += jr * a + ji * b;
                 }
             }
         }

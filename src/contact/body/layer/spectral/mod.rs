@@ -8,5 +8,7 @@ pub mod at_load;
 pub mod layer_term;
 pub mod volterra;
 
+pub use at_load::{solve_spectral_at_load, SpectralSettings};
+
 #[cfg(test)]
 mod tests;

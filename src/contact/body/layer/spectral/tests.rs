@@ -133,3 +133,107 @@ fn at_load_against_the_hat_scheme() {
         );
     }
 }
+
+#[test]
+#[ignore]
+fn scratch_timing() {
+    use super::at_load::{solve_spectral_at_load, SpectralSettings};
+    let spectrum = |n: usize, decades: f64, ratio: f64| -> Vec<CreepTerm> {
+        (0..n)
+            .map(|k| {
+                let b = 10f64.powf(-decades / 2.0 + decades * k as f64 / (n - 1) as f64);
+                let r = (ratio - 1.0) / n as f64;
+                CreepTerm { f: r * b, b }
+            })
+            .collect()
+    };
+    let terms = spectrum(30, 24.0, 1e3);
+    let hs =
+        crate::contact::half_space::auto::solve_auto_at_load(&terms, 0.25, &Default::default())
+            .unwrap();
+    for hr in [0.1, 0.3, 1.0, 3.0] {
+        let h = hr * hs.lambda;
+        for tol in [1e-3, 1e-4, 1e-6] {
+            let t0 = std::time::Instant::now();
+            let mut s = None;
+            for _ in 0..5 {
+                s = Some(
+                    solve_spectral_at_load(
+                        &terms,
+                        0.25,
+                        h,
+                        0.5,
+                        &SpectralSettings { tol, p_max: 96 },
+                    )
+                    .unwrap(),
+                );
+            }
+            let dt = t0.elapsed().as_secs_f64() / 5.0;
+            match s.unwrap() {
+                Some(a) => eprintln!(
+                    "h/λ {hr} tol {tol}: {:.2} ms λ {} F {} est {:.1e} it {} p {} {:?}",
+                    dt * 1e3,
+                    a.solution.lambda,
+                    a.solution.friction_rho,
+                    a.error_estimate,
+                    a.solution.iterations,
+                    a.solution.n,
+                    a.warnings
+                ),
+                None => eprintln!("h/λ {hr} tol {tol}: too thin"),
+            }
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn scratch_profile() {
+    use super::layer_term::LayerTerm;
+    use crate::contact::body::half_space::auto::reduction::{model_gains, select};
+    let terms: Vec<CreepTerm> = (0..30)
+        .map(|k| {
+            let b = 10f64.powf(-12.0 + 24.0 * k as f64 / 29.0);
+            CreepTerm {
+                f: 999.0 / 30.0 * b,
+                b,
+            }
+        })
+        .collect();
+    let lambda = 20.9;
+    for tol in [1e-3, 1e-6] {
+        let red = select(
+            &terms,
+            lambda,
+            0.3 * tol * 0.015,
+            0.3 * tol,
+            model_gains(&terms, lambda),
+        );
+        eprintln!(
+            "kept {} lumped {} dropped {} mu_max {}",
+            red.kept.len(),
+            red.lumped.len(),
+            red.dropped.len(),
+            (0..red.modes.len())
+                .map(|j| red.modes.kappa(j) * lambda / 2.0)
+                .fold(0.0, f64::max)
+        );
+        for p in [8, 16, 32] {
+            let t0 = std::time::Instant::now();
+            for _ in 0..10 {
+                let _ = solve_at_lambda(&red.modes, lambda, lambda, 0.5, p, 0.4);
+            }
+            let t1 = t0.elapsed().as_secs_f64() / 10.0;
+            let t0 = std::time::Instant::now();
+            for _ in 0..10 {
+                let _ = LayerTerm::new(&red.modes, lambda / 2.0, lambda, 0.5, p);
+            }
+            let t2 = t0.elapsed().as_secs_f64() / 10.0;
+            eprintln!(
+                "tol {tol} p {p}: solve {:.2} ms, layer term {:.2} ms",
+                t1 * 1e3,
+                t2 * 1e3
+            );
+        }
+    }
+}
