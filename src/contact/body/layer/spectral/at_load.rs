@@ -185,13 +185,10 @@ pub fn solve_spectral_at_load(
             .map(|&i| lump_weight(&terms[i], 1.0))
             .sum()
     };
-    // the loop's load error enters λ through d ln N′/d ln λ ≥ ½: 0.03·tol on N′ is ≤ 0.06·tol on λ
-    let load_settings = LoadSettings {
-        rel_tol: 0.03 * tol,
-        lambda_rel_tol: 0.03 * tol,
-        accept_tol: 0.05 * tol,
-        ..LoadSettings::default()
-    };
+    // the fine loop to the load loop's default 1e−10 (Brent converges superlinearly: one or two
+    // solves more than 0.03·tol would cost, and the answer is a smooth function of the input; a
+    // looser stop made λ jump by ~1e−7 between inputs 1e−15 apart)
+    let load_settings = LoadSettings::default();
     // one load loop at a fixed reduction, gains and degree, started near `near` (or cold)
     let solve_loop = |red: &Reduction,
                       g: (f64, f64, f64),
@@ -292,7 +289,7 @@ pub fn solve_spectral_at_load(
         let e_red_fr = (l_fr + s_fr) * lambda / fr.abs().max(1e-300) + e_gain_fr;
         let e_red_ld = l_ld + s_ld + e_gain_ld;
         let amp = 1.0 + 2.0 * amp;
-        let e_lambda = amp * e_p_ld + 2.0 * e_red_ld + 0.1 * tol;
+        let e_lambda = amp * e_p_ld + 2.0 * e_red_ld + 1e-8;
         let e_fr = amp * e_p_fr + e_red_fr + 2.0 * e_lambda;
         let est = e_fr.max(e_lambda);
         let next = select(
