@@ -15,8 +15,9 @@
 //!
 //! 4. the spectral layer solver alone (the layer body's default, `layer::spectral`) at tol 1e−6 over
 //!    the same random spectra, covers and ν: every answer it gives (it declines covers too thin for
-//!    its degree cap; those are counted) is finite, says when it misses tol, and differs from its own
-//!    refinement at tol 1e−9 by at most its estimate plus the refinement's ([`spectral_run`]).
+//!    its degree cap; those, and refinements it declines, are counted) is finite, says when it
+//!    misses tol, and differs from its own refinement at tol 1e−9 by at most its estimate plus the
+//!    refinement's ([`spectral_run`]).
 //!
 //! The seed comes from `VISCOROLL_SEED` (tests/seed.rs). CI runs [`CI_CASES`]; the larger sweep is
 //! `#[ignore]`d: `cargo test --release --test tests layer_props::sweep -- --ignored --nocapture`.
@@ -223,7 +224,12 @@ fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
             "{label}: unflagged {}",
             a.error_estimate
         );
-        let r = solve(1e-9).expect("a finer tolerance on the same cover");
+        let Some(r) = solve(1e-9) else {
+            // the refinement needs a degree above the cap (p grows like log(1/tol)·λ/h)
+            println!("{label}: refinement declined (cover too thin for p ≤ 48 at 1e−9)");
+            declined += 1;
+            continue;
+        };
         let allowed = a.error_estimate + r.error_estimate;
         let ef = rel(s.friction_rho, r.solution.friction_rho);
         let el = rel(s.lambda, r.solution.lambda);
