@@ -44,9 +44,9 @@ pub fn solve_at_lambda(
     let cm = |i: usize, j: usize| l * modes.b_minus_kappa(i, j); // cᵢ − μⱼ
 
     let mut cols: Vec<Column> = Vec::with_capacity(n + p + 1);
-    for j in 0..n {
+    for (j, &m) in mu.iter().enumerate() {
         cols.push(Column {
-            h: exp_coefficients(mu[j]),
+            h: exp_coefficients(m),
             eps: (0..n).map(|i| -1.0 / cm(i, j)).collect(),
         });
     }
@@ -83,8 +83,8 @@ pub fn solve_at_lambda(
                 add(&mut short[m], &pp, -wres[j]);
                 // the e^{μⱼ(t−1)} part wⱼP(1)eⱼ is left out of the column: V of it is missing
                 let beta_j = wres[j] * p1;
-                for i in 0..n {
-                    eps_poly[m][i] += beta_j / cm(i, j);
+                for (i, e) in eps_poly[m].iter_mut().enumerate() {
+                    *e += beta_j / cm(i, j);
                 }
             }
         }

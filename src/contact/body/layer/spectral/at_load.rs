@@ -228,10 +228,11 @@ pub fn solve_spectral_at_load(
         0.3 * coarse_tol,
         (gf, gn),
     );
+    // N′ to 1e−4: λ to ≤ 2e−4 (d ln N′/d ln λ ≥ ½), inside the fine loop's ±0.2 % start bracket
     let coarse_settings = LoadSettings {
-        rel_tol: 1e-2 * coarse_tol,
-        lambda_rel_tol: 1e-2 * coarse_tol,
-        accept_tol: 0.1 * coarse_tol,
+        rel_tol: 1e-4,
+        lambda_rel_tol: 1e-5,
+        accept_tol: 1e-4,
         ..LoadSettings::default()
     };
     let p0 = degree_for(0.5 * lam, thickness, coarse_tol).min(16);
@@ -247,9 +248,13 @@ pub fn solve_spectral_at_load(
             return Ok(None);
         }
         let wl = w_lambda(terms, &red);
-        let at_lam = solve_reduced(&red, lam, thickness, nu, p, step);
-        let (gains, amp) = calibrate(terms, &red, &at_lam, thickness, nu, p, step);
-        iterations += 2;
+        let (gains, amp) = if red.lumped.is_empty() {
+            ((gf, gn, 0.0), 0.0) // nothing lumped: the gains multiply W = 0
+        } else {
+            let at_lam = solve_reduced(&red, lam, thickness, nu, p, step);
+            iterations += 2;
+            calibrate(terms, &red, &at_lam, thickness, nu, p, step)
+        };
         // 3. the load loop near λ; 4. the degree checked against p/2 at the λ found
         let (mut sol, it) = solve_loop(&red, gains, p, Some(lam), &load_settings)?;
         iterations += it;

@@ -31,7 +31,6 @@
 
 use crate::contact::body::half_space::modes::Modes;
 use crate::contact::body::layer::compliance::layer_defect;
-use crate::special::chebyshev::lobatto_coefficients;
 use crate::special::gauss_legendre::gauss_legendre;
 use std::f64::consts::PI;
 
@@ -130,8 +129,12 @@ impl LayerTerm {
                 pi += f * kk / d;
             }
             // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there)
-            let used = orders_needed(kappa).min(orders);
+            let mut used = orders_needed(kappa).min(orders);
             let j = bessel_j(kappa, used);
+            // and for small κ far fewer: J_{k+1}(κ) ~ (κ/2)^{k+1}/(k+1)! (|J| ≤ 1 at every order)
+            while used > 1 && j[used].abs() < 1e-22 {
+                used -= 1;
+            }
             // (k+1)(−i)^k J_{k+1}: (−i)^k = 1, −i, −1, i
             for k in 0..used {
                 let v = (k + 1) as f64 * j[k + 1];
@@ -155,15 +158,25 @@ impl LayerTerm {
                 }
             }
         }
-        // Chebyshev coefficients of the interpolant, per order k
+        // Chebyshev coefficients of the interpolant (DCT-I at the Lobatto points, as
+        // `special::chebyshev::lobatto_coefficients`, with its (p+1)² cosines computed once)
+        let dct: Vec<Vec<f64>> = (0..=p)
+            .map(|m| {
+                let edge = if m == 0 || m == p { 0.5 } else { 1.0 };
+                (0..=p)
+                    .map(|i| {
+                        let w = if i == 0 || i == p { 0.5 } else { 1.0 };
+                        edge * w * 2.0 / p as f64 * (PI * (m * i) as f64 / p as f64).cos()
+                    })
+                    .collect()
+            })
+            .collect();
         let mut coef = vec![vec![0.0; orders]; p + 1];
-        let mut col = vec![0.0; p + 1];
-        for k in 0..orders {
-            for (c, row) in col.iter_mut().zip(&values) {
-                *c = row[k];
-            }
-            for (m, v) in lobatto_coefficients(&col).into_iter().enumerate() {
-                coef[m][k] = v;
+        for (crow, drow) in coef.iter_mut().zip(&dct) {
+            for (&d, vrow) in drow.iter().zip(&values) {
+                for (c, v) in crow.iter_mut().zip(vrow) {
+                    *c += d * v;
+                }
             }
         }
         LayerTerm { coef, orders }
@@ -194,5 +207,36 @@ mod tests {
         assert!((j[0] - 0.765_197_686_6).abs() < 1e-10 && (j[1] - 0.440_050_585_7).abs() < 1e-10);
         let j = bessel_j(10.0, 2);
         assert!((j[0] + 0.245_935_764_5).abs() < 1e-10 && (j[1] - 0.043_472_746_17).abs() < 1e-10);
+    }
+}
+
+#[cfg(test)]
+mod dct_tests {
+    use super::*;
+    use crate::special::chebyshev::lobatto_coefficients;
+
+    #[test]
+    fn layer_term_interpolant_matches_the_shared_dct() {
+        // the inlined DCT must give `lobatto_coefficients` of the same values (to rounding)
+        let m = Modes::new(&[crate::contact::CreepTerm { f: 3.0, b: 0.5 }]);
+        let lt = LayerTerm::new(&m, 0.5, 0.3, 0.3, 12);
+        // values of the interpolant of order k at the Lobatto points, back from the coefficients
+        for k in [0usize, 3, 7] {
+            let col: Vec<f64> = (0..=12)
+                .map(|i| {
+                    let t = (PI * i as f64 / 12.0).cos();
+                    let c: Vec<f64> = lt.coef.iter().map(|r| r[k]).collect();
+                    crate::special::chebyshev::clenshaw(&c, t)
+                })
+                .collect();
+            let again = lobatto_coefficients(&col);
+            for (a, row) in again.iter().zip(&lt.coef) {
+                assert!(
+                    (a - row[k]).abs() < 1e-12 * (1.0 + a.abs()),
+                    "{a} vs {}",
+                    row[k]
+                );
+            }
+        }
     }
 }
