@@ -469,7 +469,7 @@ fn layer_error_estimate_is_honoured() {
 
 /// The constrained-Winkler criterion at ν = 0.49 on covers thinner than the hat scheme could resolve
 /// (issue 14 brief, milestone 5): the spectral layer at tol 1e−5 (degree cap raised to 160 for this
-/// measurement) against the constrained Winkler foundation, h/λ = 0.01…0.1, with the constant
+/// measurement) against the constrained Winkler foundation, h/λ_HS = 3e−4…0.03, with the constant
 /// C = difference·(1 − 2ν)/(h/λ) of the rule in `roll_cover` (C_WINKLER). The rule is linear in h/λ
 /// only once h/λ ≪ √(1 − 2ν) ≈ 0.14. `cargo test --release --lib criterion_nu049 -- --ignored
 /// --nocapture`.
@@ -503,7 +503,7 @@ fn criterion_nu049() {
     for (name, terms) in &cases {
         let hs = solve_auto_at_load(terms, load, &AutoSettings::default()).unwrap();
         for nu in [0.49, 0.45] {
-            for hr in [0.1, 0.06, 0.03, 0.02, 0.01] {
+            for hr in [0.03, 0.01, 3e-3, 1e-3, 3e-4] {
                 let h = hr * hs.lambda;
                 let Some(l) = solve_spectral_at_load(
                     terms,
