@@ -304,8 +304,12 @@ fn contact_cover_is_the_dimensionless_roll_cover() {
         "cover_over_contact",
     ] {
         let (a, b) = (num(&c, key), num(&r, key));
+        // the error estimate is a difference of two solves (degree p vs p/2 of the spectral layer
+        // solver), so its own relative rounding is ~1e−16/estimate ≈ 1e−11 here, amplified by the
+        // input's last digits: 1e−6 of itself
+        let tol = if key == "error_estimate" { 1e-6 } else { 1e-9 };
         assert!(
-            (a - b).abs() <= 1e-9 * b.abs(),
+            (a - b).abs() <= tol * b.abs(),
             "{key}: contact {a} vs roll {b}"
         );
     }

@@ -13,9 +13,16 @@
 //!    n = 1024 intervals resolve the cover 20 times, and the reference met 1e−4) and the answer claims
 //!    its tolerance. The other cases (thin covers on the Winkler or flagged) are counted and printed.
 //!
+//! 4. the spectral layer solver alone (the layer body's default, `layer::spectral`) at tol 1e−6 over
+//!    the same random spectra, covers and ν: every answer it gives (it declines covers too thin for
+//!    its degree cap; those, and refinements it declines, are counted) is finite, says when it
+//!    misses tol, and differs from its own refinement at tol 1e−9 by at most its estimate plus the
+//!    refinement's ([`spectral_run`]).
+//!
 //! The seed comes from `VISCOROLL_SEED` (tests/seed.rs). CI runs [`CI_CASES`]; the larger sweep is
 //! `#[ignore]`d: `cargo test --release --test tests layer_props::sweep -- --ignored --nocapture`.
 
+use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
 use viscoroll::contact::body::layer::{
     layer_at_load, solve_cover, BodyModel, LayerSettings, ModelChoice,
 };
@@ -162,6 +169,93 @@ fn run(seed: u64, cases: usize) -> (usize, usize) {
         checked += 1;
     }
     (checked, unchecked)
+}
+
+/// Property 4 of the module doc over `cases` random cases: (checked, declined as too thin).
+fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
+    let mut rng = Rng(seed ^ 0x5eed_5bec);
+    let load = 0.25;
+    let (mut checked, mut declined) = (0, 0);
+    for case in 0..cases {
+        let m = 1 + (rng.next() * 30.0) as usize;
+        let ratio = rng.log_uniform(1.5, 1e3);
+        let weights: Vec<f64> = (0..m).map(|_| rng.next() + 0.05).collect();
+        let wsum: f64 = weights.iter().sum();
+        let terms: Vec<CreepTerm> = weights
+            .iter()
+            .map(|w| {
+                let b = rng.log_uniform(1e-12, 1e12);
+                CreepTerm {
+                    f: (ratio - 1.0) * w / wsum * b,
+                    b,
+                }
+            })
+            .collect();
+        let hr = rng.log_uniform(1e-3, 1e3);
+        let nu = if rng.next() < 0.25 {
+            0.5
+        } else {
+            0.5 * rng.next()
+        };
+        let hs = solve_auto_at_load(&terms, load, &AutoSettings::default()).unwrap();
+        let h = hr * hs.lambda;
+        let label =
+            format!("spectral case {case}: {m} terms, J∞/J_g {ratio:.3e}, h/λ {hr:.3e}, ν {nu:.3}");
+        let solve = |tol: f64| {
+            solve_spectral_at_load(&terms, load, h, nu, &SpectralSettings { tol, p_max: 48 })
+                .unwrap_or_else(|e| panic!("{label}: {e}"))
+        };
+        let Some(a) = solve(1e-6) else {
+            println!("{label}: declined (cover too thin for p ≤ 48)");
+            declined += 1;
+            continue;
+        };
+        let s = &a.solution;
+        assert!(
+            s.lambda.is_finite() && s.lambda > 0.0 && s.friction_rho.is_finite(),
+            "{label}"
+        );
+        let flagged = a
+            .warnings
+            .iter()
+            .any(|w| w.contains("tolerance not reached"));
+        assert!(
+            a.error_estimate <= 1e-6 || flagged,
+            "{label}: unflagged {}",
+            a.error_estimate
+        );
+        let Some(r) = solve(1e-9) else {
+            // the refinement needs a degree above the cap (p grows like log(1/tol)·λ/h)
+            println!("{label}: refinement declined (cover too thin for p ≤ 48 at 1e−9)");
+            declined += 1;
+            continue;
+        };
+        let allowed = a.error_estimate + r.error_estimate;
+        let ef = rel(s.friction_rho, r.solution.friction_rho);
+        let el = rel(s.lambda, r.solution.lambda);
+        println!(
+            "{label}: p {}: error ρF/N {ef:.1e}, λ {el:.1e} ≤ {allowed:.1e} (estimate {:.1e}, refinement {:.1e})",
+            s.n, a.error_estimate, r.error_estimate
+        );
+        assert!(ef <= allowed && el <= allowed, "{label}");
+        checked += 1;
+    }
+    (checked, declined)
+}
+
+#[test]
+fn spectral_estimate_honoured_at_tol_1e6() {
+    let seed = crate::seed::seed("layer_props::spectral_estimate_honoured_at_tol_1e6");
+    let (checked, declined) = spectral_run(seed, CI_CASES);
+    println!("spectral: checked {checked}, declined {declined}");
+}
+
+#[test]
+#[ignore]
+fn spectral_sweep() {
+    let seed = crate::seed::seed("layer_props::spectral_sweep");
+    let (checked, declined) = spectral_run(seed, 60);
+    println!("spectral: checked {checked}, declined {declined}");
 }
 
 #[test]

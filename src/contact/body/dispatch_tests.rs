@@ -1,13 +1,13 @@
 //! The dispatch arms of [`super::solve_at_load`] and [`super::solve_at_lambda`] for the layer and
 //! Winkler bodies, against the layer functions they must call: the body's thickness in metres is
 //! divided by the scene's length scale V·T (here 2.5e−3 m, so a missing or inverted division changes
-//! h′ by a factor 6 or more), the layer's tolerance is the scene's `auto.tol` floored at
-//! `LAYER_TOL_FLOOR`, at given λ the layer uses `settings.n` intervals, and the two Winkler bodies
-//! keep their columns apart. The same inputs give bit-identical results, so equality is exact.
+//! h′ by a factor 6 or more), the layer's tolerance is the scene's `auto.tol` (the spectral solver;
+//! `layer_at_load` floors only its hat fallback), at given λ the layer uses `settings.n` intervals,
+//! and the two Winkler bodies keep their columns apart. The same inputs give bit-identical results, so equality is exact.
 
 use super::layer::{
-    collocation, layer_at_load, roll_cover::LAYER_TOL_FLOOR, winkler_at_load, LayerKernel,
-    LayerSettings, Winkler, WinklerColumns,
+    collocation, layer_at_load, winkler_at_load, LayerKernel, LayerSettings, Winkler,
+    WinklerColumns,
 };
 use super::{solve_at_lambda, solve_at_load, Body};
 use crate::contact::load::LoadSettings;
@@ -29,7 +29,7 @@ fn problem(poisson: f64) -> DimensionlessScene {
 }
 
 #[test]
-fn layer_arm_at_load_calls_the_layer_with_h_over_vt_and_the_floored_tol() {
+fn layer_arm_at_load_calls_the_layer_with_h_over_vt_and_the_scene_tol() {
     let p = problem(0.5);
     let h_m = 1.5e-3; // h′ = 0.6
     let body = Body::Layer { thickness_m: h_m };
@@ -41,14 +41,14 @@ fn layer_arm_at_load_calls_the_layer_with_h_over_vt_and_the_floored_tol() {
             h_m / LENGTH_SCALE_M,
             p.poisson,
             &LayerSettings {
-                tol: tol.max(LAYER_TOL_FLOOR),
+                tol,
                 n_max: 512,
                 ..Default::default()
             },
         )
         .unwrap();
         assert_eq!(got, want.solution, "tol {tol}");
-        assert_eq!(got.scheme, "layer");
+        assert_eq!(got.scheme, "layer-spectral");
         // and it is not the half-space's answer (the cover matters at h′ = 0.6)
         let hs = solve_at_load(&Body::HalfSpace, &p, &ContactSettings::auto(tol)).unwrap();
         assert!((hs.lambda - got.lambda).abs() > 0.1 * got.lambda);

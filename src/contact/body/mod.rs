@@ -39,9 +39,9 @@ pub enum Body {
     #[default]
     HalfSpace,
     /// A viscoelastic cover of thickness `thickness_m` bonded to a rigid carcass (plane strain,
-    /// [`layer`]). Every scheme is served by the layer's own error-controlled collocation (to
-    /// `settings.auto.tol`, at least [`layer::roll_cover::LAYER_TOL_FLOOR`]); at given λ by the
-    /// thesis collocation with `settings.n` intervals.
+    /// [`layer`]). Every scheme is served at given load by the layer's own error-controlled solver
+    /// ([`layer::layer_at_load`]: spectral to `settings.auto.tol`, the hat collocation for covers
+    /// too thin for it); at given λ by the thesis collocation with `settings.n` intervals.
     Layer {
         /// Cover thickness in m (> 0).
         thickness_m: f64,
@@ -98,7 +98,7 @@ pub fn solve_at_load(
             thickness_m / problem.length_scale_m,
             problem.poisson,
             &layer::LayerSettings {
-                tol: settings.auto.tol.max(layer::roll_cover::LAYER_TOL_FLOOR),
+                tol: settings.auto.tol,
                 n_max: 512,
                 ..Default::default()
             },

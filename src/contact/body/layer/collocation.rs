@@ -28,22 +28,17 @@
 //! n doubled from 16 to where the Richardson estimate meets tol: n = 64–128 at 1e−3, 256–1024 at 1e−4,
 //! and at 1e−6 n ~ 10⁴–10⁵ (first order), out of reach. So this scheme gives 4–30 ms at 1e−3 and
 //! 20 ms–1 s at 1e−4 (README table) and cannot meet the goals, as the brief expected. The
-//! options weighed:
+//! options weighed (the Toeplitz solve was not built; the spectral solver was):
 //! - keep the hat scheme and solve the Toeplitz-plus-rank-two system in O(n²) (Levinson with a
 //!   bordering/Sherman–Morrison step; the kernel table cannot be reused across the load loop's λ
 //!   iterations: it depends on λ through Δ relative to h′ and the creep lengths): removes the LU (the
 //!   n = 1024 cost falls to its kernel table, 4–13 ms measured) but not the first order: 1e−6 still
 //!   needs n ~ 10⁵;
-//! - **a spectrally convergent collocation** (the way to the goals, not built yet): Q′ = √(1−t²)·
-//!   Σ a_k U_k(t) on the contact with the half-space part exact (its Hilbert transform is T_{k+1}
-//!   inside and w^{k+1} outside, the viscoelastic memory by the `auto` solver's exponential modes
-//!   and lumping of fast modes) and the layer correction D — C^∞ on the scale h, see
-//!   [`super::kernel`] — entering as ∫Q′D′: with the transform of √(1−u²)U_k,
-//!   π(k+1)(−i)^k J_{k+1}(κ)/κ, its matrix is one quadrature over κ per (k, collocation point) with
-//!   Φ(κ) summed over the terms once per κ-node. The independent elastic solver of the tests
-//!   (`elastic_check.rs`) is this method for f = 0: 32 and 40 terms agree to 1e−9 at h/λ ≥ 0.1. The
-//!   viscoelastic version needs the `auto` solver's reduction extended to a polynomial right-hand
-//!   side (the D term), which is the remaining work.
+//! - **a spectrally convergent solver** — built: [`super::spectral`] (the `auto` reduction with the
+//!   layer term as a polynomial right-hand side, the design suggested here; the independent elastic
+//!   solver of `elastic_check.rs` is its f = 0 case and agrees to 1e−13). It is the layer body's
+//!   default; this scheme remains the fallback for covers too thin for its degree cap (h/λ below
+//!   ≈ 0.016 at tol 1e−3, ≈ 0.03 at 1e−6) and the given-λ solver of `Body::Layer`.
 //!
 //! The assembly and solve are the thesis scheme's ([`crate::contact::half_space::thesis::solve_hat_system`],
 //! shared: the system is the same for any kernel of the form K + const).
@@ -64,6 +59,12 @@ pub struct LayerSettings {
     pub n_max: usize,
     /// Load loop settings.
     pub load: LoadSettings,
+    /// Solve by the spectral solver ([`super::spectral`]) first, this hat scheme only where the
+    /// cover is too thin for it (default true; `layer_at_load`).
+    pub spectral: bool,
+    /// Largest degree of the spectral solver's layer term (default 48; module doc of
+    /// [`super::spectral`]: the switch to this scheme).
+    pub p_max: usize,
 }
 
 impl Default for LayerSettings {
@@ -73,6 +74,8 @@ impl Default for LayerSettings {
             n_start: 32,
             n_max: 1024,
             load: LoadSettings::default(),
+            spectral: true,
+            p_max: 48,
         }
     }
 }

@@ -146,7 +146,7 @@ fn bessel_values() {
 
 /// (N′, max Q′) of the elastic contact at λ on a layer of thickness h (independent method), with `m`
 /// even Chebyshev terms.
-fn elastic_contact(lambda: f64, h: f64, nu: f64, m: usize) -> (f64, f64) {
+pub(crate) fn elastic_contact(lambda: f64, h: f64, nu: f64, m: usize) -> (f64, f64) {
     let a = 0.5 * lambda;
     let nmax = 2 * m; // J index n + 1 ≤ 2m − 1
     let us: Vec<f64> = (0..m)

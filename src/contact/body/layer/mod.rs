@@ -7,7 +7,10 @@
 //!
 //! - [`compliance`]: the layer's Fourier compliance F(|k|h) (derivation, references, limits);
 //! - [`kernel`]: its steady-rolling viscoelastic kernel = half-space kernel + smooth correction;
-//! - [`collocation`]: the thesis' collocation scheme with that kernel, load loop, error estimate;
+//! - [`spectral`]: the spectrally convergent solver (default; the `auto` reduction with the layer
+//!   term as a polynomial right-hand side);
+//! - [`collocation`]: the thesis' collocation scheme with that kernel, load loop, error estimate
+//!   (the fallback for covers too thin for the spectral solver);
 //! - [`winkler`]: Winkler foundations (uniaxial columns of conveyor tools, constrained columns of the
 //!   thin compressible layer) in closed form for any spectrum.
 
@@ -15,6 +18,7 @@ pub mod collocation;
 pub mod compliance;
 pub mod kernel;
 pub mod roll_cover;
+pub mod spectral;
 pub mod winkler;
 
 pub use collocation::{LayerAnswer, LayerSettings};
@@ -71,7 +75,10 @@ pub struct BodyAnswer {
     pub warnings: Vec<String>,
 }
 
-/// Solve the bonded layer of dimensionless thickness `thickness` at load N′.
+/// Solve the bonded layer of dimensionless thickness `thickness` at load N′: by the spectral solver
+/// ([`spectral`]) to `settings.tol`, or, where the cover is too thin against the contact for its
+/// degree cap `settings.p_max` (or `settings.spectral` is false), by the hat collocation
+/// ([`collocation`]) to max(tol, [`roll_cover::LAYER_TOL_FLOOR`]), with a warning saying so.
 pub fn layer_at_load(
     terms: &[CreepTerm],
     load: f64,
@@ -79,18 +86,58 @@ pub fn layer_at_load(
     poisson: f64,
     settings: &LayerSettings,
 ) -> Result<BodyAnswer, ContactError> {
+    let mut fallback_warnings = Vec::new();
+    if settings.spectral {
+        let spectral_settings = spectral::SpectralSettings {
+            tol: settings.tol,
+            p_max: settings.p_max,
+        };
+        match spectral::solve_spectral_at_load(terms, load, thickness, poisson, &spectral_settings)
+        {
+            Ok(Some(a)) => return Ok(package_layer(a, Vec::new())),
+            Ok(None) => fallback_warnings.push(format!(
+                "the cover is thin against the contact (h/(VT) = {thickness:.2e}): the spectral layer \
+                 solver would need a degree above {}; solved by the first-order hat collocation instead",
+                settings.p_max
+            )),
+            Err(e @ ContactError::NotConverged { .. }) => fallback_warnings.push(format!(
+                "the spectral layer solver did not converge ({e}); solved by the first-order hat \
+                 collocation instead"
+            )),
+            Err(e) => return Err(e),
+        }
+    }
     let kernel = LayerKernel::new(terms, thickness, poisson)?;
-    let a = collocation::solve_layer_at_load(&kernel, load, settings)?;
+    let hat_settings = LayerSettings {
+        tol: settings.tol.max(roll_cover::LAYER_TOL_FLOOR),
+        ..*settings
+    };
+    let a = collocation::solve_layer_at_load(&kernel, load, &hat_settings)?;
+    if settings.tol < roll_cover::LAYER_TOL_FLOOR {
+        fallback_warnings.push(format!(
+            "tolerance not reached: the hat collocation is solved to {:.0e} (estimate {:.1e}), not to \
+             tol {:.0e} (first order; finer costs seconds)",
+            roll_cover::LAYER_TOL_FLOOR,
+            a.error_estimate,
+            settings.tol
+        ));
+    }
+    Ok(package_layer(a, fallback_warnings))
+}
+
+/// A [`collocation::LayerAnswer`] as a [`BodyAnswer`], with extra warnings first.
+fn package_layer(a: collocation::LayerAnswer, mut warnings: Vec<String>) -> BodyAnswer {
+    warnings.extend(a.warnings);
     let mut solution = a.solution;
-    solution.warnings.extend(a.warnings.iter().cloned());
-    Ok(BodyAnswer {
+    solution.warnings.extend(warnings.iter().cloned());
+    BodyAnswer {
         model: BodyModel::Layer,
         solution,
         error_estimate: a.error_estimate,
         min_pressure_ratio: a.min_pressure_ratio,
         min_gap_ratio: a.min_gap_ratio,
-        warnings: a.warnings,
-    })
+        warnings,
+    }
 }
 
 /// Solve a Winkler foundation of `columns` of dimensionless height `thickness` at load N′.

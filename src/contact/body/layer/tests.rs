@@ -466,3 +466,75 @@ fn layer_error_estimate_is_honoured() {
     }
     eprintln!("worst error/estimate {worst:.2}");
 }
+
+/// The constrained-Winkler criterion at ν = 0.49 on covers thinner than the hat scheme could resolve
+/// (issue 14 brief, milestone 5): the spectral layer at tol 1e−5 (degree cap raised to 160 for this
+/// measurement) against the constrained Winkler foundation, h/λ_HS = 3e−4…0.03, with the constant
+/// C = difference·(1 − 2ν)/(h/λ) of the rule in `roll_cover` (C_WINKLER). The rule is linear in h/λ
+/// only once h/λ ≪ √(1 − 2ν) ≈ 0.14. `cargo test --release --lib criterion_nu049 -- --ignored
+/// --nocapture`.
+#[test]
+#[ignore]
+fn criterion_nu049() {
+    use super::spectral::{solve_spectral_at_load, SpectralSettings};
+    let load = 0.25;
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/data/spectra/example_creep.json"
+    ))
+    .unwrap();
+    let spec: CreepSpectrum = serde_json::from_str(&text).unwrap();
+    let scene = Scene {
+        radius_m: 0.0665,
+        load_n_per_m: 10_000.0,
+        speed_m_s: 4.0,
+        poisson: None,
+        body: Body::HalfSpace,
+    };
+    let cases: Vec<(&str, Vec<CreepTerm>)> = vec![
+        ("1 term b=1 f/b=100", vec![CreepTerm { f: 100.0, b: 1.0 }]),
+        (
+            "example spectrum, idler scene",
+            scene.dimensionless(&spec).unwrap().terms,
+        ),
+    ];
+    println!("| spectrum | ν | h/λ_layer | p | layer estimate | constrained Winkler vs layer (λ, ρF/N) | C |");
+    println!("|---|---|---|---|---|---|---|");
+    for (name, terms) in &cases {
+        let hs = solve_auto_at_load(terms, load, &AutoSettings::default()).unwrap();
+        for nu in [0.49, 0.45] {
+            for hr in [0.03, 0.01, 3e-3, 1e-3, 3e-4] {
+                let h = hr * hs.lambda;
+                let Some(l) = solve_spectral_at_load(
+                    terms,
+                    load,
+                    h,
+                    nu,
+                    &SpectralSettings {
+                        tol: 1e-5,
+                        p_max: 160,
+                    },
+                )
+                .unwrap() else {
+                    println!("| {name} | {nu} | ({hr} of λ_HS) | > 160 | — | — | — |");
+                    continue;
+                };
+                let l = l.solution;
+                let w = Winkler::new(terms, WinklerColumns::Constrained, h, nu)
+                    .unwrap()
+                    .at_load(load, &LoadSettings::default())
+                    .unwrap()
+                    .solution;
+                let dl = rel(w.lambda, l.lambda);
+                let df = rel(w.friction_rho, l.friction_rho);
+                let c = dl.max(df) * (1.0 - 2.0 * nu) / (h / l.lambda);
+                println!(
+                    "| {name} | {nu} | {:.4} | {} | {:.1e} | {dl:.1e}, {df:.1e} | {c:.2} |",
+                    h / l.lambda,
+                    l.n,
+                    l.error_estimate.unwrap_or(f64::NAN)
+                );
+            }
+        }
+    }
+}

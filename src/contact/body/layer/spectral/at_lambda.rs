@@ -1,0 +1,203 @@
+//! The spectral layer solve at given contact length λ: the half-space `auto` reduction extended to a
+//! polynomial right-hand side (module doc of [`super`]).
+//!
+//! Input: reduced [`Modes`], λ, h′, ν, the degree p and the Laplace quadrature step; output: a
+//! [`LambdaSolution`] (β, N′, ρF/N, the Chebyshev coefficients of H̃) of the reduced problem.
+
+use super::layer_term::LayerTerm;
+use super::volterra::{memory_exact, memory_polynomial, poly_min_mu};
+use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
+use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
+use crate::contact::body::half_space::modes::Modes;
+use nalgebra::{DMatrix, DVector};
+use std::f64::consts::PI;
+
+/// One unknown's contribution: H̃ coefficients on the contact and the coefficients εᵢ of
+/// dᵢe^{−cᵢ(1−t)} left over by the Volterra part (V[H̃] = r̃ + Σεᵢdᵢe^{−cᵢ(1−t)}).
+struct Column {
+    h: Vec<f64>,
+    eps: Vec<f64>,
+}
+
+/// Solve the layer equation at λ (module doc of [`super`]) with the layer term of degree `p`.
+pub fn solve_at_lambda(
+    modes: &Modes,
+    lambda: f64,
+    thickness: f64,
+    nu: f64,
+    p: usize,
+    step: f64,
+) -> LambdaSolution {
+    let l = 0.5 * lambda;
+    let n = modes.len();
+    let c: Vec<f64> = modes.b.iter().map(|b| b * l).collect();
+    let mu: Vec<f64> = (0..n).map(|j| modes.kappa(j) * l).collect();
+    // residues of the resolvent: wⱼ = 1/Σᵢ dᵢ/(cᵢ−μⱼ)² = L/Σᵢ fᵢ/(bᵢ−κⱼ)²
+    let wres: Vec<f64> = (0..n)
+        .map(|j| {
+            let s: f64 = (0..n)
+                .map(|i| modes.f[i] / modes.b_minus_kappa(i, j).powi(2))
+                .sum();
+            l / s
+        })
+        .collect();
+    let cm = |i: usize, j: usize| l * modes.b_minus_kappa(i, j); // cᵢ − μⱼ
+
+    let mut cols: Vec<Column> = Vec::with_capacity(n + p + 1);
+    for (j, &m) in mu.iter().enumerate() {
+        cols.push(Column {
+            h: exp_coefficients(m),
+            eps: (0..n).map(|i| -1.0 / cm(i, j)).collect(),
+        });
+    }
+    // V⁻¹[Tₘ] = Tₘ − Σⱼ wⱼ Yⱼ[Tₘ]
+    let split = poly_min_mu(p);
+    let basis: Vec<Vec<f64>> = (0..=p)
+        .map(|m| {
+            let mut v = vec![0.0; m + 1];
+            v[m] = 1.0;
+            v
+        })
+        .collect();
+    let mut short: Vec<Vec<f64>> = basis.clone();
+    let mut eps_poly = vec![vec![0.0; n]; p + 1];
+    let add = |dst: &mut Vec<f64>, src: &[f64], s: f64| {
+        if dst.len() < src.len() {
+            dst.resize(src.len(), 0.0);
+        }
+        for (d, v) in dst.iter_mut().zip(src) {
+            *d += s * v;
+        }
+    };
+    for j in 0..n {
+        if mu[j] < split {
+            let size = p + 1 + (83.0 * mu[j]).sqrt().ceil() as usize + 12;
+            let fs: Vec<&[f64]> = basis.iter().map(|v| v.as_slice()).collect();
+            let ys = memory_exact(mu[j], &fs, size);
+            for (s, y) in short.iter_mut().zip(&ys) {
+                add(s, y, -wres[j]);
+            }
+        } else {
+            for m in 0..=p {
+                let (pp, p1) = memory_polynomial(mu[j], &basis[m]);
+                add(&mut short[m], &pp, -wres[j]);
+                // the e^{μⱼ(t−1)} part wⱼP(1)eⱼ is left out of the column: V of it is missing
+                let beta_j = wres[j] * p1;
+                for (i, e) in eps_poly[m].iter_mut().enumerate() {
+                    *e += beta_j / cm(i, j);
+                }
+            }
+        }
+    }
+    for (h, eps) in short.into_iter().zip(eps_poly) {
+        cols.push(Column { h, eps });
+    }
+
+    // Laplace transforms Ĝᵢ of each column's exterior (trapezoid in v = ln σ, as in `auto`)
+    let ncols = cols.len();
+    let mut gexp = DMatrix::<f64>::zeros(n, ncols);
+    if n > 0 {
+        let c_min = c.iter().cloned().fold(f64::INFINITY, f64::min);
+        let c_max = c.iter().cloned().fold(0.0, f64::max);
+        let v_min = (-42.0_f64).min((1e-20 / c_max.max(1.0)).ln());
+        let v_max = (60.0 / c_min).ln();
+        let n_nodes = (((v_max - v_min) / step).ceil() as usize / 2) * 2 + 1;
+        let hq = (v_max - v_min) / (n_nodes - 1) as f64;
+        let sig: Vec<f64> = (0..n_nodes)
+            .map(|k| (v_min + k as f64 * hq).exp())
+            .collect();
+        let (th, w): (Vec<f64>, Vec<f64>) = sig.iter().map(|&s| theta_w(s)).unzip();
+        let mut buf = vec![0.0; n_nodes];
+        let wq: Vec<Vec<f64>> = c
+            .iter()
+            .map(|&ci| {
+                sig.iter()
+                    .map(|&s| {
+                        let e = ci * s;
+                        if e < 745.0 {
+                            hq * s * (-e).exp()
+                        } else {
+                            0.0
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        for (k, col) in cols.iter().enumerate() {
+            exterior_values(&col.h, &th, &w, &mut buf);
+            for i in 0..n {
+                gexp[(i, k)] = wq[i].iter().zip(&buf).map(|(a, b)| a * b).sum();
+            }
+        }
+    }
+
+    // the layer term of every column
+    let lt = LayerTerm::new(modes, l, thickness, nu, p);
+    let g: Vec<Vec<f64>> = cols.iter().map(|col| lt.apply(&col.h)).collect();
+
+    // the system: unknowns A₀…A_{N−1}, x₀…x_p, β
+    let size = n + p + 2;
+    let ib = size - 1;
+    let mut a = DMatrix::<f64>::zeros(size, size);
+    let mut r = DVector::<f64>::zeros(size);
+    for (k, col) in cols.iter().enumerate() {
+        for i in 0..n {
+            a[(i, k)] = col.eps[i] + gexp[(i, k)];
+        }
+        a[(n, k)] = col.h[0];
+        for m in 0..=p {
+            a[(n + 1 + m, k)] -= g[k][m] / PI;
+        }
+    }
+    for m in 0..=p {
+        a[(n + 1 + m, n + m)] += 1.0;
+    }
+    a[(n + 1, ib)] = 1.0 / PI;
+    r[n + 1] = l / PI;
+    r[n + 2] = l / PI;
+    // row and column equilibration
+    for i in 0..size {
+        let s = (0..size).map(|j| a[(i, j)].abs()).fold(0.0, f64::max);
+        if s > 0.0 && s.is_finite() {
+            for j in 0..size {
+                a[(i, j)] /= s;
+            }
+            r[i] /= s;
+        }
+    }
+    let mut colscale = vec![1.0; size];
+    for (j, cs) in colscale.iter_mut().enumerate() {
+        let s = (0..size).map(|i| a[(i, j)].abs()).fold(0.0, f64::max);
+        if s > 0.0 && s.is_finite() {
+            *cs = s;
+            for i in 0..size {
+                a[(i, j)] /= s;
+            }
+        }
+    }
+    let mut x = a
+        .full_piv_lu()
+        .solve(&r)
+        .unwrap_or_else(|| DVector::zeros(size));
+    for j in 0..size {
+        x[j] /= colscale[j];
+    }
+    let len = cols.iter().map(|c| c.h.len()).max().unwrap_or(3).max(3);
+    let mut fcoef = vec![0.0; len];
+    for (k, col) in cols.iter().enumerate() {
+        for (f, v) in fcoef.iter_mut().zip(&col.h) {
+            *f += x[k] * v;
+        }
+    }
+    fcoef[0] = 0.0;
+    let beta = x[ib];
+    let (f1, f2) = (fcoef[1], fcoef[2]);
+    LambdaSolution {
+        lambda,
+        beta,
+        load: PI * l * f1,
+        friction_rho: l - beta + l * f2 / (2.0 * f1),
+        coefficients: fcoef,
+        mu_max: mu.iter().cloned().fold(0.0, f64::max),
+    }
+}

@@ -1,0 +1,242 @@
+//! The layer's correction to the half-space equation, G(t) = −d(ρv_R)/dξ, as a matrix acting on the
+//! pressure's Chebyshev coefficients (module doc of [`super`]).
+//!
+//! Input: the reduced creep terms, L = λ/2, h′, ν and the degree p; output: [`LayerTerm`], the
+//! Chebyshev coefficients g_m (m = 0…p) of the degree-p interpolant of G at the Lobatto points for
+//! each pressure basis function √(1−t²)U_k (k = 0…n_J − 1).
+//!
+//! # Formula
+//! ρv_R is the part of the deflection removed by the rigid base: transform Ĝ_R(k) = πR(|k|h′)Φ(k)/|k|
+//! (module doc of [`super::super::kernel`]). With Q′ = √(1−t²)Σa_kU_k(t), t = (ξ − L)/L, and the
+//! transform ∫√(1−u²)U_k(u)e^{−iκu}du = π(k+1)(−i)^kJ_{k+1}(κ)/κ (Gradshteyn & Ryzhik 7.355;
+//! A&S 9.1.20), κ = kL, the inverse transform of ik·Ĝ_R·Q̂ folded onto κ > 0 (Φ(−k) = Φ(k)*) gives
+//!
+//! ```text
+//!   G(t) = π Σ_k a_k ∫₀^∞ (R(κh′/L)/κ) Im[Φ(κ/L)(k+1)(−i)^k J_{k+1}(κ) e^{iκt}] dκ.
+//! ```
+//!
+//! Checks: for f = 0 and even k this is π(−1)^{k/2}(k+1)∫R J_{k+1}(κ)sin(κt)/κ dκ, the independent
+//! elastic solver's term (`elastic_check.rs`); G is C^∞ on the contact and varies on the scale h′/L
+//! (R decays like e^{−2κh′/L}), so its interpolant converges geometrically in p once p ≳ L/h′.
+//!
+//! # Quadrature
+//! κ ∈ [κ_lo, 1]: 8-point Gauss–Legendre panels of width 1 in ln κ (the poles of Φ(κ/L) at
+//! κ = −ic_i lie π/2 off the real axis in ln κ: ellipse parameter ≥ 6, error ≲ 6^{−16}); below
+//! κ_lo = 1e−8·min(c_min, 1) the integrand is O(κ) and negligible. κ ∈ [1, κ_hi], κ_hi = 20L/h′
+//! (R < 2e−15 beyond, T_MAX): 16-point panels of width ≤ 4 (at most eight radians of e^{iκ(t±1)},
+//! J_{k+1} oscillates slower; the Gauss error for e^{iωx} with ω = 4 on 16 nodes is ~(eω/64)^{32}
+//! < 1e−20). At a node κ only orders k + 1 ≤ κ + 12κ^{1/3} + 30 carry weight (J_n(κ) < 1e−20
+//! beyond), which keeps the log region cheap. J_n by Miller's backward recurrence normalised by
+//! J₀ + 2ΣJ₂ₖ = 1 (A&S 9.1.46, 9.12).
+
+use crate::contact::body::half_space::modes::Modes;
+use crate::contact::body::layer::compliance::layer_defect;
+use crate::special::gauss_legendre::gauss_legendre;
+use std::f64::consts::PI;
+
+/// R(t) < 2e−15 beyond t = κh′/L = 20 ((4t²/κ)e^{−2t}, module doc of `compliance`).
+const T_MAX: f64 = 20.0;
+
+/// J₀…J_nmax at x > 0 (Miller's backward recurrence, normalised by J₀ + 2ΣJ₂ₖ = 1).
+pub fn bessel_j(x: f64, nmax: usize) -> Vec<f64> {
+    let top = nmax as f64 + x;
+    let start = 2 * ((top + 20.0 + (40.0 * top).sqrt()) as usize / 2 + 1);
+    let mut j = vec![0.0; start + 2];
+    j[start] = 1e-30;
+    let mut norm_scale = 1.0;
+    for k in (1..=start).rev() {
+        j[k - 1] = 2.0 * k as f64 / x * j[k] - j[k + 1];
+        if j[k - 1].abs() > 1e250 {
+            for v in j[k - 1..].iter_mut() {
+                *v *= 1e-250;
+            }
+            norm_scale *= 1e-250;
+        }
+    }
+    let _ = norm_scale;
+    let norm = j[0] + 2.0 * j.iter().skip(2).step_by(2).sum::<f64>();
+    j.truncate(nmax + 1);
+    j.iter().map(|v| v / norm).collect()
+}
+
+/// Number of pressure coefficients the layer term sees at κ_hi (module doc).
+pub fn orders_needed(kappa_hi: f64) -> usize {
+    (kappa_hi + 12.0 * kappa_hi.cbrt() + 30.0).ceil() as usize
+}
+
+/// The layer term as a matrix: `coef[m][k]` = Chebyshev coefficient m of G for a_k = 1.
+#[derive(Debug, Clone)]
+pub struct LayerTerm {
+    /// (p + 1) × n_J.
+    pub coef: Vec<Vec<f64>>,
+    /// Number of pressure orders n_J.
+    pub orders: usize,
+}
+
+/// Quadrature nodes (κ, weight·R(κh′/L)/κ) of the module doc.
+fn nodes(c_min: f64, kappa_hi: f64, thickness_over_l: f64, nu: f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    let k_mid = kappa_hi.min(1.0);
+    let k_lo = 1e-8 * c_min.min(1.0).min(k_mid);
+    let (gx, gw) = gauss_legendre(8);
+    let (va, vb) = (k_lo.ln(), k_mid.ln());
+    let np = (vb - va).ceil().max(1.0) as usize;
+    for p in 0..np {
+        let a = va + (vb - va) * p as f64 / np as f64;
+        let b = va + (vb - va) * (p + 1) as f64 / np as f64;
+        let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+        for (x, w) in gx.iter().zip(&gw) {
+            let k = (mid + half * x).exp();
+            out.push((k, k * half * w * layer_defect(k * thickness_over_l, nu) / k));
+        }
+    }
+    if kappa_hi > k_mid {
+        let (gx, gw) = gauss_legendre(16);
+        let np = ((kappa_hi - k_mid) / 4.0).ceil().max(1.0) as usize;
+        for p in 0..np {
+            let a = k_mid + (kappa_hi - k_mid) * p as f64 / np as f64;
+            let b = k_mid + (kappa_hi - k_mid) * (p + 1) as f64 / np as f64;
+            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+            for (x, w) in gx.iter().zip(&gw) {
+                let k = mid + half * x;
+                out.push((k, half * w * layer_defect(k * thickness_over_l, nu) / k));
+            }
+        }
+    }
+    out
+}
+
+impl LayerTerm {
+    /// The matrix for the reduced `modes` (Φ = 1 + Σf̂/(b − ik)) at half-length `l`, thickness
+    /// `thickness` = h′, Poisson's ratio `nu`, degree `p` (≥ 2).
+    pub fn new(modes: &Modes, l: f64, thickness: f64, nu: f64, p: usize) -> LayerTerm {
+        let h_over_l = thickness / l;
+        let kappa_hi = T_MAX / h_over_l;
+        let orders = orders_needed(kappa_hi);
+        let c_min = modes.b.iter().map(|b| b * l).fold(1.0, f64::min);
+        let ts: Vec<f64> = (0..=p).map(|i| (PI * i as f64 / p as f64).cos()).collect();
+        // values[l][k]: G at Lobatto point l for a_k = 1
+        let mut values = vec![vec![0.0; orders]; p + 1];
+        let mut je_re = vec![0.0; orders];
+        let mut je_im = vec![0.0; orders];
+        for (kappa, w) in nodes(c_min, kappa_hi, h_over_l, nu) {
+            // Φ(κ/L)
+            let kk = kappa / l;
+            let (mut pr, mut pi) = (1.0, 0.0);
+            for (f, b) in modes.f.iter().zip(&modes.b) {
+                let d = b * b + kk * kk;
+                pr += f * b / d;
+                pi += f * kk / d;
+            }
+            // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there)
+            let mut used = orders_needed(kappa).min(orders);
+            let j = bessel_j(kappa, used);
+            // and for small κ far fewer: J_{k+1}(κ) ~ (κ/2)^{k+1}/(k+1)! (|J| ≤ 1 at every order)
+            while used > 1 && j[used].abs() < 1e-22 {
+                used -= 1;
+            }
+            // (k+1)(−i)^k J_{k+1}: (−i)^k = 1, −i, −1, i
+            for k in 0..used {
+                let v = (k + 1) as f64 * j[k + 1];
+                let (r, i) = match k % 4 {
+                    0 => (v, 0.0),
+                    1 => (0.0, -v),
+                    2 => (-v, 0.0),
+                    _ => (0.0, v),
+                };
+                // times Φ
+                je_re[k] = pr * r - pi * i;
+                je_im[k] = pr * i + pi * r;
+            }
+            for (row, &t) in values.iter_mut().zip(&ts) {
+                let (s, c) = (kappa * t).sin_cos();
+                let ww = PI * w;
+                // Im[(re + i·im)(c + i·s)] = re·s + im·c
+                let (a, b) = (ww * s, ww * c);
+                for ((r, jr), ji) in row[..used].iter_mut().zip(&je_re).zip(&je_im) {
+                    *r += jr * a + ji * b;
+                }
+            }
+        }
+        // Chebyshev coefficients of the interpolant (DCT-I at the Lobatto points, as
+        // `special::chebyshev::lobatto_coefficients`, with its (p+1)² cosines computed once)
+        let dct: Vec<Vec<f64>> = (0..=p)
+            .map(|m| {
+                let edge = if m == 0 || m == p { 0.5 } else { 1.0 };
+                (0..=p)
+                    .map(|i| {
+                        let w = if i == 0 || i == p { 0.5 } else { 1.0 };
+                        edge * w * 2.0 / p as f64 * (PI * (m * i) as f64 / p as f64).cos()
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut coef = vec![vec![0.0; orders]; p + 1];
+        for (crow, drow) in coef.iter_mut().zip(&dct) {
+            for (&d, vrow) in drow.iter().zip(&values) {
+                for (c, v) in crow.iter_mut().zip(vrow) {
+                    *c += d * v;
+                }
+            }
+        }
+        LayerTerm { coef, orders }
+    }
+
+    /// Chebyshev coefficients g_m of G for the H̃ coefficients `h` (a_k = h_{k+1}).
+    pub fn apply(&self, h: &[f64]) -> Vec<f64> {
+        self.coef
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .zip(h.iter().skip(1))
+                    .map(|(g, a)| g * a)
+                    .sum::<f64>()
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bessel_values() {
+        // A&S Table 9.1 (10 digits).
+        let j = bessel_j(1.0, 3);
+        assert!((j[0] - 0.765_197_686_6).abs() < 1e-10 && (j[1] - 0.440_050_585_7).abs() < 1e-10);
+        let j = bessel_j(10.0, 2);
+        assert!((j[0] + 0.245_935_764_5).abs() < 1e-10 && (j[1] - 0.043_472_746_17).abs() < 1e-10);
+    }
+}
+
+#[cfg(test)]
+mod dct_tests {
+    use super::*;
+    use crate::special::chebyshev::lobatto_coefficients;
+
+    #[test]
+    fn layer_term_interpolant_matches_the_shared_dct() {
+        // the inlined DCT must give `lobatto_coefficients` of the same values (to rounding)
+        let m = Modes::new(&[crate::contact::CreepTerm { f: 3.0, b: 0.5 }]);
+        let lt = LayerTerm::new(&m, 0.5, 0.3, 0.3, 12);
+        // values of the interpolant of order k at the Lobatto points, back from the coefficients
+        for k in [0usize, 3, 7] {
+            let col: Vec<f64> = (0..=12)
+                .map(|i| {
+                    let t = (PI * i as f64 / 12.0).cos();
+                    let c: Vec<f64> = lt.coef.iter().map(|r| r[k]).collect();
+                    crate::special::chebyshev::clenshaw(&c, t)
+                })
+                .collect();
+            let again = lobatto_coefficients(&col);
+            for (a, row) in again.iter().zip(&lt.coef) {
+                assert!(
+                    (a - row[k]).abs() < 1e-12 * (1.0 + a.abs()),
+                    "{a} vs {}",
+                    row[k]
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,76 @@
+//! A spectrally convergent solver of the bonded viscoelastic layer at given λ and at given load: the
+//! layer body's default (issue 14, "Numbers to reach"; the design weighed in [`super::collocation`]).
+//!
+//! Input: the dimensionless creep terms (fᵢ, bᵢ), λ or N′, the cover h′ = h/(VT), ν and a tolerance;
+//! output: [`LambdaSolution`](crate::contact::body::half_space::auto::at_lambda::LambdaSolution) at
+//! given λ ([`at_lambda`]) or a [`LayerAnswer`](super::collocation::LayerAnswer) with its error
+//! estimate and contact checks at given load ([`at_load`]; `None` for covers too thin for it).
+//!
+//! # The equation
+//! The layer kernel is the half-space's minus the C^∞ correction D of [`super::kernel`]
+//! (D̂(k) = −πR(|k|h′)Φ(k)/|k|). On the contact t ∈ [−1, 1] (ξ = L(1+t), L = λ/2, cᵢ = bᵢL,
+//! dᵢ = fᵢL, μⱼ = κⱼL as in the half-space `auto` scheme, whose module doc derives the rest) the
+//! derivative of eq. 3.25 becomes
+//!
+//! ```text
+//!   π[H̃ + Σᵢ Ṽᵢ] = L(1+t) − β + G(t),     G = −d(ρv_R)/dξ,
+//! ```
+//!
+//! with H̃ the finite Hilbert transform of Q′ = √(1−t²)Σa_kU_k (H̃ = ΣFₙTₙ, a_k = F_{k+1}, F₀ = 0)
+//! and G the deflection slope of the correction, linear in the a_k ([`layer_term`]). G is C^∞ on the
+//! scale h′/L, so its degree-p Chebyshev interpolant converges geometrically in p.
+//!
+//! # Reduction to (N + p + 2) linear equations
+//! Split Ṽᵢ(t) = dᵢ∫_t^1e^{−cᵢ(u−t)}H̃(u)du + dᵢe^{−cᵢ(1−t)}Ĝᵢ, Ĝᵢ = ∫₀^∞e^{−cᵢσ}H̃ₑₓₜ(1+σ)dσ the
+//! Laplace transform of the exterior continuation. The first part is a Volterra operator V = I + K,
+//! K with the kernel k(s) = Σdᵢe^{−cᵢs}; its resolvent follows from 1/(1 + k̂(z)) =
+//! Πᵢ(cᵢ+z)/Πⱼ(μⱼ+z) (the roots μⱼ of 1 + Σdᵢ/(cᵢ−μ) = 0, module `modes`):
+//!
+//! ```text
+//!   V⁻¹g = g − Σⱼ wⱼ∫_t^1e^{−μⱼ(u−t)}g(u)du,     wⱼ = 1/Σᵢ dᵢ/(cᵢ−μⱼ)²
+//! ```
+//!
+//! (one term: w = d, and V⁻¹V[1] = 1 checks by hand). So with r̃ = (L(1+t) − β + G)/π of degree p,
+//! r̃ = Σx_mT_m, every solution on the contact is H̃ = Σₘ x_m V⁻¹[T_m] + Σⱼ Aⱼe^{μⱼ(t−1)}
+//! (V e^{μⱼ(t−1)} = −Σᵢdᵢe^{−cᵢ(1−t)}/(cᵢ−μⱼ)), and the equation holds iff the coefficients of
+//! every dᵢe^{−cᵢ(1−t)} cancel: N conditions Ĝᵢ[H̃] − ΣⱼAⱼ/(cᵢ−μⱼ) + (the same from V⁻¹[T_m]'s
+//! exponential parts) = 0. Unknowns Aⱼ, x₀…x_p, β; equations: those N, F₀ = 0 (bounded at both
+//! ends) and x_m = (L(δ_{m0} + δ_{m1}) − βδ_{m0} + g_m[H̃])/π for m = 0…p, g_m the Chebyshev
+//! coefficients of G. For G = 0 this is exactly the `auto` reduction (p₀ + p₁t + ΣAⱼe^{μⱼ(t−1)}).
+//! V⁻¹[T_m] is computed in Chebyshev coefficients by [`volterra`]: exactly (a tridiagonal solve)
+//! for μⱼ < max(p²/4, 30), as a short polynomial plus a multiple of e^{μⱼ(t−1)} above. Fast modes
+//! are lumped and slow ones dropped by the `auto` scheme's [`reduction`](crate::contact::body::half_space::auto::reduction),
+//! with its measured first-order lumping correction (the lumped modes' layers are far thinner than h′).
+//!
+//! # Convergence and error estimate (measured, `tests.rs`)
+//! Elastic (f = 0): p = 32 agrees with the independent Chebyshev–Bessel solver of `elastic_check.rs`
+//! to ≤ 1e−13 for h/λ = 0.1…1, ν = 0…½ (p = 16: ≤ 2e−8 at h/λ = 0.1, 3e−13 at h/λ = 0.3).
+//! Viscoelastic: p = 16 and 32 agree to 1e−15; the hat scheme's Richardson value (n = 1024) lies
+//! within 2e−5 (its own accuracy); at h = 1e4·λ the half-space `auto` answer is met to ~1e−9 (the
+//! physical (λ/h)² approach). The error falls like 10^{−2.5·p·h′/L}, so the degree starts at
+//! p = 0.5·log₁₀(1/tol)·L/h′ ([`at_load::degree_for`]) and the estimate compares p with p/2 at the λ
+//! found (the p/2 error bounds the p error: geometric convergence), mapped to λ through
+//! d ln N′/d ln λ ≥ ½ and to ρF/N at given load with twice that, plus the reduction's and the
+//! lumping correction's estimates of the `auto` scheme. Measured against tol 1e−9 refinements
+//! (`tests/layer_props.rs`, property 4) the estimates are 100–1000× the true error.
+//!
+//! # Where it stops: the switch to the hat scheme
+//! The layer term costs ~(L/h′)²·p per solve (κ up to 20L/h′, orders up to κ), so the degree is
+//! capped at `p_max` = 48 (`LayerSettings`): covers with h′/L < 0.5·log₁₀(1/tol)/48, i.e. h/λ below
+//! ≈ 0.016 at tol 1e−3 and ≈ 0.031 at 1e−6, are declined and `layer_at_load` solves them by the hat
+//! collocation with a warning; the `auto` body choice takes the constrained Winkler foundation there
+//! for compressible covers (README criterion table).
+//!
+//! # Speed (`cargo bench --bench contact_layer`, README covers section)
+//! See the README's table; a load point costs ~12–26 solves at given λ (a coarse load loop at p ≤ 16,
+//! the lumping calibration, the fine load loop to 1e−10 in N′, the p/2 check).
+
+pub mod at_lambda;
+pub mod at_load;
+pub mod layer_term;
+pub mod volterra;
+
+pub use at_load::{solve_spectral_at_load, SpectralSettings};
+
+#[cfg(test)]
+mod tests;
