@@ -250,11 +250,15 @@ fn one_compound(
         }
         friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
-        maps.push(super::scenes::friction_maps(
-            &fit,
-            spec,
-            &super::scenes::pipeline_map_settings(),
-        )?);
+        let m = super::scenes::friction_maps(&fit, spec, &super::scenes::pipeline_map_settings())?;
+        // a map's warnings (covered surface short of its tolerance, node solver, validity) reach
+        // friction.csv, the datasheet and the ranking through the scene's points
+        if let Some((_, points)) = friction.last_mut() {
+            for p in points.iter_mut() {
+                p.warnings.extend(m.warnings.iter().cloned());
+            }
+        }
+        maps.push(m);
         step(&format!("maps {}", spec.name));
     }
     write_report(
