@@ -8,11 +8,19 @@
 //! (interpolant build + evaluation of the 9000 points, rayon on all threads, best of 2), node
 //! solves, panels, the range of ln s, the error estimate; and for scale the time of one direct
 //! `contact::roll` solve at 10 °C, 4 m/s, 10 kN/m at the main job's settings, times 9000.
-//! Run: `RAYON_NUM_THREADS=2 cargo bench --bench maps` (the 2-core figure).
+//!
+//! Covered maps (issue 14): the same 9000 points on a 5 mm cover (the shipped idler's), from the
+//! 2-D interpolant in (ln s, ln h/l_g) of the bonded layer (src/contact/maps/covered.rs) at the main
+//! job's covered tolerance 1e−3 and at 1e−2: wall time, node solves, panels and degrees, the
+//! estimate (interpolation + layer solves), and one layer node solve's time for scale.
+//! Run: `RAYON_NUM_THREADS=2 cargo bench --bench maps` (the 2-core figure; `-- --covered-only`
+//! skips the half-space table).
 
 use std::path::PathBuf;
 use std::time::Instant;
-use viscoroll::contact::maps::{friction_map, MapQuery, MapSettings, ReducedProblem};
+use viscoroll::contact::maps::{
+    covered_map, friction_map, CoveredProblem, MapQuery, MapSettings, ReducedProblem,
+};
 use viscoroll::contact::Scene;
 use viscoroll::contact::{roll, Body};
 use viscoroll::pipeline::scenes::pipeline_contact_settings;
@@ -26,6 +34,8 @@ fn log_spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
 
 fn main() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data");
+    let covered_only = std::env::args().any(|a| a == "--covered-only");
+    let mut covered_rows = Vec::new();
     println!(
         "threads: {}\n\n| compound | creep terms | tol | map time (9000 points) | solves | panels | ln s range | estimate | direct roll × 9000 |\n|---|---|---|---|---|---|---|---|---|",
         rayon::current_num_threads()
@@ -72,6 +82,10 @@ fn main() {
             roll(&scene, &at.spectrum, &pipeline_contact_settings()).expect("solve");
         }
         let direct = t0.elapsed().as_secs_f64() / 5.0;
+        covered_rows.push(covered(name, &creep, &queries));
+        if covered_only {
+            continue;
+        }
         for tol in [1e-3, 1e-4, 1e-5, 1e-6] {
             let settings = MapSettings {
                 tol,
@@ -99,4 +113,52 @@ fn main() {
             );
         }
     }
+    println!(
+        "\ncovered (5 mm cover, bonded layer):\n\n| compound | tol | map time (9000 points) | solves | panels (n_x×n_y) | estimate (interp. + nodes) | one node solve |\n|---|---|---|---|---|---|---|"
+    );
+    for rows in covered_rows {
+        for r in rows {
+            println!("{r}");
+        }
+    }
+}
+
+/// The covered map of `queries` on a 5 mm cover at tolerances 1e−3 and 1e−2: table rows.
+fn covered(name: &str, creep: &viscoroll::CreepSpectrum, queries: &[MapQuery]) -> Vec<String> {
+    let problem = CoveredProblem::new(creep, None, 5e-3).expect("valid spectrum");
+    // one node at the middle of the map for scale (10 °C, 4 m/s, 10 kN/m is inside it)
+    let x = problem
+        .reduced
+        .reduced_time_s(0.0665, 1e4, 4.0, queries[4 * 900].a_t)
+        .ln();
+    let y = problem.reduced_thickness(0.0665, 1e4).ln();
+    let mut rows = Vec::new();
+    for tol in [1e-3, 1e-2] {
+        let t0 = Instant::now();
+        problem.node(x, y, 0.1 * tol).expect("node solves");
+        let node = t0.elapsed().as_secs_f64();
+        let settings = MapSettings {
+            tol,
+            ..MapSettings::default()
+        };
+        let t0 = Instant::now();
+        let (_, s) = covered_map(&problem, queries, &settings).expect("covered map builds");
+        let time = t0.elapsed().as_secs_f64();
+        let shapes: Vec<String> = s
+            .panel_shapes()
+            .iter()
+            .map(|(_, (nx, ny))| format!("{nx}×{ny}"))
+            .collect();
+        rows.push(format!(
+            "| {name} | {tol:.0e} | {time:.2} s | {} | {} ({}) | {:.1e} ({:.1e} + {:.1e}) | {:.0} ms |",
+            s.solves,
+            s.panels(),
+            shapes.join(", "),
+            s.error_estimate,
+            s.interpolation_estimate,
+            s.node_estimate,
+            node * 1e3
+        ));
+    }
+    rows
 }

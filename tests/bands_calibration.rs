@@ -7,7 +7,7 @@
 //! The band comes from the pipeline's own path: the export written as CSV and read back, the fit
 //! (`pipeline::fit_compound::fit_measurement_master`), the bootstrap ensemble
 //! (`bands::build_ensemble`, the main job's settings), the friction (`friction_vs_temperature`, the
-//! main job's contact settings) and its band (`bands::scene_ratios` + `band_of`). The true friction
+//! main job's contact settings) and its band (`bands::scene_ratios_on`, on the scene's cover, + `band_of`). The true friction
 //! comes from the true spectrum, converted exactly to creep and shifted by the true WLF law, through
 //! the contact solver (the body of the scene); nothing of the fit or the ensemble enters it. That
 //! truth is itself checked against an independent contact path in tests/known_truth.rs.
@@ -20,7 +20,7 @@
 //! narrow or too wide by ~2×), not a few points of coverage.
 
 use std::path::PathBuf;
-use viscoroll::bands::{band_of, build_ensemble, scene_ratios, BandSettings};
+use viscoroll::bands::{band_of, build_ensemble, scene_ratios_on, BandSettings};
 use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
 use viscoroll::contact::roll;
 use viscoroll::creep::relaxation_to_creep;
@@ -104,7 +104,8 @@ fn points_of_seed(seed: u64) -> Vec<Point> {
             spec.temps_c = TEMPS_C.to_vec();
             let scene = spec.scene();
             let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
-            let ratios = scene_ratios(&fit, ensemble, &scene, &spec.temps_c, &bs);
+            let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
+            let ratios = scene_ratios_on(&fit, ensemble, &scene, cover_m, &spec.temps_c, &bs);
             for (p, r) in got.iter().zip(&ratios) {
                 let true_at_t = shifted(&true_creep, compound.law.log10_a_t(p.temp_c));
                 let truth = match spec.cover_thickness_mm {

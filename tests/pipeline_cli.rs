@@ -129,11 +129,9 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
             .filter(|l| !l.starts_with('#') && !l.starts_with("scene,"))
             .map(|l| l.split(',').skip(1).map(|v| v.parse().unwrap()).collect())
             .collect();
-        // Scenes with a cover have no 2-D grid (their maps are solved point by point).
-        let gridded = |s: &&toml::Value| s.get("cover_thickness_mm").is_none();
+        // Every scene with maps has the grid (a cover's from the 2-D interpolant of contact::maps).
         let expected_grid: usize = scenes
             .iter()
-            .filter(gridded)
             .map(|s| {
                 s.get("map_temps_c")
                     .and_then(|v| v.as_array())
@@ -148,11 +146,7 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
                 .all(|r| r[3].is_finite() && r[3] > 0.0 && r[4] > 0.0),
             "{name}: a 2-D map value is not finite and positive"
         );
-        for s in scenes
-            .iter()
-            .filter(gridded)
-            .filter(|s| s.get("map_temps_c").is_some())
-        {
+        for s in scenes.iter().filter(|s| s.get("map_temps_c").is_some()) {
             assert!(rep
                 .join(format!(
                     "friction_{}_map2d.png",

@@ -7,6 +7,7 @@
 //! ([`band_of`], [`mean_band`]).
 
 use super::BandSettings;
+use crate::contact::body::layer::{roll_cover, ModelChoice};
 use crate::contact::{roll, AutoSettings, ContactSettings, Scene, Scheme};
 use crate::results::{BandEnsemble, CompoundFit, FrictionBand, FrictionPoint};
 use crate::CreepSpectrum;
@@ -37,13 +38,34 @@ pub fn band_contact_settings(settings: &BandSettings) -> ContactSettings {
     }
 }
 
+/// Relative tolerance of a covered scene's replicate solves (eq. 15.6): the bonded layer is solved
+/// as in the main job's friction table (its `COVER_TOL`, 1e−3; measured errors 3e−6 … 3e−4 in ρF/N,
+/// README), the nominal friction of the ratio at the same tolerance so most of it cancels; the
+/// narrowest bands measured are ±0.5 %, and an independent error of 3e−4 widens one by < 1 %.
+pub const COVER_BAND_TOL: f64 = 1e-3;
+
 /// Per temperature of `temps_c`, the ratio F_b/F̂ of each replicate b (NaN where a solve failed),
-/// both on the half-space of `scene` (its body is not used: a covered scene's band takes the
-/// half-space's relative scatter, eq. 15.6). Parallel over (temperature, replicate).
+/// both on the half-space of `scene` (its body is not used; [`scene_ratios_on`] with a cover solves
+/// the covered body). Parallel over (temperature, replicate).
 pub fn scene_ratios(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
     scene: &Scene,
+    temps_c: &[f64],
+    settings: &BandSettings,
+) -> Vec<Vec<f64>> {
+    scene_ratios_on(fit, ensemble, scene, None, temps_c, settings)
+}
+
+/// [`scene_ratios`] on a cover of `cover_m` bonded to a rigid carcass (eq. 15.6): each replicate's
+/// creep spectrum, shifted by its own law, through the body `auto` chooses
+/// ([`roll_cover`], at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
+/// friction; `None`: the half-space at `settings.contact_tol`.
+pub fn scene_ratios_on(
+    fit: &CompoundFit,
+    ensemble: &BandEnsemble,
+    scene: &Scene,
+    cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
 ) -> Vec<Vec<f64>> {
@@ -55,12 +77,18 @@ pub fn scene_ratios(
         ..*scene
     };
     let cs = band_contact_settings(settings);
+    let cover_tol = settings.contact_tol.max(COVER_BAND_TOL);
     let law = &fit.shift_law;
     let solve = |c: &CreepSpectrum, log10_a_t: f64| {
         if !log10_a_t.is_finite() {
             return f64::NAN;
         }
-        roll(&scene, &shifted(c, log10_a_t), &cs).map_or(f64::NAN, |r| r.friction)
+        let at = shifted(c, log10_a_t);
+        match cover_m {
+            Some(h_m) => roll_cover(&scene, &at, Some(h_m), ModelChoice::Auto, cover_tol)
+                .map_or(f64::NAN, |r| r.roll.friction),
+            None => roll(&scene, &at, &cs).map_or(f64::NAN, |r| r.friction),
+        }
     };
     let nominal: Vec<f64> = temps_c
         .par_iter()

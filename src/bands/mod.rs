@@ -29,7 +29,8 @@
 //!    F_b/F̂ to the fit's own friction solved at the same tolerance carries the scatter.
 //! 5. Band (eq. 15.5): with d_b = ln(F_b/F̂), mean m and standard deviation s over the replicates,
 //!    p50 = F·e^m and p05, p95 = F·e^(m ∓ 1.645 s) (log-normal: smoother than empirical 5 %
-//!    quantiles of 32 replicates). A covered scene's points take the half-space's ratios (eq. 15.6).
+//!    quantiles of 32 replicates). A covered scene's ratios are solved on the covered body the
+//!    main job solves (`auto` at 1e−3, eq. 15.6).
 //!    The band of a scene mean takes per replicate the mean of F_t·ratio_(b,t).
 //! 6. Pairs (eq. 15.7): P(F_A < F_B) = Φ((ln p50_B − ln p50_A)/√(s_A² + s_B²)), compounds
 //!    independent (separate measurements); tied when it lies strictly between 0.05 and 0.95.
@@ -37,8 +38,7 @@
 //! Left out: the contact solver's own error (≤ its tolerance, far below the bands), the choice of
 //! shift law beyond the measured temperatures (the offsets are held constant there, so an
 //! extrapolated point's band is no wider than the nearest isotherm's), systematic errors of the
-//! instrument (clamping, compliance, thermocouple calibration) that the data cannot show, and the
-//! covered body's own sensitivity to the moduli.
+//! instrument (clamping, compliance, thermocouple calibration) that the data cannot show.
 
 pub mod compare;
 pub mod ensemble;
@@ -49,7 +49,7 @@ pub mod rng;
 pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
 pub use ensemble::build_ensemble;
 pub use error::BandError;
-pub use friction::{band_of, mean_band, scene_ratios};
+pub use friction::{band_of, mean_band, scene_ratios, scene_ratios_on, COVER_BAND_TOL};
 
 /// Settings of the bands.
 #[derive(Debug, Clone, PartialEq)]

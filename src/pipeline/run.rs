@@ -222,19 +222,24 @@ fn one_compound(
     let mut friction = Vec::new();
     let mut maps = Vec::new();
     let mut ratios = Vec::new();
-    // (scene, its temperatures) → the friction ratios of each replicate, shared by twin scenes.
-    type SolvedRatios = ((crate::contact::Scene, Vec<f64>), Vec<Vec<f64>>);
+    // (scene, its temperatures, cover) → the friction ratios of each replicate.
+    type SolvedRatios = (
+        (crate::contact::Scene, Vec<f64>, Option<f64>),
+        Vec<Vec<f64>>,
+    );
     let mut solved: Vec<SolvedRatios> = Vec::new();
     for spec in &opts.scenes.scene {
         let mut points = friction_vs_temperature(&fit, spec, &settings)?;
         if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
-            // The ratios are solved on the scene's half-space: a covered scene and its half-space
-            // twin (the shipped conveyor-idler pair) share them.
-            let key = (spec.scene(), spec.temps_c.clone());
+            // The ratios are solved on the scene's body (a cover: eq. 15.6); scenes with the same
+            // roll, temperatures and cover share them.
+            let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
+            let key = (spec.scene(), spec.temps_c.clone(), cover_m);
             let r = match solved.iter().find(|(k, _)| *k == key) {
                 Some((_, r)) => r.clone(),
                 None => {
-                    let r = crate::bands::scene_ratios(&fit, ensemble, &key.0, &key.1, bs);
+                    let r =
+                        crate::bands::scene_ratios_on(&fit, ensemble, &key.0, cover_m, &key.1, bs);
                     solved.push((key, r.clone()));
                     r
                 }
@@ -250,11 +255,15 @@ fn one_compound(
         }
         friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
-        maps.push(super::scenes::friction_maps(
-            &fit,
-            spec,
-            &super::scenes::pipeline_map_settings(),
-        )?);
+        let m = super::scenes::friction_maps(&fit, spec, &super::scenes::pipeline_map_settings())?;
+        // a map's warnings (covered surface short of its tolerance, node solver, validity) reach
+        // friction.csv, the datasheet and the ranking through the scene's points
+        if let Some((_, points)) = friction.last_mut() {
+            for p in points.iter_mut() {
+                p.warnings.extend(m.warnings.iter().cloned());
+            }
+        }
+        maps.push(m);
         step(&format!("maps {}", spec.name));
     }
     let fit_level = fit_warnings(&fit, no_bands.as_deref(), opts.bands.is_some());

@@ -7,7 +7,9 @@
 use super::error::PipelineError;
 use super::roll_fit::fit_spectrum_at;
 use crate::contact::body::layer::{roll_cover, ModelChoice};
-use crate::contact::maps::{friction_map, MapQuery, MapSettings, MapValue, ReducedProblem};
+use crate::contact::maps::{
+    covered_map, friction_map, CoveredProblem, MapQuery, MapSettings, MapValue, ReducedProblem,
+};
 use crate::contact::{roll, AutoSettings, ContactSettings, Scheme};
 use crate::results::CompoundFit;
 use rayon::prelude::*;
@@ -160,9 +162,44 @@ fn log_spaced(values: &[f64], n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The map points of `spec` at every map temperature: (temperature, speed, load, kind) with kind 0 a
+/// listed point, 1 the [`GRID_POINTS`]² grid, 2 the dense speed and load curves. The grid and the
+/// curves lie inside the span of the listed points, so they leave the interpolant's range (and so
+/// every listed value) unchanged.
+fn map_jobs(spec: &SceneSpec) -> Vec<(f64, f64, f64, u8)> {
+    let (speeds, loads) = (
+        log_grid(&spec.map_speeds_m_s),
+        log_grid(&spec.map_loads_n_per_m),
+    );
+    let (curve_speeds, curve_loads) = (
+        log_spaced(&spec.map_speeds_m_s, CURVE_POINTS),
+        log_spaced(&spec.map_loads_n_per_m, CURVE_POINTS),
+    );
+    let mut jobs = Vec::new();
+    for &t in &spec.map_temps_c {
+        // against speed at the scene's load, against load at its speed: listed (0), dense (2)
+        for (kind, vs, ns) in [
+            (0, &spec.map_speeds_m_s, &spec.map_loads_n_per_m),
+            (2, &curve_speeds, &curve_loads),
+        ] {
+            jobs.extend(vs.iter().map(|&v| (t, v, spec.load_n_per_m, kind)));
+            jobs.extend(ns.iter().map(|&n| (t, spec.speed_m_s, n, kind)));
+        }
+        if !speeds.is_empty() && !loads.is_empty() {
+            for &v in &speeds {
+                jobs.extend(loads.iter().map(|&n| (t, v, n, 1)));
+            }
+        }
+    }
+    jobs
+}
+
 /// Friction maps of `fit` in `spec` ([`FrictionMaps`]), all from one interpolant of the
-/// dimensionless solution in the reduced variable s = l_g/(V·a_T) (module
-/// [`crate::contact::maps`]: exact scaling, interpolation error ≤ `settings.tol`).
+/// dimensionless solution: in the reduced variable s = l_g/(V·a_T) on the half-space (module
+/// [`crate::contact::maps`]: exact scaling, interpolation error ≤ `settings.tol`), in s and
+/// η = h/l_g on the bonded layer for a covered scene ([`crate::contact::maps::covered_map`], at
+/// least [`COVER_TOL`]). A covered surface that cannot be built leaves the maps empty (NaN) with
+/// the reason in `warnings`, so the friction against temperature still counts.
 pub fn friction_maps(
     fit: &CompoundFit,
     spec: &SceneSpec,
@@ -171,50 +208,7 @@ pub fn friction_maps(
     let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
     })?;
-    if let Some(h_mm) = spec.cover_thickness_mm {
-        return Ok(covered_maps(
-            fit,
-            creep,
-            spec,
-            h_mm,
-            settings.tol.max(COVER_TOL),
-        ));
-    }
-    let problem = ReducedProblem::new(creep, spec.poisson)?;
-    let (speeds, loads) = (
-        log_grid(&spec.map_speeds_m_s),
-        log_grid(&spec.map_loads_n_per_m),
-    );
-    // (temperature, speed, load, in the grid?) for every point; a_T per temperature
-    // the dense curves lie inside the span of the listed points, so they leave the interpolant's
-    // range (and so every listed and grid value) unchanged
-    let (curve_speeds, curve_loads) = (
-        log_spaced(&spec.map_speeds_m_s, CURVE_POINTS),
-        log_spaced(&spec.map_loads_n_per_m, CURVE_POINTS),
-    );
-    // (temperature, speed, load, kind): 0 listed point, 1 grid, 2 dense curve
-    let mut jobs = Vec::new();
-    for &t in &spec.map_temps_c {
-        for &v in &spec.map_speeds_m_s {
-            jobs.push((t, v, spec.load_n_per_m, 0));
-        }
-        for &n in &spec.map_loads_n_per_m {
-            jobs.push((t, spec.speed_m_s, n, 0));
-        }
-        if !speeds.is_empty() && !loads.is_empty() {
-            for &v in &speeds {
-                for &n in &loads {
-                    jobs.push((t, v, n, 1));
-                }
-            }
-        }
-        for &v in &curve_speeds {
-            jobs.push((t, v, spec.load_n_per_m, 2));
-        }
-        for &n in &curve_loads {
-            jobs.push((t, spec.speed_m_s, n, 2));
-        }
-    }
+    let jobs = map_jobs(spec);
     let a_t = |t: f64| {
         creep
             .at_temperature(&fit.shift_law, t, None)
@@ -232,26 +226,64 @@ pub fn friction_maps(
     let solvable: Vec<usize> = (0..jobs.len())
         .filter(|&i| a_t_of(jobs[i].0).is_some())
         .collect();
+    let radius_m = spec.roll_radius_mm * 1e-3;
     let queries: Vec<MapQuery> = solvable
         .iter()
         .map(|&i| MapQuery {
-            radius_m: spec.roll_radius_mm * 1e-3,
+            radius_m,
             load_n_per_m: jobs[i].2,
             speed_m_s: jobs[i].1,
             a_t: a_t_of(jobs[i].0).unwrap_or(f64::NAN),
         })
         .collect();
     let mut values: Vec<Option<MapValue>> = vec![None; jobs.len()];
-    let (mut error_estimate, mut solves) = (0.0, 0);
+    let (mut error_estimate, mut solves, mut warnings) = (0.0, 0, Vec::new());
+    let mut tol = settings.tol;
     if !queries.is_empty() {
-        let (v, curve) = friction_map(&problem, &queries, settings)?;
-        for (&i, v) in solvable.iter().zip(v) {
+        let solved = match spec.cover_thickness_mm {
+            Some(h_mm) => {
+                tol = settings.tol.max(COVER_TOL);
+                let cs = MapSettings { tol, ..*settings };
+                let covered = CoveredProblem::new(creep, spec.poisson, h_mm * 1e-3)
+                    .and_then(|p| covered_map(&p, &queries, &cs));
+                match covered {
+                    Ok((v, surface)) => {
+                        error_estimate = surface.error_estimate;
+                        solves = surface.solves;
+                        warnings.extend(surface.warnings.iter().map(|w| format!("map node: {w}")));
+                        if surface.error_estimate > tol {
+                            warnings.push(format!(
+                                "covered map: error estimate {:.1e} (interpolation {:.1e} + layer \
+                                 solves {:.1e}) exceeds its tolerance {tol:.0e}",
+                                surface.error_estimate,
+                                surface.interpolation_estimate,
+                                surface.node_estimate
+                            ));
+                        }
+                        Some(v)
+                    }
+                    Err(e) => {
+                        warnings.push(crate::results::cap_line(&format!(
+                            "covered map not built: {e}"
+                        )));
+                        None
+                    }
+                }
+            }
+            None => {
+                let problem = ReducedProblem::new(creep, spec.poisson)?;
+                let (v, curve) = friction_map(&problem, &queries, settings)?;
+                error_estimate = curve.error_estimate;
+                solves = curve.solves;
+                Some(v)
+            }
+        };
+        for (&i, v) in solvable.iter().zip(solved.into_iter().flatten()) {
             values[i] = Some(v);
         }
-        error_estimate = curve.error_estimate;
-        solves = curve.solves;
     }
     let (mut points, mut grid, mut curves) = (Vec::new(), Vec::new(), Vec::new());
+    let mut long = 0.0f64;
     for (&(t, v, n, kind), value) in jobs.iter().zip(values) {
         let p = MapPoint {
             temp_c: t,
@@ -260,11 +292,21 @@ pub fn friction_maps(
             friction: value.map_or(f64::NAN, |m| m.friction),
             contact_length_mm: value.map_or(f64::NAN, |m| m.contact_length_m * 1e3),
         };
+        if kind == 0 && spec.cover_thickness_mm.is_some() {
+            long = long.max(p.contact_length_mm / spec.roll_radius_mm);
+        }
         match kind {
             0 => points.push(p),
             1 => grid.push(p),
             _ => curves.push(p),
         }
+    }
+    // the covered body's validity check (contact::body::layer::roll_cover) at the listed map points
+    if long > 0.3 {
+        warnings.push(format!(
+            "map: contact length / radius up to {long:.2} > 0.3: the flat-surface, small-strain \
+             assumptions lose validity"
+        ));
     }
     Ok(FrictionMaps {
         points,
@@ -272,75 +314,9 @@ pub fn friction_maps(
         curves,
         error_estimate,
         solves,
-        tol: settings.tol,
-    })
-}
-
-/// Friction maps of a covered scene: the listed speeds and loads at each map temperature, each solved
-/// directly on the body `auto` chooses (contact::body::layer::roll_cover at `tol`, [`COVER_TOL`] in the main job). The two-reduced-variable interpolant (speed and h/l_g) of the half-space maps is not built
-/// for covers yet, so the 2-D grid stays empty; `error_estimate` is the largest point estimate
-/// (the body's own and, where auto chose a cheaper body, its estimated difference from the layer).
-fn covered_maps(
-    fit: &CompoundFit,
-    creep: &crate::CreepSpectrum,
-    spec: &SceneSpec,
-    h_mm: f64,
-    tol: f64,
-) -> FrictionMaps {
-    let mut jobs = Vec::new();
-    for &t in &spec.map_temps_c {
-        for &v in &spec.map_speeds_m_s {
-            jobs.push((t, v, spec.load_n_per_m));
-        }
-        for &n in &spec.map_loads_n_per_m {
-            jobs.push((t, spec.speed_m_s, n));
-        }
-    }
-    let solved: Vec<(MapPoint, f64)> = jobs
-        .par_iter()
-        .map(|&(t, v, n)| {
-            let scene = crate::contact::Scene {
-                load_n_per_m: n,
-                speed_m_s: v,
-                ..spec.scene()
-            };
-            let r = creep
-                .at_temperature(&fit.shift_law, t, None)
-                .ok()
-                .and_then(|at| {
-                    roll_cover(
-                        &scene,
-                        &at.spectrum,
-                        Some(h_mm * 1e-3),
-                        ModelChoice::Auto,
-                        tol,
-                    )
-                    .ok()
-                });
-            let p = MapPoint {
-                temp_c: t,
-                speed_m_s: v,
-                load_n_per_m: n,
-                friction: r.as_ref().map_or(f64::NAN, |r| r.roll.friction),
-                contact_length_mm: r
-                    .as_ref()
-                    .map_or(f64::NAN, |r| r.roll.contact_length_m * 1e3),
-            };
-            let e = r.map_or(0.0, |r| {
-                r.error_estimate.max(r.model_error_estimate.unwrap_or(0.0))
-            });
-            (p, e)
-        })
-        .collect();
-    let error_estimate = solved.iter().map(|s| s.1).fold(0.0, f64::max);
-    FrictionMaps {
-        solves: solved.len(),
-        points: solved.into_iter().map(|s| s.0).collect(),
-        grid: Vec::new(),
-        curves: Vec::new(),
-        error_estimate,
         tol,
-    }
+        warnings,
+    })
 }
 
 /// Mean friction over the temperatures that solved (NaN if none did).

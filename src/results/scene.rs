@@ -313,8 +313,7 @@ pub struct FrictionMaps {
     pub grid: Vec<MapPoint>,
     /// F/N against speed (at the scene's load) and against load (at the scene's speed) at
     /// [`CURVE_POINTS`] log-spaced values between the smallest and largest listed one, at every map
-    /// temperature, from the same interpolant as `points` (for the datasheet's curves); empty for
-    /// covered scenes, whose maps are solved point by point.
+    /// temperature, from the same interpolant as `points` (for the datasheet's curves).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub curves: Vec<MapPoint>,
     /// Interpolation error estimate of the reduced curve (relative, on F/N and contact length).
@@ -323,6 +322,10 @@ pub struct FrictionMaps {
     pub solves: usize,
     /// The relative tolerance asked of the interpolant.
     pub tol: f64,
+    /// Warnings of the map (a covered surface not built or short of its tolerance, node solver
+    /// warnings, validity); the pipeline copies them to the scene's friction points.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 #[cfg(test)]

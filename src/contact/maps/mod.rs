@@ -46,11 +46,17 @@
 //! 4.9e−9. With the estimate from the last quarter alone (no factor 2) the worst error was 1.4× the
 //! estimate, still inside the tolerance thanks to the half-tolerance budget; the factor 2 covers it.
 
+mod covered;
+#[cfg(test)]
+mod covered_tests;
 mod curve;
 mod reduced;
+mod surface;
 
+pub use covered::{covered_map, CoveredNode, CoveredProblem};
 pub use curve::ReducedCurve;
 pub use reduced::{node_tol, Node, ReducedProblem, ReducedSolution};
+pub use surface::CoveredSurface;
 
 use crate::contact::ContactError;
 use rayon::prelude::*;
@@ -154,6 +160,40 @@ pub fn friction_map(
     queries: &[MapQuery],
     settings: &MapSettings,
 ) -> Result<(Vec<MapValue>, ReducedCurve), FrictionMapError> {
+    let xs = reduced_times(problem, queries)?;
+    let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let curve = ReducedCurve::build(problem, lo, hi, settings)?;
+    let values = queries
+        .par_iter()
+        .zip(xs.par_iter())
+        .map(|(q, &x)| {
+            let (phi, lambda) = curve
+                .eval(x)
+                .expect("every query's ln s lies in the interpolant's range by construction");
+            let lg = problem.glassy_length_m(q.radius_m, q.load_n_per_m);
+            MapValue {
+                // F*/N* = (ρF/N)/ρ with ρ = R/l_g; l = λ·l_g.
+                friction: phi * lg / q.radius_m,
+                contact_length_m: lambda * lg,
+            }
+        })
+        .collect();
+    Ok((values, curve))
+}
+
+/// x = ln s of every query (checked: finite positive fields, at least one query).
+pub(crate) fn reduced_times(
+    problem: &ReducedProblem,
+    queries: &[MapQuery],
+) -> Result<Vec<f64>, FrictionMapError> {
+    if queries.is_empty() {
+        return Err(FrictionMapError::BadValue {
+            field: "points".into(),
+            value: 0.0,
+            expected: "at least one map point",
+        });
+    }
     let mut xs = Vec::with_capacity(queries.len());
     for (i, q) in queries.iter().enumerate() {
         for (name, v) in [
@@ -182,32 +222,7 @@ pub fn friction_map(
         }
         xs.push(x);
     }
-    let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    if xs.is_empty() {
-        return Err(FrictionMapError::BadValue {
-            field: "points".into(),
-            value: 0.0,
-            expected: "at least one map point",
-        });
-    }
-    let curve = ReducedCurve::build(problem, lo, hi, settings)?;
-    let values = queries
-        .par_iter()
-        .zip(xs.par_iter())
-        .map(|(q, &x)| {
-            let (phi, lambda) = curve
-                .eval(x)
-                .expect("every query's ln s lies in the interpolant's range by construction");
-            let lg = problem.glassy_length_m(q.radius_m, q.load_n_per_m);
-            MapValue {
-                // F*/N* = (ρF/N)/ρ with ρ = R/l_g; l = λ·l_g.
-                friction: phi * lg / q.radius_m,
-                contact_length_m: lambda * lg,
-            }
-        })
-        .collect();
-    Ok((values, curve))
+    Ok(xs)
 }
 
 // Tests of the reduced-variable friction maps: the exact scaling against direct scene solves, the
