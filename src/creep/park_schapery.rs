@@ -122,17 +122,12 @@ pub fn kernel(t: f64, rho: f64, tau: f64) -> f64 {
     }
 }
 
-/// Park & Schapery's conversion (eq. 2.18–2.23). The result may hold negative strengths (counted in
-/// the info): that is the method's behaviour, reported rather than hidden.
-pub fn park_schapery(
+/// The retardation times ρⱼ, ascending and without repeats: the user's (each checked finite and > 0),
+/// or else the relaxation times of the terms with positive strength.
+fn retardation_times(
     relax: &RelaxationSpectrum,
     settings: &ParkSchaperySettings,
-) -> Result<(CreepSpectrum, ParkSchaperyInfo), CreepError> {
-    relax.validate()?;
-    if relax.modulus_inf_pa == 0.0 {
-        let viscosity_pa_s = relax.terms.iter().map(|t| t.modulus_pa * t.tau_s).sum();
-        return Err(CreepError::Fluid { viscosity_pa_s });
-    }
+) -> Result<Vec<f64>, CreepError> {
     let mut taus: Vec<f64> = match &settings.retardation_times_s {
         Some(v) => {
             for (i, &t) in v.iter().enumerate() {
@@ -156,28 +151,17 @@ pub fn park_schapery(
     };
     taus.sort_by(f64::total_cmp);
     taus.dedup();
-    let e0 = relax.instantaneous_modulus();
-    let jg = 1.0 / e0; // eq. 2.20
-    if taus.is_empty() {
-        return Ok((
-            CreepSpectrum {
-                kind: relax.kind,
-                poisson: relax.poisson,
-                compliance_glassy_per_pa: jg,
-                terms: vec![],
-            },
-            ParkSchaperyInfo {
-                variant: settings.variant,
-                rows: 0,
-                cols: 0,
-                condition_number: 1.0,
-                negative_terms: 0,
-                residual_rms: 0.0,
-            },
-        ));
-    }
-    let times: Vec<f64> = match settings.variant {
-        ParkSchaperyVariant::CollocationOne => taus.clone(),
+    Ok(taus)
+}
+
+/// The times t_k the equations are written at: t = ρ, t = ρ/2, or a log grid from a decade below the
+/// shortest to a decade above the longest ρ with at least two rows per unknown (least squares).
+fn collocation_times(
+    taus: &[f64],
+    settings: &ParkSchaperySettings,
+) -> Result<Vec<f64>, CreepError> {
+    Ok(match settings.variant {
+        ParkSchaperyVariant::CollocationOne => taus.to_vec(),
         ParkSchaperyVariant::CollocationHalf => taus.iter().map(|t| 0.5 * t).collect(),
         ParkSchaperyVariant::LeastSquares => {
             let ppd = settings.least_squares_points_per_decade;
@@ -194,7 +178,16 @@ pub fn park_schapery(
                 .map(|k| 10f64.powf(lo + (hi - lo) * k as f64 / (n - 1) as f64))
                 .collect()
         }
-    };
+    })
+}
+
+/// The linear system A·J = B at the times t_k for the retardation times ρⱼ (eq. 2.22, 2.23).
+fn system(
+    relax: &RelaxationSpectrum,
+    times: &[f64],
+    taus: &[f64],
+    e0: f64,
+) -> (DMatrix<f64>, DVector<f64>) {
     let (p, n) = (times.len(), taus.len());
     let mut a = DMatrix::<f64>::zeros(p, n);
     let mut b = DVector::<f64>::zeros(p);
@@ -215,7 +208,14 @@ pub fn park_schapery(
             .sum::<f64>()
             / e0;
     }
-    // Column scaling.
+    (a, b)
+}
+
+/// Solve A·J = B with unit-norm columns (LU when square, SVD least squares otherwise): the strengths
+/// Jⱼ and the condition number of the scaled A. A numerically singular system (condition ≥ 1/ε) or
+/// a non-finite solution is refused.
+fn solve_scaled(a: &DMatrix<f64>, b: &DVector<f64>) -> Result<(Vec<f64>, f64), CreepError> {
+    let (p, n) = (a.nrows(), a.ncols());
     let scales: Vec<f64> = (0..n).map(|j| a.column(j).norm()).collect();
     let mut a_s = a.clone();
     for (j, &s) in scales.iter().enumerate() {
@@ -241,14 +241,52 @@ pub fn park_schapery(
         return Err(singular());
     }
     let y = if p == n {
-        a_s.clone().lu().solve(&b).ok_or_else(singular)?
+        a_s.clone().lu().solve(b).ok_or_else(singular)?
     } else {
-        sv.solve(&b, 0.0).map_err(|_| singular())?
+        sv.solve(b, 0.0).map_err(|_| singular())?
     };
     if y.iter().any(|v| !v.is_finite()) {
         return Err(singular());
     }
-    let jj: Vec<f64> = (0..n).map(|j| y[j] / scales[j]).collect();
+    Ok(((0..n).map(|j| y[j] / scales[j]).collect(), condition))
+}
+
+/// Park & Schapery's conversion (eq. 2.18–2.23). The result may hold negative strengths (counted in
+/// the info): that is the method's behaviour, reported rather than hidden.
+pub fn park_schapery(
+    relax: &RelaxationSpectrum,
+    settings: &ParkSchaperySettings,
+) -> Result<(CreepSpectrum, ParkSchaperyInfo), CreepError> {
+    relax.validate()?;
+    if relax.modulus_inf_pa == 0.0 {
+        let viscosity_pa_s = relax.terms.iter().map(|t| t.modulus_pa * t.tau_s).sum();
+        return Err(CreepError::Fluid { viscosity_pa_s });
+    }
+    let taus = retardation_times(relax, settings)?;
+    let e0 = relax.instantaneous_modulus();
+    let jg = 1.0 / e0; // eq. 2.20
+    if taus.is_empty() {
+        return Ok((
+            CreepSpectrum {
+                kind: relax.kind,
+                poisson: relax.poisson,
+                compliance_glassy_per_pa: jg,
+                terms: vec![],
+            },
+            ParkSchaperyInfo {
+                variant: settings.variant,
+                rows: 0,
+                cols: 0,
+                condition_number: 1.0,
+                negative_terms: 0,
+                residual_rms: 0.0,
+            },
+        ));
+    }
+    let times = collocation_times(&taus, settings)?;
+    let (p, n) = (times.len(), taus.len());
+    let (a, b) = system(relax, &times, &taus, e0);
+    let (jj, condition) = solve_scaled(&a, &b)?;
     let res = &a * DVector::from_vec(jj.clone()) - &b;
     let residual_rms = (res.norm_squared() / p as f64).sqrt();
     let mut terms: Vec<RetardationTerm> = taus

@@ -10,7 +10,7 @@
 //! `outlier_log10` and is the largest of r_{i−1}, r_i, r_{i+1} (one bad point also disturbs the
 //! residuals of its neighbours, by about half as much).
 
-use super::{DataPoint, Measurement};
+use super::{DataPoint, Isotherm, Measurement};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -203,225 +203,261 @@ fn earlier_twins(points: &[DataPoint], rel: f64) -> Vec<bool> {
     out
 }
 
-/// Run every check, flag points, append issues (and their messages to `warnings`), fill the summary.
-pub fn run(m: &mut Measurement, set: &CheckSettings) {
-    let mut issues: Vec<Issue> = Vec::new();
-    let add_point_flag = |p: &mut DataPoint, flag: Flag| {
-        if !p.flags.iter().any(|f| f == flag.as_str()) {
-            p.flags.push(flag.as_str().to_string());
-        }
-    };
-    let n_iso = m.isotherms.len();
-    for ii in 0..n_iso {
+/// Add `flag` to a point's flags unless it is there already.
+fn add_point_flag(p: &mut DataPoint, flag: Flag) {
+    if !p.flags.iter().any(|f| f == flag.as_str()) {
+        p.flags.push(flag.as_str().to_string());
+    }
+}
+
+/// Where an isotherm's findings point: its file, sheet and the column names as written, and the list
+/// they are appended to.
+struct Findings<'a> {
+    file: String,
+    sheet: Option<String>,
+    col_f: String,
+    col_s: String,
+    col_l: String,
+    col_t: String,
+    issues: &'a mut Vec<Issue>,
+}
+
+impl<'a> Findings<'a> {
+    /// The file, sheet and column names of isotherm `ii` of `m`.
+    fn of(m: &Measurement, ii: usize, issues: &'a mut Vec<Issue>) -> Self {
         let src = m.isotherms[ii].source;
         let file = m
             .sources
             .get(src)
             .map(|s| s.path.clone())
             .unwrap_or_default();
-        let sheet = m.isotherms[ii].sheet.clone();
-        let col_f = column_name(m, src, "frequency");
-        let col_s = {
-            let s = column_name(m, src, "storage modulus");
+        let either = |first: &str, second: &str| {
+            let s = column_name(m, src, first);
             if s.is_empty() {
-                column_name(m, src, "complex modulus")
+                column_name(m, src, second)
             } else {
                 s
             }
         };
-        let col_l = {
-            let s = column_name(m, src, "loss modulus");
-            if s.is_empty() {
-                column_name(m, src, "tan δ")
-            } else {
-                s
-            }
-        };
-        let col_t = column_name(m, src, "temperature");
-        let iso = &mut m.isotherms[ii];
-        let mut push = |flag: Flag, line: usize, column: &str, what: String| {
-            issues.push(Issue {
-                severity: flag.severity(),
-                flag,
-                file: file.clone(),
-                location: location(&sheet, line),
-                column: column.to_string(),
-                message: format!(
-                    "{file}: {}: column `{column}`: {what}",
-                    location(&sheet, line)
-                ),
-            });
-        };
-        // Value checks.
-        for p in iso.points.iter_mut() {
-            for (v, col, what) in [
-                (p.freq_hz, &col_f, "frequency"),
-                (p.storage_pa, &col_s, "storage modulus"),
-                (p.loss_pa, &col_l, "loss modulus"),
-            ] {
-                if v.is_nan() {
-                    let missing = p.flags.iter().any(|f| f == Flag::Missing.as_str());
-                    if missing {
-                        push(
-                            Flag::Missing,
-                            p.line,
-                            col,
-                            format!("{what} is missing; the point is kept, flagged `missing`"),
-                        );
-                    } else {
-                        add_point_flag(p, Flag::NotANumber);
-                        push(
-                            Flag::NotANumber,
-                            p.line,
-                            col,
-                            format!("{what} is NaN; the point is kept, flagged `not_a_number`"),
-                        );
-                    }
-                } else if v <= 0.0 {
-                    add_point_flag(p, Flag::NonPositive);
-                    push(Flag::NonPositive, p.line, col, format!("{what} {v:e} is not positive; the point is kept, flagged `non_positive`"));
-                }
-            }
-            if p.temp_c.is_some_and(|t| t.is_nan()) {
-                add_point_flag(p, Flag::NotANumber);
-                push(
-                    Flag::NotANumber,
-                    p.line,
-                    &col_t,
-                    "temperature is NaN".into(),
-                );
-            }
-        }
-        // Sweep checks.
-        let n = iso.points.len();
-        let valid = |p: &DataPoint| p.freq_hz > 0.0 && p.freq_hz.is_finite();
-        let first = iso.points.iter().find(|p| valid(p)).map(|p| p.freq_hz);
-        let last = iso
-            .points
-            .iter()
-            .rev()
-            .find(|p| valid(p))
-            .map(|p| p.freq_hz);
-        let ascending = match (first, last) {
-            (Some(a), Some(b)) => b >= a,
-            _ => true,
-        };
-        let has_earlier_twin = earlier_twins(&iso.points, set.duplicate_rel);
-        let mut prev: Option<f64> = None;
-        for (p, &dup) in iso.points.iter_mut().zip(&has_earlier_twin) {
-            if !valid(p) {
-                continue;
-            }
-            let fi = p.freq_hz;
-            let line = p.line;
-            if dup {
-                add_point_flag(p, Flag::DuplicateFrequency);
-                push(
-                    Flag::DuplicateFrequency,
-                    line,
-                    &col_f,
-                    format!(
-                        "frequency {fi} Hz appears twice in the isotherm at {:.1} °C",
-                        iso.temp_nominal_c
-                    ),
-                );
-            } else if let Some(pf) = prev {
-                if (ascending && fi < pf) || (!ascending && fi > pf) {
-                    add_point_flag(p, Flag::NonMonotonic);
-                    push(Flag::NonMonotonic, line, &col_f, format!("frequency {fi} Hz after {pf} Hz goes against the sweep of the isotherm at {:.1} °C", iso.temp_nominal_c));
-                }
-            }
-            prev = Some(fi);
-        }
-        // Outliers, on points with positive finite values only.
-        let idx: Vec<usize> = (0..n)
-            .filter(|&i| {
-                let p = &iso.points[i];
-                valid(p)
-                    && p.storage_pa > 0.0
-                    && p.loss_pa > 0.0
-                    && p.storage_pa.is_finite()
-                    && p.loss_pa.is_finite()
-                    && !p
-                        .flags
-                        .iter()
-                        .any(|f| f == Flag::DuplicateFrequency.as_str())
-            })
-            .collect();
-        if idx.len() >= 3 {
-            for (sel, col) in [(0usize, &col_s), (1, &col_l)] {
-                let y = |k: usize| {
-                    let p = &iso.points[idx[k]];
-                    if sel == 0 {
-                        p.storage_pa.log10()
-                    } else {
-                        p.loss_pa.log10()
-                    }
-                };
-                let x = |k: usize| iso.points[idx[k]].freq_hz.log10();
-                let mut r = vec![0.0; idx.len()];
-                for (k, rk) in r.iter_mut().enumerate().take(idx.len() - 1).skip(1) {
-                    let dx = x(k + 1) - x(k - 1);
-                    if dx.abs() < 1e-12 {
-                        continue;
-                    }
-                    let pred = y(k - 1) + (y(k + 1) - y(k - 1)) * (x(k) - x(k - 1)) / dx;
-                    *rk = y(k) - pred;
-                }
-                for k in 1..idx.len() - 1 {
-                    if r[k].abs() > set.outlier_log10
-                        && r[k].abs() >= r[k - 1].abs()
-                        && r[k].abs() >= r[k + 1].abs()
-                    {
-                        let p = &mut iso.points[idx[k]];
-                        let line = p.line;
-                        let value = if sel == 0 { p.storage_pa } else { p.loss_pa };
-                        add_point_flag(p, Flag::Outlier);
-                        let what = if sel == 0 {
-                            "storage modulus"
-                        } else {
-                            "loss modulus"
-                        };
-                        push(
-                            Flag::Outlier,
-                            line,
-                            col,
-                            outlier_message(what, value, r[k], set.outlier_log10),
-                        );
-                    }
-                }
-            }
-        }
-        if (iso.temp_mean_c - iso.temp_nominal_c).abs() > set.nominal_offset_k {
-            let line = iso.points.first().map(|p| p.line).unwrap_or(0);
-            push(
-                Flag::NominalOffset,
-                line,
-                &col_t,
-                format!(
-                    "mean measured temperature {:.2} °C is {:.2} K from the nominal {} °C ({})",
-                    iso.temp_mean_c,
-                    iso.temp_mean_c - iso.temp_nominal_c,
-                    iso.temp_nominal_c,
-                    iso.nominal_source
-                ),
-            );
+        Findings {
+            file,
+            sheet: m.isotherms[ii].sheet.clone(),
+            col_f: column_name(m, src, "frequency"),
+            col_s: either("storage modulus", "complex modulus"),
+            col_l: either("loss modulus", "tan δ"),
+            col_t: column_name(m, src, "temperature"),
+            issues,
         }
     }
-    if m.isotherms.len() == 1 {
-        issues.push(Issue {
-            severity: Severity::Warning,
-            flag: Flag::SingleIsotherm,
-            file: String::new(),
-            location: "whole measurement".into(),
-            column: String::new(),
+
+    /// Append one finding at `line` of `column`.
+    fn push(&mut self, flag: Flag, line: usize, column: &str, what: String) {
+        let file = &self.file;
+        self.issues.push(Issue {
+            severity: flag.severity(),
+            flag,
+            file: file.clone(),
+            location: location(&self.sheet, line),
+            column: column.to_string(),
             message: format!(
-                "only one isotherm (at {:.1} °C): a master curve needs several temperatures",
-                m.isotherms[0].temp_mean_c
+                "{file}: {}: column `{column}`: {what}",
+                location(&self.sheet, line)
             ),
         });
     }
-    // Summary.
+}
+
+/// A frequency usable for the sweep checks: positive and finite.
+fn valid_freq(p: &DataPoint) -> bool {
+    p.freq_hz > 0.0 && p.freq_hz.is_finite()
+}
+
+/// Value checks: a missing or NaN value, a zero or negative frequency or modulus, a NaN temperature.
+fn check_values(iso: &mut Isotherm, out: &mut Findings) {
+    let (col_f, col_s, col_l) = (out.col_f.clone(), out.col_s.clone(), out.col_l.clone());
+    for p in iso.points.iter_mut() {
+        for (v, col, what) in [
+            (p.freq_hz, &col_f, "frequency"),
+            (p.storage_pa, &col_s, "storage modulus"),
+            (p.loss_pa, &col_l, "loss modulus"),
+        ] {
+            if v.is_nan() {
+                let missing = p.flags.iter().any(|f| f == Flag::Missing.as_str());
+                if missing {
+                    out.push(
+                        Flag::Missing,
+                        p.line,
+                        col,
+                        format!("{what} is missing; the point is kept, flagged `missing`"),
+                    );
+                } else {
+                    add_point_flag(p, Flag::NotANumber);
+                    out.push(
+                        Flag::NotANumber,
+                        p.line,
+                        col,
+                        format!("{what} is NaN; the point is kept, flagged `not_a_number`"),
+                    );
+                }
+            } else if v <= 0.0 {
+                add_point_flag(p, Flag::NonPositive);
+                out.push(
+                    Flag::NonPositive,
+                    p.line,
+                    col,
+                    format!(
+                        "{what} {v:e} is not positive; the point is kept, flagged `non_positive`"
+                    ),
+                );
+            }
+        }
+        if p.temp_c.is_some_and(|t| t.is_nan()) {
+            add_point_flag(p, Flag::NotANumber);
+            let col_t = out.col_t.clone();
+            out.push(
+                Flag::NotANumber,
+                p.line,
+                &col_t,
+                "temperature is NaN".into(),
+            );
+        }
+    }
+}
+
+/// Sweep checks: a frequency seen earlier in the isotherm (within `duplicate_rel`), a frequency
+/// against the sweep direction (set by the first and last valid frequencies).
+fn check_sweep(iso: &mut Isotherm, set: &CheckSettings, out: &mut Findings) {
+    let first = iso.points.iter().find(|p| valid_freq(p)).map(|p| p.freq_hz);
+    let last = iso
+        .points
+        .iter()
+        .rev()
+        .find(|p| valid_freq(p))
+        .map(|p| p.freq_hz);
+    let ascending = match (first, last) {
+        (Some(a), Some(b)) => b >= a,
+        _ => true,
+    };
+    let has_earlier_twin = earlier_twins(&iso.points, set.duplicate_rel);
+    let col_f = out.col_f.clone();
+    let temp_nominal_c = iso.temp_nominal_c;
+    let mut prev: Option<f64> = None;
+    for (p, &dup) in iso.points.iter_mut().zip(&has_earlier_twin) {
+        if !valid_freq(p) {
+            continue;
+        }
+        let fi = p.freq_hz;
+        let line = p.line;
+        if dup {
+            add_point_flag(p, Flag::DuplicateFrequency);
+            out.push(
+                Flag::DuplicateFrequency,
+                line,
+                &col_f,
+                format!(
+                    "frequency {fi} Hz appears twice in the isotherm at {:.1} °C",
+                    temp_nominal_c
+                ),
+            );
+        } else if let Some(pf) = prev {
+            if (ascending && fi < pf) || (!ascending && fi > pf) {
+                add_point_flag(p, Flag::NonMonotonic);
+                out.push(Flag::NonMonotonic, line, &col_f, format!("frequency {fi} Hz after {pf} Hz goes against the sweep of the isotherm at {:.1} °C", temp_nominal_c));
+            }
+        }
+        prev = Some(fi);
+    }
+}
+
+/// Outliers (the residual rule of the module doc), on points with positive finite values only and
+/// not flagged as duplicates.
+fn check_outliers(iso: &mut Isotherm, set: &CheckSettings, out: &mut Findings) {
+    let n = iso.points.len();
+    let idx: Vec<usize> = (0..n)
+        .filter(|&i| {
+            let p = &iso.points[i];
+            valid_freq(p)
+                && p.storage_pa > 0.0
+                && p.loss_pa > 0.0
+                && p.storage_pa.is_finite()
+                && p.loss_pa.is_finite()
+                && !p
+                    .flags
+                    .iter()
+                    .any(|f| f == Flag::DuplicateFrequency.as_str())
+        })
+        .collect();
+    if idx.len() < 3 {
+        return;
+    }
+    let (col_s, col_l) = (out.col_s.clone(), out.col_l.clone());
+    for (sel, col) in [(0usize, &col_s), (1, &col_l)] {
+        let y = |k: usize| {
+            let p = &iso.points[idx[k]];
+            if sel == 0 {
+                p.storage_pa.log10()
+            } else {
+                p.loss_pa.log10()
+            }
+        };
+        let x = |k: usize| iso.points[idx[k]].freq_hz.log10();
+        let mut r = vec![0.0; idx.len()];
+        for (k, rk) in r.iter_mut().enumerate().take(idx.len() - 1).skip(1) {
+            let dx = x(k + 1) - x(k - 1);
+            if dx.abs() < 1e-12 {
+                continue;
+            }
+            let pred = y(k - 1) + (y(k + 1) - y(k - 1)) * (x(k) - x(k - 1)) / dx;
+            *rk = y(k) - pred;
+        }
+        for k in 1..idx.len() - 1 {
+            if r[k].abs() > set.outlier_log10
+                && r[k].abs() >= r[k - 1].abs()
+                && r[k].abs() >= r[k + 1].abs()
+            {
+                let p = &mut iso.points[idx[k]];
+                let line = p.line;
+                let value = if sel == 0 { p.storage_pa } else { p.loss_pa };
+                add_point_flag(p, Flag::Outlier);
+                let what = if sel == 0 {
+                    "storage modulus"
+                } else {
+                    "loss modulus"
+                };
+                out.push(
+                    Flag::Outlier,
+                    line,
+                    col,
+                    outlier_message(what, value, r[k], set.outlier_log10),
+                );
+            }
+        }
+    }
+}
+
+/// The mean measured temperature against the nominal one.
+fn check_nominal(iso: &Isotherm, set: &CheckSettings, out: &mut Findings) {
+    if (iso.temp_mean_c - iso.temp_nominal_c).abs() > set.nominal_offset_k {
+        let line = iso.points.first().map(|p| p.line).unwrap_or(0);
+        let col_t = out.col_t.clone();
+        out.push(
+            Flag::NominalOffset,
+            line,
+            &col_t,
+            format!(
+                "mean measured temperature {:.2} °C is {:.2} K from the nominal {} °C ({})",
+                iso.temp_mean_c,
+                iso.temp_mean_c - iso.temp_nominal_c,
+                iso.temp_nominal_c,
+                iso.nominal_source
+            ),
+        );
+    }
+}
+
+/// The counts of the summary: files, isotherms, points, flagged points, temperature and frequency
+/// ranges, and the issues by severity and flag.
+fn summarise(m: &Measurement, issues: &[Issue]) -> Summary {
     let mut s = Summary {
         files: m.sources.len(),
         isotherms: m.isotherms.len(),
@@ -445,14 +481,42 @@ pub fn run(m: &mut Measurement, set: &CheckSettings) {
             }
         }
     }
-    for i in &issues {
+    for i in issues {
         match i.severity {
             Severity::Error => s.errors += 1,
             Severity::Warning => s.warnings += 1,
         }
         *s.by_flag.entry(i.flag.as_str().to_string()).or_insert(0) += 1;
-        m.warnings.push(i.message.clone());
     }
+    s
+}
+
+/// Run every check, flag points, append issues (and their messages to `warnings`), fill the summary.
+pub fn run(m: &mut Measurement, set: &CheckSettings) {
+    let mut issues: Vec<Issue> = Vec::new();
+    for ii in 0..m.isotherms.len() {
+        let mut out = Findings::of(m, ii, &mut issues);
+        let iso = &mut m.isotherms[ii];
+        check_values(iso, &mut out);
+        check_sweep(iso, set, &mut out);
+        check_outliers(iso, set, &mut out);
+        check_nominal(iso, set, &mut out);
+    }
+    if m.isotherms.len() == 1 {
+        issues.push(Issue {
+            severity: Severity::Warning,
+            flag: Flag::SingleIsotherm,
+            file: String::new(),
+            location: "whole measurement".into(),
+            column: String::new(),
+            message: format!(
+                "only one isotherm (at {:.1} °C): a master curve needs several temperatures",
+                m.isotherms[0].temp_mean_c
+            ),
+        });
+    }
+    let s = summarise(m, &issues);
+    m.warnings.extend(issues.iter().map(|i| i.message.clone()));
     m.issues.extend(issues);
     m.summary = s;
 }

@@ -4,7 +4,7 @@
 
 use super::checks::{self, CheckSettings};
 use super::column_map::ColumnMap;
-use super::columns::{self, kind_name};
+use super::columns::{self, kind_name, RawPoint};
 use super::detect::{self, Format};
 use super::error::DmaError;
 use super::isotherms::{self, SplitSettings};
@@ -125,54 +125,107 @@ pub fn read_bytes(
         for n in &mapped.notes {
             m.warnings.push(format!("{name}: {n}"));
         }
-        match &kind {
-            Some((k, first)) if *k != mapped.kind => {
-                return Err(DmaError::MixedMode {
-                    file: name.clone(),
-                    found: kind_name(mapped.kind).into(),
-                    expected: kind_name(*k).into(),
-                    why: format!("{first} holds {} moduli", kind_name(*k)),
-                })
-            }
-            None => kind = Some((mapped.kind, name.clone())),
-            _ => {}
-        }
+        one_mode(&mut kind, name, mapped.kind)?;
         let name_temp = isotherms::temperature_from_file_name(name);
-        let no_temp = mapped
-            .points
-            .iter()
-            .find(|p| p.temp_c.is_none() && p.nominal_c.is_none())
-            .map(|p| p.loc.to_string());
         let mut points = mapped.points;
-        if let Some(p) = no_temp {
-            match name_temp {
-                Some(t) => {
-                    m.warnings.push(format!(
-                        "{name}: no temperature in the file; using {t} °C from the file name"
-                    ));
-                    for p in points.iter_mut().filter(|p| p.nominal_c.is_none()) {
-                        p.nominal_c = Some(t);
-                    }
-                }
-                None => {
-                    return Err(DmaError::NoTemperature {
-                        file: name.clone(),
-                        location: p,
-                    })
-                }
-            }
-        }
-        let sheet = points.first().and_then(|p| match &p.loc {
-            Loc::Row { sheet, .. } => Some(sheet.clone()),
-            _ => None,
-        });
+        temperatures_from_name(name, name_temp, &mut points, &mut m.warnings)?;
         let labels: Vec<Option<String>> = raw.blocks.iter().map(|b| b.label.clone()).collect();
-        for g in isotherms::split(points, name_temp, &opts.split) {
+        m.isotherms
+            .extend(file_isotherms(points, name_temp, si, &labels, opts));
+        let mut metadata = raw.metadata;
+        metadata.insert("mode evidence".into(), mapped.mode_evidence.clone());
+        m.sources.push(SourceFile {
+            path: name.clone(),
+            sha256: sha256_hex(bytes),
+            format: format.name().to_string(),
+            metadata,
+            encoding: encoding.to_string(),
+            columns: mapped.columns,
+        });
+    }
+    m.kind = kind.map(|k| k.0).unwrap_or_default();
+    snap_nominals_to_step_grid(&mut m.isotherms);
+    // In order of temperature (stable: equal temperatures keep file order).
+    m.isotherms
+        .sort_by(|a, b| a.temp_mean_c.total_cmp(&b.temp_mean_c));
+    checks::run(&mut m, &opts.checks);
+    super::plausible::check(&mut m)?;
+    Ok(m)
+}
+
+/// Every file must hold the same kind of modulus as the first (`kind`: that kind and the first
+/// file's name, set by the first call).
+fn one_mode(
+    kind: &mut Option<(ModulusKind, String)>,
+    name: &str,
+    found: ModulusKind,
+) -> Result<(), DmaError> {
+    match kind {
+        Some((k, first)) if *k != found => Err(DmaError::MixedMode {
+            file: name.to_string(),
+            found: kind_name(found).into(),
+            expected: kind_name(*k).into(),
+            why: format!("{first} holds {} moduli", kind_name(*k)),
+        }),
+        None => {
+            *kind = Some((found, name.to_string()));
+            Ok(())
+        }
+        _ => Ok(()),
+    }
+}
+
+/// A file without temperatures takes the one in its name (`name_temp`, with a warning); with
+/// neither, the first point without one is an error.
+fn temperatures_from_name(
+    name: &str,
+    name_temp: Option<f64>,
+    points: &mut [RawPoint],
+    warnings: &mut Vec<String>,
+) -> Result<(), DmaError> {
+    let no_temp = points
+        .iter()
+        .find(|p| p.temp_c.is_none() && p.nominal_c.is_none())
+        .map(|p| p.loc.to_string());
+    let Some(p) = no_temp else { return Ok(()) };
+    match name_temp {
+        Some(t) => {
+            warnings.push(format!(
+                "{name}: no temperature in the file; using {t} °C from the file name"
+            ));
+            for p in points.iter_mut().filter(|p| p.nominal_c.is_none()) {
+                p.nominal_c = Some(t);
+            }
+            Ok(())
+        }
+        None => Err(DmaError::NoTemperature {
+            file: name.to_string(),
+            location: p,
+        }),
+    }
+}
+
+/// The isotherms of file `si`: its points split by temperature, each labelled by its first point's
+/// block label, missing cells flagged.
+fn file_isotherms(
+    points: Vec<RawPoint>,
+    name_temp: Option<f64>,
+    si: usize,
+    labels: &[Option<String>],
+    opts: &IngestOptions,
+) -> Vec<Isotherm> {
+    let sheet = points.first().and_then(|p| match &p.loc {
+        Loc::Row { sheet, .. } => Some(sheet.clone()),
+        _ => None,
+    });
+    isotherms::split(points, name_temp, &opts.split)
+        .into_iter()
+        .map(|g| {
             let label = g
                 .points
                 .first()
                 .and_then(|p| labels.get(p.block).cloned().flatten());
-            m.isotherms.push(Isotherm {
+            Isotherm {
                 temp_nominal_c: g.nominal_c,
                 temp_mean_c: g.mean_c,
                 source: si,
@@ -195,39 +248,22 @@ pub fn read_bytes(
                 nominal_source: g.nominal_source.to_string(),
                 sheet: sheet.clone(),
                 label,
-            });
-        }
-        let mut metadata = raw.metadata;
-        metadata.insert("mode evidence".into(), mapped.mode_evidence.clone());
-        m.sources.push(SourceFile {
-            path: name.clone(),
-            sha256: sha256_hex(bytes),
-            format: format.name().to_string(),
-            metadata,
-            encoding: encoding.to_string(),
-            columns: mapped.columns,
-        });
-    }
-    m.kind = kind.map(|k| k.0).unwrap_or_default();
-    // Nominals from rounded means only: snap them to the step grid of all isotherms.
-    if m.isotherms
-        .iter()
-        .all(|i| i.nominal_source == "rounded mean")
-    {
-        let means: Vec<f64> = m.isotherms.iter().map(|i| i.temp_mean_c).collect();
+            }
+        })
+        .collect()
+}
+
+/// Nominals from rounded means only: snap them to the step grid of all isotherms.
+fn snap_nominals_to_step_grid(isos: &mut [Isotherm]) {
+    if isos.iter().all(|i| i.nominal_source == "rounded mean") {
+        let means: Vec<f64> = isos.iter().map(|i| i.temp_mean_c).collect();
         if let Some(grid) = isotherms::step_grid(&means) {
-            for iso in &mut m.isotherms {
+            for iso in isos.iter_mut() {
                 iso.temp_nominal_c = isotherms::on_grid(iso.temp_mean_c, grid);
                 iso.nominal_source = "step grid".into();
             }
         }
     }
-    // In order of temperature (stable: equal temperatures keep file order).
-    m.isotherms
-        .sort_by(|a, b| a.temp_mean_c.total_cmp(&b.temp_mean_c));
-    checks::run(&mut m, &opts.checks);
-    super::plausible::check(&mut m)?;
-    Ok(m)
 }
 
 fn parse_one(

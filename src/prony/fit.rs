@@ -47,7 +47,7 @@
 //!   material functions. Part I, Int. J. Solids Struct. 36, 1653–1675 (Prony series fits).
 
 use super::kernel::{dynamic_moduli_pa, loss_kernel, storage_kernel};
-use super::terms::{reduce_terms, TermControl};
+use super::terms::{reduce_terms, Reduced, TermControl};
 use super::{
     LambdaCandidate, PronyError, PronyInfo, PronySettings, RelaxationSpectrum, RelaxationTerm,
     WeightRule,
@@ -117,90 +117,34 @@ pub fn fit_prony(
     } else {
         (points, None)
     };
-    let f_min = points
-        .iter()
-        .map(|p| p.reduced_freq_hz)
-        .fold(f64::INFINITY, f64::min);
-    let f_max = points.iter().map(|p| p.reduced_freq_hz).fold(0.0, f64::max);
-    if f_max <= f_min * (1.0 + 1e-12) {
-        return Err(PronyError::NoFrequencyWindow { freq_hz: f_min });
-    }
+    let (f_min, f_max) = freq_window_hz(points)?;
     let taus = relaxation_times_s(f_min, f_max, settings);
     let scale = points.iter().map(|p| p.storage_pa).fold(0.0, f64::max);
     let problem = Problem::new(points, &taus, scale, settings.loss_weight);
-
-    // λ search (or the fixed λ).
-    let (lambda, solution, search, total_iterations) = match settings.weight_rule {
-        WeightRule::Fixed { lambda } => {
-            let s = problem.solve(lambda, settings.max_iter)?;
-            let it = s.iterations;
-            (lambda, s, Vec::new(), it)
-        }
-        rule => problem.search(rule, settings)?,
-    };
-    if !matches!(
-        solution.status,
-        SolverStatus::Solved | SolverStatus::AlmostSolved
-    ) {
-        return Err(PronyError::Solver(format!(
-            "status {:?} at λ = {lambda:e}",
-            solution.status
-        )));
-    }
-
-    // Drop terms whose largest relative contribution to any datum is below the threshold.
-    let x = &solution.x;
-    let mut terms = Vec::new();
-    for (j, &tau_s) in taus.iter().enumerate() {
-        let col = j + 1;
-        let effect = x[col].max(0.0) * problem.col_max[col];
-        if effect >= settings.drop_threshold {
-            terms.push(RelaxationTerm {
-                modulus_pa: x[col].max(0.0) * scale,
-                tau_s,
-            });
-        }
-    }
-    let spectrum = RelaxationSpectrum {
-        kind,
-        poisson,
-        modulus_inf_pa: x[0].max(0.0) * scale,
-        terms,
-    };
-    let mut spectrum = spectrum;
-    let mut errors = log10_errors(points, &spectrum);
-    let dense_terms = spectrum.terms.len();
-    let dense_rms = [errors.rms_storage, errors.rms_loss];
-    let mut reduction = None;
-    if settings.reduce_terms || settings.max_terms.is_some() || settings.target_rms_log10.is_some()
+    let (lambda, solution, search, total_iterations) = solve_weights(&problem, settings)?;
+    let dense = dense_spectrum(&problem, &solution.x, &taus, scale, settings, kind, poisson);
+    let dense_errors = log10_errors(points, &dense);
+    let dense_terms = dense.terms.len();
+    let dense_rms = [dense_errors.rms_storage, dense_errors.rms_loss];
+    let (spectrum, errors, reduction) = if settings.reduce_terms
+        || settings.max_terms.is_some()
+        || settings.target_rms_log10.is_some()
     {
-        // Default target: the dense fit's own errors (no worse in either modulus).
-        let target = settings.target_rms_log10.unwrap_or(dense_rms);
-        let control = TermControl {
-            max_terms: settings.max_terms,
-            target_storage: target[0],
-            target_loss: target[1],
-            log_residuals: settings.log_residuals,
-            stop_early: true,
-        };
-        let red = reduce_terms(
-            points,
-            &taus,
-            scale,
-            settings.loss_weight,
-            kind,
-            poisson,
-            &control,
-        )?;
+        let dense_fit = (dense, dense_errors);
+        let (target, red) = reduce(points, &taus, scale, settings, kind, poisson, dense_rms)?;
         // Target missed and the dense fit within the cap: keep the dense fit (it is the most accurate
         // one the grid gives, and by default it is the target itself).
         let keep_dense = !red.target_met && settings.max_terms.map_or(true, |c| dense_terms <= c);
-        if !keep_dense {
-            spectrum = red.spectrum;
-            errors = log10_errors(points, &spectrum);
-        }
-        reduction = Some((target, red.target_met, red.trade));
-    }
+        let (spectrum, errors) = if keep_dense {
+            dense_fit
+        } else {
+            let errors = log10_errors(points, &red.spectrum);
+            (red.spectrum, errors)
+        };
+        (spectrum, errors, Some((target, red.target_met, red.trade)))
+    } else {
+        (dense, dense_errors, None)
+    };
     let (term_target, target_met, trade) = match reduction {
         Some((t, m, tr)) => (Some(t), Some(m), tr),
         None => (None, None, Vec::new()),
@@ -231,6 +175,106 @@ pub fn fit_prony(
         term_trade: trade,
     };
     Ok(PronyFit { spectrum, info })
+}
+
+/// The lowest and highest reduced frequency in Hz; an error when they coincide (no window to fit).
+fn freq_window_hz(points: &[MasterPoint]) -> Result<(f64, f64), PronyError> {
+    let f_min = points
+        .iter()
+        .map(|p| p.reduced_freq_hz)
+        .fold(f64::INFINITY, f64::min);
+    let f_max = points.iter().map(|p| p.reduced_freq_hz).fold(0.0, f64::max);
+    if f_max <= f_min * (1.0 + 1e-12) {
+        return Err(PronyError::NoFrequencyWindow { freq_hz: f_min });
+    }
+    Ok((f_min, f_max))
+}
+
+/// The λ search (or the fixed λ): λ, the QP solution there, the candidates tried and the total
+/// solver iterations. A solution not (almost) solved is an error.
+fn solve_weights(
+    problem: &Problem,
+    settings: &PronySettings,
+) -> Result<(f64, Solution, Vec<LambdaCandidate>, u32), PronyError> {
+    let (lambda, solution, search, total_iterations) = match settings.weight_rule {
+        WeightRule::Fixed { lambda } => {
+            let s = problem.solve(lambda, settings.max_iter)?;
+            let it = s.iterations;
+            (lambda, s, Vec::new(), it)
+        }
+        rule => problem.search(rule, settings)?,
+    };
+    if !matches!(
+        solution.status,
+        SolverStatus::Solved | SolverStatus::AlmostSolved
+    ) {
+        return Err(PronyError::Solver(format!(
+            "status {:?} at λ = {lambda:e}",
+            solution.status
+        )));
+    }
+    Ok((lambda, solution, search, total_iterations))
+}
+
+/// The dense spectrum from the QP's scaled unknowns `x`: the terms whose largest relative
+/// contribution to any datum reaches the drop threshold, moduli unscaled.
+fn dense_spectrum(
+    problem: &Problem,
+    x: &[f64],
+    taus: &[f64],
+    scale: f64,
+    settings: &PronySettings,
+    kind: ModulusKind,
+    poisson: f64,
+) -> RelaxationSpectrum {
+    let mut terms = Vec::new();
+    for (j, &tau_s) in taus.iter().enumerate() {
+        let col = j + 1;
+        let effect = x[col].max(0.0) * problem.col_max[col];
+        if effect >= settings.drop_threshold {
+            terms.push(RelaxationTerm {
+                modulus_pa: x[col].max(0.0) * scale,
+                tau_s,
+            });
+        }
+    }
+    RelaxationSpectrum {
+        kind,
+        poisson,
+        modulus_inf_pa: x[0].max(0.0) * scale,
+        terms,
+    }
+}
+
+/// The term reduction ([`reduce_terms`]) with the settings' cap and target — by default the dense
+/// fit's own errors `dense_rms` (no worse in either modulus). Returns the target used and the result.
+fn reduce(
+    points: &[MasterPoint],
+    taus: &[f64],
+    scale: f64,
+    settings: &PronySettings,
+    kind: ModulusKind,
+    poisson: f64,
+    dense_rms: [f64; 2],
+) -> Result<([f64; 2], Reduced), PronyError> {
+    let target = settings.target_rms_log10.unwrap_or(dense_rms);
+    let control = TermControl {
+        max_terms: settings.max_terms,
+        target_storage: target[0],
+        target_loss: target[1],
+        log_residuals: settings.log_residuals,
+        stop_early: true,
+    };
+    let red = reduce_terms(
+        points,
+        taus,
+        scale,
+        settings.loss_weight,
+        kind,
+        poisson,
+        &control,
+    )?;
+    Ok((target, red))
 }
 
 /// Above this many master-curve points the QP fits the means of this many groups ([`thin_points`]).

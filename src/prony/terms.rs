@@ -42,7 +42,7 @@
 //!   squares problems whose variables separate, SIAM J. Numer. Anal. 10, 413–432; Kaufman, L. (1975),
 //!   A variable projection method for solving separable nonlinear least squares problems, BIT 15, 49–57.
 
-use super::fit::{log10_errors, MasterPoint};
+use super::fit::{log10_errors, Log10Errors, MasterPoint};
 use super::kernel::{loss_kernel, storage_kernel};
 use super::{PronyError, RelaxationSpectrum, RelaxationTerm};
 use crate::ModulusKind;
@@ -138,43 +138,20 @@ pub fn reduce_terms(
         let e = log10_errors(points, &spectrum);
         let n = u.len();
         // Counts strictly fall (each pass removes at least one term), so each row is new.
-        trade.push(TermTrade {
-            n_terms: n,
-            rms_log10_storage: e.rms_storage,
-            rms_log10_loss: e.rms_loss,
-            max_abs_log10_storage: e.max_storage,
-            max_abs_log10_loss: e.max_loss,
-        });
+        trade.push(TermTrade::of(n, &e));
         states.push((u.clone(), x.clone()));
         let row = trade[trade.len() - 1];
         let far_off = row.rms_log10_storage > STOP_FACTOR * control.target_storage
             || row.rms_log10_loss > STOP_FACTOR * control.target_loss;
-        met_once |= !far_off
-            && row.rms_log10_storage <= control.target_storage
-            && row.rms_log10_loss <= control.target_loss
-            && n <= control.max_terms.unwrap_or(n);
+        met_once |= !far_off && control.meets(&row) && n <= control.max_terms.unwrap_or(n);
         if n <= 1 || (control.stop_early && far_off && met_once) {
             break;
         }
-        // 3. Prune the term whose removal costs least, ranked on the problem linearised at the
-        // current fit. ‖M x − t‖² = ‖R x − Qᵀt‖² + ‖(I − QQᵀ) t‖² with M = QR, so each candidate is
-        // an NNLS on R without column j (n+1 rows, not 2m), warm-started from the current set.
-        let (ms, t) = prob.linearised(&prob.design(&u), Some(&x));
-        let qr = ms.qr();
-        let (r, qtt) = (qr.r(), qr.q().transpose() * &t);
-        let mut best: Option<(f64, usize, Vec<f64>)> = None;
-        for j in 0..n {
-            let cols: Vec<usize> = (0..=n).filter(|&c| c != j + 1).collect();
-            let rj = r.select_columns(cols.iter());
-            let passive: Vec<bool> = cols.iter().map(|&c| x[c] > 0.0).collect();
-            let xj = nnls(&rj, &qtt, Some(&passive));
-            let cost = (&rj * DVector::from_column_slice(&xj) - &qtt).norm_squared();
-            if cost.is_finite() && best.as_ref().map_or(true, |b| cost < b.0) {
-                best = Some((cost, j, xj));
-            }
-        }
+        // 3. Prune the term whose removal costs least.
         // A NaN cost (never seen; a degenerate column) ends the reduction rather than the program.
-        let Some((_, j, xj)) = best else { break };
+        let Some((j, xj)) = cheapest_removal(&prob, &u, &x) else {
+            break;
+        };
         u.remove(j);
         x = prob.weights(&u, Some(&xj));
         keep_positive(&mut u, &mut x);
@@ -182,18 +159,88 @@ pub fn reduce_terms(
             break;
         }
     }
-    let meets_errors = |e: &super::fit::Log10Errors| {
-        e.rms_storage <= control.target_storage && e.rms_loss <= control.target_loss
-    };
     // 4. Choose.
-    let cap = control.max_terms.unwrap_or(usize::MAX);
-    let meets = |t: &TermTrade| {
-        t.rms_log10_storage <= control.target_storage && t.rms_log10_loss <= control.target_loss
+    let Some((i, target_met)) = choose(&trade, control) else {
+        return Err(PronyError::Solver(
+            "term reduction found no spectrum (no term survived the NNLS start)".into(),
+        ));
     };
-    let pick = trade
+    let (mut u, mut x) = states[i].clone();
+    // 5. A second start for the chosen count.
+    if let Some((u2, x2)) = second_start(&prob, &u, &x) {
+        let e2 = log10_errors(points, &prob.spectrum(&u2, &x2, kind, poisson));
+        if !target_met || control.meets_errors(&e2) {
+            u = u2;
+            x = x2;
+        }
+    }
+    let spectrum = prob.spectrum(&u, &x, kind, poisson);
+    let e = log10_errors(points, &spectrum);
+    trade[i] = TermTrade::of(u.len(), &e);
+    let target_met = target_met && control.meets_errors(&e);
+    Ok(Reduced {
+        spectrum,
+        trade,
+        target_met,
+    })
+}
+
+impl TermTrade {
+    /// The row of `n_terms` terms with the errors `e`.
+    fn of(n_terms: usize, e: &Log10Errors) -> Self {
+        TermTrade {
+            n_terms,
+            rms_log10_storage: e.rms_storage,
+            rms_log10_loss: e.rms_loss,
+            max_abs_log10_storage: e.max_storage,
+            max_abs_log10_loss: e.max_loss,
+        }
+    }
+}
+
+impl TermControl {
+    /// Whether a trade row meets both RMS targets.
+    fn meets(&self, t: &TermTrade) -> bool {
+        t.rms_log10_storage <= self.target_storage && t.rms_log10_loss <= self.target_loss
+    }
+    /// Whether errors meet both RMS targets.
+    fn meets_errors(&self, e: &Log10Errors) -> bool {
+        e.rms_storage <= self.target_storage && e.rms_loss <= self.target_loss
+    }
+}
+
+/// Step 3: the term whose removal costs least and the warm-start weights without it, ranked on the
+/// problem linearised at the current fit. ‖M x − t‖² = ‖R x − Qᵀt‖² + ‖(I − QQᵀ) t‖² with M = QR,
+/// so each candidate is an NNLS on R without column j (n+1 rows, not 2m), warm-started from the
+/// current set. None when no candidate has a finite cost.
+fn cheapest_removal(prob: &Separable, u: &[f64], x: &[f64]) -> Option<(usize, Vec<f64>)> {
+    let n = u.len();
+    let (ms, t) = prob.linearised(&prob.design(u), Some(x));
+    let qr = ms.qr();
+    let (r, qtt) = (qr.r(), qr.q().transpose() * &t);
+    let mut best: Option<(f64, usize, Vec<f64>)> = None;
+    for j in 0..n {
+        let cols: Vec<usize> = (0..=n).filter(|&c| c != j + 1).collect();
+        let rj = r.select_columns(cols.iter());
+        let passive: Vec<bool> = cols.iter().map(|&c| x[c] > 0.0).collect();
+        let xj = nnls(&rj, &qtt, Some(&passive));
+        let cost = (&rj * DVector::from_column_slice(&xj) - &qtt).norm_squared();
+        if cost.is_finite() && best.as_ref().map_or(true, |b| cost < b.0) {
+            best = Some((cost, j, xj));
+        }
+    }
+    best.map(|(_, j, xj)| (j, xj))
+}
+
+/// Step 4: the row to keep and whether it meets the targets — the fewest terms within the cap that
+/// meet both, or else the most terms allowed (the best this count gives). None when no row is within
+/// the cap.
+fn choose(trade: &[TermTrade], control: &TermControl) -> Option<(usize, bool)> {
+    let cap = control.max_terms.unwrap_or(usize::MAX);
+    trade
         .iter()
         .enumerate()
-        .filter(|(_, t)| t.n_terms <= cap && meets(t))
+        .filter(|(_, t)| t.n_terms <= cap && control.meets(t))
         .min_by_key(|(_, t)| t.n_terms)
         .map(|(i, _)| (i, true))
         .or_else(|| {
@@ -204,49 +251,25 @@ pub fn reduce_terms(
                 .filter(|(_, t)| t.n_terms <= cap)
                 .max_by_key(|(_, t)| t.n_terms)
                 .map(|(i, _)| (i, false))
-        });
-    let Some((i, target_met)) = pick else {
-        return Err(PronyError::Solver(
-            "term reduction found no spectrum (no term survived the NNLS start)".into(),
-        ));
-    };
-    let (mut u, mut x) = states[i].clone();
-    // 5. A second start for the chosen count: the same number of times log-spaced over the window,
-    // positions optimised. The greedy path is one local optimum; keep whichever is better.
+        })
+}
+
+/// Step 5: a second start for the chosen count — the same number of times log-spaced over the
+/// window, positions optimised. The greedy path is one local optimum; this start is returned when it
+/// keeps the count and costs less than (u, x).
+fn second_start(prob: &Separable, u: &[f64], x: &[f64]) -> Option<(Vec<f64>, Vec<f64>)> {
     let n = u.len();
-    if (1..=LM_MAX_TERMS).contains(&n) {
-        let mut u2: Vec<f64> = (0..n)
-            .map(|j| prob.u_lo + (prob.u_hi - prob.u_lo) * (j as f64 + 0.5) / n as f64)
-            .collect();
-        let mut x2 = prob.weights(&u2, None);
-        keep_positive(&mut u2, &mut x2);
-        prob.optimise_positions(&mut u2, &mut x2);
-        keep_positive(&mut u2, &mut x2);
-        if !u2.is_empty() && u2.len() == n && prob.cost(&u2, &x2) < prob.cost(&u, &x) {
-            let e2 = log10_errors(points, &prob.spectrum(&u2, &x2, kind, poisson));
-            if !target_met || meets_errors(&e2) {
-                u = u2;
-                x = x2;
-            }
-        }
+    if !(1..=LM_MAX_TERMS).contains(&n) {
+        return None;
     }
-    let spectrum = prob.spectrum(&u, &x, kind, poisson);
-    let e = log10_errors(points, &spectrum);
-    let row = &mut trade[i];
-    *row = TermTrade {
-        n_terms: u.len(),
-        rms_log10_storage: e.rms_storage,
-        rms_log10_loss: e.rms_loss,
-        max_abs_log10_storage: e.max_storage,
-        max_abs_log10_loss: e.max_loss,
-    };
-    let target_met =
-        target_met && e.rms_storage <= control.target_storage && e.rms_loss <= control.target_loss;
-    Ok(Reduced {
-        spectrum,
-        trade,
-        target_met,
-    })
+    let mut u2: Vec<f64> = (0..n)
+        .map(|j| prob.u_lo + (prob.u_hi - prob.u_lo) * (j as f64 + 0.5) / n as f64)
+        .collect();
+    let mut x2 = prob.weights(&u2, None);
+    keep_positive(&mut u2, &mut x2);
+    prob.optimise_positions(&mut u2, &mut x2);
+    keep_positive(&mut u2, &mut x2);
+    (!u2.is_empty() && u2.len() == n && prob.cost(&u2, &x2) < prob.cost(u, x)).then_some((u2, x2))
 }
 
 /// Drop the terms whose weight came out zero (x[0] is E∞ and stays).
