@@ -14,7 +14,9 @@ use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::bands::BandSettings;
 use crate::dma::read_files;
 use crate::report::{ranking_csv, write_file, write_index, write_report, TanDeltaProxy};
-use crate::results::{cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneStanding};
+use crate::results::{
+    cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneSpec, SceneStanding,
+};
 use crate::Measurement;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -165,91 +167,127 @@ fn fit_options(c: &CompoundInput, opts: &RunOptions) -> FitOptions {
     fit
 }
 
+/// A compound's measurement, its fit, what was done to the fit file and why there are no bands.
+type Fitted = (Measurement, CompoundFit, FitAction, Option<String>);
+
+/// (scene, its temperatures, cover) → the friction ratios of each replicate.
+type SolvedRatios = (
+    (crate::contact::Scene, Vec<f64>, Option<f64>),
+    Vec<Vec<f64>>,
+);
+
+/// Fit (or reuse the fit of) a compound measured in isotherms, with its bands when asked.
+fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError> {
+    let measurement = checked_measurement(c)?;
+    let (fit, action, no_bands) = fit_or_reuse_with_bands(
+        &c.name,
+        &measurement,
+        &fit_path(&opts.out_dir, &c.name),
+        &fit_options(c, opts),
+        opts.force,
+        opts.bands.as_ref(),
+    )?;
+    Ok((measurement, fit, action, no_bands))
+}
+
+/// Fit (or reuse the fit of) a master curve read already shifted (pyvisco's CSV pair: the compound's
+/// file and `shift_factors`), checked like any export; it has no bands.
+fn fit_shifted(
+    c: &CompoundInput,
+    shift_factors: &Path,
+    opts: &RunOptions,
+) -> Result<Fitted, PipelineError> {
+    let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
+    let pv = crate::dma::pyvisco::read_master_pair(
+        &c.files[0],
+        shift_factors,
+        poisson,
+        c.settings.tref_c,
+    )?;
+    let mut measurement = pv.measurement;
+    crate::dma::plausible::refuse_impossible(&measurement).map_err(|message| {
+        PipelineError::Implausible {
+            compound: c.name.clone(),
+            message: cap_line(&message),
+        }
+    })?;
+    let w = crate::dma::plausible::warnings(&measurement);
+    measurement.warnings.extend(w);
+    let master = crate::tts::master_curve_from_reduced(&measurement, &pv.shift_law)?;
+    let mut options = fit_options(c, opts);
+    options.master = master.settings.clone();
+    let (fit, action) = fit_or_reuse_master(
+        &c.name,
+        &measurement,
+        &master,
+        &fit_path(&opts.out_dir, &c.name),
+        &options,
+        opts.force,
+    )?;
+    // The bands resample isotherms; a master curve read already shifted has none.
+    let no_bands = opts.bands.as_ref().map(|_| {
+        "uncertainty bands not computed: a master curve read already shifted has no \
+         isotherms to resample"
+            .to_string()
+    });
+    Ok((measurement, fit, action, no_bands))
+}
+
+/// The friction ratios of each replicate in a scene, and each point's band from them. The ratios are
+/// solved on the scene's body (a cover: eq. 15.6); scenes with the same roll, temperatures and cover
+/// share them (`solved`).
+fn scene_bands(
+    fit: &CompoundFit,
+    ensemble: &crate::results::BandEnsemble,
+    spec: &SceneSpec,
+    bs: &BandSettings,
+    points: &mut [FrictionPoint],
+    solved: &mut Vec<SolvedRatios>,
+) -> Vec<Vec<f64>> {
+    let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
+    let key = (spec.scene(), spec.temps_c.clone(), cover_m);
+    let r = match solved.iter().find(|(k, _)| *k == key) {
+        Some((_, r)) => r.clone(),
+        None => {
+            let r = crate::bands::scene_ratios_on(fit, ensemble, &key.0, cover_m, &key.1, bs);
+            solved.push((key, r.clone()));
+            r
+        }
+    };
+    for (p, r) in points.iter_mut().zip(&r) {
+        if p.error.is_none() {
+            p.band = crate::bands::band_of(p.friction, r);
+        }
+    }
+    r
+}
+
 fn one_compound(
     c: &CompoundInput,
     opts: &RunOptions,
     step: &dyn Fn(&str),
 ) -> Result<CompoundResult, PipelineError> {
     let (measurement, fit, action, no_bands) = match &c.settings.shift_factors {
-        None => {
-            let measurement = checked_measurement(c)?;
-            let (fit, action, no_bands) = fit_or_reuse_with_bands(
-                &c.name,
-                &measurement,
-                &fit_path(&opts.out_dir, &c.name),
-                &fit_options(c, opts),
-                opts.force,
-                opts.bands.as_ref(),
-            )?;
-            (measurement, fit, action, no_bands)
-        }
-        Some(sf) => {
-            // A master curve read already shifted (pyvisco's CSV pair).
-            let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
-            let pv =
-                crate::dma::pyvisco::read_master_pair(&c.files[0], sf, poisson, c.settings.tref_c)?;
-            let mut measurement = pv.measurement;
-            crate::dma::plausible::refuse_impossible(&measurement).map_err(|message| {
-                PipelineError::Implausible {
-                    compound: c.name.clone(),
-                    message: cap_line(&message),
-                }
-            })?;
-            let w = crate::dma::plausible::warnings(&measurement);
-            measurement.warnings.extend(w);
-            let master = crate::tts::master_curve_from_reduced(&measurement, &pv.shift_law)?;
-            let mut options = fit_options(c, opts);
-            options.master = master.settings.clone();
-            let (fit, action) = fit_or_reuse_master(
-                &c.name,
-                &measurement,
-                &master,
-                &fit_path(&opts.out_dir, &c.name),
-                &options,
-                opts.force,
-            )?;
-            // The bands resample isotherms; a master curve read already shifted has none.
-            let no_bands = opts.bands.as_ref().map(|_| {
-                "uncertainty bands not computed: a master curve read already shifted has no \
-                 isotherms to resample"
-                    .to_string()
-            });
-            (measurement, fit, action, no_bands)
-        }
+        None => fit_measured(c, opts)?,
+        Some(sf) => fit_shifted(c, sf, opts)?,
     };
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
     let mut maps = Vec::new();
     let mut ratios = Vec::new();
-    // (scene, its temperatures, cover) → the friction ratios of each replicate.
-    type SolvedRatios = (
-        (crate::contact::Scene, Vec<f64>, Option<f64>),
-        Vec<Vec<f64>>,
-    );
     let mut solved: Vec<SolvedRatios> = Vec::new();
     for spec in &opts.scenes.scene {
         let mut points = friction_vs_temperature(&fit, spec, &settings)?;
         if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
-            // The ratios are solved on the scene's body (a cover: eq. 15.6); scenes with the same
-            // roll, temperatures and cover share them.
-            let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
-            let key = (spec.scene(), spec.temps_c.clone(), cover_m);
-            let r = match solved.iter().find(|(k, _)| *k == key) {
-                Some((_, r)) => r.clone(),
-                None => {
-                    let r =
-                        crate::bands::scene_ratios_on(&fit, ensemble, &key.0, cover_m, &key.1, bs);
-                    solved.push((key, r.clone()));
-                    r
-                }
-            };
-            for (p, r) in points.iter_mut().zip(&r) {
-                if p.error.is_none() {
-                    p.band = crate::bands::band_of(p.friction, r);
-                }
-            }
-            ratios.push(r);
+            ratios.push(scene_bands(
+                &fit,
+                ensemble,
+                spec,
+                bs,
+                &mut points,
+                &mut solved,
+            ));
         } else {
             ratios.push(Vec::new());
         }

@@ -364,75 +364,85 @@ pub fn draw_chart<DB: DrawingBackend>(
         .map_err(e)?;
     let colour = |i: usize, cv: &Curve| cv.colour.unwrap_or(PALETTE[i % PALETTE.len()]);
     for (i, cv) in c.curves.iter().enumerate() {
-        let col = colour(i, cv);
-        // the band: a polygon along the lows and back along the highs
-        let band: Vec<((f64, f64), (f64, f64))> = cv
-            .band
-            .iter()
-            .filter_map(|&(x, lo, hi)| Some((to_axes(c, (x, lo))?, to_axes(c, (x, hi))?)))
-            .collect();
-        if band.len() >= 2 {
-            let poly: Vec<(f64, f64)> = band
-                .iter()
-                .map(|b| b.0)
-                .chain(band.iter().rev().map(|b| b.1))
-                .collect();
-            chart
-                .draw_series(std::iter::once(Polygon::new(poly, col.mix(0.2).filled())))
-                .map_err(e)?;
-        } else {
-            // a single band: an error bar
-            chart
-                .draw_series(
-                    band.iter().map(|&(lo, hi)| {
-                        PathElement::new(vec![lo, hi], col.mix(0.6).stroke_width(3))
-                    }),
-                )
-                .map_err(e)?;
-        }
-        let pts: Vec<(f64, f64)> = cv.points.iter().filter_map(|&p| to_axes(c, p)).collect();
-        if matches!(cv.mark, Mark::Line | Mark::LineDots | Mark::LineCircles) {
-            chart
-                .draw_series(LineSeries::new(pts.iter().copied(), col.stroke_width(2)))
-                .map_err(e)?;
-        }
-        if cv.mark == Mark::Dashed {
-            chart
-                .draw_series(DashedLineSeries::new(
-                    pts.iter().copied(),
-                    10,
-                    6,
-                    col.stroke_width(2),
-                ))
-                .map_err(e)?;
-        }
-        match cv.mark {
-            Mark::LineDots | Mark::Dots | Mark::Stems => {
-                chart
-                    .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
-                    .map_err(e)?;
-            }
-            Mark::Circles | Mark::LineCircles => {
-                chart
-                    .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.stroke_width(1))))
-                    .map_err(e)?;
-            }
-            _ => {}
-        }
-        if cv.mark == Mark::Stems {
-            chart
-                .draw_series(
-                    pts.iter().map(|&(x, y)| {
-                        PathElement::new(vec![(x, y0), (x, y)], col.stroke_width(2))
-                    }),
-                )
-                .map_err(e)?;
-        }
+        draw_curve(&mut chart, c, cv, colour(i, cv), y0)?;
     }
     if let Some(bar) = &c.colour_bar {
         draw_colour_bar(&panel, bar)?;
     } else if !named.is_empty() {
         draw_legend(&panel, &named, &colour)?;
+    }
+    Ok(())
+}
+
+/// One curve of `c` on the chart in colour `col`: its band (a shaded polygon, or an error bar when
+/// it has one point), its line and its marks (stems drop to the axis at `y0`).
+fn draw_curve<DB: DrawingBackend>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<Ticked, Ticked>>,
+    c: &Chart,
+    cv: &Curve,
+    col: RGBColor,
+    y0: f64,
+) -> Result<(), String> {
+    // the band: a polygon along the lows and back along the highs
+    let band: Vec<((f64, f64), (f64, f64))> = cv
+        .band
+        .iter()
+        .filter_map(|&(x, lo, hi)| Some((to_axes(c, (x, lo))?, to_axes(c, (x, hi))?)))
+        .collect();
+    if band.len() >= 2 {
+        let poly: Vec<(f64, f64)> = band
+            .iter()
+            .map(|b| b.0)
+            .chain(band.iter().rev().map(|b| b.1))
+            .collect();
+        chart
+            .draw_series(std::iter::once(Polygon::new(poly, col.mix(0.2).filled())))
+            .map_err(e)?;
+    } else {
+        // a single band: an error bar
+        chart
+            .draw_series(
+                band.iter()
+                    .map(|&(lo, hi)| PathElement::new(vec![lo, hi], col.mix(0.6).stroke_width(3))),
+            )
+            .map_err(e)?;
+    }
+    let pts: Vec<(f64, f64)> = cv.points.iter().filter_map(|&p| to_axes(c, p)).collect();
+    if matches!(cv.mark, Mark::Line | Mark::LineDots | Mark::LineCircles) {
+        chart
+            .draw_series(LineSeries::new(pts.iter().copied(), col.stroke_width(2)))
+            .map_err(e)?;
+    }
+    if cv.mark == Mark::Dashed {
+        chart
+            .draw_series(DashedLineSeries::new(
+                pts.iter().copied(),
+                10,
+                6,
+                col.stroke_width(2),
+            ))
+            .map_err(e)?;
+    }
+    match cv.mark {
+        Mark::LineDots | Mark::Dots | Mark::Stems => {
+            chart
+                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
+                .map_err(e)?;
+        }
+        Mark::Circles | Mark::LineCircles => {
+            chart
+                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.stroke_width(1))))
+                .map_err(e)?;
+        }
+        _ => {}
+    }
+    if cv.mark == Mark::Stems {
+        chart
+            .draw_series(
+                pts.iter()
+                    .map(|&(x, y)| PathElement::new(vec![(x, y0), (x, y)], col.stroke_width(2))),
+            )
+            .map_err(e)?;
     }
     Ok(())
 }
