@@ -22,10 +22,10 @@
 
 use super::output::write_atomic;
 use super::spectrum_input::read_spectrum_input;
-use crate::prony::{fit_prony, log10_errors, MasterPoint, PronySettings};
+use crate::report::card_refit::{refit_for_cards, CardRefit};
 use crate::report::card_shift::{card_shift, CardShift};
 use crate::report::cards::{self, BulkRelaxation, CardOptions};
-use crate::{RelaxationSpectrum, ShiftLaw};
+use crate::ShiftLaw;
 use anyhow::Context;
 use std::path::PathBuf;
 
@@ -89,58 +89,6 @@ pub struct Args {
 fn shift_from_fit(fit: &crate::pipeline::CompoundFit) -> CardShift {
     let shifts = fit.tts.as_ref().map(|t| t.shifts.as_slice()).unwrap_or(&[]);
     card_shift(shifts, &fit.shift_law)
-}
-
-/// Refit with at most `max_cards` LS-DYNA cards (E∞ takes one): to the fit file's master curve, or
-/// to the spectrum's own moduli. Returns the spectrum and its RMS log10 errors (E′, E″).
-fn refit_for_cards(
-    spectrum: &RelaxationSpectrum,
-    fit: Option<&crate::pipeline::CompoundFit>,
-    max_cards: usize,
-) -> anyhow::Result<(RelaxationSpectrum, [f64; 2], &'static str)> {
-    let (points, settings, against): (Vec<MasterPoint>, PronySettings, &str) = match fit {
-        Some(f) => (
-            f.master_curve.clone(),
-            f.settings.prony.clone(),
-            "the fit file's master curve",
-        ),
-        None => {
-            let (lo, hi) = spectrum
-                .terms
-                .iter()
-                .fold((f64::INFINITY, 0f64), |(a, b), t| {
-                    (a.min(t.tau_s), b.max(t.tau_s))
-                });
-            let (f0, f1) = (
-                1.0 / (2.0 * std::f64::consts::PI * hi),
-                1.0 / (2.0 * std::f64::consts::PI * lo),
-            );
-            let n = (((f1 / f0).log10() * 10.0).ceil() as usize).max(10);
-            let pts = (0..=n)
-                .map(|k| {
-                    let f = f0 * (f1 / f0).powf(k as f64 / n as f64);
-                    let (e1, e2) = spectrum.complex_modulus(2.0 * std::f64::consts::PI * f);
-                    MasterPoint {
-                        reduced_freq_hz: f,
-                        storage_pa: e1,
-                        loss_pa: e2,
-                    }
-                })
-                .collect();
-            (pts, PronySettings::default(), "the spectrum's own E′, E″")
-        }
-    };
-    let cards_for_inf = usize::from(spectrum.modulus_inf_pa > 0.0);
-    let settings = PronySettings {
-        reduce_terms: true,
-        max_terms: Some(max_cards.saturating_sub(cards_for_inf).max(1)),
-        target_rms_log10: None,
-        ..settings
-    };
-    let refit = fit_prony(&points, spectrum.kind, spectrum.poisson, &settings)
-        .context("refitting with fewer terms for LS-DYNA")?;
-    let e = log10_errors(&points, &refit.spectrum);
-    Ok((refit.spectrum, [e.rms_storage, e.rms_loss], against))
 }
 
 fn parse_wlf(s: &str) -> anyhow::Result<ShiftLaw> {
@@ -260,8 +208,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if args.to == Target::Lsdyna {
         let cards = spectrum.terms.len() + usize::from(spectrum.modulus_inf_pa > 0.0);
         if cards > cards::LSDYNA_MAX_TERMS {
-            let (refit, rms, against) =
-                refit_for_cards(&spectrum, input.fit.as_ref(), cards::LSDYNA_MAX_TERMS)?;
+            let CardRefit {
+                spectrum: refit,
+                rms_log10: rms,
+                against,
+            } = refit_for_cards(&spectrum, input.fit.as_ref(), cards::LSDYNA_MAX_TERMS)
+                .context("refitting with fewer terms for LS-DYNA")?;
             notes.push(format!(
                 "refitted from {} to {} Prony terms for LS-DYNA (at most {} cards): RMS log10 E' {:.4}, E'' {:.4} against {against}",
                 spectrum.terms.len(),

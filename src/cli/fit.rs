@@ -72,19 +72,7 @@ pub struct Args {
 
 /// Run `viscoroll fit`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let source = match (&args.measurement, &args.master_curve, &args.shift_factors) {
-        (Some(m), _, _) => Source::Measurement(read_measurement(m)?),
-        (None, Some(mc), Some(sf)) => {
-            if !(args.poisson > -1.0 && args.poisson <= 0.5) {
-                anyhow::bail!("--poisson {}: must lie in (−1, 0.5]", args.poisson);
-            }
-            let pv = crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?;
-            let master = crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
-                .with_context(|| format!("{}", mc.display()))?;
-            Source::Master(pv.measurement, Box::new(master))
-        }
-        _ => anyhow::bail!("give a measurement JSON, or --master-curve with --shift-factors"),
-    };
+    let source = source(&args)?;
     let input = args
         .measurement
         .as_ref()
@@ -99,14 +87,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_else(|| "compound".to_string()),
     };
-    let mut options = FitOptions::default();
-    options.master.tref_c = args.tref;
-    options.prony.max_terms = args.max_terms;
-    options.prony.reduce_terms =
-        args.reduce || args.max_terms.is_some() || args.target_rms.is_some();
-    if let Some(t) = &args.target_rms {
-        options.prony.target_rms_log10 = Some(parse_target(t)?);
-    }
+    let mut options = fit_options(&args)?;
     if let Some(dir) = args.output.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
@@ -128,6 +109,43 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         }
     }
     .with_context(|| input.clone())?;
+    print_fit(&args, &fit, action);
+    Ok(())
+}
+
+/// The input: a measurement JSON, or pyvisco's master curve and shift factors (the master curve
+/// built from them by the library).
+fn source(args: &Args) -> anyhow::Result<Source> {
+    Ok(
+        match (&args.measurement, &args.master_curve, &args.shift_factors) {
+            (Some(m), _, _) => Source::Measurement(read_measurement(m)?),
+            (None, Some(mc), Some(sf)) => {
+                let pv = crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?;
+                let master = crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
+                    .with_context(|| format!("{}", mc.display()))?;
+                Source::Master(pv.measurement, Box::new(master))
+            }
+            _ => anyhow::bail!("give a measurement JSON, or --master-curve with --shift-factors"),
+        },
+    )
+}
+
+/// The fit options from the flags: reference temperature, term cap and target.
+fn fit_options(args: &Args) -> anyhow::Result<FitOptions> {
+    let mut options = FitOptions::default();
+    options.master.tref_c = args.tref;
+    options.prony.max_terms = args.max_terms;
+    options.prony.reduce_terms =
+        args.reduce || args.max_terms.is_some() || args.target_rms.is_some();
+    if let Some(t) = &args.target_rms {
+        options.prony.target_rms_log10 = Some(parse_target(t)?);
+    }
+    Ok(options)
+}
+
+/// Print the fit: one JSON object (`--json`) or a line on stderr, the trade table (`--trade`) and a
+/// warning when the term target is missed.
+fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction) {
     let action = match action {
         FitAction::Reused => "reused",
         FitAction::Fitted => "fitted",
@@ -195,7 +213,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             fit.relaxation.terms.len()
         );
     }
-    Ok(())
 }
 
 /// What is fitted: a measurement (master curve built here) or a master curve read already shifted.

@@ -66,6 +66,14 @@ pub fn master_pair_from_bytes(
     poisson: f64,
     t_ref_c: Option<f64>,
 ) -> Result<PyviscoMaster, DmaError> {
+    // ν of an isotropic stable solid lies in (−1, 0.5] (the check of IngestOptions).
+    if !(poisson > -1.0 && poisson <= 0.5) {
+        return Err(DmaError::Setting {
+            field: "poisson".into(),
+            value: poisson.to_string(),
+            reason: "Poisson's ratio must lie in (−1, 0.5]".into(),
+        });
+    }
     let shift_law = super::shiftfactors::shift_table_from_bytes(shift_file, shifts, t_ref_c)?;
     let t_ref = shift_law.t_ref_c();
     let (kind, unit_text, points) = read_master_points(master_file, master)?;
@@ -294,6 +302,22 @@ mod tests {
             b"f,E_stor\nHz,MPa\n1,2\n",
         ] {
             assert!(master_pair_from_bytes("m.csv", bad, "s.csv", sf, 0.5, None).is_err());
+        }
+    }
+
+    /// Poisson's ratio is checked by the reader (the CLI's `fit --poisson` used to check it alone):
+    /// 0.5 is the incompressible limit and accepted, 0.7 and −1 lie outside (−1, 0.5].
+    #[test]
+    fn poisson_outside_its_range_is_refused() {
+        let sf = b"T,log_aT\nC,-\n20,1\n30,0\n";
+        let m = b"f,G_stor,G_loss\nHz,kPa,kPa\n1,2,3\n";
+        assert!(master_pair_from_bytes("m.csv", m, "s.csv", sf, 0.5, None).is_ok());
+        for nu in [0.7, -1.0, f64::NAN] {
+            let err = master_pair_from_bytes("m.csv", m, "s.csv", sf, nu, None).unwrap_err();
+            assert!(
+                matches!(&err, DmaError::Setting { field, .. } if field == "poisson"),
+                "{err}"
+            );
         }
     }
 

@@ -6,6 +6,7 @@
 //! [`crate::fsutil`]). CSV goes through the csv crate ([`csv_text`]). Imports only downward
 //! (results and the stages); the pipeline calls it.
 
+pub mod card_refit;
 pub mod card_shift;
 pub mod cards;
 pub mod chart;
