@@ -237,51 +237,118 @@ pub fn friction_maps(
         })
         .collect();
     let mut values: Vec<Option<MapValue>> = vec![None; jobs.len()];
-    let (mut error_estimate, mut solves, mut warnings) = (0.0, 0, Vec::new());
-    let mut tol = settings.tol;
+    let mut solved = MapSolve {
+        values: None,
+        error_estimate: 0.0,
+        solves: 0,
+        tol: settings.tol,
+        warnings: Vec::new(),
+    };
     if !queries.is_empty() {
-        let solved = match spec.cover_thickness_mm {
-            Some(h_mm) => {
-                tol = settings.tol.max(COVER_TOL);
-                let cs = MapSettings { tol, ..*settings };
-                let covered = CoveredProblem::new(creep, spec.poisson, h_mm * 1e-3)
-                    .and_then(|p| covered_map(&p, &queries, &cs));
-                match covered {
-                    Ok((v, surface)) => {
-                        error_estimate = surface.error_estimate;
-                        solves = surface.solves;
-                        warnings.extend(surface.warnings.iter().map(|w| format!("map node: {w}")));
-                        if surface.error_estimate > tol {
-                            warnings.push(format!(
-                                "covered map: error estimate {:.1e} (interpolation {:.1e} + layer \
-                                 solves {:.1e}) exceeds its tolerance {tol:.0e}",
-                                surface.error_estimate,
-                                surface.interpolation_estimate,
-                                surface.node_estimate
-                            ));
-                        }
-                        Some(v)
-                    }
-                    Err(e) => {
-                        warnings.push(crate::results::cap_line(&format!(
-                            "covered map not built: {e}"
-                        )));
-                        None
-                    }
-                }
-            }
+        solved = match spec.cover_thickness_mm {
+            Some(h_mm) => covered_values(creep, spec.poisson, h_mm, &queries, settings),
             None => {
                 let problem = ReducedProblem::new(creep, spec.poisson)?;
                 let (v, curve) = friction_map(&problem, &queries, settings)?;
-                error_estimate = curve.error_estimate;
-                solves = curve.solves;
-                Some(v)
+                MapSolve {
+                    values: Some(v),
+                    error_estimate: curve.error_estimate,
+                    solves: curve.solves,
+                    tol: settings.tol,
+                    warnings: Vec::new(),
+                }
             }
         };
-        for (&i, v) in solvable.iter().zip(solved.into_iter().flatten()) {
+        for (&i, v) in solvable
+            .iter()
+            .zip(solved.values.take().into_iter().flatten())
+        {
             values[i] = Some(v);
         }
     }
+    let mut warnings = solved.warnings;
+    let (points, grid, curves, long) = sort_map_points(&jobs, values, spec);
+    // the covered body's validity check (contact::body::layer::roll_cover) at the listed map points
+    if long > 0.3 {
+        warnings.push(format!(
+            "map: contact length / radius up to {long:.2} > 0.3: the flat-surface, small-strain \
+             assumptions lose validity"
+        ));
+    }
+    Ok(FrictionMaps {
+        points,
+        grid,
+        curves,
+        error_estimate: solved.error_estimate,
+        solves: solved.solves,
+        tol: solved.tol,
+        warnings,
+    })
+}
+
+/// The values of a map's interpolant at the queries (None: not built), its error estimate, solves,
+/// tolerance and warnings.
+struct MapSolve {
+    values: Option<Vec<MapValue>>,
+    error_estimate: f64,
+    solves: usize,
+    tol: f64,
+    warnings: Vec<String>,
+}
+
+/// A covered scene's map values from the 2-D interpolant on the bonded layer (cover `h_mm`), at a
+/// tolerance of at least [`COVER_TOL`]. A surface that cannot be built gives no values and the
+/// reason in the warnings; one short of its tolerance says so.
+fn covered_values(
+    creep: &crate::CreepSpectrum,
+    poisson: Option<f64>,
+    h_mm: f64,
+    queries: &[MapQuery],
+    settings: &MapSettings,
+) -> MapSolve {
+    let tol = settings.tol.max(COVER_TOL);
+    let cs = MapSettings { tol, ..*settings };
+    let mut out = MapSolve {
+        values: None,
+        error_estimate: 0.0,
+        solves: 0,
+        tol,
+        warnings: Vec::new(),
+    };
+    let covered = CoveredProblem::new(creep, poisson, h_mm * 1e-3)
+        .and_then(|p| covered_map(&p, queries, &cs));
+    match covered {
+        Ok((v, surface)) => {
+            out.error_estimate = surface.error_estimate;
+            out.solves = surface.solves;
+            out.warnings
+                .extend(surface.warnings.iter().map(|w| format!("map node: {w}")));
+            if surface.error_estimate > tol {
+                out.warnings.push(format!(
+                    "covered map: error estimate {:.1e} (interpolation {:.1e} + layer \
+                     solves {:.1e}) exceeds its tolerance {tol:.0e}",
+                    surface.error_estimate, surface.interpolation_estimate, surface.node_estimate
+                ));
+            }
+            out.values = Some(v);
+        }
+        Err(e) => {
+            out.warnings.push(crate::results::cap_line(&format!(
+                "covered map not built: {e}"
+            )));
+        }
+    }
+    out
+}
+
+/// The map points of each job sorted into listed points, grid and curves (by the job's kind, see
+/// [`map_jobs`]), and the largest contact length / radius of a covered scene's listed points (0 on
+/// the half-space).
+fn sort_map_points(
+    jobs: &[(f64, f64, f64, u8)],
+    values: Vec<Option<MapValue>>,
+    spec: &SceneSpec,
+) -> (Vec<MapPoint>, Vec<MapPoint>, Vec<MapPoint>, f64) {
     let (mut points, mut grid, mut curves) = (Vec::new(), Vec::new(), Vec::new());
     let mut long = 0.0f64;
     for (&(t, v, n, kind), value) in jobs.iter().zip(values) {
@@ -301,22 +368,7 @@ pub fn friction_maps(
             _ => curves.push(p),
         }
     }
-    // the covered body's validity check (contact::body::layer::roll_cover) at the listed map points
-    if long > 0.3 {
-        warnings.push(format!(
-            "map: contact length / radius up to {long:.2} > 0.3: the flat-surface, small-strain \
-             assumptions lose validity"
-        ));
-    }
-    Ok(FrictionMaps {
-        points,
-        grid,
-        curves,
-        error_estimate,
-        solves,
-        tol,
-        warnings,
-    })
+    (points, grid, curves, long)
 }
 
 /// Mean friction over the temperatures that solved (NaN if none did).

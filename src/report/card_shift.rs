@@ -193,7 +193,13 @@ pub fn card_shift(shifts: &[(f64, f64)], law_in_use: &ShiftLaw) -> CardShift {
             },
         };
     }
-    match card_wlf(&pts, t_ref_c) {
+    from_table(&pts, t_ref_c)
+}
+
+/// The cards' shift from the WLF fits of the table `pts` (module doc): WLF over the whole table,
+/// WLF over a range with a warning, or, WLF withheld, Arrhenius when it holds.
+fn from_table(pts: &[(f64, f64)], t_ref_c: f64) -> CardShift {
+    match card_wlf(pts, t_ref_c) {
         CardWlf::Whole { law, rms_log10 } => CardShift {
             law: Some(law),
             notes: vec![format!(
@@ -223,33 +229,39 @@ pub fn card_shift(shifts: &[(f64, f64)], law_in_use: &ShiftLaw) -> CardShift {
                 )],
             }
         }
-        CardWlf::Withheld(why) => match fit_arrhenius(&pts, t_ref_c) {
-            Ok(f) if f.rms_log10 <= WLF_RMS_BOUND && f.activation_energy_j_per_mol > 0.0 => {
-                CardShift {
-                    law: Some(f.law()),
-                    notes: vec![format!(
-                        "WARNING: WLF withheld ({why}); an Arrhenius shift fitted to the same shifts \
-                         goes into the cards instead (E_a = {:.1} kJ/mol, RMS {:.3} decade)",
-                        f.activation_energy_j_per_mol / 1e3,
-                        f.rms_log10
-                    )],
-                }
-            }
-            Ok(f) => CardShift {
-                law: None,
+        CardWlf::Withheld(why) => arrhenius_instead(&why, pts, t_ref_c),
+    }
+}
+
+/// WLF withheld (`why`): an Arrhenius fit of the table `pts` when it holds (RMS ≤ the WLF bound,
+/// E_a > 0), else no shift card and why.
+fn arrhenius_instead(why: &str, pts: &[(f64, f64)], t_ref_c: f64) -> CardShift {
+    match fit_arrhenius(pts, t_ref_c) {
+        Ok(f) if f.rms_log10 <= WLF_RMS_BOUND && f.activation_energy_j_per_mol > 0.0 => {
+            CardShift {
+                law: Some(f.law()),
                 notes: vec![format!(
-                    "WARNING: no shift card: {why}; nor does Arrhenius hold (E_a = {:.1} kJ/mol, \
-                     RMS {:.3} decade, bound {WLF_RMS_BOUND}); shift in the solver",
+                    "WARNING: WLF withheld ({why}); an Arrhenius shift fitted to the same shifts \
+                     goes into the cards instead (E_a = {:.1} kJ/mol, RMS {:.3} decade)",
                     f.activation_energy_j_per_mol / 1e3,
                     f.rms_log10
                 )],
-            },
-            Err(e) => CardShift {
-                law: None,
-                notes: vec![format!(
-                    "WARNING: no shift card: {why}; nor can Arrhenius be fitted ({e}); shift in the solver"
-                )],
-            },
+            }
+        }
+        Ok(f) => CardShift {
+            law: None,
+            notes: vec![format!(
+                "WARNING: no shift card: {why}; nor does Arrhenius hold (E_a = {:.1} kJ/mol, \
+                 RMS {:.3} decade, bound {WLF_RMS_BOUND}); shift in the solver",
+                f.activation_energy_j_per_mol / 1e3,
+                f.rms_log10
+            )],
+        },
+        Err(e) => CardShift {
+            law: None,
+            notes: vec![format!(
+                "WARNING: no shift card: {why}; nor can Arrhenius be fitted ({e}); shift in the solver"
+            )],
         },
     }
 }

@@ -155,26 +155,7 @@ pub fn fit_wlf(points: &[(f64, f64)], t_ref_c: f64) -> Result<WlfFit, TtsError> 
         .map(|p| t_ref_c - p.0)
         .fold(f64::NEG_INFINITY, f64::max)
         .max(0.0);
-    // Profile cost: best C₁ for this C₂ (linear least squares), its sum of squares.
-    let profile = |c2: f64| -> (f64, f64) {
-        let (mut sg, mut gg) = (0.0, 0.0);
-        for &(t, s) in points {
-            let dt = t - t_ref_c;
-            let g = dt / (c2 + dt);
-            sg += s * g;
-            gg += g * g;
-        }
-        let c1 = -sg / gg;
-        let ss = points
-            .iter()
-            .map(|&(t, s)| {
-                let dt = t - t_ref_c;
-                let r = s + c1 * dt / (c2 + dt);
-                r * r
-            })
-            .sum::<f64>();
-        (c1, ss)
-    };
+    let profile = |c2: f64| wlf_profile(points, t_ref_c, c2);
     // u = ln(C₂ − C₂,min) on [ln 1e-3 K, ln 1e5 K]: C₂ up to 10⁵ K covers Arrhenius-like data.
     let (u_lo, u_hi) = (1e-3f64.ln(), 1e5f64.ln());
     let n = 400;
@@ -189,19 +170,66 @@ pub fn fit_wlf(points: &[(f64, f64)], t_ref_c: f64) -> Result<WlfFit, TtsError> 
     }
     let h = (u_hi - u_lo) / n as f64;
     let (u, _) = golden_min(|u| profile(c2_of(u)).1, best.0 - h, best.0 + h, 1e-12);
-    let mut c2 = c2_of(u);
-    let mut c1 = profile(c2).0;
-    // Gauss–Newton polish on (C₁, C₂): r = s + C₁ g, ∂r/∂C₁ = g, ∂r/∂C₂ = −C₁ g/(C₂ + ΔT).
-    let ss_of = |c1: f64, c2: f64| {
-        points
-            .iter()
-            .map(|&(t, s)| {
-                let dt = t - t_ref_c;
-                let r = s + c1 * dt / (c2 + dt);
-                r * r
-            })
-            .sum::<f64>()
+    let c2 = c2_of(u);
+    let c1 = profile(c2).0;
+    let (c1, c2) = wlf_polish(points, t_ref_c, c1, c2, (c2_min, c2_of(u_hi)));
+    if !(c1.is_finite() && c2.is_finite()) {
+        return Err(TtsError::LawFit {
+            law: "WLF",
+            reason: "the fit did not converge to finite constants".into(),
+        });
+    }
+    let law = ShiftLaw::Wlf {
+        t_ref_c,
+        c1,
+        c2_k: c2,
     };
+    let (rms, res) = residuals(points, &law);
+    Ok(WlfFit {
+        t_ref_c,
+        c1,
+        c2_k: c2,
+        rms_log10: rms,
+        residuals: res,
+    })
+}
+
+/// Profile cost of the WLF fit: the best C₁ for this C₂ (linear least squares) and its sum of
+/// squares.
+fn wlf_profile(points: &[(f64, f64)], t_ref_c: f64, c2: f64) -> (f64, f64) {
+    let (mut sg, mut gg) = (0.0, 0.0);
+    for &(t, s) in points {
+        let dt = t - t_ref_c;
+        let g = dt / (c2 + dt);
+        sg += s * g;
+        gg += g * g;
+    }
+    let c1 = -sg / gg;
+    (c1, wlf_sum_of_squares(points, t_ref_c, c1, c2))
+}
+
+/// Σ (s + C₁ ΔT/(C₂ + ΔT))² over the points.
+fn wlf_sum_of_squares(points: &[(f64, f64)], t_ref_c: f64, c1: f64, c2: f64) -> f64 {
+    points
+        .iter()
+        .map(|&(t, s)| {
+            let dt = t - t_ref_c;
+            let r = s + c1 * dt / (c2 + dt);
+            r * r
+        })
+        .sum::<f64>()
+}
+
+/// Gauss–Newton polish on (C₁, C₂): r = s + C₁ g, ∂r/∂C₁ = g, ∂r/∂C₂ = −C₁ g/(C₂ + ΔT). A step that
+/// leaves C₂ in (`c2_bounds.0`, `c2_bounds.1`] or raises the sum of squares ends it.
+fn wlf_polish(
+    points: &[(f64, f64)],
+    t_ref_c: f64,
+    mut c1: f64,
+    mut c2: f64,
+    c2_bounds: (f64, f64),
+) -> (f64, f64) {
+    let ss_of = |c1: f64, c2: f64| wlf_sum_of_squares(points, t_ref_c, c1, c2);
     for _ in 0..20 {
         let (mut a11, mut a12, mut a22, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0, 0.0);
         for &(t, s) in points {
@@ -223,7 +251,7 @@ pub fn fit_wlf(points: &[(f64, f64)], t_ref_c: f64) -> Result<WlfFit, TtsError> 
         let d1 = -(a22 * b1 - a12 * b2) / det;
         let d2 = -(a11 * b2 - a12 * b1) / det;
         let (n1, n2) = (c1 + d1, c2 + d2);
-        if n2.is_nan() || n2 <= c2_min || n2 > c2_of(u_hi) || ss_of(n1, n2) > ss_of(c1, c2) {
+        if n2.is_nan() || n2 <= c2_bounds.0 || n2 > c2_bounds.1 || ss_of(n1, n2) > ss_of(c1, c2) {
             break;
         }
         let small = d1.abs() <= 1e-15 * c1.abs() && d2.abs() <= 1e-15 * c2.abs();
@@ -233,25 +261,7 @@ pub fn fit_wlf(points: &[(f64, f64)], t_ref_c: f64) -> Result<WlfFit, TtsError> 
             break;
         }
     }
-    if !(c1.is_finite() && c2.is_finite()) {
-        return Err(TtsError::LawFit {
-            law: "WLF",
-            reason: "the fit did not converge to finite constants".into(),
-        });
-    }
-    let law = ShiftLaw::Wlf {
-        t_ref_c,
-        c1,
-        c2_k: c2,
-    };
-    let (rms, res) = residuals(points, &law);
-    Ok(WlfFit {
-        t_ref_c,
-        c1,
-        c2_k: c2,
-        rms_log10: rms,
-        residuals: res,
-    })
+    (c1, c2)
 }
 
 /// Arrhenius fit of (temperature °C, log10 a_T) at reference `t_ref_c` (see the module docs).

@@ -34,49 +34,8 @@ pub(super) fn fit_and_choose(
     settings: &MasterSettings,
     warnings: &mut Vec<String>,
 ) -> Result<Laws, TtsError> {
-    let in_range = |p: &(f64, f64)| {
-        settings
-            .law_fit_range_c
-            .map_or(true, |(lo, hi)| p.0 >= lo && p.0 <= hi)
-    };
-    let fit_both = |s: &[f64], tr: f64, warnings: &mut Vec<String>| {
-        let pts: Vec<(f64, f64)> = temps
-            .iter()
-            .copied()
-            .zip(s.iter().copied())
-            .filter(in_range)
-            .collect();
-        let w = fit_wlf(&pts, tr)
-            .map_err(|e| warnings.push(e.to_string()))
-            .ok();
-        let a = fit_arrhenius(&pts, tr)
-            .map_err(|e| warnings.push(e.to_string()))
-            .ok();
-        (w, a)
-    };
-    let choose = |w: &Option<WlfFit>, a: &Option<ArrheniusFit>, s: &[f64], tr: f64| -> ShiftLaw {
-        let table = ShiftLaw::Table {
-            t_ref_c: tr,
-            points: temps.iter().copied().zip(s.iter().copied()).collect(),
-        };
-        match (settings.law, w, a) {
-            (LawChoice::Table, _, _) => table,
-            (LawChoice::Wlf, Some(w), _) => w.law(),
-            (LawChoice::Arrhenius, _, Some(a)) => a.law(),
-            (LawChoice::Auto, Some(w), Some(a)) => {
-                if w.rms_log10 <= a.rms_log10 {
-                    w.law()
-                } else {
-                    a.law()
-                }
-            }
-            (_, Some(w), _) => w.law(),
-            (_, _, Some(a)) => a.law(),
-            _ => table,
-        }
-    };
     if let Some(law) = given {
-        let (wlf, arrhenius) = fit_both(shifts, t_ref, warnings);
+        let (wlf, arrhenius) = fit_both(temps, shifts, t_ref, settings, warnings);
         return Ok(Laws {
             wlf,
             arrhenius,
@@ -84,8 +43,8 @@ pub(super) fn fit_and_choose(
         });
     }
     let t0 = temps[k0];
-    let (w0, a0) = fit_both(shifts, t0, warnings);
-    let law0 = choose(&w0, &a0, shifts, t0);
+    let (w0, a0) = fit_both(temps, shifts, t0, settings, warnings);
+    let law0 = choose(settings.law, temps, &w0, &a0, shifts, t0);
     if (t_ref - t0).abs() <= 1e-12 {
         return Ok(Laws {
             wlf: w0,
@@ -93,26 +52,15 @@ pub(super) fn fit_and_choose(
             shift_law: law0,
         });
     }
-    let off = law0.log10_a_t(t_ref);
-    if !off.is_finite() {
-        return Err(TtsError::LawNotFinite {
-            temp_c: t_ref,
-            value: off,
-        });
-    }
-    for s in shifts.iter_mut() {
-        *s -= off;
-    }
-    if settings.vertical == VerticalShift::Fitted {
-        let b_ref = interp_at(temps, log_b, t_ref);
-        for b in log_b.iter_mut() {
-            *b -= b_ref;
-        }
-    }
+    move_to_reference(temps, shifts, log_b, &law0, t_ref, settings)?;
     let all: Vec<(f64, f64)> = temps.iter().copied().zip(shifts.iter().copied()).collect();
-    let pts: Vec<(f64, f64)> = all.iter().copied().filter(in_range).collect();
+    let pts: Vec<(f64, f64)> = all
+        .iter()
+        .copied()
+        .filter(|p| in_range(settings, p))
+        .collect();
     let mut tmp = Vec::new();
-    let (wr, ar) = fit_both(shifts, t_ref, &mut tmp);
+    let (wr, ar) = fit_both(temps, shifts, t_ref, settings, &mut tmp);
     let w = match (&law0, &w0) {
         (ShiftLaw::Wlf { .. }, Some(w)) => w.rereferenced(&pts, t_ref),
         _ => wr,
@@ -129,17 +77,108 @@ pub(super) fn fit_and_choose(
         ShiftLaw::Wlf { .. } => w
             .as_ref()
             .map(WlfFit::law)
-            .unwrap_or_else(|| choose(&w, &a, shifts, t_ref)),
+            .unwrap_or_else(|| choose(settings.law, temps, &w, &a, shifts, t_ref)),
         ShiftLaw::Arrhenius { .. } => a
             .as_ref()
             .map(ArrheniusFit::law)
-            .unwrap_or_else(|| choose(&w, &a, shifts, t_ref)),
+            .unwrap_or_else(|| choose(settings.law, temps, &w, &a, shifts, t_ref)),
     };
     Ok(Laws {
         wlf: w,
         arrhenius: a,
         shift_law,
     })
+}
+
+/// Whether a (T, log a_T) point lies in the settings' law-fit range (all do without one).
+fn in_range(settings: &MasterSettings, p: &(f64, f64)) -> bool {
+    settings
+        .law_fit_range_c
+        .map_or(true, |(lo, hi)| p.0 >= lo && p.0 <= hi)
+}
+
+/// WLF and Arrhenius fits of the shifts `s` at `temps` (in the law-fit range) referred to `tr`; a
+/// failed fit is None and its reason a warning.
+fn fit_both(
+    temps: &[f64],
+    s: &[f64],
+    tr: f64,
+    settings: &MasterSettings,
+    warnings: &mut Vec<String>,
+) -> (Option<WlfFit>, Option<ArrheniusFit>) {
+    let pts: Vec<(f64, f64)> = temps
+        .iter()
+        .copied()
+        .zip(s.iter().copied())
+        .filter(|p| in_range(settings, p))
+        .collect();
+    let w = fit_wlf(&pts, tr)
+        .map_err(|e| warnings.push(e.to_string()))
+        .ok();
+    let a = fit_arrhenius(&pts, tr)
+        .map_err(|e| warnings.push(e.to_string()))
+        .ok();
+    (w, a)
+}
+
+/// The law chosen by `law` among the fits (Auto: the smaller RMS), falling back to the other fit
+/// and then to the table of the shifts `s` at `temps` referred to `tr`.
+fn choose(
+    law: LawChoice,
+    temps: &[f64],
+    w: &Option<WlfFit>,
+    a: &Option<ArrheniusFit>,
+    s: &[f64],
+    tr: f64,
+) -> ShiftLaw {
+    let table = ShiftLaw::Table {
+        t_ref_c: tr,
+        points: temps.iter().copied().zip(s.iter().copied()).collect(),
+    };
+    match (law, w, a) {
+        (LawChoice::Table, _, _) => table,
+        (LawChoice::Wlf, Some(w), _) => w.law(),
+        (LawChoice::Arrhenius, _, Some(a)) => a.law(),
+        (LawChoice::Auto, Some(w), Some(a)) => {
+            if w.rms_log10 <= a.rms_log10 {
+                w.law()
+            } else {
+                a.law()
+            }
+        }
+        (_, Some(w), _) => w.law(),
+        (_, _, Some(a)) => a.law(),
+        _ => table,
+    }
+}
+
+/// Refer the shifts (by `law0`'s value at `t_ref`) and, when fitted, the vertical shifts (by their
+/// interpolated value at `t_ref`) to `t_ref`.
+fn move_to_reference(
+    temps: &[f64],
+    shifts: &mut [f64],
+    log_b: &mut [f64],
+    law0: &ShiftLaw,
+    t_ref: f64,
+    settings: &MasterSettings,
+) -> Result<(), TtsError> {
+    let off = law0.log10_a_t(t_ref);
+    if !off.is_finite() {
+        return Err(TtsError::LawNotFinite {
+            temp_c: t_ref,
+            value: off,
+        });
+    }
+    for s in shifts.iter_mut() {
+        *s -= off;
+    }
+    if settings.vertical == VerticalShift::Fitted {
+        let b_ref = interp_at(temps, log_b, t_ref);
+        for b in log_b.iter_mut() {
+            *b -= b_ref;
+        }
+    }
+    Ok(())
 }
 
 /// A warning when the WLF fit sits at its C2 search bound (a degenerate, nearly linear WLF).

@@ -339,58 +339,9 @@ pub(crate) fn refine_global(
         sets = pair_sets(iso, &s, reach, min_points);
         let mut mu = 1e-3;
         for _inner in 0..30 {
-            jtj.fill(0.0);
-            let mut jtr = DVector::<f64>::zeros(np);
-            for (a, b, ops) in &sets {
-                let d = s[*b] - s[*a];
-                for &op in ops {
-                    for c in 0..nch {
-                        let (r, drdd) = residual(&iso[*a], &iso[*b], d, op, c);
-                        // ∂r/∂s_b = dr/dd, ∂r/∂s_a = −dr/dd.
-                        let entries = [(param[*a], -drdd), (param[*b], drdd)];
-                        for &(pi, gi) in &entries {
-                            let Some(pi) = pi else { continue };
-                            jtr[pi] += gi * r;
-                            for &(pj, gj) in &entries {
-                                if let Some(pj) = pj {
-                                    jtj[(pi, pj)] += gi * gj;
-                                }
-                            }
-                        }
-                    }
-                }
-            }
-            let c0 = cost(iso, &s, &sets);
-            let mut accepted = false;
-            let mut stalled = false;
-            let mut step_max = 0.0f64;
-            for _try in 0..12 {
-                let mut m = jtj.clone();
-                for i in 0..np {
-                    m[(i, i)] += mu * jtj[(i, i)].max(1e-12) + 1e-14;
-                }
-                let Some(chol) = m.cholesky() else {
-                    mu *= 10.0;
-                    continue;
-                };
-                let delta = chol.solve(&(-&jtr));
-                let mut trial = s.clone();
-                for i in 0..n {
-                    if let Some(pi) = param[i] {
-                        trial[i] += delta[pi];
-                    }
-                }
-                let c1 = cost(iso, &trial, &sets);
-                if c1 <= c0 {
-                    step_max = delta.amax();
-                    stalled = c0 - c1 <= 1e-15 * c0;
-                    s = trial;
-                    mu = (mu / 3.0).max(1e-12);
-                    accepted = true;
-                    break;
-                }
-                mu *= 4.0;
-            }
+            let jtr = normal_equations(iso, &s, &sets, &param, &mut jtj);
+            let (accepted, step_max, stalled) =
+                levenberg_marquardt_step(iso, &mut s, &sets, &param, &jtj, &jtr, &mut mu);
             // Converged: no step lowers the cost, the step is below 1e-12 decades, or the cost no
             // longer falls (relative 1e-15, rounding).
             if !accepted || step_max < 1e-12 || stalled {
@@ -426,6 +377,86 @@ pub(crate) fn refine_global(
         overlap_rms,
         iterations,
     }
+}
+
+/// The Gauss–Newton normal equations of the overlap residuals at shifts `s`: JᵀJ into `jtj`
+/// (overwritten), Jᵀr returned. ∂r/∂s_b = dr/dd, ∂r/∂s_a = −dr/dd; the reference (no parameter)
+/// has no row.
+fn normal_equations(
+    iso: &[Prepared],
+    s: &[f64],
+    sets: &PairSet,
+    param: &[Option<usize>],
+    jtj: &mut DMatrix<f64>,
+) -> DVector<f64> {
+    let nch = iso[0].channels.len();
+    jtj.fill(0.0);
+    let mut jtr = DVector::<f64>::zeros(jtj.nrows());
+    for (a, b, ops) in sets {
+        let d = s[*b] - s[*a];
+        for &op in ops {
+            for c in 0..nch {
+                let (r, drdd) = residual(&iso[*a], &iso[*b], d, op, c);
+                // ∂r/∂s_b = dr/dd, ∂r/∂s_a = −dr/dd.
+                let entries = [(param[*a], -drdd), (param[*b], drdd)];
+                for &(pi, gi) in &entries {
+                    let Some(pi) = pi else { continue };
+                    jtr[pi] += gi * r;
+                    for &(pj, gj) in &entries {
+                        if let Some(pj) = pj {
+                            jtj[(pi, pj)] += gi * gj;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    jtr
+}
+
+/// One Levenberg–Marquardt step from `s` with damping `mu` (JᵀJ + μ diag(JᵀJ)): up to 12 tries,
+/// the damping raised ×4 after a step that raises the cost (×10 when the matrix is not positive
+/// definite) and lowered ÷3 after an accepted one, which replaces `s`. Returns whether a step was
+/// accepted, its largest component and whether the cost stalled (fell by ≤ 1e-15 relative).
+#[allow(clippy::too_many_arguments)]
+fn levenberg_marquardt_step(
+    iso: &[Prepared],
+    s: &mut Vec<f64>,
+    sets: &PairSet,
+    param: &[Option<usize>],
+    jtj: &DMatrix<f64>,
+    jtr: &DVector<f64>,
+    mu: &mut f64,
+) -> (bool, f64, bool) {
+    let (n, np) = (s.len(), jtj.nrows());
+    let c0 = cost(iso, s, sets);
+    for _try in 0..12 {
+        let mut m = jtj.clone();
+        for i in 0..np {
+            m[(i, i)] += *mu * jtj[(i, i)].max(1e-12) + 1e-14;
+        }
+        let Some(chol) = m.cholesky() else {
+            *mu *= 10.0;
+            continue;
+        };
+        let delta = chol.solve(&(-jtr));
+        let mut trial = s.clone();
+        for i in 0..n {
+            if let Some(pi) = param[i] {
+                trial[i] += delta[pi];
+            }
+        }
+        let c1 = cost(iso, &trial, sets);
+        if c1 <= c0 {
+            let step_max = delta.amax();
+            let stalled = c0 - c1 <= 1e-15 * c0;
+            *s = trial;
+            *mu = (*mu / 3.0).max(1e-12);
+            return (true, step_max, stalled);
+        }
+        *mu *= 4.0;
+    }
+    (false, 0.0, false)
 }
 
 #[cfg(test)]

@@ -242,78 +242,90 @@ pub fn friction_matrix(
             s.mean_friction.map_or("–".into(), num)
         );
         for t in &temps {
-            match pts.iter().find(|p| p.temp_c == *t) {
-                None => h.push_str("<td></td>"),
-                Some(p) if p.error.is_some() || !p.friction.is_finite() => {
-                    let _ = write!(
-                        h,
-                        "<td class=\"bad\" title=\"{}\">failed</td>",
-                        esc(p.error.as_deref().unwrap_or("not finite"))
-                    );
-                }
-                Some(p) => {
-                    let (v, b) = num_band(p.friction, p.band.map(|b| (b.p05, b.p95)));
-                    let _ = write!(
-                        h,
-                        "<td{}>{v}{}{}</td>",
-                        if p.warnings.is_empty() {
-                            String::new()
-                        } else {
-                            format!(" class=\"warn\" title=\"{}\"", esc(&p.warnings.join("; ")))
-                        },
-                        if p.extrapolated {
-                            "<span class=\"warn\">*</span>"
-                        } else {
-                            ""
-                        },
-                        if b.is_empty() {
-                            String::new()
-                        } else {
-                            format!("<span class=\"band\">{b}</span>")
-                        }
-                    );
-                }
-            }
+            friction_cell(&mut h, pts.iter().find(|p| p.temp_c == *t));
         }
         h.push_str("</tr>");
     }
     h.push_str("</table><ul>");
     for (spec, pts) in friction {
-        let geometry = format!(
-            "R = {} mm, {} N/m, {} m/s",
-            spec.roll_radius_mm, spec.load_n_per_m, spec.speed_m_s
-        );
-        match spec.cover_thickness_mm {
-            None => {
-                let _ = write!(
-                    h,
-                    "<li><b>{}</b> ({geometry}): half-space of the compound (no cover in the scene).</li>",
-                    esc(&spec.name)
-                );
-            }
-            Some(c) => {
-                let list: Vec<String> = bodies(pts)
-                    .into_iter()
-                    .map(|(model, temps, reason)| {
-                        let t: Vec<String> = temps.iter().map(|t| t.to_string()).collect();
-                        format!("{} at {} °C ({})", esc(model), t.join(", "), esc(reason))
-                    })
-                    .collect();
-                let _ = write!(
-                    h,
-                    "<li><b>{}</b> ({geometry}): {c} mm cover bonded to a rigid carcass, solved as {}.</li>",
-                    esc(&spec.name),
-                    if list.is_empty() {
-                        "– (no point solved)".to_string()
-                    } else {
-                        list.join("; ")
-                    }
-                );
-            }
-        }
+        scene_body(&mut h, spec, pts);
     }
     h.push_str("</ul>");
     h
+}
+
+/// One cell of the friction matrix: empty (no point at this temperature), failed (with the error),
+/// or F/N with its warnings, the extrapolation mark and its band.
+fn friction_cell(h: &mut String, point: Option<&FrictionPoint>) {
+    match point {
+        None => h.push_str("<td></td>"),
+        Some(p) if p.error.is_some() || !p.friction.is_finite() => {
+            let _ = write!(
+                h,
+                "<td class=\"bad\" title=\"{}\">failed</td>",
+                esc(p.error.as_deref().unwrap_or("not finite"))
+            );
+        }
+        Some(p) => {
+            let (v, b) = num_band(p.friction, p.band.map(|b| (b.p05, b.p95)));
+            let _ = write!(
+                h,
+                "<td{}>{v}{}{}</td>",
+                if p.warnings.is_empty() {
+                    String::new()
+                } else {
+                    format!(" class=\"warn\" title=\"{}\"", esc(&p.warnings.join("; ")))
+                },
+                if p.extrapolated {
+                    "<span class=\"warn\">*</span>"
+                } else {
+                    ""
+                },
+                if b.is_empty() {
+                    String::new()
+                } else {
+                    format!("<span class=\"band\">{b}</span>")
+                }
+            );
+        }
+    }
+}
+
+/// A scene's line under the matrix: its geometry and the body it was solved on (half-space, or the
+/// cover's body at each temperature and why).
+fn scene_body(h: &mut String, spec: &SceneSpec, pts: &[FrictionPoint]) {
+    let geometry = format!(
+        "R = {} mm, {} N/m, {} m/s",
+        spec.roll_radius_mm, spec.load_n_per_m, spec.speed_m_s
+    );
+    match spec.cover_thickness_mm {
+        None => {
+            let _ = write!(
+                h,
+                "<li><b>{}</b> ({geometry}): half-space of the compound (no cover in the scene).</li>",
+                esc(&spec.name)
+            );
+        }
+        Some(c) => {
+            let list: Vec<String> = bodies(pts)
+                .into_iter()
+                .map(|(model, temps, reason)| {
+                    let t: Vec<String> = temps.iter().map(|t| t.to_string()).collect();
+                    format!("{} at {} °C ({})", esc(model), t.join(", "), esc(reason))
+                })
+                .collect();
+            let _ = write!(
+                h,
+                "<li><b>{}</b> ({geometry}): {c} mm cover bonded to a rigid carcass, solved as {}.</li>",
+                esc(&spec.name),
+                if list.is_empty() {
+                    "– (no point solved)".to_string()
+                } else {
+                    list.join("; ")
+                }
+            );
+        }
+    }
 }
 
 /// The first screen: facts beside the friction plot, then the friction matrix.
