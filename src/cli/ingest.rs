@@ -126,6 +126,72 @@ fn file_report(m: &Measurement, si: usize) -> serde_json::Value {
     })
 }
 
+/// One file's lines on stderr: format, encoding and hash, its identifying metadata, mode and
+/// columns, isotherms and ranges (from its report `r`, [`file_report`]).
+fn print_file(src: &dma::SourceFile, r: &serde_json::Value) {
+    eprintln!(
+        "{}: {} ({}), sha256 {}",
+        src.path,
+        src.format,
+        src.encoding,
+        &src.sha256[..16]
+    );
+    let keys = [
+        "Instrument type",
+        "Instrument name",
+        "Trios version",
+        "Measurement type",
+        "Material",
+        "Material / Remark",
+        "INSTRUMENT",
+        "SAMPLE",
+        "Date / Time",
+        "Run date",
+        "Project",
+        "Test",
+        "trailing text",
+    ];
+    for k in keys {
+        if let Some(v) = src.metadata.get(k) {
+            eprintln!("  {k}: {v}");
+        }
+    }
+    let cols: Vec<String> = src
+        .columns
+        .iter()
+        .map(|c| format!("{} = `{}` [{}]", c.quantity, c.name, c.unit))
+        .collect();
+    eprintln!(
+        "  mode: {} (evidence: {}); columns: {}",
+        r["mode"].as_str().unwrap_or(""),
+        src.metadata
+            .get("mode evidence")
+            .map_or("-", String::as_str),
+        cols.join(", ")
+    );
+    let tr = r["temp_range_c"].as_array().map(|a| {
+        format!(
+            "{:.2} … {:.2} °C",
+            a[0].as_f64().unwrap_or(f64::NAN),
+            a[1].as_f64().unwrap_or(f64::NAN)
+        )
+    });
+    let fr = r["freq_range_hz"].as_array().map(|a| {
+        format!(
+            "{:.4} … {:.4} Hz",
+            a[0].as_f64().unwrap_or(f64::NAN),
+            a[1].as_f64().unwrap_or(f64::NAN)
+        )
+    });
+    eprintln!(
+        "  isotherms: {}, mean temperature {}, frequency {}, points: {}",
+        r["isotherms"],
+        tr.unwrap_or_else(|| "—".into()),
+        fr.unwrap_or_else(|| "—".into()),
+        r["points"]
+    );
+}
+
 /// Run `viscoroll ingest`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let opts = options(&args)?;
@@ -133,68 +199,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let mut files = Vec::new();
     for si in 0..m.sources.len() {
         let r = file_report(&m, si);
-        let src = &m.sources[si];
-        eprintln!(
-            "{}: {} ({}), sha256 {}",
-            src.path,
-            src.format,
-            src.encoding,
-            &src.sha256[..16]
-        );
-        let keys = [
-            "Instrument type",
-            "Instrument name",
-            "Trios version",
-            "Measurement type",
-            "Material",
-            "Material / Remark",
-            "INSTRUMENT",
-            "SAMPLE",
-            "Date / Time",
-            "Run date",
-            "Project",
-            "Test",
-            "trailing text",
-        ];
-        for k in keys {
-            if let Some(v) = src.metadata.get(k) {
-                eprintln!("  {k}: {v}");
-            }
-        }
-        let cols: Vec<String> = src
-            .columns
-            .iter()
-            .map(|c| format!("{} = `{}` [{}]", c.quantity, c.name, c.unit))
-            .collect();
-        eprintln!(
-            "  mode: {} (evidence: {}); columns: {}",
-            r["mode"].as_str().unwrap_or(""),
-            src.metadata
-                .get("mode evidence")
-                .map_or("-", String::as_str),
-            cols.join(", ")
-        );
-        let tr = r["temp_range_c"].as_array().map(|a| {
-            format!(
-                "{:.2} … {:.2} °C",
-                a[0].as_f64().unwrap_or(f64::NAN),
-                a[1].as_f64().unwrap_or(f64::NAN)
-            )
-        });
-        let fr = r["freq_range_hz"].as_array().map(|a| {
-            format!(
-                "{:.4} … {:.4} Hz",
-                a[0].as_f64().unwrap_or(f64::NAN),
-                a[1].as_f64().unwrap_or(f64::NAN)
-            )
-        });
-        eprintln!(
-            "  isotherms: {}, mean temperature {}, frequency {}, points: {}",
-            r["isotherms"],
-            tr.unwrap_or_else(|| "—".into()),
-            fr.unwrap_or_else(|| "—".into()),
-            r["points"]
-        );
+        print_file(&m.sources[si], &r);
         files.push(r);
     }
     let shown = 20;

@@ -569,9 +569,8 @@ fn map_block(
     Ok((kind, units.info))
 }
 
-/// Find the columns of each quantity (those the user mapped first, by the given name), and which
-/// pair gives M′ and M″.
-fn find_columns(ctx: &Ctx, block: &Block, map: &ColumnMap) -> Result<Found, DmaError> {
+/// The columns the user mapped (`--columns`, compounds.toml), each of which must exist.
+fn mapped_columns(ctx: &Ctx, map: &ColumnMap) -> Result<Vec<usize>, DmaError> {
     let mut used: Vec<usize> = Vec::new();
     for (key, name) in map.entries() {
         let i = ctx.find_mapped(name).ok_or_else(|| DmaError::Setting {
@@ -590,6 +589,34 @@ fn find_columns(ctx: &Ctx, block: &Block, map: &ColumnMap) -> Result<Found, DmaE
         })?;
         used.push(i);
     }
+    Ok(used)
+}
+
+/// A quantity's column is missing: the error lists the block's columns with their units.
+fn missing_column(ctx: &Ctx, block: &Block, q: &'static str, looked: &'static str) -> DmaError {
+    let columns = block
+        .names
+        .iter()
+        .zip(block.units.iter())
+        .map(|(n, u)| match u {
+            Some(u) if !u.is_empty() => format!("`{n}` [{u}]"),
+            _ => format!("`{n}`"),
+        })
+        .collect::<Vec<_>>()
+        .join(", ");
+    DmaError::MissingColumn {
+        file: ctx.file.into(),
+        location: ctx.loc.clone(),
+        quantity: q,
+        looked_for: looked,
+        columns,
+    }
+}
+
+/// Find the columns of each quantity (those the user mapped first, by the given name), and which
+/// pair gives M′ and M″.
+fn find_columns(ctx: &Ctx, block: &Block, map: &ColumnMap) -> Result<Found, DmaError> {
+    let mut used = mapped_columns(ctx, map)?;
     let mapped = |name: &Option<String>, q: Quantity| {
         name.as_deref()
             .and_then(|n| ctx.find_mapped(n))
@@ -638,25 +665,7 @@ fn find_columns(ctx: &Ctx, block: &Block, map: &ColumnMap) -> Result<Found, DmaE
         mapped(&map.tan_delta, Quantity::TanDelta).or_else(|| take(Quantity::TanDelta, &mut used));
     let phase = mapped(&map.phase, Quantity::Phase).or_else(|| take(Quantity::Phase, &mut used));
 
-    let columns_list = || {
-        block
-            .names
-            .iter()
-            .zip(block.units.iter())
-            .map(|(n, u)| match u {
-                Some(u) if !u.is_empty() => format!("`{n}` [{u}]"),
-                _ => format!("`{n}`"),
-            })
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let missing_col = |q: &'static str, looked: &'static str| DmaError::MissingColumn {
-        file: ctx.file.into(),
-        location: ctx.loc.clone(),
-        quantity: q,
-        looked_for: looked,
-        columns: columns_list(),
-    };
+    let missing_col = |q: &'static str, looked: &'static str| missing_column(ctx, block, q, looked);
     let freq = freq.ok_or_else(|| {
         missing_col(
             "frequency",

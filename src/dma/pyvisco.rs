@@ -207,6 +207,23 @@ fn read_master_points(
         })
     };
     let (us, ul) = (modulus_unit(i_s)?, modulus_unit(i_l)?);
+    let columns = [i_f, i_s, i_l];
+    let points = master_rows(file, lines, &names, columns, [us.to_pa(), ul.to_pa()])?;
+    Ok((kind, unit_of(i_s), points))
+}
+
+/// The data rows of a pyvisco master-curve CSV (after its two header rows): frequency, storage and
+/// loss modulus from `columns` = [f, M′, M″], the moduli times `to_pa`. A cell that is not a finite
+/// number is an error; blank lines are skipped; no row at all is an error.
+fn master_rows<'a>(
+    file: &str,
+    lines: impl Iterator<Item = (usize, &'a str)>,
+    names: &[String],
+    columns: [usize; 3],
+    to_pa: [f64; 2],
+) -> Result<Vec<DataPoint>, DmaError> {
+    let split = |l: &str| -> Vec<String> { l.split(',').map(|s| s.trim().to_string()).collect() };
+    let [i_f, i_s, i_l] = columns;
     let mut points = Vec::new();
     for (line, l) in lines {
         if l.trim().is_empty() {
@@ -227,8 +244,8 @@ fn read_master_points(
         };
         points.push(DataPoint {
             freq_hz: get(i_f)?,
-            storage_pa: get(i_s)? * us.to_pa(),
-            loss_pa: get(i_l)? * ul.to_pa(),
+            storage_pa: get(i_s)? * to_pa[0],
+            loss_pa: get(i_l)? * to_pa[1],
             temp_c: None,
             line,
             flags: vec![],
@@ -240,7 +257,7 @@ fn read_master_points(
             reason: "the two header rows are not followed by data".into(),
         });
     }
-    Ok((kind, unit_of(i_s), points))
+    Ok(points)
 }
 
 /// A number written so that reading it back gives the same `f64` (Rust's shortest round-trip form).

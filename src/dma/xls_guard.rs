@@ -81,64 +81,22 @@ fn workbook_stream(b: &[u8]) -> Check<Option<Vec<u8>>> {
         _ => return Ok(None),
     };
     let word = |i: usize| u32_at(b, i).unwrap_or(0) as usize;
-    // Buffers calamine sizes from header fields before reading anything.
+    // The largest buffer or stream a file of this size may declare.
     let limit = 16 * b.len() + (1 << 20);
-    for (what, bytes) in [
-        ("DIFAT", word(62).saturating_mul(4)),
-        ("FAT", word(0x2C).saturating_mul(4)),
-        ("directory", word(0x28).saturating_mul(ssz)),
-        ("mini FAT", word(0x40).saturating_mul(ssz)),
-    ] {
-        if bytes > limit {
-            return Err(format!(
-                "the header declares a {what} of {bytes} bytes in a file of {}: the file is damaged",
-                b.len()
-            ));
-        }
-    }
+    header_sizes(b, ssz, limit)?;
     let dir_len = word(0x28);
     let dir_start = u32_at(b, 0x30).unwrap_or(END_OF_CHAIN);
     let minifat_start = u32_at(b, 0x3C).unwrap_or(END_OF_CHAIN);
     let minifat_len = word(0x40);
     let difat_start = u32_at(b, 0x44).unwrap_or(END_OF_CHAIN);
-    // DIFAT: 109 entries in the header, then a chain of DIFAT sectors (its last entry links on).
-    let mut difat: Vec<u32> = (0..109).filter_map(|k| u32_at(b, 0x4C + 4 * k)).collect();
     let mut cfb = Cfb {
         b,
         ssz,
         fat: Vec::new(),
     };
-    let mut next = difat_start;
-    let mut guard = 0;
-    while next < 0xFFFF_FFFA {
-        guard += 1;
-        if guard > b.len() / ssz + 1 {
-            return Err("the DIFAT chain loops: the file is damaged".into());
-        }
-        let s = cfb.sector(next)?;
-        difat.extend((0..ssz / 4).filter_map(|k| u32_at(s, 4 * k)));
-        next = difat.pop().unwrap_or(END_OF_CHAIN);
-    }
-    let mut fat = Vec::new();
-    for &id in difat.iter().filter(|&&id| id < 0xFFFF_FFFC) {
-        let s = cfb.sector(id)?;
-        fat.extend((0..s.len() / 4).filter_map(|k| u32_at(s, 4 * k)));
-    }
-    cfb.fat = fat;
+    cfb.fat = allocation_table(&cfb, difat_start)?;
     let dir = cfb.chain(dir_start, dir_len * ssz)?;
-    let entry = |e: &[u8]| -> Option<(String, u32, usize)> {
-        let units: Vec<u16> = (0..32)
-            .filter_map(|k| u16_at(e, 2 * k))
-            .take_while(|&u| u != 0)
-            .collect();
-        let len = if ssz == 512 {
-            u32_at(e, 120)? as usize
-        } else {
-            u64::from_le_bytes(e.get(120..128)?.try_into().ok()?) as usize
-        };
-        Some((String::from_utf16_lossy(&units), u32_at(e, 116)?, len))
-    };
-    let entries: Vec<(String, u32, usize)> = dir.chunks(128).filter_map(entry).collect();
+    let entries = directory_entries(&dir, ssz);
     let Some((_, root_start, root_len)) = entries.first().cloned() else {
         return Ok(None);
     };
@@ -174,6 +132,73 @@ fn workbook_stream(b: &[u8]) -> Check<Option<Vec<u8>>> {
         return cfb.chain(start, len).map(Some);
     }
     // Small streams live in the mini stream (64-byte sectors, their own FAT).
+    mini_chain(&mini, &minifat, start, len).map(Some)
+}
+
+/// Buffers calamine sizes from header fields before reading anything: none may exceed `limit`.
+fn header_sizes(b: &[u8], ssz: usize, limit: usize) -> Check<()> {
+    let word = |i: usize| u32_at(b, i).unwrap_or(0) as usize;
+    for (what, bytes) in [
+        ("DIFAT", word(62).saturating_mul(4)),
+        ("FAT", word(0x2C).saturating_mul(4)),
+        ("directory", word(0x28).saturating_mul(ssz)),
+        ("mini FAT", word(0x40).saturating_mul(ssz)),
+    ] {
+        if bytes > limit {
+            return Err(format!(
+                "the header declares a {what} of {bytes} bytes in a file of {}: the file is damaged",
+                b.len()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The file allocation table: the sectors the DIFAT lists (109 entries in the header, then a chain
+/// of DIFAT sectors from `difat_start`, whose last entry links on), read in order.
+fn allocation_table(cfb: &Cfb, difat_start: u32) -> Check<Vec<u32>> {
+    // DIFAT: 109 entries in the header, then a chain of DIFAT sectors (its last entry links on).
+    let mut difat: Vec<u32> = (0..109)
+        .filter_map(|k| u32_at(cfb.b, 0x4C + 4 * k))
+        .collect();
+    let mut next = difat_start;
+    let mut guard = 0;
+    while next < 0xFFFF_FFFA {
+        guard += 1;
+        if guard > cfb.b.len() / cfb.ssz + 1 {
+            return Err("the DIFAT chain loops: the file is damaged".into());
+        }
+        let s = cfb.sector(next)?;
+        difat.extend((0..cfb.ssz / 4).filter_map(|k| u32_at(s, 4 * k)));
+        next = difat.pop().unwrap_or(END_OF_CHAIN);
+    }
+    let mut fat = Vec::new();
+    for &id in difat.iter().filter(|&&id| id < 0xFFFF_FFFC) {
+        let s = cfb.sector(id)?;
+        fat.extend((0..s.len() / 4).filter_map(|k| u32_at(s, 4 * k)));
+    }
+    Ok(fat)
+}
+
+/// The directory's entries (128 bytes each): name, start sector and stream length.
+fn directory_entries(dir: &[u8], ssz: usize) -> Vec<(String, u32, usize)> {
+    let entry = |e: &[u8]| -> Option<(String, u32, usize)> {
+        let units: Vec<u16> = (0..32)
+            .filter_map(|k| u16_at(e, 2 * k))
+            .take_while(|&u| u != 0)
+            .collect();
+        let len = if ssz == 512 {
+            u32_at(e, 120)? as usize
+        } else {
+            u64::from_le_bytes(e.get(120..128)?.try_into().ok()?) as usize
+        };
+        Some((String::from_utf16_lossy(&units), u32_at(e, 116)?, len))
+    };
+    dir.chunks(128).filter_map(entry).collect()
+}
+
+/// A stream of `len` bytes from mini sector `start` of the mini stream, following the mini FAT.
+fn mini_chain(mini: &[u8], minifat: &[u32], start: u32, len: usize) -> Check<Vec<u8>> {
     let mut out = Vec::new();
     let mut id = start;
     let mut steps = 0;
@@ -194,7 +219,7 @@ fn workbook_stream(b: &[u8]) -> Check<Option<Vec<u8>>> {
         })?;
     }
     out.truncate(len);
-    Ok(Some(out))
+    Ok(out)
 }
 
 /// BIFF records from `pos`: (type, data), stopping at the end of the stream or a broken length.

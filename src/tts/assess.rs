@@ -6,7 +6,7 @@ use super::channels::Channels;
 use super::clean::Clean;
 use super::horizontal::Horizontal;
 use super::master::{IsothermShift, MasterQuality};
-use super::quality::{kramers_kronig_local, van_gurp_palmen};
+use super::quality::{kramers_kronig_local, van_gurp_palmen, QualityBounds};
 use super::settings::{MasterSettings, VerticalShift};
 use super::shift::{overlap_rms, Prepared};
 
@@ -40,41 +40,7 @@ pub(super) fn assess(
     let mut isotherms = Vec::with_capacity(n);
     for (i, c) in iso.iter().enumerate() {
         let kk = kramers_kronig_local(&ch.joint[i]);
-        let mut flags = Vec::new();
-        if let Some(o) = overlap[i] {
-            if o > bounds.overlap_rms_max_log10 {
-                flags.push(format!(
-                    "overlap RMS {o:.3} > {} (log10)",
-                    bounds.overlap_rms_max_log10
-                ));
-            }
-        } else {
-            flags.push("overlaps no other isotherm".to_string());
-        }
-        if let Some(o) = loss_overlap[i] {
-            if o > bounds.overlap_rms_max_log10 {
-                flags.push(format!(
-                    "E″ alone overlap RMS {o:.3} > {} (log10) at these shifts",
-                    bounds.overlap_rms_max_log10
-                ));
-            }
-        }
-        if let Some(v) = vgp[i] {
-            if v > bounds.vgp_rms_max_deg {
-                flags.push(format!(
-                    "van Gurp–Palmen RMS {v:.2}° > {}°",
-                    bounds.vgp_rms_max_deg
-                ));
-            }
-        }
-        if let Some(k) = kk {
-            if k.abs() > bounds.kk_max_abs_log10_ratio {
-                flags.push(format!(
-                    "Kramers–Kronig: median log10((π/2)dE′/dlnω / E″) = {k:.2}, |·| > {}",
-                    bounds.kk_max_abs_log10_ratio
-                ));
-            }
-        }
+        let flags = isotherm_flags(&bounds, overlap[i], loss_overlap[i], vgp[i], kk);
         for f in &flags {
             flags_all.push(format!("{:.2} °C: {f}", c.temp));
         }
@@ -120,4 +86,51 @@ pub(super) fn assess(
         flags: flags_all,
     };
     (isotherms, quality)
+}
+
+/// The flags of one isotherm against the bounds: its overlap RMS (or no overlap at all), E″ alone at
+/// these shifts, van Gurp–Palmen, and the local Kramers–Kronig ratio.
+fn isotherm_flags(
+    bounds: &QualityBounds,
+    overlap: Option<f64>,
+    loss_overlap: Option<f64>,
+    vgp: Option<f64>,
+    kk: Option<f64>,
+) -> Vec<String> {
+    let mut flags = Vec::new();
+    if let Some(o) = overlap {
+        if o > bounds.overlap_rms_max_log10 {
+            flags.push(format!(
+                "overlap RMS {o:.3} > {} (log10)",
+                bounds.overlap_rms_max_log10
+            ));
+        }
+    } else {
+        flags.push("overlaps no other isotherm".to_string());
+    }
+    if let Some(o) = loss_overlap {
+        if o > bounds.overlap_rms_max_log10 {
+            flags.push(format!(
+                "E″ alone overlap RMS {o:.3} > {} (log10) at these shifts",
+                bounds.overlap_rms_max_log10
+            ));
+        }
+    }
+    if let Some(v) = vgp {
+        if v > bounds.vgp_rms_max_deg {
+            flags.push(format!(
+                "van Gurp–Palmen RMS {v:.2}° > {}°",
+                bounds.vgp_rms_max_deg
+            ));
+        }
+    }
+    if let Some(k) = kk {
+        if k.abs() > bounds.kk_max_abs_log10_ratio {
+            flags.push(format!(
+                "Kramers–Kronig: median log10((π/2)dE′/dlnω / E″) = {k:.2}, |·| > {}",
+                bounds.kk_max_abs_log10_ratio
+            ));
+        }
+    }
+    flags
 }

@@ -6,7 +6,7 @@
 use super::error::TtsError;
 use super::master::{IsothermShift, MasterCurve, MasterPoint, MasterQuality};
 use super::settings::{MasterSettings, ShiftSource};
-use crate::dma::Measurement;
+use crate::dma::{Isotherm, Measurement};
 use crate::material::ShiftLaw;
 
 /// The master curve of `reduced` (one isotherm whose frequencies are reduced frequencies at its
@@ -32,35 +32,8 @@ pub fn master_curve_from_reduced(
             value: at_ref,
         });
     }
-    let shift_law = match law {
-        ShiftLaw::Wlf { c1, c2_k, t_ref_c } if (*t_ref_c - t_ref).abs() > 1e-12 => {
-            // Same function referred to T_ref (WLF keeps its form: C1' = C1 C2/(C2 + ΔT),
-            // C2' = C2 + ΔT with ΔT = T_ref − T_r).
-            let dt = t_ref - t_ref_c;
-            ShiftLaw::Wlf {
-                t_ref_c: t_ref,
-                c1: c1 * c2_k / (c2_k + dt),
-                c2_k: c2_k + dt,
-            }
-        }
-        other => other.clone(),
-    };
-    let mut points: Vec<MasterPoint> = iso
-        .points
-        .iter()
-        .filter(|p| {
-            [p.freq_hz, p.storage_pa, p.loss_pa]
-                .iter()
-                .all(|v| v.is_finite() && *v > 0.0)
-        })
-        .map(|p| MasterPoint {
-            reduced_freq_hz: p.freq_hz,
-            storage_pa: p.storage_pa,
-            loss_pa: p.loss_pa,
-            temp_c: t_ref,
-            isotherm: 0,
-        })
-        .collect();
+    let shift_law = referred_to(law, t_ref);
+    let mut points = usable_points(iso, t_ref);
     points.sort_by(|p, q| p.reduced_freq_hz.total_cmp(&q.reduced_freq_hz));
     if points.len() < 3 {
         return Err(TtsError::TooFewPoints {
@@ -120,4 +93,40 @@ pub fn master_curve_from_reduced(
             "master curve read already shifted (reference {t_ref} °C); its shifts were not checked here"
         )],
     })
+}
+
+/// `law` referred to `t_ref` (WLF keeps its form; other laws as they are).
+fn referred_to(law: &ShiftLaw, t_ref: f64) -> ShiftLaw {
+    match law {
+        ShiftLaw::Wlf { c1, c2_k, t_ref_c } if (*t_ref_c - t_ref).abs() > 1e-12 => {
+            // Same function referred to T_ref (WLF keeps its form: C1' = C1 C2/(C2 + ΔT),
+            // C2' = C2 + ΔT with ΔT = T_ref − T_r).
+            let dt = t_ref - t_ref_c;
+            ShiftLaw::Wlf {
+                t_ref_c: t_ref,
+                c1: c1 * c2_k / (c2_k + dt),
+                c2_k: c2_k + dt,
+            }
+        }
+        other => other.clone(),
+    }
+}
+
+/// The isotherm's points with finite, positive f, E′ and E″, at `t_ref`, in file order.
+fn usable_points(iso: &Isotherm, t_ref: f64) -> Vec<MasterPoint> {
+    iso.points
+        .iter()
+        .filter(|p| {
+            [p.freq_hz, p.storage_pa, p.loss_pa]
+                .iter()
+                .all(|v| v.is_finite() && *v > 0.0)
+        })
+        .map(|p| MasterPoint {
+            reduced_freq_hz: p.freq_hz,
+            storage_pa: p.storage_pa,
+            loss_pa: p.loss_pa,
+            temp_c: t_ref,
+            isotherm: 0,
+        })
+        .collect()
 }
