@@ -25,7 +25,7 @@ use super::spectrum_input::read_spectrum_input;
 use crate::report::card_refit::{refit_for_cards, CardRefit};
 use crate::report::card_shift::{card_shift, CardShift};
 use crate::report::cards::{self, BulkRelaxation, CardOptions};
-use crate::ShiftLaw;
+use crate::{RelaxationSpectrum, ShiftLaw};
 use anyhow::Context;
 use std::path::PathBuf;
 
@@ -188,6 +188,34 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
     Ok(())
 }
 
+/// A spectrum with more terms than LS-DYNA's cards hold, refitted ([`refit_for_cards`]) with a note
+/// of the refit's errors; a shorter one as it is.
+fn fit_lsdyna(
+    mut spectrum: RelaxationSpectrum,
+    fit: Option<&crate::pipeline::CompoundFit>,
+    notes: &mut Vec<String>,
+) -> anyhow::Result<RelaxationSpectrum> {
+    let cards = spectrum.terms.len() + usize::from(spectrum.modulus_inf_pa > 0.0);
+    if cards > cards::LSDYNA_MAX_TERMS {
+        let CardRefit {
+            spectrum: refit,
+            rms_log10: rms,
+            against,
+        } = refit_for_cards(&spectrum, fit, cards::LSDYNA_MAX_TERMS)
+            .context("refitting with fewer terms for LS-DYNA")?;
+        notes.push(format!(
+            "refitted from {} to {} Prony terms for LS-DYNA (at most {} cards): RMS log10 E' {:.4}, E'' {:.4} against {against}",
+            spectrum.terms.len(),
+            refit.terms.len(),
+            cards::LSDYNA_MAX_TERMS,
+            rms[0],
+            rms[1]
+        ));
+        spectrum = refit;
+    }
+    Ok(spectrum)
+}
+
 /// Run `viscoroll export`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let input = read_spectrum_input(&args.file)?;
@@ -206,24 +234,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         (None, None) => None,
     };
     if args.to == Target::Lsdyna {
-        let cards = spectrum.terms.len() + usize::from(spectrum.modulus_inf_pa > 0.0);
-        if cards > cards::LSDYNA_MAX_TERMS {
-            let CardRefit {
-                spectrum: refit,
-                rms_log10: rms,
-                against,
-            } = refit_for_cards(&spectrum, input.fit.as_ref(), cards::LSDYNA_MAX_TERMS)
-                .context("refitting with fewer terms for LS-DYNA")?;
-            notes.push(format!(
-                "refitted from {} to {} Prony terms for LS-DYNA (at most {} cards): RMS log10 E' {:.4}, E'' {:.4} against {against}",
-                spectrum.terms.len(),
-                refit.terms.len(),
-                cards::LSDYNA_MAX_TERMS,
-                rms[0],
-                rms[1]
-            ));
-            spectrum = refit;
-        }
+        spectrum = fit_lsdyna(spectrum, input.fit.as_ref(), &mut notes)?;
     }
     if let Some(d) = args.density_kg_m3 {
         if !(d.is_finite() && d > 0.0) {

@@ -157,27 +157,7 @@ impl ListedCompound {
             any = true;
         }
         if let Some(c) = &self.columns {
-            o.columns = match c {
-                ColumnsSetting::Spec(spec) => {
-                    crate::dma::ColumnMap::parse(spec).map_err(|e| format!("columns: {e}"))?
-                }
-                ColumnsSetting::Table(t) => {
-                    let mut spec = Vec::new();
-                    for (k, v) in t {
-                        let v = v.as_str().ok_or_else(|| {
-                            format!("columns: `{k}` must be a column name (a string), got {v}")
-                        })?;
-                        if v.contains([',', '=']) {
-                            return Err(format!(
-                                "columns: `{k}` = `{v}`: a column name may not hold `,` or `=`"
-                            ));
-                        }
-                        spec.push(format!("{k}={v}"));
-                    }
-                    crate::dma::ColumnMap::parse(&spec.join(","))
-                        .map_err(|e| format!("columns: {e}"))?
-                }
-            };
+            o.columns = column_map(c)?;
             any = true;
         }
         if let Some(t) = self.tref_c {
@@ -187,24 +167,7 @@ impl ListedCompound {
                 ));
             }
         }
-        let prony = match &self.prony {
-            None => None,
-            Some(table) => {
-                // The listed keys over the defaults, so a partial table is enough.
-                let mut v = serde_json::to_value(PronySettings::default())
-                    .map_err(|e| format!("prony: {e}"))?;
-                let over = serde_json::to_value(table).map_err(|e| format!("prony: {e}"))?;
-                if let (Some(base), Some(over)) = (v.as_object_mut(), over.as_object()) {
-                    for (k, x) in over {
-                        if !base.contains_key(k) {
-                            return Err(format!("prony: unknown key `{k}`"));
-                        }
-                        base.insert(k.clone(), x.clone());
-                    }
-                }
-                Some(serde_json::from_value(v).map_err(|e| format!("prony: {e}"))?)
-            }
-        };
+        let prony = self.prony.as_ref().map(prony_settings).transpose()?;
         Ok(CompoundSettings {
             ingest: any.then_some(o),
             tref_c: self.tref_c,
@@ -212,6 +175,49 @@ impl ListedCompound {
             shift_factors: None,
         })
     }
+}
+
+/// The `columns` setting: a `--columns` spec, or a table of quantity = column name (names may not
+/// hold `,` or `=`, the spec's separators).
+fn column_map(c: &ColumnsSetting) -> Result<crate::dma::ColumnMap, String> {
+    Ok(match c {
+        ColumnsSetting::Spec(spec) => {
+            crate::dma::ColumnMap::parse(spec).map_err(|e| format!("columns: {e}"))?
+        }
+        ColumnsSetting::Table(t) => {
+            let mut spec = Vec::new();
+            for (k, v) in t {
+                let v = v.as_str().ok_or_else(|| {
+                    format!("columns: `{k}` must be a column name (a string), got {v}")
+                })?;
+                if v.contains([',', '=']) {
+                    return Err(format!(
+                        "columns: `{k}` = `{v}`: a column name may not hold `,` or `=`"
+                    ));
+                }
+                spec.push(format!("{k}={v}"));
+            }
+            crate::dma::ColumnMap::parse(&spec.join(",")).map_err(|e| format!("columns: {e}"))?
+        }
+    })
+}
+
+/// The `prony` table: the listed keys over the defaults, so a partial table is enough; an unknown
+/// key is an error.
+fn prony_settings(table: &toml::Table) -> Result<PronySettings, String> {
+    // The listed keys over the defaults, so a partial table is enough.
+    let mut v =
+        serde_json::to_value(PronySettings::default()).map_err(|e| format!("prony: {e}"))?;
+    let over = serde_json::to_value(table).map_err(|e| format!("prony: {e}"))?;
+    if let (Some(base), Some(over)) = (v.as_object_mut(), over.as_object()) {
+        for (k, x) in over {
+            if !base.contains_key(k) {
+                return Err(format!("prony: unknown key `{k}`"));
+            }
+            base.insert(k.clone(), x.clone());
+        }
+    }
+    serde_json::from_value(v).map_err(|e| format!("prony: {e}"))
 }
 
 /// File extensions taken as DMA exports when there is no listing (`json`: a measurement written by
