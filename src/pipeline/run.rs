@@ -225,7 +225,7 @@ fn one_compound(
     // (scene, its temperatures, cover) → the friction ratios of each replicate.
     type SolvedRatios = (
         (crate::contact::Scene, Vec<f64>, Option<f64>),
-        Vec<Vec<f64>>,
+        crate::bands::SceneRatios,
     );
     let mut solved: Vec<SolvedRatios> = Vec::new();
     for spec in &opts.scenes.scene {
@@ -239,17 +239,20 @@ fn one_compound(
                 Some((_, r)) => r.clone(),
                 None => {
                     let r =
-                        crate::bands::scene_ratios_on(&fit, ensemble, &key.0, cover_m, &key.1, bs);
+                        crate::bands::scene_bands_on(&fit, ensemble, &key.0, cover_m, &key.1, bs);
                     solved.push((key, r.clone()));
                     r
                 }
             };
-            for (p, r) in points.iter_mut().zip(&r) {
+            for ((p, r), tail) in points.iter_mut().zip(&r.ratios).zip(&r.tail_ln) {
                 if p.error.is_none() {
                     p.band = crate::bands::band_of(p.friction, r);
+                    if let (Some(s), Some(_)) = (tail, &p.band) {
+                        p.warnings.push(crate::bands::tail_note(*s));
+                    }
                 }
             }
-            ratios.push(r);
+            ratios.push(r.ratios);
         } else {
             ratios.push(Vec::new());
         }
