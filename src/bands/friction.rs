@@ -511,6 +511,67 @@ mod tests {
     use super::*;
 
     #[test]
+    fn covered_ratios_follow_an_exact_line_and_keep_the_solved_ones() {
+        // y = 0.01 + 1.3x exactly on the solved replicates: the fit recovers the line (RSS = 0, so
+        // σ_b = 0) and every other replicate is e^(0.01 + 1.3 ln hs_b) to round-off.
+        let mut rng = crate::bands::rng::Rng::new(5, 0);
+        let hs: Vec<f64> = (0..32).map(|_| (0.1 * rng.normal()).exp()).collect();
+        let solved: Vec<f64> = hs[..8]
+            .iter()
+            .map(|x| (0.01 + 1.3 * x.ln()).exp())
+            .collect();
+        let z: Vec<f64> = (0..32).map(|_| rng.normal()).collect();
+        let out = predict_from_half_space(&hs, &solved, &z).unwrap();
+        assert_eq!(out[..8], solved[..]);
+        for b in 8..32 {
+            let want = (0.01 + 1.3 * hs[b].ln()).exp();
+            assert!((out[b] / want - 1.0).abs() < 1e-12, "{b}");
+        }
+        // fewer than 5 usable pairs: no prediction
+        assert!(predict_from_half_space(&hs, &solved[..4], &z).is_none());
+    }
+
+    #[test]
+    fn covered_ratios_carry_the_residual_scatter() {
+        // ln cov = 1.3 ln hs + 0.02 ε (ε independent): the predicted ensemble's log sd must be
+        // √(1.3²·0.1² + 0.02²) = 0.1315. 4000 replicates: the sample sd is known to 1.1 %; the
+        // line from 8 solved ones adds its own error (β to ±0.008, i.e. 0.6 % of the sd; σ from 6
+        // degrees of freedom to ±30 %, i.e. ±0.7 % of the sd): 4 % covers them.
+        let mut rng = crate::bands::rng::Rng::new(11, 0);
+        let n = 4000;
+        let lx: Vec<f64> = (0..n).map(|_| 0.1 * rng.normal()).collect();
+        let hs: Vec<f64> = lx.iter().map(|x| x.exp()).collect();
+        let solved: Vec<f64> = lx[..8]
+            .iter()
+            .map(|x| (1.3 * x + 0.02 * rng.normal()).exp())
+            .collect();
+        let z: Vec<f64> = (0..n).map(|_| rng.normal()).collect();
+        let out = predict_from_half_space(&hs, &solved, &z).unwrap();
+        let d: Vec<f64> = out.iter().map(|r| r.ln()).collect();
+        let m = d.iter().sum::<f64>() / n as f64;
+        let sd = (d.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt();
+        let want = (1.3f64.powi(2) * 0.01 + 0.02f64.powi(2)).sqrt();
+        assert!((sd / want - 1.0).abs() < 0.04, "{sd} vs {want}");
+    }
+
+    #[test]
+    fn the_tail_parabola_is_exact_on_a_parabola() {
+        // y = 2 + 0.5d − 0.01d² at five temperatures: least squares returns it to round-off.
+        let pts: Vec<(f64, f64)> = [0.0, 5.0, 10.0, 17.0, 25.0]
+            .iter()
+            .map(|&t| (t, 2.0 + 0.5 * (t - 3.0) - 0.01 * (t - 3.0) * (t - 3.0)))
+            .collect();
+        let (c1, c2) = parabola(&pts, 3.0).unwrap();
+        assert!(
+            (c1 - 0.5).abs() < 1e-12 && (c2 + 0.01).abs() < 1e-13,
+            "{c1} {c2}"
+        );
+        // two distinct temperatures cannot define one
+        assert!(parabola(&[(0.0, 1.0), (0.0, 1.0), (5.0, 2.0)], 0.0).is_none());
+        assert!(tail_note(0.3).starts_with("band widened for extrapolation"));
+    }
+
+    #[test]
     fn a_log_normal_sample_gives_its_percentiles() {
         // ratios e^(σ z_k) on evenly spaced normal quantiles z_k: m = 0, s ≈ σ, so the band is
         // value·e^(±1.645σ) to the accuracy of the sample standard deviation of 2000 quantiles.
