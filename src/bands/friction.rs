@@ -134,6 +134,19 @@ fn solved_ratios(
         .par_iter()
         .map(|&t| solve(creep, law.log10_a_t(t)))
         .collect();
+    ratios_over(fit, ensemble, temps_c, which, solve, &nominal)
+}
+
+/// Per temperature, F_b/F̂ of the replicates `which` over the given nominal frictions F̂.
+fn ratios_over(
+    fit: &CompoundFit,
+    ensemble: &BandEnsemble,
+    temps_c: &[f64],
+    which: &[usize],
+    solve: &(dyn Fn(&CreepSpectrum, f64) -> f64 + Sync),
+    nominal: &[f64],
+) -> Vec<Vec<f64>> {
+    let law = &fit.shift_law;
     let nb = which.len();
     let flat: Vec<f64> = (0..temps_c.len() * nb)
         .into_par_iter()
@@ -159,7 +172,7 @@ pub fn scene_ratios_full_on(
     temps_c: &[f64],
     settings: &BandSettings,
 ) -> Vec<Vec<f64>> {
-    bands_with(fit, ensemble, scene, cover_m, temps_c, settings, true).ratios
+    bands_with(fit, ensemble, scene, cover_m, temps_c, settings, true, None).ratios
 }
 
 /// A standard normal draw of replicate `b` for stream `stream` of the bands' seed: the same for
@@ -337,11 +350,13 @@ fn parabola(pts: &[(f64, f64)], t0: f64) -> Option<(f64, f64)> {
 
 /// The shift-law tail term of a point beyond the measured temperatures (eq. 15.8): the largest
 /// |ln F(L_alt(T)) − ln F(L(T))| over the tail assumptions of [`tail_alternatives`], solved on the
-/// scene's body; `None` inside the measured temperatures or without an alternative.
+/// scene's body (`f0` = F(L(T)) on it); `None` inside the measured temperatures or without an
+/// alternative.
 fn tail_term(
     fit: &CompoundFit,
     creep: &CreepSpectrum,
     temp_c: f64,
+    f0: f64,
     solve: &(dyn Fn(&CreepSpectrum, f64) -> f64 + Sync),
 ) -> Option<f64> {
     let (lo, hi) = fit.measured_range_c()?;
@@ -352,7 +367,6 @@ fn tail_term(
     } else {
         return None;
     };
-    let f0 = solve(creep, fit.shift_law.log10_a_t(temp_c));
     tail_alternatives(fit, temp_c, t_end)
         .into_iter()
         .filter_map(|l| {
@@ -385,11 +399,44 @@ pub fn scene_bands_on(
     temps_c: &[f64],
     settings: &BandSettings,
 ) -> SceneRatios {
-    bands_with(fit, ensemble, scene, cover_m, temps_c, settings, false)
+    bands_with(
+        fit, ensemble, scene, cover_m, temps_c, settings, false, None,
+    )
+}
+
+/// [`scene_bands_on`] on a cover with the nominal covered frictions already solved: `nominal[i]`
+/// the fit's friction at `temps_c[i]` on the cover by `auto` at [`COVER_BAND_TOL`] (the main job's
+/// covered points are exactly that solve: crate::pipeline's `COVER_TOL` is the same 1e−3), NaN where
+/// it failed (then solved here). Saves one layer solve per temperature. Without a cover, or with a
+/// band tolerance looser than [`COVER_BAND_TOL`], `nominal` is not used (the half-space's ratios
+/// are over the fit solved at the band tolerance, not the report's).
+pub fn scene_bands_given(
+    fit: &CompoundFit,
+    ensemble: &BandEnsemble,
+    scene: &Scene,
+    cover_m: Option<f64>,
+    temps_c: &[f64],
+    settings: &BandSettings,
+    nominal: &[f64],
+) -> SceneRatios {
+    let usable = cover_m.is_some()
+        && settings.contact_tol <= COVER_BAND_TOL
+        && nominal.len() == temps_c.len();
+    bands_with(
+        fit,
+        ensemble,
+        scene,
+        cover_m,
+        temps_c,
+        settings,
+        false,
+        usable.then_some(nominal),
+    )
 }
 
 /// [`scene_bands_on`] with every replicate solved on the cover (`full`), or the covered ones
 /// predicted from the half-space (eq. 15.6b).
+#[allow(clippy::too_many_arguments)]
 fn bands_with(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
@@ -398,6 +445,7 @@ fn bands_with(
     temps_c: &[f64],
     settings: &BandSettings,
     full: bool,
+    nominal: Option<&[f64]>,
 ) -> SceneRatios {
     let Some(creep) = fit.creep.as_ref() else {
         return SceneRatios {
@@ -409,14 +457,24 @@ fn bands_with(
     let all: Vec<usize> = (0..nb).collect();
     let half_space = solver(scene, None, settings);
     let covered = solver(scene, cover_m, settings);
+    let law = &fit.shift_law;
+    // the body's nominal frictions: given (finite ones), else solved
+    let body_nominal: Vec<f64> = temps_c
+        .par_iter()
+        .enumerate()
+        .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
+            Some(&f) if f.is_finite() && f > 0.0 => f,
+            _ => covered(creep, law.log10_a_t(t)),
+        })
+        .collect();
     let mut ratios: Vec<Vec<f64>> = match cover_m {
-        None => solved_ratios(fit, creep, ensemble, temps_c, &all, &half_space),
-        Some(_) if full => solved_ratios(fit, creep, ensemble, temps_c, &all, &covered),
+        None => ratios_over(fit, ensemble, temps_c, &all, &half_space, &body_nominal),
+        Some(_) if full => ratios_over(fit, ensemble, temps_c, &all, &covered, &body_nominal),
         Some(_) => {
             let hs = solved_ratios(fit, creep, ensemble, temps_c, &all, &half_space);
             let k = COVER_SOLVED_REPLICATES.min(nb);
             let first: Vec<usize> = (0..k).collect();
-            let sub = solved_ratios(fit, creep, ensemble, temps_c, &first, &covered);
+            let sub = ratios_over(fit, ensemble, temps_c, &first, &covered, &body_nominal);
             let z: Vec<f64> = (0..nb)
                 .map(|b| replicate_normal(settings.seed, STREAM_COVER, b))
                 .collect();
@@ -424,8 +482,15 @@ fn bands_with(
                 .map(|i| {
                     predict_from_half_space(&hs[i], &sub[i], &z).unwrap_or_else(|| {
                         // too few covered solves succeeded for the regression: all on the cover
-                        solved_ratios(fit, creep, ensemble, &temps_c[i..=i], &all, &covered)
-                            .remove(0)
+                        ratios_over(
+                            fit,
+                            ensemble,
+                            &temps_c[i..=i],
+                            &all,
+                            &covered,
+                            &body_nominal[i..=i],
+                        )
+                        .remove(0)
                     })
                 })
                 .collect()
@@ -433,7 +498,8 @@ fn bands_with(
     };
     let tail_ln: Vec<Option<f64>> = temps_c
         .par_iter()
-        .map(|&t| tail_term(fit, creep, t, &covered))
+        .zip(body_nominal.par_iter())
+        .map(|(&t, &f0)| tail_term(fit, creep, t, f0, &covered))
         .collect();
     let (lo, _) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
     for ((r, tail), &t) in ratios.iter_mut().zip(&tail_ln).zip(temps_c) {

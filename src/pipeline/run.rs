@@ -238,8 +238,11 @@ fn one_compound(
             let r = match solved.iter().find(|(k, _)| *k == key) {
                 Some((_, r)) => r.clone(),
                 None => {
-                    let r =
-                        crate::bands::scene_bands_on(&fit, ensemble, &key.0, cover_m, &key.1, bs);
+                    // a cover's nominal frictions are the points just solved (same body, tol)
+                    let nominal: Vec<f64> = points.iter().map(|p| p.friction).collect();
+                    let r = crate::bands::scene_bands_given(
+                        &fit, ensemble, &key.0, cover_m, &key.1, bs, &nominal,
+                    );
                     solved.push((key, r.clone()));
                     r
                 }
