@@ -334,7 +334,8 @@ fn parabola(pts: &[(f64, f64)], t0: f64) -> Option<(f64, f64)> {
     };
     let d0 = det(&a);
     let scale = a[0][0] * a[1][1] * a[2][2];
-    if !(d0.abs() > 1e-12 * scale.abs()) {
+    // singular (or NaN): fewer than 3 distinct temperatures
+    if d0.abs().partial_cmp(&(1e-12 * scale.abs())) != Some(std::cmp::Ordering::Greater) {
         return None;
     }
     let col = |k: usize| {
