@@ -10,6 +10,27 @@ use std::time::Instant;
 use viscoroll::pipeline::{run_all, RunOptions};
 use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 
+/// CPU time of this process so far (user + system, every thread), s, from /proc/self/stat (100
+/// ticks per second on Linux); NaN where it cannot be read. On a shared machine the wall time moves
+/// with the other load, the CPU time much less.
+fn cpu_s() -> f64 {
+    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
+        return f64::NAN;
+    };
+    let rest = stat.rsplit_once(')').map_or("", |r| r.1);
+    let f: Vec<f64> = rest
+        .split_whitespace()
+        .skip(11)
+        .take(2)
+        .filter_map(|v| v.parse().ok())
+        .collect();
+    if f.len() == 2 {
+        (f[0] + f[1]) / 100.0
+    } else {
+        f64::NAN
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let n: usize = args
@@ -41,8 +62,10 @@ fn main() {
         .num_threads(2)
         .build()
         .expect("a 2-thread pool");
-    println!("| bands | compounds | failed | not trusted | wall (s) | per compound (s) |");
-    println!("|---|---:|---:|---:|---:|---:|");
+    println!(
+        "| bands | compounds | failed | not trusted | wall (s) | per compound (s) | CPU (s) | CPU per compound (s) |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|");
     for bands in [true, false] {
         if !bands && bands_only {
             continue;
@@ -52,16 +75,18 @@ fn main() {
         if !bands {
             opts.bands = None;
         }
-        let t = Instant::now();
+        let (t, c0) = (Instant::now(), cpu_s());
         let summary = pool.install(|| run_all(&opts, &|_| {})).expect("the run");
         let s = t.elapsed().as_secs_f64();
+        let cpu = cpu_s() - c0;
         println!(
-            "| {} | {} | {} | {} | {s:.1} | {:.2} |",
+            "| {} | {} | {} | {} | {s:.1} | {:.2} | {cpu:.1} | {:.2} |",
             if bands { "yes" } else { "no (--no-bands)" },
             summary.compounds.len(),
             summary.failures(),
             summary.untrusted(),
-            s / n as f64
+            s / n as f64,
+            cpu / n as f64
         );
     }
     let _ = std::fs::remove_dir_all(&root);

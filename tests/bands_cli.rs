@@ -125,6 +125,45 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
             "{key}"
         );
     }
+    // roll --cover-mm 5 (the conveyor-idler's cover): the band solved on the covered body as the
+    // report's covered row (eq. 15.6b, the same ratios), so the same band relative to the friction
+    // (roll's friction is solved at its own tolerance 1e-6, the report's at 1e-3; the ratios are
+    // the same numbers, so the relative band agrees to round-off: 1e-12), and not the half-space's.
+    let covered = rows
+        .iter()
+        .find(|r| r[0] == "conveyor-idler" && r[1] == half_space[1])
+        .unwrap();
+    let o = roll_idler(
+        &out.join("fits/ems.json"),
+        &covered[1],
+        &["--cover-mm", "5"],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rel = |row: &Vec<String>, i: usize| {
+        row[i].parse::<f64>().unwrap() / row[f].parse::<f64>().unwrap()
+    };
+    for (key, i) in [
+        ("friction_p05", p05),
+        ("friction_p50", p50),
+        ("friction_p95", p95),
+    ] {
+        let got = v[key].as_f64().unwrap() / v["friction"].as_f64().unwrap();
+        assert!((got / rel(covered, i) - 1.0).abs() < 1e-12, "{key}: {v}");
+        assert!(
+            (got / rel(half_space, i) - 1.0).abs() > 1e-6,
+            "{key}: the half-space's band"
+        );
+    }
+    // --model winkler: no band, with the reason.
+    let o = roll_idler(
+        &out.join("fits/ems.json"),
+        "20",
+        &["--cover-mm", "5", "--model", "winkler"],
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["friction_p05"].is_null() && v["bands_note"].as_str().unwrap().contains("winkler"));
+
     // roll --no-bands, and a bare spectrum: no band, with the reason.
     let o = roll_idler(&out.join("fits/ems.json"), "20", &["--no-bands"]);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();

@@ -49,7 +49,11 @@ pub mod rng;
 pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
 pub use ensemble::build_ensemble;
 pub use error::BandError;
-pub use friction::{band_of, mean_band, scene_ratios, scene_ratios_on, COVER_BAND_TOL};
+pub use friction::{
+    band_of, mean_band, predict_from_half_space, scene_bands_given, scene_bands_on, scene_ratios,
+    scene_ratios_full_on, scene_ratios_on, tail_alternatives, tail_note, SceneRatios,
+    COVER_BAND_TOL, COVER_SOLVED_REPLICATES,
+};
 
 /// Settings of the bands.
 #[derive(Debug, Clone, PartialEq)]

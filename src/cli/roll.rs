@@ -9,7 +9,9 @@
 //! `rho`, `time_scale_s`, `creep`), the numerics (`scheme`, `n`, `iterations`) and the 90 %
 //! uncertainty band `friction_p05`, `friction_p50`, `friction_p95` (crate::bands: a fit file made by
 //! `viscoroll run` carries the bootstrap ensemble; otherwise null, with the reason in `bands_note`).
-//! With a cover (`--cover-mm`, `--model`) no band is computed yet.
+//! With a cover (`--cover-mm`) the band is solved on the covered body as in the main job
+//! (crate::bands::scene_ratios_on, docs/MATH.md eq. 15.6); `--model winkler` (the conveyor tools'
+//! model, not the one the bands solve) has none.
 
 use super::roll_print::{Answer, Shift};
 use crate::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
@@ -65,12 +67,15 @@ pub struct Args {
     pub json: bool,
 }
 
-/// The 90 % band of the friction of `r` (crate::bands), or why there is none.
-fn band(
+/// The 90 % band of the friction `friction` of `scene` at `--temp-c` (crate::bands), on a cover of
+/// `cover_m` bonded to a rigid carcass (solved as the main job solves a covered scene, eq. 15.6) or
+/// on the half-space (`None`), or why there is none.
+pub(super) fn band(
     args: &Args,
     source: &CreepSource,
     scene: &Scene,
-    r: &SourceRoll,
+    cover_m: Option<f64>,
+    friction: f64,
 ) -> Result<crate::results::FrictionBand, String> {
     if args.no_bands {
         return Err("skipped (--no-bands)".into());
@@ -82,8 +87,8 @@ fn band(
         return Err("this fit file carries no bootstrap ensemble (made by `viscoroll fit` or `run --no-bands`): `viscoroll run` on its measurement adds one".into());
     };
     let settings = crate::bands::BandSettings::default();
-    let ratios = crate::bands::scene_ratios(fit, ensemble, scene, &[t], &settings);
-    crate::bands::band_of(r.roll.friction, &ratios[0])
+    let ratios = crate::bands::scene_ratios_on(fit, ensemble, scene, cover_m, &[t], &settings);
+    crate::bands::band_of(friction, &ratios[0])
         .ok_or_else(|| "too few replicate solves succeeded for a band".to_string())
 }
 
@@ -131,7 +136,14 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             (CreepSource::Spectrum(s), _) => (s.clone(), None, Vec::new()),
             (CreepSource::Fit(_), None) => bail!("a fit file needs --temp-c"),
         };
-        return super::roll_cover::run(&args, &scene, &spectrum, shifted.as_ref(), warnings);
+        return super::roll_cover::run(
+            &args,
+            &source,
+            &scene,
+            &spectrum,
+            shifted.as_ref(),
+            warnings,
+        );
     }
     let settings = ContactSettings {
         scheme: args.scheme,
@@ -144,7 +156,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let r = roll_source_at(&source, args.temp_c, &scene, &settings)
         .with_context(|| format!("{}", args.spectrum.display()))?;
-    let band = band(&args, &source, &scene, &r);
+    let band = band(&args, &source, &scene, None, r.roll.friction);
     print_answer(&args, &r, &band);
     Ok(())
 }
@@ -184,21 +196,7 @@ fn print_answer(args: &Args, r: &SourceRoll, band: &Result<crate::results::Frict
             a.modes_dropped
         ));
     }
-    for (k, v) in [
-        ("friction_p05", band.as_ref().ok().map(|b| b.p05)),
-        ("friction_p50", band.as_ref().ok().map(|b| b.p50)),
-        ("friction_p95", band.as_ref().ok().map(|b| b.p95)),
-    ] {
-        json_extra.insert(k.into(), serde_json::json!(v));
-    }
-    json_extra.insert("bands_note".into(), serde_json::json!(band.as_ref().err()));
-    lines_after.push(match band {
-        Ok(b) => format!(
-            "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
-            b.p05, b.p95, b.p50
-        ),
-        Err(why) => format!("friction band: none: {why}"),
-    });
+    lines_after.push(band_fields(band, &mut json_extra));
     Answer {
         args,
         sol,
@@ -215,4 +213,27 @@ fn print_answer(args: &Args, r: &SourceRoll, band: &Result<crate::results::Frict
         lines_after,
     }
     .print();
+}
+
+/// The band's JSON fields (`friction_p05`, `friction_p50`, `friction_p95`, null without one, and
+/// `bands_note`) into `json`, and its text line.
+pub(super) fn band_fields(
+    band: &Result<crate::results::FrictionBand, String>,
+    json: &mut serde_json::Map<String, serde_json::Value>,
+) -> String {
+    for (k, v) in [
+        ("friction_p05", band.as_ref().ok().map(|b| b.p05)),
+        ("friction_p50", band.as_ref().ok().map(|b| b.p50)),
+        ("friction_p95", band.as_ref().ok().map(|b| b.p95)),
+    ] {
+        json.insert(k.into(), serde_json::json!(v));
+    }
+    json.insert("bands_note".into(), serde_json::json!(band.as_ref().err()));
+    match band {
+        Ok(b) => format!(
+            "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
+            b.p05, b.p95, b.p50
+        ),
+        Err(why) => format!("friction band: none: {why}"),
+    }
 }

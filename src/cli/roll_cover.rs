@@ -4,20 +4,23 @@
 //! `--json` prints the fields of `roll` plus `model` (the body solved), `model_reason`,
 //! `model_error_estimate` (when `auto` chose a cheaper body than the layer: its estimated relative
 //! difference from the layer's answer), `cover_mm`, `cover_over_contact`, `error_estimate`,
-//! `min_pressure_ratio`, `min_gap_ratio` and `warnings` (solver, contact checks, validity); printed by
-//! the shared [`super::roll_print`]. Warnings also go to stderr.
+//! `min_pressure_ratio`, `min_gap_ratio`, `warnings` (solver, contact checks, validity) and the 90 %
+//! band `friction_p05/p50/p95` with `bands_note` (a fit file made by `viscoroll run`: solved on the
+//! cover as in the main job, docs/MATH.md eq. 15.6); printed by the shared [`super::roll_print`]. Warnings also go to stderr.
 
 use super::roll::Args;
 use super::roll_print::{Answer, Shift};
 use crate::contact::body::layer::{roll_cover, ModelChoice};
 use crate::contact::Scene;
 use crate::creep::AtTemperature;
+use crate::pipeline::roll_fit::CreepSource;
 use crate::CreepSpectrum;
 use anyhow::{bail, Context};
 
 /// Run the covered scene.
 pub fn run(
     args: &Args,
+    source: &CreepSource,
     scene: &Scene,
     spectrum: &CreepSpectrum,
     shifted: Option<&AtTemperature<CreepSpectrum>>,
@@ -44,6 +47,19 @@ pub fn run(
     )
     .with_context(|| format!("{}", args.spectrum.display()))?;
     warnings.extend(r.warnings.iter().cloned());
+    // The band is solved on the body the main job's bands solve (`auto`, eq. 15.6): on the cover,
+    // or on the half-space when one was asked for; the uniaxial Winkler model has none.
+    let band = match choice {
+        ModelChoice::Winkler => Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()),
+        ModelChoice::HalfSpace => super::roll::band(args, source, scene, None, r.roll.friction),
+        ModelChoice::Auto | ModelChoice::Layer => super::roll::band(
+            args,
+            source,
+            scene,
+            args.cover_mm.map(|h| h * 1e-3),
+            r.roll.friction,
+        ),
+    };
     let json_extra = serde_json::json!({
         "cover_mm": args.cover_mm,
         "cover_over_contact": r.cover_over_contact,
@@ -55,6 +71,8 @@ pub fn run(
         "min_pressure_ratio": r.min_pressure_ratio,
         "min_gap_ratio": r.min_gap_ratio,
     });
+    let mut json_extra = json_extra.as_object().cloned().unwrap_or_default();
+    let band_line = super::roll::band_fields(&band, &mut json_extra);
     Answer {
         args,
         sol: &r.roll,
@@ -65,7 +83,7 @@ pub fn run(
         }),
         terms: spectrum.terms.len(),
         warnings: &warnings,
-        json_extra: json_extra.as_object().cloned().unwrap_or_default(),
+        json_extra,
         header_suffix: format!(
             ", cover {}",
             args.cover_mm
@@ -77,13 +95,16 @@ pub fn run(
             r.model.name(),
             r.reason
         )],
-        lines_after: vec![format!(
-            "error estimate {:.2e}{}",
-            r.error_estimate,
-            r.model_error_estimate
-                .map(|e| format!(", model error estimate (vs the layer) {e:.2e}"))
-                .unwrap_or_default()
-        )],
+        lines_after: vec![
+            format!(
+                "error estimate {:.2e}{}",
+                r.error_estimate,
+                r.model_error_estimate
+                    .map(|e| format!(", model error estimate (vs the layer) {e:.2e}"))
+                    .unwrap_or_default()
+            ),
+            band_line,
+        ],
     }
     .print();
     Ok(())

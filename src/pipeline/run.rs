@@ -173,7 +173,7 @@ type Fitted = (Measurement, CompoundFit, FitAction, Option<String>);
 /// (scene, its temperatures, cover) → the friction ratios of each replicate.
 type SolvedRatios = (
     (crate::contact::Scene, Vec<f64>, Option<f64>),
-    Vec<Vec<f64>>,
+    crate::bands::SceneRatios,
 );
 
 /// Fit (or reuse the fit of) a compound measured in isotherms, with its bands when asked.
@@ -249,17 +249,24 @@ fn scene_bands(
     let r = match solved.iter().find(|(k, _)| *k == key) {
         Some((_, r)) => r.clone(),
         None => {
-            let r = crate::bands::scene_ratios_on(fit, ensemble, &key.0, cover_m, &key.1, bs);
+            // a cover's nominal frictions are the points just solved (same body, tol)
+            let nominal: Vec<f64> = points.iter().map(|p| p.friction).collect();
+            let r = crate::bands::scene_bands_given(
+                fit, ensemble, &key.0, cover_m, &key.1, bs, &nominal,
+            );
             solved.push((key, r.clone()));
             r
         }
     };
-    for (p, r) in points.iter_mut().zip(&r) {
+    for ((p, r), tail) in points.iter_mut().zip(&r.ratios).zip(&r.tail_ln) {
         if p.error.is_none() {
             p.band = crate::bands::band_of(p.friction, r);
+            if let (Some(s), Some(_)) = (tail, &p.band) {
+                p.warnings.push(crate::bands::tail_note(*s));
+            }
         }
     }
-    r
+    r.ratios
 }
 
 fn one_compound(

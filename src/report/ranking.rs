@@ -104,7 +104,7 @@ pub fn ranking_csv(
     for spec in &scenes.scene {
         for (i, (o, s)) in ranked(outcomes, &spec.name).into_iter().enumerate() {
             let note = if allow_extrapolation && !s.extrapolated_temps_c.is_empty() {
-                "mean includes extrapolated temperatures".to_string()
+                "mean includes extrapolated temperatures (their bands widened by the shift-law tail term, docs/MATH.md eq. 15.8)".to_string()
             } else {
                 String::new()
             };

@@ -38,8 +38,10 @@ fn on_curve(spec: &SceneSpec, pts: &[MapPoint], t: f64, by_speed: bool) -> Vec<(
 }
 
 /// F/N against speed (at the scene's load) and load (at the scene's speed), one plot each, per map
-/// temperature a line through the map's dense curve ([`FrictionMaps::curves`], 40 points) and the
-/// listed points as dots; a scene without dense curves (a cover) shows the listed points joined.
+/// temperature a line through the map's dense curve ([`FrictionMaps::curves`], from the same
+/// interpolant as the listed points: in s on a half-space, in s and h/l_g on a cover) and the listed
+/// points as dots; a map without dense curves (one written before they existed, or a covered
+/// surface that could not be built) shows the listed points joined.
 pub fn speed_and_load_plots(
     dir: &Path,
     spec: &SceneSpec,
@@ -138,7 +140,7 @@ pub fn grid_plot(
         })
         .collect();
     let stem = format!("friction_{}_map2d", spec.name);
-    plot_pair(dir, &stem, |p| {
+    let html = plot_pair(dir, &stem, |p| {
         plots::plot_heatmaps(
             &format!("{}: F/N over speed × load", spec.name),
             ("speed [m/s]", "load [N/m]", "F/N"),
@@ -147,6 +149,27 @@ pub fn grid_plot(
             &panels,
             p,
         )
-    })
-    .map(Some)
+    })?;
+    // Adjacent cells drawn with anti-aliased edges show white seams in a browser (seen in headless
+    // Chromium at 1400 px): the cells are rendered with crisp edges instead. The plot is kept at its
+    // own width (900 px) rather than stretched to the page, so its labels stay the size of the others.
+    let svg = dir.join(format!("{stem}.svg"));
+    if let Ok(text) = std::fs::read_to_string(&svg) {
+        let crisp = crisp_edges(&text);
+        if crisp != text {
+            crate::report::error::write_file(&svg, crisp.as_bytes())?;
+        }
+    }
+    Ok(Some(format!(
+        "<div style=\"max-width:900px\">{}</div>",
+        crisp_edges(&html)
+    )))
+}
+
+/// `shape-rendering="crispEdges"` on the (first) `<svg>` element of `text`.
+fn crisp_edges(text: &str) -> String {
+    if text.contains("shape-rendering=\"crispEdges\"") {
+        return text.to_string();
+    }
+    text.replacen("<svg ", "<svg shape-rendering=\"crispEdges\" ", 1)
 }

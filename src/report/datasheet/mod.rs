@@ -158,16 +158,33 @@ fn map_section(
         );
     }
     if !grids.is_empty() {
+        // Per scene, the interpolant its maps come from: in s = l_g/(V·a_T) alone on a half-space,
+        // in s and η = h/l_g of bonded-layer solves on a cover (crate::contact::maps::covered).
+        let how = friction
+            .iter()
+            .zip(maps)
+            .filter(|(_, m)| !m.grid.is_empty())
+            .map(|((spec, _), m)| {
+                let body = match spec.cover_thickness_mm {
+                    Some(h) => format!(
+                        "a 2-D interpolant of bonded-layer solves in s and η = h/l_g ({h} mm cover)"
+                    ),
+                    None => "a 1-D interpolant of half-space solves in s".to_string(),
+                };
+                format!(
+                    "{}: {body}, relative tolerance {:e}, interpolation estimate {:.1e}, {} solves",
+                    crate::report::html::esc(&spec.name),
+                    m.tol,
+                    m.error_estimate,
+                    m.solves
+                )
+            })
+            .collect::<Vec<_>>()
+            .join("; ");
         let _ = write!(
             h,
-            "<h3>Friction maps: speed × load</h3><p>{n}×{n} grid per map temperature, log-spaced over the listed speeds and loads; values in <a href=\"friction_map_2d.csv\">friction_map_2d.csv</a>. All maps come from one interpolant of the dimensionless contact solution in the reduced variable s = l_g/(V·a_T) (relative tolerance {tol:e}; interpolation estimate {est}).</p>{grids}",
+            "<h3>Friction maps: speed × load</h3><p>{n}×{n} grid per map temperature, log-spaced over the listed speeds and loads; values in <a href=\"friction_map_2d.csv\">friction_map_2d.csv</a>. Each scene's maps come from one interpolant of its dimensionless contact solution (s = l_g/(V·a_T) the reduced time), not from a solve per point: {how}.</p>{grids}",
             n = crate::results::scene::GRID_POINTS,
-            tol = maps.first().map_or(f64::NAN, |m| m.tol),
-            est = maps
-                .iter()
-                .map(|m| format!("{:.1e}", m.error_estimate))
-                .collect::<Vec<_>>()
-                .join(", ")
         );
     }
     Ok(h)

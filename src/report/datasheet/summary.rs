@@ -198,6 +198,9 @@ fn bodies(pts: &[FrictionPoint]) -> Vec<(&str, Vec<f64>, &str)> {
     v
 }
 
+/// How the bands stage's tail note starts (crate::bands::tail_note).
+const TAIL_NOTE_START: &str = "band widened for extrapolation";
+
 /// The friction matrix: a row per scene, a column per temperature, F/N with its band; then the
 /// body of each scene and why.
 pub fn friction_matrix(
@@ -217,7 +220,7 @@ pub fn friction_matrix(
     let mut h = format!(
         "<h2>Rolling friction F/N</h2><p>Per scene and temperature{}; <span class=\"warn\">*</span> extrapolated shift law (outside the measured temperatures){}. The mean is the ranking's figure.</p><table><tr><th class=\"l\">scene</th><th>mean</th>",
         if banded {
-            ", with the 90 % band (p05–p95) below each value"
+            ", with the 90 % band (p05–p95) below each value (<span class=\"warn\">†</span>: widened by the spread of the shift law's tail assumptions beyond the measured temperatures; hover for the figure)"
         } else {
             " (no uncertainty bands in this run)"
         },
@@ -284,7 +287,16 @@ fn friction_cell(h: &mut String, point: Option<&FrictionPoint>) {
                 if b.is_empty() {
                     String::new()
                 } else {
-                    format!("<span class=\"band\">{b}</span>")
+                    // † a band widened by the shift-law tail term (crate::bands, eq. 15.8)
+                    let widened = p.warnings.iter().any(|w| w.starts_with(TAIL_NOTE_START));
+                    format!(
+                        "<span class=\"band\">{b}{}</span>",
+                        if widened {
+                            " <span class=\"warn\">†</span>"
+                        } else {
+                            ""
+                        }
+                    )
                 }
             );
         }
