@@ -7,6 +7,7 @@
 //! to the hat scheme and says so).
 
 use super::at_lambda::solve_at_lambda;
+use super::secant::{bracket as secant_bracket, secant_loop, start_guess, Start};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{
     calibration_mode, lump_weight, lumped_residual, model_gains, select, slow_estimate_at, unlump,
@@ -37,6 +38,10 @@ impl Default for SpectralSettings {
         }
     }
 }
+
+/// Most solves a secant loop may make before the bracketed Brent loop takes over (module
+/// [`super::secant`]: three or four are the rule).
+const SECANT_SOLVES: usize = 12;
 
 /// Trapezoid step of the Laplace quadrature for a tolerance and its error bound (the `auto` scheme's
 /// measured rule on 1–30-term problems: errors ≤ 2e−11 at step 0.4, ~1e−15 at 0.3; three times that
@@ -217,9 +222,13 @@ pub fn solve_spectral_at_load(
         Ok((s, d.iterations))
     };
 
-    // 1. a coarse λ: degree 8, no lumping correction, load to 1e−3 (a cold bracket is wide)
+    // 1. a coarse λ at degree ≤ 16 without the lumping correction: the secant from the closed-form
+    // guess (module [`super::secant`]) to N′ within 1e−4 (λ to ≤ 2e−4, d ln N′/d ln λ ≥ ½); the
+    // bracketed Brent loop from a cold bracket if the secant fails
     let coarse_tol = 1e-3_f64.max(tol);
-    let mut lam = lambda_guess(load, thickness, nu);
+    let (lam_guess, slope_guess) = start_guess(terms, load, thickness, nu);
+    let safe = secant_bracket(load, thickness, nu, s_full);
+    let mut lam = lam_guess;
     let (gf, gn) = model_gains(terms, lam);
     let red0 = select(
         terms,
@@ -228,7 +237,6 @@ pub fn solve_spectral_at_load(
         0.3 * coarse_tol,
         (gf, gn),
     );
-    // N′ to 1e−4: λ to ≤ 2e−4 (d ln N′/d ln λ ≥ ½), inside the fine loop's ±0.2 % start bracket
     let coarse_settings = LoadSettings {
         rel_tol: 1e-4,
         lambda_rel_tol: 1e-5,
@@ -236,10 +244,60 @@ pub fn solve_spectral_at_load(
         ..LoadSettings::default()
     };
     let p0 = degree_for(0.5 * lam, thickness, coarse_tol).min(16);
-    let (c, mut iterations) = solve_loop(&red0, (gf, gn, 0.0), p0, None, &coarse_settings)?;
+    let wl0 = w_lambda(terms, &red0);
+    let coarse = secant_loop(
+        load,
+        safe,
+        Start::Guess(lam_guess, slope_guess),
+        (1e-4, 1e-6),
+        SECANT_SOLVES,
+        &mut |x| {
+            corrected(
+                solve_reduced(&red0, x, thickness, nu, p0, step),
+                wl0,
+                (gf, gn, 0.0),
+            )
+        },
+    );
+    let (c, mut iterations, mut slope) = match coarse {
+        Ok(c) => (c.sol, c.solves, c.slope),
+        Err(_) => {
+            let (c, it) = solve_loop(&red0, (gf, gn, 0.0), p0, None, &coarse_settings)?;
+            (c, it, slope_guess)
+        }
+    };
     lam = c.lambda;
     let mut fr_over_l = c.friction_rho / lam;
     let mut warnings = Vec::new();
+    // the fine loop: the secant from `start` with the slope known, to the load loop's default
+    // 1e−10 in N′; the bracketed Brent loop near the start if the secant fails
+    let fine = |red: &Reduction,
+                g: (f64, f64, f64),
+                p: usize,
+                start: Start,
+                slope: &mut f64|
+     -> Result<(LambdaSolution, usize), ContactError> {
+        let wl = w_lambda(terms, red);
+        let near = match &start {
+            Start::Guess(l, _) => *l,
+            Start::Solved(s, _) => s.lambda,
+        };
+        let looped = secant_loop(
+            load,
+            safe,
+            start,
+            (load_settings.rel_tol, 1e-12),
+            SECANT_SOLVES,
+            &mut |x| corrected(solve_reduced(red, x, thickness, nu, p, step), wl, g),
+        );
+        match looped {
+            Ok(l) => {
+                *slope = l.slope;
+                Ok((l.sol, l.solves))
+            }
+            Err(_) => solve_loop(red, g, p, Some(near), &load_settings),
+        }
+    };
     for round in 0..3 {
         // 2. selection and measured lumping gains at the current λ, at the degree for tol
         let red = select(terms, lam, 0.3 * tol * fr_over_l, 0.3 * tol, (gf, gn));
@@ -248,15 +306,22 @@ pub fn solve_spectral_at_load(
             return Ok(None);
         }
         let wl = w_lambda(terms, &red);
-        let (gains, amp) = if red.lumped.is_empty() {
-            ((gf, gn, 0.0), 0.0) // nothing lumped: the gains multiply W = 0
+        let (gains, amp, start) = if red.lumped.is_empty() {
+            // nothing lumped: the gains multiply W = 0
+            ((gf, gn, 0.0), 0.0, Start::Guess(lam, slope))
         } else {
             let at_lam = solve_reduced(&red, lam, thickness, nu, p, step);
             iterations += 2;
-            calibrate(terms, &red, &at_lam, thickness, nu, p, step)
+            let (gains, amp) = calibrate(terms, &red, &at_lam, thickness, nu, p, step);
+            // the calibration's solve at λ starts the fine loop (corrected with the gains found)
+            (
+                gains,
+                amp,
+                Start::Solved(corrected(at_lam, wl, gains), slope),
+            )
         };
         // 3. the load loop near λ; 4. the degree checked against p/2 at the λ found
-        let (mut sol, it) = solve_loop(&red, gains, p, Some(lam), &load_settings)?;
+        let (mut sol, it) = fine(&red, gains, p, start, &mut slope)?;
         iterations += it;
         let (e_p_fr, e_p_ld) = loop {
             let half = corrected(
@@ -276,7 +341,7 @@ pub fn solve_spectral_at_load(
                 break (e_fr, e_lambda);
             }
             p *= 2;
-            let (s, it) = solve_loop(&red, gains, p, Some(sol.lambda), &load_settings)?;
+            let (s, it) = fine(&red, gains, p, Start::Guess(sol.lambda, slope), &mut slope)?;
             sol = s;
             iterations += it;
         };

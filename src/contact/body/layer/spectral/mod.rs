@@ -68,6 +68,7 @@
 pub mod at_lambda;
 pub mod at_load;
 pub mod layer_term;
+pub mod secant;
 pub mod volterra;
 
 pub use at_load::{solve_spectral_at_load, SpectralSettings};
