@@ -1,6 +1,7 @@
 //! The spectral layer solver at given load N′: mode reduction and lumping correction as in the
-//! half-space `auto` scheme, the bracketed load loop of [`crate::contact::load`], the degree p
-//! doubled until the p/2 comparison meets the tolerance, and the contact checks.
+//! half-space `auto` scheme, the secant load loops of [`super::secant`] (the bracketed loop of
+//! [`crate::contact::load`] as their fallback), the degree p doubled until the p/2 comparison meets
+//! the tolerance, and the contact checks.
 //!
 //! Input: creep terms, N′, h′, ν, [`SpectralSettings`]; output: a [`LayerAnswer`] (scheme
 //! `layer-spectral`) or `None` when the cover is too thin for the degree cap (the caller falls back
