@@ -1,12 +1,14 @@
 //! The spectral layer solver at given load N′: mode reduction and lumping correction as in the
-//! half-space `auto` scheme, the bracketed load loop of [`crate::contact::load`], the degree p
-//! doubled until the p/2 comparison meets the tolerance, and the contact checks.
+//! half-space `auto` scheme, the secant load loops of [`super::secant`] (the bracketed loop of
+//! [`crate::contact::load`] as their fallback), the degree p doubled until the p/2 comparison meets
+//! the tolerance, and the contact checks.
 //!
 //! Input: creep terms, N′, h′, ν, [`SpectralSettings`]; output: a [`LayerAnswer`] (scheme
 //! `layer-spectral`) or `None` when the cover is too thin for the degree cap (the caller falls back
 //! to the hat scheme and says so).
 
 use super::at_lambda::solve_at_lambda;
+use super::secant::{bracket as secant_bracket, secant_loop, start_guess, Start};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{
     calibration_mode, lump_weight, lumped_residual, model_gains, select, slow_estimate_at, unlump,
@@ -37,6 +39,10 @@ impl Default for SpectralSettings {
         }
     }
 }
+
+/// Most solves a secant loop may make before the bracketed Brent loop takes over (module
+/// [`super::secant`]: three or four are the rule).
+const SECANT_SOLVES: usize = 12;
 
 /// Trapezoid step of the Laplace quadrature for a tolerance and its error bound (the `auto` scheme's
 /// measured rule on 1–30-term problems: errors ≤ 2e−11 at step 0.4, ~1e−15 at 0.3; three times that
@@ -156,6 +162,17 @@ fn to_dimensionless(s: &LambdaSolution, p: usize) -> DimensionlessSolution {
     }
 }
 
+/// (ρF/N, λ) error of the degree-p solution `full` from its difference with the p/2 one `half` at
+/// the same λ (module doc of [`super`]): the λ error from the N′ error through d ln N′/d ln λ ≥ ½,
+/// and ρF/N moves with λ at most twice as fast.
+fn degree_error(half: &LambdaSolution, full: &LambdaSolution) -> (f64, f64) {
+    let e_ld = rel(half.load, full.load);
+    let e_fr =
+        rel(half.friction_rho, full.friction_rho).max((half.beta - full.beta).abs() / full.lambda);
+    let e_lambda = 2.0 * e_ld;
+    (e_fr + 2.0 * e_lambda, e_lambda)
+}
+
 fn rel(a: f64, b: f64) -> f64 {
     if a == b {
         0.0
@@ -217,9 +234,13 @@ pub fn solve_spectral_at_load(
         Ok((s, d.iterations))
     };
 
-    // 1. a coarse λ: degree 8, no lumping correction, load to 1e−3 (a cold bracket is wide)
+    // 1. a coarse λ at degree ≤ 16 without the lumping correction: the secant from the closed-form
+    // guess (module [`super::secant`]) to N′ within 1e−4 (λ to ≤ 2e−4, d ln N′/d ln λ ≥ ½); the
+    // bracketed Brent loop from a cold bracket if the secant fails
     let coarse_tol = 1e-3_f64.max(tol);
-    let mut lam = lambda_guess(load, thickness, nu);
+    let (lam_guess, slope_guess) = start_guess(terms, load, thickness, nu);
+    let safe = secant_bracket(load, thickness, nu, s_full);
+    let mut lam = lam_guess;
     let (gf, gn) = model_gains(terms, lam);
     let red0 = select(
         terms,
@@ -228,7 +249,6 @@ pub fn solve_spectral_at_load(
         0.3 * coarse_tol,
         (gf, gn),
     );
-    // N′ to 1e−4: λ to ≤ 2e−4 (d ln N′/d ln λ ≥ ½), inside the fine loop's ±0.2 % start bracket
     let coarse_settings = LoadSettings {
         rel_tol: 1e-4,
         lambda_rel_tol: 1e-5,
@@ -236,10 +256,60 @@ pub fn solve_spectral_at_load(
         ..LoadSettings::default()
     };
     let p0 = degree_for(0.5 * lam, thickness, coarse_tol).min(16);
-    let (c, mut iterations) = solve_loop(&red0, (gf, gn, 0.0), p0, None, &coarse_settings)?;
+    let wl0 = w_lambda(terms, &red0);
+    let coarse = secant_loop(
+        load,
+        safe,
+        Start::Guess(lam_guess, slope_guess),
+        (1e-4, 1e-6),
+        SECANT_SOLVES,
+        &mut |x| {
+            corrected(
+                solve_reduced(&red0, x, thickness, nu, p0, step),
+                wl0,
+                (gf, gn, 0.0),
+            )
+        },
+    );
+    let (c, mut iterations, mut slope) = match coarse {
+        Ok(c) => (c.sol, c.solves, c.slope),
+        Err(_) => {
+            let (c, it) = solve_loop(&red0, (gf, gn, 0.0), p0, None, &coarse_settings)?;
+            (c, it, slope_guess)
+        }
+    };
     lam = c.lambda;
     let mut fr_over_l = c.friction_rho / lam;
     let mut warnings = Vec::new();
+    // the fine loop: the secant from `start` with the slope known, to the load loop's default
+    // 1e−10 in N′; the bracketed Brent loop near the start if the secant fails
+    let fine = |red: &Reduction,
+                g: (f64, f64, f64),
+                p: usize,
+                start: Start,
+                slope: &mut f64|
+     -> Result<(LambdaSolution, usize), ContactError> {
+        let wl = w_lambda(terms, red);
+        let near = match &start {
+            Start::Guess(l, _) => *l,
+            Start::Solved(s, _) => s.lambda,
+        };
+        let looped = secant_loop(
+            load,
+            safe,
+            start,
+            (load_settings.rel_tol, 1e-12),
+            SECANT_SOLVES,
+            &mut |x| corrected(solve_reduced(red, x, thickness, nu, p, step), wl, g),
+        );
+        match looped {
+            Ok(l) => {
+                *slope = l.slope;
+                Ok((l.sol, l.solves))
+            }
+            Err(_) => solve_loop(red, g, p, Some(near), &load_settings),
+        }
+    };
     for round in 0..3 {
         // 2. selection and measured lumping gains at the current λ, at the degree for tol
         let red = select(terms, lam, 0.3 * tol * fr_over_l, 0.3 * tol, (gf, gn));
@@ -248,37 +318,61 @@ pub fn solve_spectral_at_load(
             return Ok(None);
         }
         let wl = w_lambda(terms, &red);
+        let at_lam = solve_reduced(&red, lam, thickness, nu, p, step);
+        iterations += 1;
         let (gains, amp) = if red.lumped.is_empty() {
             ((gf, gn, 0.0), 0.0) // nothing lumped: the gains multiply W = 0
         } else {
-            let at_lam = solve_reduced(&red, lam, thickness, nu, p, step);
-            iterations += 2;
+            iterations += 1;
             calibrate(terms, &red, &at_lam, thickness, nu, p, step)
         };
-        // 3. the load loop near λ; 4. the degree checked against p/2 at the λ found
-        let (mut sol, it) = solve_loop(&red, gains, p, Some(lam), &load_settings)?;
-        iterations += it;
-        let (e_p_fr, e_p_ld) = loop {
-            let half = corrected(
-                solve_reduced(&red, sol.lambda, thickness, nu, p / 2, step),
-                wl,
-                gains,
+        // 3. the degree checked against p/2 at this λ (within 2e−4 of the root), doubled until
+        // it passes: one solve per degree, and the solve at the degree kept starts the load loop
+        let mut at_p = corrected(at_lam, wl, gains);
+        let mut half = corrected(
+            solve_reduced(&red, lam, thickness, nu, p / 2, step),
+            wl,
+            gains,
+        );
+        iterations += 1;
+        let mut e_pre = degree_error(&half, &at_p);
+        while e_pre.0.max(e_pre.1) > 0.3 * tol && 2 * p <= settings.p_max {
+            p *= 2;
+            half = std::mem::replace(
+                &mut at_p,
+                corrected(solve_reduced(&red, lam, thickness, nu, p, step), wl, gains),
             );
             iterations += 1;
-            let e_ld = rel(half.load, sol.load);
-            let e_fr = rel(half.friction_rho, sol.friction_rho)
-                .max((half.beta - sol.beta).abs() / sol.lambda);
-            // λ error from the N′ error through d ln N′/d ln λ ≥ ½; ρF/N moves with λ at most
-            // twice as fast (module doc of [`super`])
-            let e_lambda = 2.0 * e_ld;
-            let e_fr = e_fr + 2.0 * e_lambda;
-            if e_fr.max(e_lambda) <= 0.3 * tol || 2 * p > settings.p_max {
-                break (e_fr, e_lambda);
+            e_pre = degree_error(&half, &at_p);
+        }
+        // 4. the load loop from there
+        let (mut sol, it) = fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
+        iterations += it;
+        // 5. the degree's error at the λ found: the pre-check's when λ moved by < 1e−3 (the
+        // p-error is smooth in λ: its relative change over Δ ln λ is ~ (2.5·p·h′/L·ln 10)·Δ ln λ
+        // < 10·Δ ln λ at p ≤ 48, h′/L ≥ 0.016; counted ten times over), else checked again there,
+        // doubling p and solving again while it fails
+        let moved = (sol.lambda / lam).ln().abs();
+        let (e_p_fr, e_p_ld) = if moved < 1e-3 && e_pre.0.max(e_pre.1) <= 0.3 * tol {
+            let f = 1.0 + 100.0 * moved;
+            (f * e_pre.0, f * e_pre.1)
+        } else {
+            loop {
+                let half = corrected(
+                    solve_reduced(&red, sol.lambda, thickness, nu, p / 2, step),
+                    wl,
+                    gains,
+                );
+                iterations += 1;
+                let (e_fr, e_lambda) = degree_error(&half, &sol);
+                if e_fr.max(e_lambda) <= 0.3 * tol || 2 * p > settings.p_max {
+                    break (e_fr, e_lambda);
+                }
+                p *= 2;
+                let (s, it) = fine(&red, gains, p, Start::Guess(sol.lambda, slope), &mut slope)?;
+                sol = s;
+                iterations += it;
             }
-            p *= 2;
-            let (s, it) = solve_loop(&red, gains, p, Some(sol.lambda), &load_settings)?;
-            sol = s;
-            iterations += it;
         };
         let lambda = sol.lambda;
         let fr = sol.friction_rho;

@@ -20,13 +20,18 @@
 //! (R decays like e^{−2κh′/L}), so its interpolant converges geometrically in p once p ≳ L/h′.
 //!
 //! # Quadrature
-//! κ ∈ [κ_lo, 1]: 8-point Gauss–Legendre panels of width 1 in ln κ (the poles of Φ(κ/L) at
-//! κ = −ic_i lie π/2 off the real axis in ln κ: ellipse parameter ≥ 6, error ≲ 6^{−16}); below
-//! κ_lo = 1e−8·min(c_min, 1) the integrand is O(κ) and negligible. κ ∈ [1, κ_hi], κ_hi = 20L/h′
+//! κ ∈ [κ_lo, 1]: 14-point Gauss–Legendre panels of width 2 in ln κ (the poles of Φ(κ/L) at
+//! κ = −ic_i lie π/2 off the real axis in ln κ: ellipse parameter ≈ 3.4, error ≲ 3.4^{−28} ≈ 1e−15
+//! of a panel's part; R's singularities at κ ~ L/h′ are nearer, measured in the test). Below the poles the integrand is bounded by (π/2)(Σrᵢκ/cᵢ + sκ) (|R| ≤ 1,
+//! J_{k+1}(κ) ≤ (κ/2)^{k+1}/(k+1)!, Im Φ(κ/L) ≤ Σrᵢκ/cᵢ, rᵢ = f̂ᵢ/bᵢ, s = 1 + Σrᵢ), so cutting at
+//! κ_lo = √(4e−15/(π(Σrᵢ/cᵢ + s))) leaves out ≤ 1e−15 ([`LogRule::production`]; a test compares
+//! the rule with one of half the panel width, 16 points and κ_lo a thousand times smaller).
+//! κ ∈ [1, κ_hi], κ_hi = 20L/h′
 //! (R < 2e−15 beyond, T_MAX): 16-point panels of width ≤ 4 (at most eight radians of e^{iκ(t±1)},
 //! J_{k+1} oscillates slower; the Gauss error for e^{iωx} with ω = 4 on 16 nodes is ~(eω/64)^{32}
-//! < 1e−20). At a node κ only orders k + 1 ≤ κ + 12κ^{1/3} + 30 carry weight (J_n(κ) < 1e−20
-//! beyond), which keeps the log region cheap. J_n by Miller's backward recurrence normalised by
+//! < 1e−20). At a node κ only orders k + 1 ≤ min(κ + 12κ^{1/3} + 30, n with (κ/2)ⁿ/n! < 1e−22)
+//! carry weight (J_n(κ) < 1e−20
+//! //! beyond), which keeps the log region cheap. J_n by Miller's backward recurrence normalised by
 //! J₀ + 2ΣJ₂ₖ = 1 (A&S 9.1.46, 9.12).
 
 use crate::contact::body::half_space::modes::Modes;
@@ -73,14 +78,46 @@ pub struct LayerTerm {
     pub orders: usize,
 }
 
+/// The rule on the logarithmic part κ ∈ [κ_lo, 1] (module doc).
+#[derive(Debug, Clone, Copy)]
+struct LogRule {
+    /// Panel width in ln κ.
+    width: f64,
+    /// Gauss–Legendre points per panel.
+    points: usize,
+    /// Lower end κ_lo.
+    lo: f64,
+}
+
+impl LogRule {
+    /// The rule used: panels of width 2 in ln κ with 14 points (the poles of Φ(κ/L) lie π/2 off the
+    /// real ln κ axis: ellipse parameter ρ = π/2 + √(π²/4 + 1) ≈ 3.4 for the half-width 1, Gauss
+    /// error ≲ ρ^{−28} ≈ 1e−15 of the panel's part), cut at κ_lo with the neglected part ≤ 1e−15
+    /// (module doc: the integrand is ≤ (π/2)(Σ rᵢκ/cᵢ + s·κ) below the poles, so ∫₀^{κ_lo} ≤
+    /// (π/4)κ_lo²(Σ rᵢ/cᵢ + s), rᵢ = f̂ᵢ/bᵢ, cᵢ = bᵢL, s = 1 + Σrᵢ).
+    fn production(modes: &Modes, l: f64) -> LogRule {
+        let (mut sum_rc, mut s) = (0.0, 1.0);
+        for (f, b) in modes.f.iter().zip(&modes.b) {
+            sum_rc += f / (b * b * l);
+            s += f / b;
+        }
+        let lo = (4e-15 / (PI * (sum_rc + s))).sqrt().min(1e-3);
+        LogRule {
+            width: 2.0,
+            points: 14,
+            lo,
+        }
+    }
+}
+
 /// Quadrature nodes (κ, weight·R(κh′/L)/κ) of the module doc.
-fn nodes(c_min: f64, kappa_hi: f64, thickness_over_l: f64, nu: f64) -> Vec<(f64, f64)> {
+fn nodes(rule: LogRule, kappa_hi: f64, thickness_over_l: f64, nu: f64) -> Vec<(f64, f64)> {
     let mut out = Vec::new();
     let k_mid = kappa_hi.min(1.0);
-    let k_lo = 1e-8 * c_min.min(1.0).min(k_mid);
-    let (gx, gw) = gauss_legendre(8);
+    let k_lo = rule.lo.min(0.5 * k_mid);
+    let (gx, gw) = gauss_legendre(rule.points);
     let (va, vb) = (k_lo.ln(), k_mid.ln());
-    let np = (vb - va).ceil().max(1.0) as usize;
+    let np = ((vb - va) / rule.width).ceil().max(1.0) as usize;
     for p in 0..np {
         let a = va + (vb - va) * p as f64 / np as f64;
         let b = va + (vb - va) * (p + 1) as f64 / np as f64;
@@ -106,20 +143,44 @@ fn nodes(c_min: f64, kappa_hi: f64, thickness_over_l: f64, nu: f64) -> Vec<(f64,
     out
 }
 
+/// Orders n ≥ 1 beyond which J_n(κ) < 1e−22 by J_n(κ) ≤ (κ/2)ⁿ/n! (for κ < 1; else `usize::MAX`).
+fn small_kappa_orders(kappa: f64) -> usize {
+    if kappa >= 1.0 {
+        return usize::MAX;
+    }
+    let (mut n, mut term) = (1usize, 0.5 * kappa);
+    while term >= 1e-22 && n < 60 {
+        n += 1;
+        term *= 0.5 * kappa / n as f64;
+    }
+    n
+}
+
 impl LayerTerm {
     /// The matrix for the reduced `modes` (Φ = 1 + Σf̂/(b − ik)) at half-length `l`, thickness
     /// `thickness` = h′, Poisson's ratio `nu`, degree `p` (≥ 2).
     pub fn new(modes: &Modes, l: f64, thickness: f64, nu: f64, p: usize) -> LayerTerm {
+        Self::with_rule(modes, l, thickness, nu, p, LogRule::production(modes, l))
+    }
+
+    fn with_rule(
+        modes: &Modes,
+        l: f64,
+        thickness: f64,
+        nu: f64,
+        p: usize,
+        rule: LogRule,
+    ) -> LayerTerm {
         let h_over_l = thickness / l;
         let kappa_hi = T_MAX / h_over_l;
         let orders = orders_needed(kappa_hi);
-        let c_min = modes.b.iter().map(|b| b * l).fold(1.0, f64::min);
         let ts: Vec<f64> = (0..=p).map(|i| (PI * i as f64 / p as f64).cos()).collect();
         // values[l][k]: G at Lobatto point l for a_k = 1
         let mut values = vec![vec![0.0; orders]; p + 1];
         let mut je_re = vec![0.0; orders];
         let mut je_im = vec![0.0; orders];
-        for (kappa, w) in nodes(c_min, kappa_hi, h_over_l, nu) {
+        let mut sc = vec![(0.0, 0.0); p + 1];
+        for (kappa, w) in nodes(rule, kappa_hi, h_over_l, nu) {
             // Φ(κ/L)
             let kk = kappa / l;
             let (mut pr, mut pi) = (1.0, 0.0);
@@ -128,10 +189,12 @@ impl LayerTerm {
                 pr += f * b / d;
                 pi += f * kk / d;
             }
-            // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there)
-            let mut used = orders_needed(kappa).min(orders);
+            // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there), and for
+            // small κ far fewer: J_{k+1}(κ) ≤ (κ/2)^{k+1}/(k+1)!
+            let mut used = orders_needed(kappa)
+                .min(orders)
+                .min(small_kappa_orders(kappa));
             let j = bessel_j(kappa, used);
-            // and for small κ far fewer: J_{k+1}(κ) ~ (κ/2)^{k+1}/(k+1)! (|J| ≤ 1 at every order)
             while used > 1 && j[used].abs() < 1e-22 {
                 used -= 1;
             }
@@ -148,8 +211,13 @@ impl LayerTerm {
                 je_re[k] = pr * r - pi * i;
                 je_im[k] = pr * i + pi * r;
             }
-            for (row, &t) in values.iter_mut().zip(&ts) {
-                let (s, c) = (kappa * t).sin_cos();
+            // the Lobatto points are symmetric, t_{p−i} = −t_i: half the sines and cosines
+            for i in 0..=p / 2 {
+                let (s, c) = (kappa * ts[i]).sin_cos();
+                sc[i] = (s, c);
+                sc[p - i] = (-s, c);
+            }
+            for (row, &(s, c)) in values.iter_mut().zip(&sc) {
                 let ww = PI * w;
                 // Im[(re + i·im)(c + i·s)] = re·s + im·c
                 let (a, b) = (ww * s, ww * c);
@@ -207,6 +275,56 @@ mod tests {
         assert!((j[0] - 0.765_197_686_6).abs() < 1e-10 && (j[1] - 0.440_050_585_7).abs() < 1e-10);
         let j = bessel_j(10.0, 2);
         assert!((j[0] + 0.245_935_764_5).abs() < 1e-10 && (j[1] - 0.043_472_746_17).abs() < 1e-10);
+    }
+}
+
+#[cfg(test)]
+mod quadrature_tests {
+    use super::*;
+    use crate::contact::CreepTerm;
+
+    #[test]
+    fn log_rule_matches_a_denser_rule() {
+        // The production rule (width 2, 14 points, κ_lo from the bound) against width 0.5, 16 points
+        // and κ_lo a thousand times smaller, on spectra whose modes (poles of Φ) sit in the log
+        // region, a thin and a thick cover (L/h′ = 0.05: R's own singularities at κ ~ L/h′ fall in
+        // the log region too). Measured: ≤ 6e−13 of the largest coefficient (the former rule, width
+        // 1 with 8 points and κ_lo = 1e−8·min(c_min, 1), was off by up to 2e−11); 3e−12 allowed.
+        let spectra: Vec<Vec<CreepTerm>> = vec![
+            vec![CreepTerm { f: 3.0, b: 0.5 }],
+            (0..12)
+                .map(|k| {
+                    let b = 10f64.powf(-8.0 + k as f64);
+                    CreepTerm { f: 30.0 * b, b }
+                })
+                .collect(),
+        ];
+        for terms in &spectra {
+            let m = Modes::new(terms);
+            for (l, h) in [(0.5, 0.3), (2.0, 0.25), (0.05, 1.0)] {
+                let fast = LayerTerm::new(&m, l, h, 0.4, 16);
+                let prod = LogRule::production(&m, l);
+                let dense = LogRule {
+                    width: 0.5,
+                    points: 16,
+                    lo: 1e-3 * prod.lo,
+                };
+                let slow = LayerTerm::with_rule(&m, l, h, 0.4, 16, dense);
+                let big = slow
+                    .coef
+                    .iter()
+                    .flatten()
+                    .fold(0.0_f64, |a, v| a.max(v.abs()));
+                for (rf, rs) in fast.coef.iter().zip(&slow.coef) {
+                    for (a, b) in rf.iter().zip(rs) {
+                        assert!(
+                            (a - b).abs() <= 3e-12 * big,
+                            "L {l} h {h}: {a} vs {b} (largest {big})"
+                        );
+                    }
+                }
+            }
+        }
     }
 }
 

@@ -61,13 +61,16 @@
 //! collocation with a warning; the `auto` body choice takes the constrained Winkler foundation there
 //! for compressible covers (README criterion table).
 //!
-//! # Speed (`cargo bench --bench contact_layer`, README covers section)
-//! See the README's table; a load point costs ~12–26 solves at given λ (a coarse load loop at p ≤ 16,
-//! the lumping calibration, the fine load loop to 1e−10 in N′, the p/2 check).
+//! # Speed (`cargo bench --bench layer_profile`, README covers section)
+//! A load point costs 7–12 solves at given λ: a coarse secant loop at p ≤ 16 from a closed-form
+//! guess ([`secant`]), the lumping calibration (its solve at λ reused), the degree checked against
+//! p/2 at that λ (one solve per degree), the fine secant loop to 1e−10 in N′ from the calibration's
+//! solve; the p/2 check is repeated at the λ found only when λ moved by ≥ 1e−3.
 
 pub mod at_lambda;
 pub mod at_load;
 pub mod layer_term;
+pub mod secant;
 pub mod volterra;
 
 pub use at_load::{solve_spectral_at_load, SpectralSettings};

@@ -1,0 +1,146 @@
+//! The spectral layer's load loops: a safeguarded secant on g(u) = ln(N′(eᵘ)/N′₀), u = ln λ, run by
+//! the crate's one load loop ([`crate::contact::load::iterate`] with the rule [`SafeSecant`]), and
+//! the start it needs (a guess of λ and of the slope d ln N′/d ln λ without any solve).
+//!
+//! Input: N′₀, a solve at λ (a closure), where to start (a guess with its model slope, or a solution
+//! already made with the slope measured by an earlier loop), the stopping step; output: the
+//! [`LambdaSolution`] at the root, the solves made and the last secant slope.
+//!
+//! # Why a secant
+//! g is smooth and nearly linear in u (N′ ∝ λ² on a half-space, λ³ on a Winkler foundation, λ⁵ under
+//! the h³ law, with the slow drift of the creep in between), so from a start within a few per cent
+//! with a slope known to ~10 % the secant (superlinear, order 1.618) meets 1e−10 in three or four
+//! solves; the bracketed Brent loop ([`crate::contact::load::solve_at_load`]) spends two solves on its
+//! bracket alone and a few more on bisection-safe steps. The bracket is kept as a safeguard only
+//! ([`SafeSecant`] bisects a step that leaves it), between the glassy layer's width (a guess, divided
+//! by 4) and the relaxed half-space width (a bound: the bonded layer is stiffer than the half-space).
+//!
+//! # The start (docs/MATH.md §3 for the half-space form)
+//! Every linear elastic body of compliance S at load N′ has the contact of compliance 1 at load S·N′,
+//! so with the effective compliance S_eff(λ) of the half-space `auto` scheme (modes counted by how
+//! far they creep in the contact time) the guess is λ = λ_el(S_eff(λ)·N′) by three fixed-point steps,
+//! λ_el the elastic layer estimate [`lambda_guess`]; its slope is d ln N′/d ln λ = 1/(d ln λ_el/d ln N′)
+//! − d ln S_eff/d ln λ, both by central differences of the closed forms.
+
+use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
+use crate::contact::body::half_space::auto::reduction::effective_compliance;
+use crate::contact::body::layer::collocation::lambda_guess;
+use crate::contact::error::ContactError;
+use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Verdict};
+use crate::contact::CreepTerm;
+
+/// Where a loop starts.
+pub enum Start {
+    /// λ₀ and the slope d ln N′/d ln λ there (one solve at λ₀ first).
+    Guess(f64, f64),
+    /// A solution already made and the slope measured by an earlier loop (no solve first).
+    Solved(LambdaSolution, f64),
+}
+
+/// The loop's answer.
+pub struct Looped {
+    pub sol: LambdaSolution,
+    /// Solves made by this loop.
+    pub solves: usize,
+    /// The last secant slope d ln N′/d ln λ (the start's when no secant was taken).
+    pub slope: f64,
+}
+
+/// λ guess and slope d ln N′/d ln λ at load N′ for the creep `terms` on a cover h′ (module doc).
+pub fn start_guess(terms: &[CreepTerm], load: f64, thickness: f64, nu: f64) -> (f64, f64) {
+    let el = |n: f64| lambda_guess(n, thickness, nu);
+    let mut lam = el(load);
+    for _ in 0..3 {
+        lam = el(effective_compliance(terms, lam) * load);
+    }
+    let s = effective_compliance(terms, lam);
+    let d = 0.01_f64;
+    let el_exp = (el(s * load * d.exp()) / el(s * load * (-d).exp())).ln() / (2.0 * d);
+    let ds = (effective_compliance(terms, lam * d.exp())
+        / effective_compliance(terms, lam * (-d).exp()))
+    .ln()
+        / (2.0 * d);
+    let slope = (1.0 / el_exp.max(0.1) - ds).clamp(0.5, 5.0);
+    (lam, slope)
+}
+
+/// The safeguard bracket of ln λ (module doc): the glassy layer guess / 4 and the relaxed
+/// half-space width 2√(s N′), s = 1 + Σfᵢ/bᵢ.
+pub fn bracket(load: f64, thickness: f64, nu: f64, s_full: f64) -> (f64, f64) {
+    (
+        (0.25 * lambda_guess(load, thickness, nu)).ln(),
+        (2.0 * (s_full * load).sqrt()).ln() + 1e-9,
+    )
+}
+
+/// Secant on g(u) = ln(N′(eᵘ)/N′₀) inside `bracket` (module doc) until |g| ≤ `g_tol` or a step
+/// shorter than `step_tol` (with |g| ≤ 1e−8 when `g_tol` is tighter); at most `max_solves`.
+pub fn secant_loop(
+    load: f64,
+    bracket: (f64, f64),
+    start: Start,
+    (g_tol, step_tol): (f64, f64),
+    max_solves: usize,
+    solve: &mut dyn FnMut(f64) -> LambdaSolution,
+) -> Result<Looped, ContactError> {
+    let g_of = |s: &LambdaSolution| {
+        if s.load > 0.0 && s.load.is_finite() {
+            (s.load / load).ln()
+        } else {
+            f64::NEG_INFINITY
+        }
+    };
+    let (first, slope0, solves0) = match start {
+        Start::Guess(lam0, slope) => {
+            let u = lam0.ln().clamp(bracket.0, bracket.1);
+            (solve(u.exp()), slope, 1)
+        }
+        Start::Solved(s, slope) => (s, slope, 0),
+    };
+    let u0 = first.lambda.ln();
+    let g0 = g_of(&first);
+    if !g0.is_finite() {
+        return Err(not_converged(solves0, bracket, g0));
+    }
+    let mut rule = SafeSecant::new(bracket, slope0, 0.0);
+    rule.observe(u0, g0);
+    let seen = Seen {
+        solves: solves0,
+        g: g0,
+        sol: first,
+    };
+    let accept = g_tol.max(1e-8);
+    let mut eval = |u: f64| -> Result<(f64, LambdaSolution), ContactError> {
+        let s = solve(u.exp());
+        let g = g_of(&s);
+        if g.is_finite() {
+            Ok((g, s))
+        } else {
+            Err(not_converged(0, bracket, g))
+        }
+    };
+    let found = iterate(seen, &mut rule, Keep::Last, &mut eval, &mut |t| {
+        let p = t.proposal;
+        if p.resid.abs() <= g_tol || (p.step < step_tol && p.resid.abs() <= accept) {
+            return Verdict::Done;
+        }
+        if t.solves >= max_solves || p.width <= 0.0 {
+            return Verdict::Fail(not_converged(t.solves, p.bracket, p.resid));
+        }
+        Verdict::Go
+    })?;
+    Ok(Looped {
+        sol: found.sol,
+        solves: found.solves,
+        slope: rule.slope,
+    })
+}
+
+fn not_converged(iterations: usize, (a, b): (f64, f64), g: f64) -> ContactError {
+    ContactError::NotConverged {
+        iterations,
+        lambda_lo: a.exp(),
+        lambda_hi: b.exp(),
+        residual: g.exp_m1().abs(),
+    }
+}
