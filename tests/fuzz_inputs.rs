@@ -240,6 +240,11 @@ fn creep_sweep(values: &[f64]) {
     ] {
         cases.push(vec![CreepTerm { f: f1, b: b1 }, CreepTerm { f: f2, b: b2 }]);
     }
+    // Strong single modes (f ≫ b): a moderate c = bλ/2 but a huge μ = (b + f)λ/2 (1e10:1 at
+    // N′ = 0.25 asked for 8 GB before the auto scheme capped μ at 1e9).
+    for &(f, b) in &[(1e8, 1.0), (1e10, 1.0), (1e14, 1.0), (1e12, 1e-3)] {
+        cases.push(vec![CreepTerm { f, b }]);
+    }
     let schemes = [
         ContactSettings::default(),
         ContactSettings::thesis(200),
@@ -290,7 +295,8 @@ fn creep_sweep(values: &[f64]) {
 // This sweep found a panic (debug) / unbounded allocation (release) in special::bessel's series,
 // reached from the auto scheme when μ = (b + f)·λ/2 of a kept mode was astronomically large (f = 1e300,
 // b = 1): n_keep = √(83 μ) overflowed usize. The auto scheme now refuses f/b > 1e15
-// (auto::settings::MAX_MODE_STRENGTH) with an OutOfRange error.
+// (auto::settings::MAX_MODE_STRENGTH) with an OutOfRange error, lumps a fast mode whose μ exceeds
+// 1e9 and refuses a slow one (auto::reduction::MU_MAX).
 #[test]
 fn extreme_creep_terms_give_an_answer_or_an_error_in_bounded_memory() {
     creep_sweep(&[1e-300, 1e-100, 1e-6, 1.0, 1e6, 1e100, 1e300]);

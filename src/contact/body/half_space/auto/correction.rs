@@ -87,7 +87,9 @@ pub(super) fn calibrate(
         terms
     };
     let w_star = lump_weight(&terms[star], lambda);
-    let with = solve_reduced(&unlump(terms, red, star), lambda, q);
+    let Ok(with) = solve_reduced(&unlump(terms, red, star), lambda, q) else {
+        return model;
+    };
     let g = (
         (with.friction_rho - sol.friction_rho) / lambda / w_star,
         (with.load - sol.load) / sol.load / w_star,

@@ -257,7 +257,7 @@ fn load_loop(
     let (u0, first, slope0, mut dfr, solves) = match start {
         Start::Guess(lam0, slope0) => {
             let u = lam0.ln().clamp(a, b);
-            (u, solve_reduced_checked(red, u.exp(), q), slope0, 1.0, 1)
+            (u, solve_reduced_checked(red, u.exp(), q)?, slope0, 1.0, 1)
         }
         Start::Solved(s, slope, dfr) => (s.0.lambda.ln(), s, slope, dfr, 0),
     };
@@ -272,7 +272,7 @@ fn load_loop(
         sol: first,
     };
     let mut eval = |u: f64| -> Result<(f64, (LambdaSolution, f64, f64)), ContactError> {
-        let s = solve_reduced_checked(red, u.exp(), q);
+        let s = solve_reduced_checked(red, u.exp(), q)?;
         history.push((u, ln_fr(&s.0)));
         Ok((gval(&s.0), s))
     };

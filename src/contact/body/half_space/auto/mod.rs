@@ -80,7 +80,7 @@ pub fn solve_auto_at_lambda(
         pass += 1;
         let (bf, bl) = budgets(tol, fr_guess);
         let red = select(terms, lambda, bf, bl, (corr.gains.0, corr.gains.1));
-        let (sol, num_fr, num_ld) = solve_reduced_checked(&red, lambda, q);
+        let (sol, num_fr, num_ld) = solve_reduced_checked(&red, lambda, q)?;
         corr = calibrate(terms, &red, &sol, q);
         let (l_fr, l_ld) = lumping_error(terms, &red, &corr, lambda);
         let (s_fr, s_ld) = slow_estimate_at(terms, &red, lambda);

@@ -139,8 +139,8 @@ fn tolerance_warning(sol: &LambdaSolution, error_estimate: f64, floor: f64, tol:
         )
     } else {
         "the rest of the estimate comes from the mode reduction, which lumps modes with \
-         c = bλ/2 > 1e7 whatever the tolerance (their effect is corrected to first order and \
-         its remainder estimated)"
+         c = bλ/2 > 1e7 or μ = (b + f)λ/2 > 1e9 whatever the tolerance (their effect is \
+         corrected to first order and its remainder estimated)"
             .to_string()
     };
     format!("tolerance not reached: estimated relative error {error_estimate:.1e} > tol {tol:.0e}; {why}")

@@ -46,6 +46,7 @@ use super::at_lambda::{
     solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings,
 };
 use crate::contact::body::half_space::modes::Modes;
+use crate::contact::ContactError;
 use crate::contact::CreepTerm;
 use std::f64::consts::PI;
 
@@ -181,6 +182,8 @@ pub fn select(
     // Fast modes, fastest first, while the corrected (second-order) estimate fits in 0.7 of the
     // budgets. Hard cap: a mode with c > C_MAX needs ~√(83μ) > 3e4 Chebyshev terms; it is lumped
     // whatever the budget, and its estimate counts (so the reported error says when tol is not met).
+    // The same holds for a mode whose μ ≈ (b + f)·λ/2 exceeds MU_MAX (a strong mode, f ≫ b, can
+    // have a moderate c and a huge μ).
     const C_MAX: f64 = 1e7;
     let mut fast: Vec<usize> = (0..terms.len())
         .filter(|&i| terms[i].f > 0.0 && terms[i].b * l >= C_LUMP_MIN)
@@ -190,7 +193,8 @@ pub fn select(
     for &i in &fast {
         lumped.push(i);
         let (e_fr, e_ld) = lumped_residual(terms, &lumped, lambda, gains);
-        if terms[i].b * l <= C_MAX && (e_fr > 0.7 * fr_budget || e_ld > 0.7 * load_budget) {
+        let solvable = terms[i].b * l <= C_MAX && (terms[i].b + terms[i].f) * l <= MU_MAX;
+        if solvable && (e_fr > 0.7 * fr_budget || e_ld > 0.7 * load_budget) {
             lumped.pop();
             break;
         }
@@ -297,9 +301,37 @@ pub(super) fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution 
     s
 }
 
+/// Largest μ = κλ/2 of a kept mode the scheme solves for. A mode's Chebyshev series needs
+/// √(83μ) + 12 orders (src/special/bessel.rs): 2.9e5 at μ = 1e9, i.e. 2.3 MB and about 0.5 s per
+/// mode. Fast modes beyond it are lumped ([`select`]); a slow one (c < 30 with f/b > ~3e7) makes
+/// the solve refuse, so that memory and time stay bounded on any input.
+pub const MU_MAX: f64 = 1e9;
+
+/// Refuse a reduced problem whose largest μ = κλ/2 exceeds [`MU_MAX`].
+pub(super) fn check_series(red: &Reduction, lambda: f64) -> Result<(), ContactError> {
+    let mu = (0..red.modes.len())
+        .map(|j| red.modes.kappa(j) * 0.5 * lambda)
+        .fold(0.0, f64::max);
+    if mu > MU_MAX || mu.is_nan() {
+        return Err(ContactError::OutOfRange {
+            scheme: "auto",
+            quantity: "mu = kappa*lambda/2 of a kept creep mode (its Chebyshev series needs sqrt(83 mu) terms)",
+            value: mu,
+            bound: "at most",
+            limit: MU_MAX,
+        });
+    }
+    Ok(())
+}
+
 /// Solve the reduced problem at λ and map back to the full problem's units.
-pub(super) fn solve_reduced(red: &Reduction, lambda: f64, q: QuadratureSettings) -> LambdaSolution {
-    unscale(red, solve_at_lambda(&red.modes, lambda, q))
+pub(super) fn solve_reduced(
+    red: &Reduction,
+    lambda: f64,
+    q: QuadratureSettings,
+) -> Result<LambdaSolution, ContactError> {
+    check_series(red, lambda)?;
+    Ok(unscale(red, solve_at_lambda(&red.modes, lambda, q)))
 }
 
 /// As [`solve_reduced`], with the quadrature error estimate: (solution, relative error of ρF/N,
@@ -311,12 +343,13 @@ pub(super) fn solve_reduced_checked(
     red: &Reduction,
     lambda: f64,
     q: QuadratureSettings,
-) -> (LambdaSolution, f64, f64) {
+) -> Result<(LambdaSolution, f64, f64), ContactError> {
+    check_series(red, lambda)?;
     let (fine, coarse) = solve_at_lambda_checked(&red.modes, lambda, q);
     let k = 10.0 * (-PI * PI / (2.0 * q.step)).exp();
     let e_fr = k * rel(coarse.friction_rho, fine.friction_rho);
     let e_ld = k * rel(coarse.load, fine.load);
-    (unscale(red, fine), e_fr, e_ld)
+    Ok((unscale(red, fine), e_fr, e_ld))
 }
 
 /// Relative difference |a − b|/|b|, 0 for equal values.
