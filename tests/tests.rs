@@ -20,6 +20,7 @@ mod dma_xlsx;
 mod docs_links;
 mod fit_cli;
 mod fit_exports;
+mod fit_search_gaps;
 mod fits_outside;
 mod fuzz_inputs;
 mod golden_outputs;

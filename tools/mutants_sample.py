@@ -10,10 +10,13 @@ Why not `cargo mutants --re`: cargo-mutants 27.1 lists its "delete field … fro
 whatever `--re`/`--exclude-re` say, so a named sample cannot be selected with it.
 
 usage (from the repository root, on a clean tree):
-  tools/mutants_sample.py [--timeout S] [--names FILE | --exclude FILE] GROUP N SEED OUT.tsv 'GLOB[,GLOB…]' [-- TEST FILTER ARGS…]
+  tools/mutants_sample.py [--timeout S] [--lib-only] [--names FILE | --exclude FILE] GROUP N SEED OUT.tsv 'GLOB[,GLOB…]' [-- TEST FILTER ARGS…]
 --timeout S: seconds allowed for the test run of one mutant (default 600; take ~3× the unmutated run).
 --names FILE: run exactly the mutants named in FILE (one name a line, or the 4th column of a TSV this
 script wrote, e.g. its `missed` lines, to rerun survivors after new tests), not a random sample.
+--lib-only: build and run only the library's unit tests (`cargo test --lib`): one crate build per
+mutant instead of three (library for tests, library, test binary), for modules whose own unit tests
+are the ones that exercise them; the score is then that of the unit tests alone (a lower bound).
 --exclude FILE: leave the mutants named in FILE (same forms) out of the frame before drawing, to
 enlarge an earlier sample with a new seed without drawing a mutant twice.
 e.g.
@@ -60,8 +63,11 @@ def main():
     argv = sys.argv[1:]
     filt = argv[argv.index("--") + 1 :] if "--" in argv else []
     argv = argv[: argv.index("--")] if "--" in argv else argv
-    timeout, names, exclude = 600, None, set()
+    timeout, names, exclude, lib_only = 600, None, set(), False
     while argv and argv[0].startswith("--"):
+        if argv[0] == "--lib-only":
+            lib_only, argv = True, argv[1:]
+            continue
         opt, val, argv = argv[0], argv[1], argv[2:]
         if opt == "--timeout":
             timeout = int(val)
@@ -94,7 +100,7 @@ def main():
     else:
         sample = random.Random(int(seed)).sample(frame, min(int(n), len(frame)))
     print(f"{group}: {len(sample)} of {len(frame)} mutants", file=sys.stderr)
-    test = ["nice", "-n", "10", "cargo", "test", "-q", "--lib", "--test", "tests"]
+    test = ["nice", "-n", "10", "cargo", "test", "-q", "--lib"] + ([] if lib_only else ["--test", "tests"])
     with open(out, "a") as tsv:
         for m in sample:
             orig, t0 = apply(m), time.time()
