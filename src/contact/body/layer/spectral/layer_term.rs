@@ -171,8 +171,12 @@ impl LayerTerm {
         p: usize,
         rule: LogRule,
     ) -> LayerTerm {
+        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`at_load::degree_for` with
+        // tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated: such a solve only
+        // steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact lengths of
+        // metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.
         let h_over_l = thickness / l;
-        let kappa_hi = T_MAX / h_over_l;
+        let kappa_hi = (T_MAX / h_over_l).min(T_MAX * (2.0 * p as f64).max(200.0));
         let orders = orders_needed(kappa_hi);
         let ts: Vec<f64> = (0..=p).map(|i| (PI * i as f64 / p as f64).cos()).collect();
         // values[l][k]: G at Lobatto point l for a_k = 1
