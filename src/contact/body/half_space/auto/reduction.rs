@@ -220,10 +220,26 @@ pub fn select(
         sum_ld += e_ld;
         dropped.push(i);
     }
-    let kept: Vec<usize> = (0..terms.len())
+    let mut kept: Vec<usize> = (0..terms.len())
         .filter(|i| terms[*i].f > 0.0 && !lumped.contains(i) && !dropped.contains(i))
         .collect();
-    build(terms, kept, lumped, dropped)
+    // Coupled modes can raise the largest root κ above every single mode's b + f: while the reduced
+    // problem's largest μ = κλ/2 exceeds MU_MAX and its fastest kept mode is fast enough to lump,
+    // lump it (its estimate counts); what is left above MU_MAX is refused by `check_series`.
+    loop {
+        let red = build(terms, kept.clone(), lumped.clone(), dropped.clone());
+        let fastest = kept
+            .iter()
+            .copied()
+            .max_by(|&a, &b| terms[a].b.total_cmp(&terms[b].b));
+        match fastest {
+            Some(i) if largest_mu(&red, lambda) > MU_MAX && terms[i].b * l >= C_LUMP_MIN => {
+                kept.retain(|&k| k != i);
+                lumped.push(i);
+            }
+            _ => return red,
+        }
+    }
 }
 
 /// The reduced problem of a given split: s = 1 + Σ_lumped rᵢ, f̂ = f/s for the kept modes.
@@ -307,11 +323,16 @@ pub(super) fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution 
 /// the solve refuse, so that memory and time stay bounded on any input.
 pub const MU_MAX: f64 = 1e9;
 
+/// The largest μ = κλ/2 of the reduced problem (its fastest root).
+fn largest_mu(red: &Reduction, lambda: f64) -> f64 {
+    (0..red.modes.len())
+        .map(|j| red.modes.kappa(j) * 0.5 * lambda)
+        .fold(0.0, f64::max)
+}
+
 /// Refuse a reduced problem whose largest μ = κλ/2 exceeds [`MU_MAX`].
 pub(super) fn check_series(red: &Reduction, lambda: f64) -> Result<(), ContactError> {
-    let mu = (0..red.modes.len())
-        .map(|j| red.modes.kappa(j) * 0.5 * lambda)
-        .fold(0.0, f64::max);
+    let mu = largest_mu(red, lambda);
     if mu > MU_MAX || mu.is_nan() {
         return Err(ContactError::OutOfRange {
             scheme: "auto",
