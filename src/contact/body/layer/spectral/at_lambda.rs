@@ -32,6 +32,49 @@ pub fn solve_at_lambda(
     let n = modes.len();
     let c: Vec<f64> = modes.b.iter().map(|b| b * l).collect();
     let mu: Vec<f64> = (0..n).map(|j| modes.kappa(j) * l).collect();
+    let cols = columns(modes, l, &mu, p);
+    let gexp = laplace_exterior(&c, &cols, step);
+
+    // the layer term of every column
+    let lt = LayerTerm::new(modes, l, thickness, nu, p);
+    let g: Vec<Vec<f64>> = cols.iter().map(|col| lt.apply(&col.h)).collect();
+
+    let (a, r) = system(&cols, &gexp, &g, n, p, l);
+    let x = solve_equilibrated(a, r);
+    let ib = n + p + 1;
+    let len = cols.iter().map(|c| c.h.len()).max().unwrap_or(3).max(3);
+    let mut fcoef = vec![0.0; len];
+    for (k, col) in cols.iter().enumerate() {
+        for (f, v) in fcoef.iter_mut().zip(&col.h) {
+            *f += x[k] * v;
+        }
+    }
+    fcoef[0] = 0.0;
+    let beta = x[ib];
+    let (f1, f2) = (fcoef[1], fcoef[2]);
+    LambdaSolution {
+        lambda,
+        beta,
+        load: PI * l * f1,
+        friction_rho: l - beta + l * f2 / (2.0 * f1),
+        coefficients: fcoef,
+        mu_max: mu.iter().cloned().fold(0.0, f64::max),
+    }
+}
+
+/// `dst += s·src`, growing `dst` to the length of `src`.
+fn add_scaled(dst: &mut Vec<f64>, src: &[f64], s: f64) {
+    if dst.len() < src.len() {
+        dst.resize(src.len(), 0.0);
+    }
+    for (d, v) in dst.iter_mut().zip(src) {
+        *d += s * v;
+    }
+}
+
+/// The columns of the unknowns: the N exponentials e^{μⱼ(t−1)} and V⁻¹[Tₘ] for m = 0…p.
+fn columns(modes: &Modes, l: f64, mu: &[f64], p: usize) -> Vec<Column> {
+    let n = modes.len();
     // residues of the resolvent: wⱼ = 1/Σᵢ dᵢ/(cᵢ−μⱼ)² = L/Σᵢ fᵢ/(bᵢ−κⱼ)²
     let wres: Vec<f64> = (0..n)
         .map(|j| {
@@ -61,26 +104,18 @@ pub fn solve_at_lambda(
         .collect();
     let mut short: Vec<Vec<f64>> = basis.clone();
     let mut eps_poly = vec![vec![0.0; n]; p + 1];
-    let add = |dst: &mut Vec<f64>, src: &[f64], s: f64| {
-        if dst.len() < src.len() {
-            dst.resize(src.len(), 0.0);
-        }
-        for (d, v) in dst.iter_mut().zip(src) {
-            *d += s * v;
-        }
-    };
     for j in 0..n {
         if mu[j] < split {
             let size = p + 1 + (83.0 * mu[j]).sqrt().ceil() as usize + 12;
             let fs: Vec<&[f64]> = basis.iter().map(|v| v.as_slice()).collect();
             let ys = memory_exact(mu[j], &fs, size);
             for (s, y) in short.iter_mut().zip(&ys) {
-                add(s, y, -wres[j]);
+                add_scaled(s, y, -wres[j]);
             }
         } else {
             for m in 0..=p {
                 let (pp, p1) = memory_polynomial(mu[j], &basis[m]);
-                add(&mut short[m], &pp, -wres[j]);
+                add_scaled(&mut short[m], &pp, -wres[j]);
                 // the e^{μⱼ(t−1)} part wⱼP(1)eⱼ is left out of the column: V of it is missing
                 let beta_j = wres[j] * p1;
                 for (i, e) in eps_poly[m].iter_mut().enumerate() {
@@ -92,8 +127,13 @@ pub fn solve_at_lambda(
     for (h, eps) in short.into_iter().zip(eps_poly) {
         cols.push(Column { h, eps });
     }
+    cols
+}
 
-    // Laplace transforms Ĝᵢ of each column's exterior (trapezoid in v = ln σ, as in `auto`)
+/// Laplace transforms Ĝᵢ of each column's exterior (trapezoid in v = ln σ, as in `auto`): an
+/// N × columns matrix.
+fn laplace_exterior(c: &[f64], cols: &[Column], step: f64) -> DMatrix<f64> {
+    let n = c.len();
     let ncols = cols.len();
     let mut gexp = DMatrix::<f64>::zeros(n, ncols);
     if n > 0 {
@@ -130,12 +170,18 @@ pub fn solve_at_lambda(
             }
         }
     }
+    gexp
+}
 
-    // the layer term of every column
-    let lt = LayerTerm::new(modes, l, thickness, nu, p);
-    let g: Vec<Vec<f64>> = cols.iter().map(|col| lt.apply(&col.h)).collect();
-
-    // the system: unknowns A₀…A_{N−1}, x₀…x_p, β
+/// The system: unknowns A₀…A_{N−1}, x₀…x_p, β (matrix and right-hand side).
+fn system(
+    cols: &[Column],
+    gexp: &DMatrix<f64>,
+    g: &[Vec<f64>],
+    n: usize,
+    p: usize,
+    l: f64,
+) -> (DMatrix<f64>, DVector<f64>) {
     let size = n + p + 2;
     let ib = size - 1;
     let mut a = DMatrix::<f64>::zeros(size, size);
@@ -155,6 +201,12 @@ pub fn solve_at_lambda(
     a[(n + 1, ib)] = 1.0 / PI;
     r[n + 1] = l / PI;
     r[n + 2] = l / PI;
+    (a, r)
+}
+
+/// Solve `a x = r` after row and column equilibration (zeros when singular).
+fn solve_equilibrated(mut a: DMatrix<f64>, mut r: DVector<f64>) -> DVector<f64> {
+    let size = r.len();
     // row and column equilibration
     for i in 0..size {
         let s = (0..size).map(|j| a[(i, j)].abs()).fold(0.0, f64::max);
@@ -182,22 +234,5 @@ pub fn solve_at_lambda(
     for j in 0..size {
         x[j] /= colscale[j];
     }
-    let len = cols.iter().map(|c| c.h.len()).max().unwrap_or(3).max(3);
-    let mut fcoef = vec![0.0; len];
-    for (k, col) in cols.iter().enumerate() {
-        for (f, v) in fcoef.iter_mut().zip(&col.h) {
-            *f += x[k] * v;
-        }
-    }
-    fcoef[0] = 0.0;
-    let beta = x[ib];
-    let (f1, f2) = (fcoef[1], fcoef[2]);
-    LambdaSolution {
-        lambda,
-        beta,
-        load: PI * l * f1,
-        friction_rho: l - beta + l * f2 / (2.0 * f1),
-        coefficients: fcoef,
-        mu_max: mu.iter().cloned().fold(0.0, f64::max),
-    }
+    x
 }
