@@ -181,6 +181,160 @@ fn rel(a: f64, b: f64) -> f64 {
     }
 }
 
+/// W = Σwᵢ of the lumped modes at λ = 1 (their weight at λ is this over λ).
+fn w_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
+    red.lumped
+        .iter()
+        .map(|&i| lump_weight(&terms[i], 1.0))
+        .sum()
+}
+
+/// The fixed inputs of one solve at load N′ and its load loops.
+struct LoadProblem<'a> {
+    terms: &'a [CreepTerm],
+    load: f64,
+    thickness: f64,
+    nu: f64,
+    /// Trapezoid step of the Laplace quadrature.
+    step: f64,
+    /// s = 1 + Σ fᵢ/bᵢ of the full problem.
+    s_full: f64,
+    /// The secant loops' bracket in ln λ.
+    safe: (f64, f64),
+    // the fine loop to the load loop's default 1e−10 (Brent converges superlinearly: one or two
+    // solves more than 0.03·tol would cost, and the answer is a smooth function of the input; a
+    // looser stop made λ jump by ~1e−7 between inputs 1e−15 apart)
+    load_settings: LoadSettings,
+}
+
+impl LoadProblem<'_> {
+    /// The reduced solve at λ with the lumping correction of gains `g` (W = `wl` at λ = 1).
+    fn solve(
+        &self,
+        red: &Reduction,
+        lambda: f64,
+        p: usize,
+        wl: f64,
+        g: (f64, f64, f64),
+    ) -> LambdaSolution {
+        corrected(
+            solve_reduced(red, lambda, self.thickness, self.nu, p, self.step),
+            wl,
+            g,
+        )
+    }
+
+    /// One load loop at a fixed reduction, gains and degree, started near `near` (or cold).
+    fn solve_loop(
+        &self,
+        red: &Reduction,
+        g: (f64, f64, f64),
+        p: usize,
+        near: Option<f64>,
+        ls: &LoadSettings,
+    ) -> Result<(LambdaSolution, usize), ContactError> {
+        let wl = w_lambda(self.terms, red);
+        let (start, sfb) = match near {
+            Some(l) => (0.998 * l, 1.004f64.powi(2) - 1.0),
+            None => (
+                lambda_guess(self.load, self.thickness, self.nu),
+                self.s_full - 1.0,
+            ),
+        };
+        let scale = start / (2.0 * self.load.sqrt());
+        let mut last: Option<LambdaSolution> = None;
+        let d = load_loop(self.load, sfb, ls, |x| {
+            let s = self.solve(red, x * scale, p, wl, g);
+            let d = to_dimensionless(&s, p);
+            last = Some(s);
+            Ok(d)
+        })?;
+        // the loop returns the best solve, not always the last one: solve there again if needed
+        let s = match last {
+            Some(s) if s.lambda == d.lambda => s,
+            _ => self.solve(red, d.lambda, p, wl, g),
+        };
+        Ok((s, d.iterations))
+    }
+
+    /// The fine loop: the secant from `start` with the slope known, to the load loop's default
+    /// 1e−10 in N′; the bracketed Brent loop near the start if the secant fails.
+    fn fine(
+        &self,
+        red: &Reduction,
+        g: (f64, f64, f64),
+        p: usize,
+        start: Start,
+        slope: &mut f64,
+    ) -> Result<(LambdaSolution, usize), ContactError> {
+        let wl = w_lambda(self.terms, red);
+        let near = match &start {
+            Start::Guess(l, _) => *l,
+            Start::Solved(s, _) => s.lambda,
+        };
+        let looped = secant_loop(
+            self.load,
+            self.safe,
+            start,
+            (self.load_settings.rel_tol, 1e-12),
+            SECANT_SOLVES,
+            &mut |x| self.solve(red, x, p, wl, g),
+        );
+        match looped {
+            Ok(l) => {
+                *slope = l.slope;
+                Ok((l.sol, l.solves))
+            }
+            Err(_) => self.solve_loop(red, g, p, Some(near), &self.load_settings),
+        }
+    }
+
+    /// Step 1: a coarse λ at degree ≤ 16 without the lumping correction; returns the solution,
+    /// the solves made, the slope d ln N′/d ln λ and the model gains (g_F, g_N) at the guess.
+    #[allow(clippy::type_complexity)]
+    fn coarse(
+        &self,
+        tol: f64,
+        (lam_guess, slope_guess): (f64, f64),
+    ) -> Result<(LambdaSolution, usize, f64, (f64, f64)), ContactError> {
+        let (terms, thickness) = (self.terms, self.thickness);
+        let coarse_tol = 1e-3_f64.max(tol);
+        let lam = lam_guess;
+        let (gf, gn) = model_gains(terms, lam);
+        let red0 = select(
+            terms,
+            lam,
+            0.3 * coarse_tol * 1e-2,
+            0.3 * coarse_tol,
+            (gf, gn),
+        );
+        let coarse_settings = LoadSettings {
+            rel_tol: 1e-4,
+            lambda_rel_tol: 1e-5,
+            accept_tol: 1e-4,
+            ..LoadSettings::default()
+        };
+        let p0 = degree_for(0.5 * lam, thickness, coarse_tol).min(16);
+        let wl0 = w_lambda(terms, &red0);
+        let coarse = secant_loop(
+            self.load,
+            self.safe,
+            Start::Guess(lam_guess, slope_guess),
+            (1e-4, 1e-6),
+            SECANT_SOLVES,
+            &mut |x| self.solve(&red0, x, p0, wl0, (gf, gn, 0.0)),
+        );
+        let (c, iterations, slope) = match coarse {
+            Ok(c) => (c.sol, c.solves, c.slope),
+            Err(_) => {
+                let (c, it) = self.solve_loop(&red0, (gf, gn, 0.0), p0, None, &coarse_settings)?;
+                (c, it, slope_guess)
+            }
+        };
+        Ok((c, iterations, slope, (gf, gn)))
+    }
+}
+
 /// Solve the bonded layer at load N′ to `settings.tol` (module doc of [`super`]); `Ok(None)` when
 /// the cover is too thin for the degree cap at the contact found.
 pub fn solve_spectral_at_load(
@@ -196,124 +350,29 @@ pub fn solve_spectral_at_load(
     let tol = settings.tol;
     let (step, e_quad) = step_for(tol);
     let s_full = 1.0 + terms.iter().map(|t| t.f / t.b).sum::<f64>();
-    let w_lambda: fn(&[CreepTerm], &Reduction) -> f64 = |terms, red| {
-        red.lumped
-            .iter()
-            .map(|&i| lump_weight(&terms[i], 1.0))
-            .sum()
-    };
-    // the fine loop to the load loop's default 1e−10 (Brent converges superlinearly: one or two
-    // solves more than 0.03·tol would cost, and the answer is a smooth function of the input; a
-    // looser stop made λ jump by ~1e−7 between inputs 1e−15 apart)
-    let load_settings = LoadSettings::default();
-    // one load loop at a fixed reduction, gains and degree, started near `near` (or cold)
-    let solve_loop = |red: &Reduction,
-                      g: (f64, f64, f64),
-                      p: usize,
-                      near: Option<f64>,
-                      ls: &LoadSettings|
-     -> Result<(LambdaSolution, usize), ContactError> {
-        let wl = w_lambda(terms, red);
-        let (start, sfb) = match near {
-            Some(l) => (0.998 * l, 1.004f64.powi(2) - 1.0),
-            None => (lambda_guess(load, thickness, nu), s_full - 1.0),
-        };
-        let scale = start / (2.0 * load.sqrt());
-        let mut last: Option<LambdaSolution> = None;
-        let d = load_loop(load, sfb, ls, |x| {
-            let s = corrected(solve_reduced(red, x * scale, thickness, nu, p, step), wl, g);
-            let d = to_dimensionless(&s, p);
-            last = Some(s);
-            Ok(d)
-        })?;
-        // the loop returns the best solve, not always the last one: solve there again if needed
-        let s = match last {
-            Some(s) if s.lambda == d.lambda => s,
-            _ => corrected(solve_reduced(red, d.lambda, thickness, nu, p, step), wl, g),
-        };
-        Ok((s, d.iterations))
+    let pb = LoadProblem {
+        terms,
+        load,
+        thickness,
+        nu,
+        step,
+        s_full,
+        safe: secant_bracket(load, thickness, nu, s_full),
+        load_settings: LoadSettings::default(),
     };
 
     // 1. a coarse λ at degree ≤ 16 without the lumping correction: the secant from the closed-form
     // guess (module [`super::secant`]) to N′ within 1e−4 (λ to ≤ 2e−4, d ln N′/d ln λ ≥ ½); the
     // bracketed Brent loop from a cold bracket if the secant fails
-    let coarse_tol = 1e-3_f64.max(tol);
-    let (lam_guess, slope_guess) = start_guess(terms, load, thickness, nu);
-    let safe = secant_bracket(load, thickness, nu, s_full);
-    let mut lam = lam_guess;
-    let (gf, gn) = model_gains(terms, lam);
-    let red0 = select(
-        terms,
-        lam,
-        0.3 * coarse_tol * 1e-2,
-        0.3 * coarse_tol,
-        (gf, gn),
-    );
-    let coarse_settings = LoadSettings {
-        rel_tol: 1e-4,
-        lambda_rel_tol: 1e-5,
-        accept_tol: 1e-4,
-        ..LoadSettings::default()
-    };
-    let p0 = degree_for(0.5 * lam, thickness, coarse_tol).min(16);
-    let wl0 = w_lambda(terms, &red0);
-    let coarse = secant_loop(
-        load,
-        safe,
-        Start::Guess(lam_guess, slope_guess),
-        (1e-4, 1e-6),
-        SECANT_SOLVES,
-        &mut |x| {
-            corrected(
-                solve_reduced(&red0, x, thickness, nu, p0, step),
-                wl0,
-                (gf, gn, 0.0),
-            )
-        },
-    );
-    let (c, mut iterations, mut slope) = match coarse {
-        Ok(c) => (c.sol, c.solves, c.slope),
-        Err(_) => {
-            let (c, it) = solve_loop(&red0, (gf, gn, 0.0), p0, None, &coarse_settings)?;
-            (c, it, slope_guess)
-        }
-    };
-    lam = c.lambda;
+    let (c, mut iterations, mut slope, (gf, gn)) =
+        pb.coarse(tol, start_guess(terms, load, thickness, nu))?;
+    let mut lam = c.lambda;
     let mut fr_over_l = c.friction_rho / lam;
     let mut warnings = Vec::new();
-    // the fine loop: the secant from `start` with the slope known, to the load loop's default
-    // 1e−10 in N′; the bracketed Brent loop near the start if the secant fails
-    let fine = |red: &Reduction,
-                g: (f64, f64, f64),
-                p: usize,
-                start: Start,
-                slope: &mut f64|
-     -> Result<(LambdaSolution, usize), ContactError> {
-        let wl = w_lambda(terms, red);
-        let near = match &start {
-            Start::Guess(l, _) => *l,
-            Start::Solved(s, _) => s.lambda,
-        };
-        let looped = secant_loop(
-            load,
-            safe,
-            start,
-            (load_settings.rel_tol, 1e-12),
-            SECANT_SOLVES,
-            &mut |x| corrected(solve_reduced(red, x, thickness, nu, p, step), wl, g),
-        );
-        match looped {
-            Ok(l) => {
-                *slope = l.slope;
-                Ok((l.sol, l.solves))
-            }
-            Err(_) => solve_loop(red, g, p, Some(near), &load_settings),
-        }
-    };
     for round in 0..3 {
         // 2. selection and measured lumping gains at the current λ, at the degree for tol
         let red = select(terms, lam, 0.3 * tol * fr_over_l, 0.3 * tol, (gf, gn));
-        let mut p = degree_for(0.5 * lam, thickness, tol);
+        let p = degree_for(0.5 * lam, thickness, tol);
         if p > settings.p_max {
             return Ok(None);
         }
@@ -328,70 +387,33 @@ pub fn solve_spectral_at_load(
         };
         // 3. the degree checked against p/2 at this λ (within 2e−4 of the root), doubled until
         // it passes: one solve per degree, and the solve at the degree kept starts the load loop
-        let mut at_p = corrected(at_lam, wl, gains);
-        let mut half = corrected(
-            solve_reduced(&red, lam, thickness, nu, p / 2, step),
-            wl,
-            gains,
+        let (at_p, p, e_pre) = degree_precheck(
+            &pb,
+            &red,
+            lam,
+            corrected(at_lam, wl, gains),
+            p,
+            settings,
+            &mut iterations,
+            (wl, gains),
         );
-        iterations += 1;
-        let mut e_pre = degree_error(&half, &at_p);
-        while e_pre.0.max(e_pre.1) > 0.3 * tol && 2 * p <= settings.p_max {
-            p *= 2;
-            half = std::mem::replace(
-                &mut at_p,
-                corrected(solve_reduced(&red, lam, thickness, nu, p, step), wl, gains),
-            );
-            iterations += 1;
-            e_pre = degree_error(&half, &at_p);
-        }
         // 4. the load loop from there
-        let (mut sol, it) = fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
+        let (sol, it) = pb.fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
         iterations += it;
-        // 5. the degree's error at the λ found: the pre-check's when λ moved by < 1e−3 (the
-        // p-error is smooth in λ: its relative change over Δ ln λ is ~ (2.5·p·h′/L·ln 10)·Δ ln λ
-        // < 10·Δ ln λ at p ≤ 48, h′/L ≥ 0.016; counted ten times over), else checked again there,
-        // doubling p and solving again while it fails
-        let moved = (sol.lambda / lam).ln().abs();
-        let (e_p_fr, e_p_ld) = if moved < 1e-3 && e_pre.0.max(e_pre.1) <= 0.3 * tol {
-            let f = 1.0 + 100.0 * moved;
-            (f * e_pre.0, f * e_pre.1)
-        } else {
-            loop {
-                let half = corrected(
-                    solve_reduced(&red, sol.lambda, thickness, nu, p / 2, step),
-                    wl,
-                    gains,
-                );
-                iterations += 1;
-                let (e_fr, e_lambda) = degree_error(&half, &sol);
-                if e_fr.max(e_lambda) <= 0.3 * tol || 2 * p > settings.p_max {
-                    break (e_fr, e_lambda);
-                }
-                p *= 2;
-                let (s, it) = fine(&red, gains, p, Start::Guess(sol.lambda, slope), &mut slope)?;
-                sol = s;
-                iterations += it;
-            }
-        };
+        // 5. the degree's error at the λ found
+        let (sol, p, e_p) = degree_at_found(
+            &pb,
+            &red,
+            sol,
+            (p, lam, e_pre),
+            settings,
+            &mut iterations,
+            &mut slope,
+            (wl, gains),
+        )?;
         let lambda = sol.lambda;
         let fr = sol.friction_rho;
-        // the gains were measured at the starting λ: their change to the λ found is first order
-        // in the step, (Δλ/λ)·(gain effect), counted in full
-        let step_rel = (lambda / lam).ln().abs();
-        let w = wl / lambda;
-        let e_gain_ld = step_rel * (gains.1 * w).abs();
-        let e_gain_fr = step_rel * (gains.0 * w).abs() * lambda / fr.abs().max(1e-300);
-        // reduction errors: lumping (second order after the correction) and dropped slow modes
-        let (l_fr, l_ld) = lumped_residual(terms, &red.lumped, lambda, (gains.0, gains.1));
-        let (s_fr, s_ld) = slow_estimate_at(terms, &red, lambda);
-        let e_red_fr = (l_fr + s_fr) * lambda / fr.abs().max(1e-300) + e_gain_fr;
-        let e_red_ld = l_ld + s_ld + e_gain_ld;
-        let amp = 1.0 + 2.0 * amp;
-        // the load loop stops at 1e−10 in N′; the quadrature's bound counts for N′ and ρF/N alike
-        let e_lambda = amp * (e_p_ld + e_quad) + 2.0 * e_red_ld + 1e-8;
-        let e_fr = amp * (e_p_fr + e_quad) + e_red_fr + 2.0 * e_lambda;
-        let est = e_fr.max(e_lambda);
+        let est = estimate(terms, &red, &sol, lam, (wl, gains, amp), e_p, e_quad);
         let next = select(
             terms,
             lambda,
@@ -415,6 +437,101 @@ pub fn solve_spectral_at_load(
         fr_over_l = fr / lambda;
     }
     unreachable!("the round loop returns at round 2")
+}
+
+/// Step 3: the degree-p solution `at_p` at λ checked against p/2, p doubled until it passes (or
+/// the cap); returns the solution at the degree kept, that degree and the (ρF/N, λ) error.
+#[allow(clippy::too_many_arguments)]
+fn degree_precheck(
+    pb: &LoadProblem,
+    red: &Reduction,
+    lam: f64,
+    mut at_p: LambdaSolution,
+    mut p: usize,
+    settings: &SpectralSettings,
+    iterations: &mut usize,
+    (wl, gains): (f64, (f64, f64, f64)),
+) -> (LambdaSolution, usize, (f64, f64)) {
+    let tol = settings.tol;
+    let mut half = pb.solve(red, lam, p / 2, wl, gains);
+    *iterations += 1;
+    let mut e_pre = degree_error(&half, &at_p);
+    while e_pre.0.max(e_pre.1) > 0.3 * tol && 2 * p <= settings.p_max {
+        p *= 2;
+        half = std::mem::replace(&mut at_p, pb.solve(red, lam, p, wl, gains));
+        *iterations += 1;
+        e_pre = degree_error(&half, &at_p);
+    }
+    (at_p, p, e_pre)
+}
+
+/// Step 5: the degree's error at the λ found: the pre-check's `e_pre` (made at `lam`) when λ
+/// moved by < 1e−3, else checked again there, doubling p and solving again while it fails.
+#[allow(clippy::too_many_arguments)]
+fn degree_at_found(
+    pb: &LoadProblem,
+    red: &Reduction,
+    mut sol: LambdaSolution,
+    (mut p, lam, e_pre): (usize, f64, (f64, f64)),
+    settings: &SpectralSettings,
+    iterations: &mut usize,
+    slope: &mut f64,
+    (wl, gains): (f64, (f64, f64, f64)),
+) -> Result<(LambdaSolution, usize, (f64, f64)), ContactError> {
+    let tol = settings.tol;
+    // the p-error is smooth in λ: its relative change over Δ ln λ is ~ (2.5·p·h′/L·ln 10)·Δ ln λ
+    // < 10·Δ ln λ at p ≤ 48, h′/L ≥ 0.016; counted ten times over
+    let moved = (sol.lambda / lam).ln().abs();
+    let e_p = if moved < 1e-3 && e_pre.0.max(e_pre.1) <= 0.3 * tol {
+        let f = 1.0 + 100.0 * moved;
+        (f * e_pre.0, f * e_pre.1)
+    } else {
+        loop {
+            let half = pb.solve(red, sol.lambda, p / 2, wl, gains);
+            *iterations += 1;
+            let (e_fr, e_lambda) = degree_error(&half, &sol);
+            if e_fr.max(e_lambda) <= 0.3 * tol || 2 * p > settings.p_max {
+                break (e_fr, e_lambda);
+            }
+            p *= 2;
+            let (s, it) = pb.fine(red, gains, p, Start::Guess(sol.lambda, *slope), slope)?;
+            sol = s;
+            *iterations += it;
+        }
+    };
+    Ok((sol, p, e_p))
+}
+
+/// The error estimate of `sol` (module doc of [`super`]): the degree's (ρF/N, λ) error `e_p` and
+/// the quadrature's bound amplified by the lumping, the gains' drift from `lam` to the λ found,
+/// and the reduction's lumping and slow-mode errors.
+fn estimate(
+    terms: &[CreepTerm],
+    red: &Reduction,
+    sol: &LambdaSolution,
+    lam: f64,
+    (wl, gains, amp): (f64, (f64, f64, f64), f64),
+    (e_p_fr, e_p_ld): (f64, f64),
+    e_quad: f64,
+) -> f64 {
+    let lambda = sol.lambda;
+    let fr = sol.friction_rho;
+    // the gains were measured at the starting λ: their change to the λ found is first order
+    // in the step, (Δλ/λ)·(gain effect), counted in full
+    let step_rel = (lambda / lam).ln().abs();
+    let w = wl / lambda;
+    let e_gain_ld = step_rel * (gains.1 * w).abs();
+    let e_gain_fr = step_rel * (gains.0 * w).abs() * lambda / fr.abs().max(1e-300);
+    // reduction errors: lumping (second order after the correction) and dropped slow modes
+    let (l_fr, l_ld) = lumped_residual(terms, &red.lumped, lambda, (gains.0, gains.1));
+    let (s_fr, s_ld) = slow_estimate_at(terms, red, lambda);
+    let e_red_fr = (l_fr + s_fr) * lambda / fr.abs().max(1e-300) + e_gain_fr;
+    let e_red_ld = l_ld + s_ld + e_gain_ld;
+    let amp = 1.0 + 2.0 * amp;
+    // the load loop stops at 1e−10 in N′; the quadrature's bound counts for N′ and ρF/N alike
+    let e_lambda = amp * (e_p_ld + e_quad) + 2.0 * e_red_ld + 1e-8;
+    let e_fr = amp * (e_p_fr + e_quad) + e_red_fr + 2.0 * e_lambda;
+    e_fr.max(e_lambda)
 }
 
 /// Package: pressure profile (uniform nodes, so that the hat scheme's contact checks apply), checks
