@@ -186,6 +186,152 @@ fn padded((lo, hi): (f64, f64)) -> (f64, f64) {
     }
 }
 
+/// Check that both ranges have finite ends with hi ≥ lo.
+fn check_ranges(x_range: (f64, f64), y_range: (f64, f64)) -> Result<(), FrictionMapError> {
+    for (name, (lo, hi)) in [("ln s range", x_range), ("ln(h/l_g) range", y_range)] {
+        if !(lo.is_finite() && hi.is_finite() && hi >= lo) {
+            return Err(FrictionMapError::BadValue {
+                field: name.into(),
+                value: hi - lo,
+                expected: "finite ends with hi ≥ lo",
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The grid points of the pending panels not solved yet: (panel, index, x, y).
+fn wanted_nodes(pending: &[Pending]) -> Vec<(usize, usize, f64, f64)> {
+    pending
+        .iter()
+        .enumerate()
+        .flat_map(|(p, q)| {
+            let w = q.ny + 1;
+            (0..(q.nx + 1) * w)
+                .filter(move |i| q.known(i / w, i % w).is_none())
+                .map(move |i| {
+                    let (x, y) = q.point(i / w, i % w);
+                    (p, i, x, y)
+                })
+        })
+        .collect()
+}
+
+/// Each pending panel's (ln φ, ln λ) values on its grid: the known ones from `old`, the rest from
+/// the node solves `nodes` at the points `wanted`.
+fn filled_values(
+    pending: &[Pending],
+    wanted: &[(usize, usize, f64, f64)],
+    nodes: &[CoveredNode],
+) -> Vec<(Vec<f64>, Vec<f64>)> {
+    let mut filled: Vec<(Vec<f64>, Vec<f64>)> = pending
+        .iter()
+        .map(|q| {
+            let size = (q.nx + 1) * (q.ny + 1);
+            let (mut phi, mut lambda) = (vec![f64::NAN; size], vec![f64::NAN; size]);
+            if let Some((_, _, op, ol)) = &q.old {
+                for i in 0..size {
+                    if let Some(o) = q.known(i / (q.ny + 1), i % (q.ny + 1)) {
+                        phi[i] = op[o];
+                        lambda[i] = ol[o];
+                    }
+                }
+            }
+            (phi, lambda)
+        })
+        .collect();
+    for (&(p, i, _, _), node) in wanted.iter().zip(nodes) {
+        filled[p].0[i] = node.ln_phi;
+        filled[p].1[i] = node.ln_lambda;
+    }
+    filled
+}
+
+/// The panels of one refinement round: those finished, the next round's pending ones, and the limits.
+struct Round<'a> {
+    done: &'a mut Vec<Panel>,
+    next: &'a mut Vec<Pending>,
+    /// Panels pending in this round (for the panel cap).
+    pending: usize,
+    /// Half the map's tolerance: a panel's estimate must meet it.
+    budget: f64,
+    /// Starting and largest degree in x.
+    nx0: usize,
+    nx_max: usize,
+}
+
+impl Round<'_> {
+    /// Fit panel `q` to its values: done when its estimate meets the budget, else doubled in the
+    /// direction with the larger estimate or halved there past the largest degree.
+    fn refine(
+        &mut self,
+        q: &Pending,
+        phi_v: Vec<f64>,
+        lambda_v: Vec<f64>,
+    ) -> Result<(), FrictionMapError> {
+        let (nx, ny) = (q.nx, q.ny);
+        let phi = coefficients_2d(&phi_v, nx, ny);
+        let lambda = coefficients_2d(&lambda_v, nx, ny);
+        let (px, py) = tails_2d(&phi, nx, ny);
+        let (lx, ly) = tails_2d(&lambda, nx, ny);
+        let (ex, ey) = (px.max(lx), py.max(ly));
+        let estimate = ex + ey;
+        if estimate <= self.budget {
+            self.done.push(Panel {
+                a: q.a,
+                b: q.b,
+                c: q.c,
+                d: q.d,
+                ny,
+                phi,
+                lambda,
+                estimate,
+            });
+            return Ok(());
+        }
+        // refine the direction holding the larger part of the estimate (the other one, if
+        // still over half the budget, in a later round: fewer nodes than doubling both)
+        let (want_x, want_y) = (ex >= ey, ey > ex);
+        let split_x = want_x && 2 * nx > self.nx_max;
+        let split_y = want_y && 2 * ny > ETA_MAX_DEGREE;
+        if split_x || split_y {
+            if self.done.len() + self.next.len() + self.pending >= MAX_PANELS {
+                return Err(FrictionMapError::NotConverged {
+                    estimate,
+                    tol: self.budget,
+                    panels: self.done.len() + self.pending,
+                });
+            }
+            let halves = |lo: f64, hi: f64, split: bool| {
+                let mid = 0.5 * (lo + hi);
+                if split {
+                    vec![(lo, mid), (mid, hi)]
+                } else {
+                    vec![(lo, hi)]
+                }
+            };
+            let nx1 = if split_x { self.nx0 } else { nx };
+            let ny1 = if split_y { ETA_START_DEGREE } else { ny };
+            for (a, b) in halves(q.a, q.b, split_x) {
+                for (c, d) in halves(q.c, q.d, split_y) {
+                    self.next.push(Pending::fresh(a, b, c, d, nx1, ny1));
+                }
+            }
+        } else {
+            self.next.push(Pending {
+                a: q.a,
+                b: q.b,
+                c: q.c,
+                d: q.d,
+                nx: if want_x { 2 * nx } else { nx },
+                ny: if want_y { 2 * ny } else { ny },
+                old: Some((nx, ny, phi_v, lambda_v)),
+            });
+        }
+        Ok(())
+    }
+}
+
 impl CoveredSurface {
     /// Build the interpolant on x_range × y_range (x = ln s, y = ln η) to `settings.tol` (module doc).
     pub fn build(
@@ -195,15 +341,7 @@ impl CoveredSurface {
         settings: &MapSettings,
     ) -> Result<Self, FrictionMapError> {
         super::curve::check_tol(settings.tol)?;
-        for (name, (lo, hi)) in [("ln s range", x_range), ("ln(h/l_g) range", y_range)] {
-            if !(lo.is_finite() && hi.is_finite() && hi >= lo) {
-                return Err(FrictionMapError::BadValue {
-                    field: name.into(),
-                    value: hi - lo,
-                    expected: "finite ends with hi ≥ lo",
-                });
-            }
-        }
+        check_ranges(x_range, y_range)?;
         let width = if settings.panel_width.is_finite() && settings.panel_width > 0.0 {
             settings.panel_width
         } else {
@@ -224,19 +362,7 @@ impl CoveredSurface {
         let (mut solves, mut node_estimate) = (0, 0.0f64);
         let mut warnings: Vec<String> = Vec::new();
         while !pending.is_empty() {
-            let wanted: Vec<(usize, usize, f64, f64)> = pending
-                .iter()
-                .enumerate()
-                .flat_map(|(p, q)| {
-                    let w = q.ny + 1;
-                    (0..(q.nx + 1) * w)
-                        .filter(move |i| q.known(i / w, i % w).is_none())
-                        .map(move |i| {
-                            let (x, y) = q.point(i / w, i % w);
-                            (p, i, x, y)
-                        })
-                })
-                .collect();
+            let wanted = wanted_nodes(&pending);
             let nodes: Vec<CoveredNode> = wanted
                 .par_iter()
                 .map(|&(_, _, x, y)| problem.node(x, y, tol))
@@ -250,87 +376,18 @@ impl CoveredSurface {
                     }
                 }
             }
-            let mut filled: Vec<(Vec<f64>, Vec<f64>)> = pending
-                .iter()
-                .map(|q| {
-                    let size = (q.nx + 1) * (q.ny + 1);
-                    let (mut phi, mut lambda) = (vec![f64::NAN; size], vec![f64::NAN; size]);
-                    if let Some((_, _, op, ol)) = &q.old {
-                        for i in 0..size {
-                            if let Some(o) = q.known(i / (q.ny + 1), i % (q.ny + 1)) {
-                                phi[i] = op[o];
-                                lambda[i] = ol[o];
-                            }
-                        }
-                    }
-                    (phi, lambda)
-                })
-                .collect();
-            for (&(p, i, _, _), node) in wanted.iter().zip(&nodes) {
-                filled[p].0[i] = node.ln_phi;
-                filled[p].1[i] = node.ln_lambda;
-            }
+            let filled = filled_values(&pending, &wanted, &nodes);
             let mut next = Vec::new();
+            let mut round = Round {
+                done: &mut done,
+                next: &mut next,
+                pending: pending.len(),
+                budget,
+                nx0,
+                nx_max,
+            };
             for (q, (phi_v, lambda_v)) in pending.iter().zip(filled) {
-                let (nx, ny) = (q.nx, q.ny);
-                let phi = coefficients_2d(&phi_v, nx, ny);
-                let lambda = coefficients_2d(&lambda_v, nx, ny);
-                let (px, py) = tails_2d(&phi, nx, ny);
-                let (lx, ly) = tails_2d(&lambda, nx, ny);
-                let (ex, ey) = (px.max(lx), py.max(ly));
-                let estimate = ex + ey;
-                if estimate <= budget {
-                    done.push(Panel {
-                        a: q.a,
-                        b: q.b,
-                        c: q.c,
-                        d: q.d,
-                        ny,
-                        phi,
-                        lambda,
-                        estimate,
-                    });
-                    continue;
-                }
-                // refine the direction holding the larger part of the estimate (the other one, if
-                // still over half the budget, in a later round: fewer nodes than doubling both)
-                let (want_x, want_y) = (ex >= ey, ey > ex);
-                let split_x = want_x && 2 * nx > nx_max;
-                let split_y = want_y && 2 * ny > ETA_MAX_DEGREE;
-                if split_x || split_y {
-                    if done.len() + next.len() + pending.len() >= MAX_PANELS {
-                        return Err(FrictionMapError::NotConverged {
-                            estimate,
-                            tol: budget,
-                            panels: done.len() + pending.len(),
-                        });
-                    }
-                    let halves = |lo: f64, hi: f64, split: bool| {
-                        let mid = 0.5 * (lo + hi);
-                        if split {
-                            vec![(lo, mid), (mid, hi)]
-                        } else {
-                            vec![(lo, hi)]
-                        }
-                    };
-                    let nx1 = if split_x { nx0 } else { nx };
-                    let ny1 = if split_y { ETA_START_DEGREE } else { ny };
-                    for (a, b) in halves(q.a, q.b, split_x) {
-                        for (c, d) in halves(q.c, q.d, split_y) {
-                            next.push(Pending::fresh(a, b, c, d, nx1, ny1));
-                        }
-                    }
-                } else {
-                    next.push(Pending {
-                        a: q.a,
-                        b: q.b,
-                        c: q.c,
-                        d: q.d,
-                        nx: if want_x { 2 * nx } else { nx },
-                        ny: if want_y { 2 * ny } else { ny },
-                        old: Some((nx, ny, phi_v, lambda_v)),
-                    });
-                }
+                round.refine(q, phi_v, lambda_v)?;
             }
             pending = next;
         }
