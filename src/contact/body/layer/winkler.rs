@@ -129,20 +129,8 @@ impl Winkler {
         let (c0, c1) = self.parts(lambda);
         let a = -c0 / c1;
         let beta = lambda - a;
-        // Gauss–Legendre on panels [λ2^{−p−1}, λ2^{−p}] in s, down to below the thinnest layer.
         let kmax = self.relax.iter().map(|r| r.0).fold(0.0, f64::max);
-        let levels = ((kmax * lambda).max(1.0).log2().ceil() as usize + 8).min(1100);
-        let (gx, gw) = gauss_legendre(16);
-        let mut nodes: Vec<(f64, f64)> = Vec::new(); // (s, weight)
-        let mut hi = lambda;
-        for p in 0..=levels {
-            let lo = if p == levels { 0.0 } else { hi * 0.5 };
-            let (mid, half) = (0.5 * (hi + lo), 0.5 * (hi - lo));
-            for (x, w) in gx.iter().zip(&gw) {
-                nodes.push((mid + half * x, half * w));
-            }
-            hi = lo;
-        }
+        let nodes = quadrature_nodes(lambda, kmax);
         let q = |s: f64| {
             let (d0, d1) = self.parts(s);
             (d0 + a * d1) / self.c_w
@@ -160,6 +148,33 @@ impl Winkler {
         samples.sort_by(|x, y| x.0.total_cmp(&y.0));
         let max_q = samples.iter().map(|p| p.1).fold(0.0, f64::max);
         let min_q = samples.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        let min_gap = self.min_gap(&nodes, &qs, lambda, a, beta);
+        let min_pressure_ratio = min_q / max_q;
+        let warnings = contact_warnings(min_pressure_ratio, min_gap, beta, lambda);
+        Ok(WinklerAnswer {
+            solution: DimensionlessSolution {
+                scheme: "winkler".into(),
+                lambda,
+                beta,
+                load: 2.0 * i0,
+                friction_rho: i1 / i0,
+                xi: samples.iter().map(|p| p.0).collect(),
+                pressure: samples.iter().map(|p| p.1).collect(),
+                n: 0,
+                iterations: 0,
+                error_estimate: Some(0.0),
+                auto: None,
+                warnings: Vec::new(),
+            },
+            min_pressure_ratio,
+            min_gap_ratio: min_gap,
+            warnings,
+        })
+    }
+
+    /// Smallest gap/indentation behind the rear edge, sampled at distances λ·2^{e/2} behind it,
+    /// e = −40…20.
+    fn min_gap(&self, nodes: &[(f64, f64)], qs: &[f64], lambda: f64, a: f64, beta: f64) -> f64 {
         // Recovery behind the rear edge: moments ∫₀^λ e^{−bᵢξ}Q′dξ = ∫ e^{−bᵢ(λ−s)}Q′ ds.
         let mom: Vec<f64> = self
             .modes
@@ -169,7 +184,7 @@ impl Winkler {
             .map(|(_, &b)| {
                 nodes
                     .iter()
-                    .zip(&qs)
+                    .zip(qs)
                     .map(|(&(s, w), &v)| w * (-b * (lambda - s)).exp() * v)
                     .sum()
             })
@@ -190,41 +205,7 @@ impl Winkler {
             let roll = 0.5 * (a * a - (d + beta) * (d + beta));
             min_gap = min_gap.min((v - roll) / depth);
         }
-        let mut warnings = Vec::new();
-        let min_pressure_ratio = min_q / max_q;
-        if min_pressure_ratio < -1e-9 {
-            warnings.push(format!(
-                "contact check: negative pressure inside the contact (min/max = {min_pressure_ratio:.2e})"
-            ));
-        }
-        if min_gap < -1e-9 {
-            warnings.push(format!(
-                "contact check: the recovering body rises above the roll behind the contact (min gap/indentation = {min_gap:.2e})"
-            ));
-        }
-        if beta >= lambda {
-            warnings
-                .push("contact check: the roll's lowest point lies ahead of the front edge".into());
-        }
-        Ok(WinklerAnswer {
-            solution: DimensionlessSolution {
-                scheme: "winkler".into(),
-                lambda,
-                beta,
-                load: 2.0 * i0,
-                friction_rho: i1 / i0,
-                xi: samples.iter().map(|p| p.0).collect(),
-                pressure: samples.iter().map(|p| p.1).collect(),
-                n: 0,
-                iterations: 0,
-                error_estimate: Some(0.0),
-                auto: None,
-                warnings: Vec::new(),
-            },
-            min_pressure_ratio,
-            min_gap_ratio: min_gap,
-            warnings,
-        })
+        min_gap
     }
 
     /// Solve at load N′ (bracketed load loop on the closed form).
@@ -250,6 +231,43 @@ impl Winkler {
         ans.solution.iterations = sol.iterations;
         Ok(ans)
     }
+}
+
+/// Gauss–Legendre nodes (s, weight) on panels [λ2^{−p−1}, λ2^{−p}] in s, down to below the thinnest
+/// layer (relaxation rate `kmax`).
+fn quadrature_nodes(lambda: f64, kmax: f64) -> Vec<(f64, f64)> {
+    let levels = ((kmax * lambda).max(1.0).log2().ceil() as usize + 8).min(1100);
+    let (gx, gw) = gauss_legendre(16);
+    let mut nodes: Vec<(f64, f64)> = Vec::new(); // (s, weight)
+    let mut hi = lambda;
+    for p in 0..=levels {
+        let lo = if p == levels { 0.0 } else { hi * 0.5 };
+        let (mid, half) = (0.5 * (hi + lo), 0.5 * (hi - lo));
+        for (x, w) in gx.iter().zip(&gw) {
+            nodes.push((mid + half * x, half * w));
+        }
+        hi = lo;
+    }
+    nodes
+}
+
+/// The contact checks' warnings: negative pressure, recovery above the roll, β past the front edge.
+fn contact_warnings(min_pressure_ratio: f64, min_gap: f64, beta: f64, lambda: f64) -> Vec<String> {
+    let mut warnings = Vec::new();
+    if min_pressure_ratio < -1e-9 {
+        warnings.push(format!(
+            "contact check: negative pressure inside the contact (min/max = {min_pressure_ratio:.2e})"
+        ));
+    }
+    if min_gap < -1e-9 {
+        warnings.push(format!(
+            "contact check: the recovering body rises above the roll behind the contact (min gap/indentation = {min_gap:.2e})"
+        ));
+    }
+    if beta >= lambda {
+        warnings.push("contact check: the roll's lowest point lies ahead of the front edge".into());
+    }
+    warnings
 }
 
 /// (m₁, m₂) of the module doc for rate κ ≥ 0 at s ≥ 0.
