@@ -42,7 +42,7 @@
 //! are lumped and slow ones dropped by the `auto` scheme's [`reduction`](crate::contact::body::half_space::auto::reduction),
 //! with its measured first-order lumping correction (the lumped modes' layers are far thinner than h′).
 //!
-//! # Convergence and error estimate (measured, `tests.rs`)
+//! # Convergence and error estimate (measured, the tests of [`at_lambda`])
 //! Elastic (f = 0): p = 32 agrees with the independent Chebyshev–Bessel solver of `elastic_check.rs`
 //! to ≤ 1e−13 for h/λ = 0.1…1, ν = 0…½ (p = 16: ≤ 2e−8 at h/λ = 0.1, 3e−13 at h/λ = 0.3).
 //! Viscoelastic: p = 16 and 32 agree to 1e−15; the hat scheme's Richardson value (n = 1024) lies
@@ -74,6 +74,3 @@ pub mod secant;
 pub mod volterra;
 
 pub use at_load::{solve_spectral_at_load, SpectralSettings};
-
-#[cfg(test)]
-mod tests;
