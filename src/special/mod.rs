@@ -24,6 +24,7 @@
 pub mod bessel;
 pub mod brent;
 pub mod chebyshev;
+pub mod equilibrated;
 mod expint;
 pub mod gauss_legendre;
 mod kernel_bracket;

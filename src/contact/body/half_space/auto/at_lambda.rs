@@ -34,6 +34,7 @@
 use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
 use crate::contact::body::half_space::modes::Modes;
 use crate::special::chebyshev::{sine_series, sine_series_grid};
+use crate::special::equilibrated::solve_equilibrated;
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::PI;
 
@@ -254,32 +255,9 @@ impl Assembly<'_> {
                 bmat[(i, j)] = gmat[(i, j)] - (c[i] * self.om[j] + self.i0[j]) / (c[i] * cm);
             }
             r[i] = p1 * ((1.0 / c[i] + 1.0 / (c[i] * c[i])) - m1[i]);
-            let scale = (0..n).map(|j| bmat[(i, j)].abs()).fold(0.0, f64::max);
-            if scale > 0.0 && scale.is_finite() {
-                for j in 0..n {
-                    bmat[(i, j)] /= scale;
-                }
-                r[i] /= scale;
-            }
         }
-        // column equilibration too (columns of fast modes scale like 1/μⱼ)
-        let mut colscale = vec![1.0; n];
-        for (j, cs) in colscale.iter_mut().enumerate() {
-            let m = (0..n).map(|i| bmat[(i, j)].abs()).fold(0.0, f64::max);
-            if m > 0.0 && m.is_finite() {
-                *cs = m;
-                for i in 0..n {
-                    bmat[(i, j)] /= m;
-                }
-            }
-        }
-        let mut a = bmat
-            .full_piv_lu()
-            .solve(&r)
-            .unwrap_or_else(|| DVector::zeros(n));
-        for j in 0..n {
-            a[j] /= colscale[j];
-        }
+        // row and column equilibration (columns of fast modes scale like 1/μⱼ)
+        let a = solve_equilibrated(bmat, r);
 
         let n_coef = self.hat.iter().map(|v| v.len()).max().unwrap_or(1).max(3);
         let mut fcoef = vec![0.0; n_coef];

@@ -9,6 +9,7 @@ use super::volterra::{memory_exact, memory_polynomial, poly_min_mu};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
 use crate::contact::body::half_space::modes::Modes;
+use crate::special::equilibrated::solve_equilibrated;
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::PI;
 
@@ -202,39 +203,6 @@ fn system(
     r[n + 1] = l / PI;
     r[n + 2] = l / PI;
     (a, r)
-}
-
-/// Solve `a x = r` after row and column equilibration (zeros when singular).
-fn solve_equilibrated(mut a: DMatrix<f64>, mut r: DVector<f64>) -> DVector<f64> {
-    let size = r.len();
-    // row and column equilibration
-    for i in 0..size {
-        let s = (0..size).map(|j| a[(i, j)].abs()).fold(0.0, f64::max);
-        if s > 0.0 && s.is_finite() {
-            for j in 0..size {
-                a[(i, j)] /= s;
-            }
-            r[i] /= s;
-        }
-    }
-    let mut colscale = vec![1.0; size];
-    for (j, cs) in colscale.iter_mut().enumerate() {
-        let s = (0..size).map(|i| a[(i, j)].abs()).fold(0.0, f64::max);
-        if s > 0.0 && s.is_finite() {
-            *cs = s;
-            for i in 0..size {
-                a[(i, j)] /= s;
-            }
-        }
-    }
-    let mut x = a
-        .full_piv_lu()
-        .solve(&r)
-        .unwrap_or_else(|| DVector::zeros(size));
-    for j in 0..size {
-        x[j] /= colscale[j];
-    }
-    x
 }
 
 #[cfg(test)]
