@@ -198,3 +198,102 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
         let _ = std::fs::remove_dir_all(d);
     }
 }
+
+/// The first `k` replicates of the fit file's ensemble made unsolvable: a negative retardation
+/// compliance, which the contact stage refuses (its spectrum check) at every temperature.
+fn break_replicates(fit: &Path, k: usize) {
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(fit).unwrap()).unwrap();
+    let reps = v["bands"]["replicates"].as_array_mut().unwrap();
+    assert_eq!(reps.len(), 32);
+    for r in reps.iter_mut().take(k) {
+        for t in r["creep"]["terms"].as_array_mut().unwrap() {
+            let c = t["compliance_per_pa"].as_f64().unwrap();
+            t["compliance_per_pa"] = serde_json::json!(-c.abs());
+        }
+    }
+    std::fs::write(fit, serde_json::to_string(&v).unwrap()).unwrap();
+}
+
+#[test]
+fn failed_band_replicates_are_counted_and_too_many_refuse_the_band() {
+    // One compound, one half-space scene at two temperatures (fast); the fit file's ensemble is
+    // broken between runs (the fit is reused: same inputs, same band settings).
+    let dir = temp_dir("bands-fail-in");
+    std::fs::copy(
+        data_dir().join("trios-aresg2-lims/frequency_sweep_tts.txt"),
+        dir.join("trios.txt"),
+    )
+    .unwrap();
+    let scenes = dir.join("one.toml");
+    std::fs::write(
+        &scenes,
+        "[[scene]]\nname = \"idler\"\nroll_radius_mm = 66.5\nload_n_per_m = 10000.0\n\
+         speed_m_s = 4.0\ntemps_c = [0.0, 20.0]\n",
+    )
+    .unwrap();
+    let out = temp_dir("bands-fail-out");
+    let run = || {
+        let o = run_main(&dir, &out, &["--scenes", scenes.to_str().unwrap()]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    run();
+    let fit = out.join("fits/trios.json");
+    let friction = out.join("reports/trios/friction.csv");
+    let datasheet = out.join("reports/trios/datasheet.html");
+    let ranking = out.join("reports/ranking.csv");
+    let texts = || {
+        let (h, rows) = table(&friction);
+        let (rh, rrows) = table(&ranking);
+        (
+            rows.iter()
+                .map(|r| {
+                    (
+                        r[col(&h, "note")].clone(),
+                        r[col(&h, "friction_p05")].clone(),
+                    )
+                })
+                .collect::<Vec<_>>(),
+            std::fs::read_to_string(&datasheet).unwrap(),
+            rrows[0][col(&rh, "warnings")].clone(),
+            rrows[0][col(&rh, "mean_friction_p05")].clone(),
+        )
+    };
+    let (rows, sheet, warnings, _) = texts();
+    assert!(rows
+        .iter()
+        .all(|(n, p05)| !n.contains("uncertainty band") && !p05.is_empty()));
+    assert!(!sheet.contains("uncertainty band") && !warnings.contains("uncertainty band"));
+
+    // 5 of 32 fail (≤ a quarter): every band is kept and says how many of how many and why
+    break_replicates(&fit, 5);
+    run();
+    let (rows, sheet, warnings, mean_p05) = texts();
+    let said = "uncertainty band from 27 of 32 bootstrap replicates: 5 failed";
+    for (note, p05) in &rows {
+        assert!(note.contains(said), "{note}");
+        assert!(
+            note.contains("compliance"),
+            "the first failure's reason: {note}"
+        );
+        assert!(!p05.is_empty());
+    }
+    assert!(sheet.contains(said), "datasheet");
+    assert!(warnings.contains(said), "ranking.csv: {warnings}");
+    assert!(!mean_p05.is_empty(), "the mean's band is kept");
+
+    // 9 of 32 (more than a quarter): refused, with the count and the reason, in all three places
+    break_replicates(&fit, 9);
+    run();
+    let (rows, sheet, warnings, mean_p05) = texts();
+    let said = "uncertainty band refused: 9 of 32 bootstrap replicates failed";
+    for (note, p05) in &rows {
+        assert!(note.contains(said), "{note}");
+        assert!(p05.is_empty(), "no band: {p05}");
+    }
+    assert!(sheet.contains(said), "datasheet");
+    assert!(warnings.contains(said), "ranking.csv: {warnings}");
+    assert!(mean_p05.is_empty(), "nor a band of the mean");
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}

@@ -2,6 +2,7 @@
 mod auto_vs_richardson;
 mod bands_calibration;
 mod bands_cli;
+mod bands_window;
 mod cards_vendor;
 mod cli_habits;
 mod contact_auto;

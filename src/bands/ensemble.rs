@@ -213,8 +213,9 @@ fn replicate(
 }
 
 /// The bootstrap ensemble of `fit` (made from `master` of `measurement`), in parallel over
-/// replicates. Errors when the scatter cannot be estimated or fewer than 80 % of the refits
-/// succeed.
+/// replicates. Errors when the scatter cannot be estimated or more than a quarter of the refits
+/// fail (crate::bands::too_many_failed); when fewer fail, the ensemble's notes say how many of how
+/// many and the first reason (they reach friction.csv, the datasheet and the ranking).
 pub fn build_ensemble(
     master: &MasterCurve,
     measurement: &Measurement,
@@ -239,7 +240,7 @@ pub fn build_ensemble(
         .collect();
     let failed: Vec<&String> = results.iter().filter_map(|r| r.as_ref().err()).collect();
     let replicates: Vec<BandReplicate> = results.iter().filter_map(|r| r.clone().ok()).collect();
-    if replicates.len() * 5 < settings.replicates * 4 {
+    if super::friction::too_many_failed(failed.len(), settings.replicates) {
         return Err(BandError::TooFewReplicates {
             ok: replicates.len(),
             asked: settings.replicates,

@@ -10,7 +10,7 @@ pub enum BandError {
     #[error("the scatter cannot be estimated: {0}")]
     Scatter(String),
     /// Too few replicates refitted (each failure's reason is in the message).
-    #[error("only {ok} of {asked} bootstrap refits succeeded (first failure: {first})")]
+    #[error("only {ok} of {asked} bootstrap refits succeeded, more than a quarter failed (first failure: {first})")]
     TooFewReplicates {
         /// Succeeded.
         ok: usize,

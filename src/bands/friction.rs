@@ -2,16 +2,16 @@
 //! the ensemble solved at every temperature of the scene, as a ratio to the fit's own friction
 //! solved the same way, then the band of each point and of the scene mean.
 //!
-//! Input: a [`CompoundFit`] with its [`BandEnsemble`], a [`Scene`], [`BandSettings`]; output:
-//! per temperature the replicate ratios F_b/F̂ ([`scene_ratios`]) and from them [`FrictionBand`]s
+//! Input: a [`CompoundFit`], a [`Scene`], [`BandSettings`]; output: the solver of the replicate
+//! solves ([`solver`]), the covered regression (eq. 15.6b), the shift-law tail term (eq. 15.8) and,
+//! from replicate ratios F_b/F̂ (assembled per scene in super::scene), [`FrictionBand`]s
 //! ([`band_of`], [`mean_band`]).
 
 use super::BandSettings;
 use crate::contact::body::layer::{roll_cover, ModelChoice};
-use crate::contact::{roll, AutoSettings, ContactSettings, Scene, Scheme};
-use crate::results::{BandEnsemble, CompoundFit, FrictionBand, FrictionPoint};
+use crate::contact::{roll, AutoSettings, ContactSettings, RollSolution, Scene, Scheme};
+use crate::results::{CompoundFit, FrictionBand, FrictionPoint};
 use crate::CreepSpectrum;
-use rayon::prelude::*;
 
 /// z of the 95th percentile of the standard normal: the bands are 90 % (p05 … p95).
 pub const Z95: f64 = 1.644_853_626_951_472_2;
@@ -44,62 +44,17 @@ pub fn band_contact_settings(settings: &BandSettings) -> ContactSettings {
 /// narrowest bands measured are ±0.5 %, and an independent error of 3e−4 widens one by < 1 %.
 pub const COVER_BAND_TOL: f64 = 1e-3;
 
-/// Per temperature of `temps_c`, the ratio F_b/F̂ of each replicate b (NaN where a solve failed),
-/// both on the half-space of `scene` (its body is not used; [`scene_ratios_on`] with a cover solves
-/// the covered body). Parallel over (temperature, replicate).
-pub fn scene_ratios(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    temps_c: &[f64],
-    settings: &BandSettings,
-) -> Vec<Vec<f64>> {
-    scene_ratios_on(fit, ensemble, scene, None, temps_c, settings)
-}
-
-/// Replicates of a covered scene whose ratios are solved on the covered body itself (eq. 15.6b);
-/// the others are predicted from their half-space ratios by a regression on these. Eight: the
-/// regression then has 6 degrees of freedom for its residual; checked against the full bootstrap
-/// on the shipped compounds (`cargo bench --bench bands_cover`, README).
-pub const COVER_SOLVED_REPLICATES: usize = 8;
-
-/// What [`scene_bands_on`] hands on: per temperature the replicate ratios F_b/F̂ (with the
-/// extrapolation term already drawn into them) and the extrapolation term's log standard deviation
-/// (`None` at a measured temperature; eq. 15.8).
-#[derive(Debug, Clone, PartialEq)]
-pub struct SceneRatios {
-    /// Per temperature, per replicate, F_b/F̂ (NaN where a solve failed).
-    pub ratios: Vec<Vec<f64>>,
-    /// Per temperature, the shift-law tail term s_tail of eq. 15.8 (ln F), `None` inside the
-    /// measured temperatures.
-    pub tail_ln: Vec<Option<f64>>,
-}
-
-/// [`scene_ratios`] on a cover of `cover_m` bonded to a rigid carcass (eq. 15.6): each replicate's
-/// creep spectrum, shifted by its own law, through the body `auto` chooses
-/// ([`roll_cover`], at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
-/// friction; `None`: the half-space at `settings.contact_tol`. On a cover, only
-/// [`COVER_SOLVED_REPLICATES`] replicates are solved on the cover; the rest come from their
-/// half-space ratios (eq. 15.6b, [`predict_from_half_space`]). Points beyond the measured
-/// temperatures get the shift-law tail term of eq. 15.8 ([`scene_bands_on`]).
-pub fn scene_ratios_on(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    cover_m: Option<f64>,
-    temps_c: &[f64],
-    settings: &BandSettings,
-) -> Vec<Vec<f64>> {
-    scene_bands_on(fit, ensemble, scene, cover_m, temps_c, settings).ratios
-}
+/// A replicate solve: F/N of a creep spectrum at log10 a_T, or why it failed.
+pub type Solve<'a> = dyn Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a;
 
 /// The solver of one scene for the bands: F/N of a creep spectrum at log10 a_T on the half-space
-/// or the cover (NaN on failure).
-fn solver<'a>(
+/// (`cover_m` None, `auto` at the band tolerance) or the cover ([`roll_cover`], `auto` body at
+/// [`COVER_BAND_TOL`] or the band tolerance if looser), or the solver's error.
+pub fn solver<'a>(
     scene: &'a Scene,
     cover_m: Option<f64>,
     settings: &BandSettings,
-) -> impl Fn(&CreepSpectrum, f64) -> f64 + Sync + 'a {
+) -> impl Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a {
     let scene = Scene {
         body: crate::contact::Body::HalfSpace,
         ..*scene
@@ -108,85 +63,53 @@ fn solver<'a>(
     let cover_tol = settings.contact_tol.max(COVER_BAND_TOL);
     move |c: &CreepSpectrum, log10_a_t: f64| {
         if !log10_a_t.is_finite() {
-            return f64::NAN;
+            return Err(format!("log10 a_T is not finite ({log10_a_t})"));
         }
         let at = shifted(c, log10_a_t);
-        match cover_m {
+        let f = match cover_m {
             Some(h_m) => roll_cover(&scene, &at, Some(h_m), ModelChoice::Auto, cover_tol)
-                .map_or(f64::NAN, |r| r.roll.friction),
-            None => roll(&scene, &at, &cs).map_or(f64::NAN, |r| r.friction),
+                .map(|r| r.roll.friction),
+            None => roll(&scene, &at, &cs).map(|r| r.friction),
+        }
+        .map_err(|e| e.to_string())?;
+        if f.is_finite() && f > 0.0 {
+            Ok(f)
+        } else {
+            Err(format!("F/N = {f} is not finite and positive"))
         }
     }
 }
 
-/// Per temperature, the ratios F_b/F̂ of the replicates `which` (indices into the ensemble), solved
-/// by `solve`; parallel over (temperature, replicate).
-fn solved_ratios(
-    fit: &CompoundFit,
-    creep: &CreepSpectrum,
-    ensemble: &BandEnsemble,
-    temps_c: &[f64],
-    which: &[usize],
-    solve: &(dyn Fn(&CreepSpectrum, f64) -> f64 + Sync),
-) -> Vec<Vec<f64>> {
-    let law = &fit.shift_law;
-    let nominal: Vec<f64> = temps_c
-        .par_iter()
-        .map(|&t| solve(creep, law.log10_a_t(t)))
-        .collect();
-    ratios_over(fit, ensemble, temps_c, which, solve, &nominal)
-}
-
-/// Per temperature, F_b/F̂ of the replicates `which` over the given nominal frictions F̂.
-fn ratios_over(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    temps_c: &[f64],
-    which: &[usize],
-    solve: &(dyn Fn(&CreepSpectrum, f64) -> f64 + Sync),
-    nominal: &[f64],
-) -> Vec<Vec<f64>> {
-    let law = &fit.shift_law;
-    let nb = which.len();
-    let flat: Vec<f64> = (0..temps_c.len() * nb)
-        .into_par_iter()
-        .map(|k| {
-            let (i, b) = (k / nb, which[k % nb]);
-            let r = &ensemble.replicates[b];
-            solve(&r.creep, r.log10_a_t(law, temps_c[i])) / nominal[i]
-        })
-        .collect();
-    (0..temps_c.len())
-        .map(|i| flat[i * nb..(i + 1) * nb].to_vec())
-        .collect()
-}
-
-/// [`scene_ratios_on`] with every replicate solved on the cover (the full bootstrap of eq. 15.6,
-/// 32 layer solves per temperature; the same extrapolation term): the reference the cheaper
-/// estimate is checked against.
-pub fn scene_ratios_full_on(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
+/// The fit's own half-space solve at the band tolerance (its friction is the half-space ratios'
+/// F̂; its contact length gives the rolling frequency of eq. 15.9).
+pub fn half_space_solve(
     scene: &Scene,
-    cover_m: Option<f64>,
-    temps_c: &[f64],
+    creep: &CreepSpectrum,
+    log10_a_t: f64,
     settings: &BandSettings,
-) -> Vec<Vec<f64>> {
-    bands_with(fit, ensemble, scene, cover_m, temps_c, settings, true, None).ratios
+) -> Result<RollSolution, String> {
+    let scene = Scene {
+        body: crate::contact::Body::HalfSpace,
+        ..*scene
+    };
+    if !log10_a_t.is_finite() {
+        return Err(format!("log10 a_T is not finite ({log10_a_t})"));
+    }
+    roll(
+        &scene,
+        &shifted(creep, log10_a_t),
+        &band_contact_settings(settings),
+    )
+    .map_err(|e| e.to_string())
 }
 
-/// A standard normal draw of replicate `b` for stream `stream` of the bands' seed: the same for
-/// every temperature of a scene, so the terms it scales are correlated across temperatures as a
-/// property of the replicate (conservative for the band of a scene mean).
-fn replicate_normal(seed: u64, stream: u64, b: usize) -> f64 {
-    super::rng::Rng::new(seed ^ stream, b as u64).normal()
+/// A band is refused when more than a quarter of its replicates failed (to refit, or to solve at
+/// its point): the rest would be a smaller sample no longer drawn at random (the failures may
+/// cluster where the material is hardest to solve), so the band would be reported from few,
+/// possibly biased, replicates.
+pub fn too_many_failed(failed: usize, total: usize) -> bool {
+    failed * 4 > total
 }
-
-/// Stream of the covered regression's residual draws (eq. 15.6b).
-const STREAM_COVER: u64 = 0x636f_7665_7200_0001;
-/// Streams of the extrapolation term's draws below and above the measured temperatures (eq. 15.8).
-const STREAM_TAIL_LOW: u64 = 0x7461_696c_0000_0001;
-const STREAM_TAIL_HIGH: u64 = 0x7461_696c_0000_0002;
 
 /// The covered ratios of every replicate from their half-space ratios `hs` and the covered ratios
 /// `solved` of the first `solved.len()` replicates (eq. 15.6b): the least squares line
@@ -353,12 +276,12 @@ fn parabola(pts: &[(f64, f64)], t0: f64) -> Option<(f64, f64)> {
 /// |ln F(L_alt(T)) − ln F(L(T))| over the tail assumptions of [`tail_alternatives`], solved on the
 /// scene's body (`f0` = F(L(T)) on it); `None` inside the measured temperatures or without an
 /// alternative.
-fn tail_term(
+pub(super) fn tail_term(
     fit: &CompoundFit,
     creep: &CreepSpectrum,
     temp_c: f64,
     f0: f64,
-    solve: &(dyn Fn(&CreepSpectrum, f64) -> f64 + Sync),
+    solve: &Solve,
 ) -> Option<f64> {
     let (lo, hi) = fit.measured_range_c()?;
     let t_end = if temp_c < lo {
@@ -371,7 +294,7 @@ fn tail_term(
     tail_alternatives(fit, temp_c, t_end)
         .into_iter()
         .filter_map(|l| {
-            let d = (solve(creep, l) / f0).ln();
+            let d = (solve(creep, l).ok()? / f0).ln();
             d.is_finite().then_some(d.abs())
         })
         .fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.max(d))))
@@ -381,153 +304,24 @@ fn tail_term(
 /// friction.csv's `note`, the datasheet and the ranking through the point's warnings.
 pub fn tail_note(s_tail: f64) -> String {
     format!(
-        "band widened for extrapolation: shift-law tail assumptions that agree at the end isotherm \
+        "{} in temperature: shift-law tail assumptions that agree at the end isotherm \
          differ here by up to {:.0} % in F/N (taken as one standard deviation, docs/MATH.md eq. 15.8)",
+        super::window::WIDENED_NOTE_START,
         100.0 * s_tail.exp_m1()
     )
 }
 
-/// [`scene_ratios_on`] with the extrapolation terms it drew in (module doc, eqs. 15.6, 15.6b,
-/// 15.8). The tail term enters each replicate as a factor e^(s_tail·u_b), u_b standard normal, one
-/// draw per replicate and side (below, above the measured temperatures): the largest spread
-/// between the tail assumptions is taken as one standard deviation, so the 90 % band spans ±1.645
-/// of it and covers every alternative.
-pub fn scene_bands_on(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    cover_m: Option<f64>,
-    temps_c: &[f64],
-    settings: &BandSettings,
-) -> SceneRatios {
-    bands_with(
-        fit, ensemble, scene, cover_m, temps_c, settings, false, None,
-    )
-}
-
-/// [`scene_bands_on`] on a cover with the nominal covered frictions already solved: `nominal[i]`
-/// the fit's friction at `temps_c[i]` on the cover by `auto` at [`COVER_BAND_TOL`] (the main job's
-/// covered points are exactly that solve: crate::pipeline's `COVER_TOL` is the same 1e−3), NaN where
-/// it failed (then solved here). Saves one layer solve per temperature. Without a cover, or with a
-/// band tolerance looser than [`COVER_BAND_TOL`], `nominal` is not used (the half-space's ratios
-/// are over the fit solved at the band tolerance, not the report's).
-pub fn scene_bands_given(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    cover_m: Option<f64>,
-    temps_c: &[f64],
-    settings: &BandSettings,
-    nominal: &[f64],
-) -> SceneRatios {
-    let usable = cover_m.is_some()
-        && settings.contact_tol <= COVER_BAND_TOL
-        && nominal.len() == temps_c.len();
-    bands_with(
-        fit,
-        ensemble,
-        scene,
-        cover_m,
-        temps_c,
-        settings,
-        false,
-        usable.then_some(nominal),
-    )
-}
-
-/// [`scene_bands_on`] with every replicate solved on the cover (`full`), or the covered ones
-/// predicted from the half-space (eq. 15.6b).
-#[allow(clippy::too_many_arguments)]
-fn bands_with(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    cover_m: Option<f64>,
-    temps_c: &[f64],
-    settings: &BandSettings,
-    full: bool,
-    nominal: Option<&[f64]>,
-) -> SceneRatios {
-    let Some(creep) = fit.creep.as_ref() else {
-        return SceneRatios {
-            ratios: temps_c.iter().map(|_| Vec::new()).collect(),
-            tail_ln: vec![None; temps_c.len()],
-        };
-    };
-    let nb = ensemble.replicates.len();
-    let all: Vec<usize> = (0..nb).collect();
-    let half_space = solver(scene, None, settings);
-    let covered = solver(scene, cover_m, settings);
-    let law = &fit.shift_law;
-    // the body's nominal frictions: given (finite ones), else solved
-    let body_nominal: Vec<f64> = temps_c
-        .par_iter()
-        .enumerate()
-        .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
-            Some(&f) if f.is_finite() && f > 0.0 => f,
-            _ => covered(creep, law.log10_a_t(t)),
-        })
-        .collect();
-    let mut ratios: Vec<Vec<f64>> = match cover_m {
-        None => ratios_over(fit, ensemble, temps_c, &all, &half_space, &body_nominal),
-        Some(_) if full => ratios_over(fit, ensemble, temps_c, &all, &covered, &body_nominal),
-        Some(_) => {
-            let hs = solved_ratios(fit, creep, ensemble, temps_c, &all, &half_space);
-            let k = COVER_SOLVED_REPLICATES.min(nb);
-            let first: Vec<usize> = (0..k).collect();
-            let sub = ratios_over(fit, ensemble, temps_c, &first, &covered, &body_nominal);
-            let z: Vec<f64> = (0..nb)
-                .map(|b| replicate_normal(settings.seed, STREAM_COVER, b))
-                .collect();
-            (0..temps_c.len())
-                .map(|i| {
-                    predict_from_half_space(&hs[i], &sub[i], &z).unwrap_or_else(|| {
-                        // too few covered solves succeeded for the regression: all on the cover
-                        ratios_over(
-                            fit,
-                            ensemble,
-                            &temps_c[i..=i],
-                            &all,
-                            &covered,
-                            &body_nominal[i..=i],
-                        )
-                        .remove(0)
-                    })
-                })
-                .collect()
-        }
-    };
-    let tail_ln: Vec<Option<f64>> = temps_c
-        .par_iter()
-        .zip(body_nominal.par_iter())
-        .map(|(&t, &f0)| tail_term(fit, creep, t, f0, &covered))
-        .collect();
-    let (lo, _) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
-    for ((r, tail), &t) in ratios.iter_mut().zip(&tail_ln).zip(temps_c) {
-        if let Some(s) = tail {
-            let stream = if t < lo {
-                STREAM_TAIL_LOW
-            } else {
-                STREAM_TAIL_HIGH
-            };
-            for (b, v) in r.iter_mut().enumerate() {
-                *v *= (s * replicate_normal(settings.seed, stream, b)).exp();
-            }
-        }
-    }
-    SceneRatios { ratios, tail_ln }
-}
-
 /// The band of `value` from replicate ratios (eq. 15.5): d_b = ln ratio_b, mean m and standard
 /// deviation s over the finite ones; p50 = value·e^m, p05/p95 = value·e^(m ∓ z₀.₉₅ s). `None` with
-/// fewer than 8 finite ratios or a non-finite value.
+/// fewer than 8 finite ratios, more than a quarter of them failed (NaN or ≤ 0,
+/// [`too_many_failed`]) or a non-finite value.
 pub fn band_of(value: f64, ratios: &[f64]) -> Option<FrictionBand> {
     let d: Vec<f64> = ratios
         .iter()
         .filter(|r| r.is_finite() && **r > 0.0)
         .map(|r| r.ln())
         .collect();
-    if d.len() < 8 || !value.is_finite() {
+    if d.len() < 8 || !value.is_finite() || too_many_failed(ratios.len() - d.len(), ratios.len()) {
         return None;
     }
     let n = d.len() as f64;

@@ -32,28 +32,40 @@
 //!    quantiles of 32 replicates). A covered scene's ratios are solved on the covered body the
 //!    main job solves (`auto` at 1e−3, eq. 15.6).
 //!    The band of a scene mean takes per replicate the mean of F_t·ratio_(b,t).
+//!    Model error beyond the data: a point beyond the measured temperatures gets the spread of the
+//!    shift law's tail assumptions (eq. 15.8); a point whose rolling frequency V/l, reduced by
+//!    a_T, lies beyond the measured master curve gets the change of F/N when the spectrum is
+//!    continued past the window's edge with the edge's density (eq. 15.9); each as one standard
+//!    deviation, drawn into every replicate (super::scene). A replicate solve that fails is
+//!    counted: the band says how many of how many and why, and is refused when more than a
+//!    quarter failed (also for the refits of the ensemble).
 //! 6. Pairs (eq. 15.7): P(F_A < F_B) = Φ((ln p50_B − ln p50_A)/√(s_A² + s_B²)), compounds
 //!    independent (separate measurements); tied when it lies strictly between 0.05 and 0.95.
 //!
-//! Left out: the contact solver's own error (≤ its tolerance, far below the bands), the choice of
-//! shift law beyond the measured temperatures (the offsets are held constant there, so an
-//! extrapolated point's band is no wider than the nearest isotherm's), systematic errors of the
-//! instrument (clamping, compliance, thermocouple calibration) that the data cannot show.
+//! Left out: the contact solver's own error (≤ its tolerance, far below the bands), systematic
+//! errors of the instrument (clamping, compliance, thermocouple calibration) that the data cannot
+//! show.
 
 pub mod compare;
 pub mod ensemble;
 pub mod error;
 pub mod friction;
 pub mod rng;
+pub mod scene;
+pub mod window;
 
 pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
 pub use ensemble::build_ensemble;
 pub use error::BandError;
 pub use friction::{
-    band_of, mean_band, predict_from_half_space, scene_bands_given, scene_bands_on, scene_ratios,
-    scene_ratios_full_on, scene_ratios_on, tail_alternatives, tail_note, SceneRatios,
-    COVER_BAND_TOL, COVER_SOLVED_REPLICATES,
+    band_of, mean_band, predict_from_half_space, tail_alternatives, tail_note, too_many_failed,
+    COVER_BAND_TOL,
 };
+pub use scene::{
+    scene_bands_given, scene_bands_on, scene_ratios, scene_ratios_full_on, scene_ratios_on,
+    SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
+};
+pub use window::{window_note, WindowExcess, WindowSide, WIDENED_NOTE_START};
 
 /// Settings of the bands.
 #[derive(Debug, Clone, PartialEq)]

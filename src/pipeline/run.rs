@@ -258,12 +258,13 @@ fn scene_bands(
             r
         }
     };
-    for ((p, r), tail) in points.iter_mut().zip(&r.ratios).zip(&r.tail_ln) {
+    // each point's band, with its notes (widened: eqs. 15.8, 15.9; failed replicates) or why it
+    // was refused: they reach friction.csv's note, the datasheet and the ranking
+    for (i, p) in points.iter_mut().enumerate() {
         if p.error.is_none() {
-            p.band = crate::bands::band_of(p.friction, r);
-            if let (Some(s), Some(_)) = (tail, &p.band) {
-                p.warnings.push(crate::bands::tail_note(*s));
-            }
+            let (band, notes) = r.point_band(i, p.friction);
+            p.band = band;
+            p.warnings.extend(notes);
         }
     }
     r.ratios
@@ -431,7 +432,15 @@ fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String>
                     .filter(|p| p.warnings.contains(w))
                     .map(|p| p.temp_c.to_string())
                     .collect();
-                warnings.push(format!("{scene} at {} °C: contact: {w}", at.join(", ")));
+                // the bands' own notes (crate::bands::scene) are not the contact's
+                let stage = if w.starts_with(crate::bands::WIDENED_NOTE_START)
+                    || w.starts_with("uncertainty band")
+                {
+                    "bands"
+                } else {
+                    "contact"
+                };
+                warnings.push(format!("{scene} at {} °C: {stage}: {w}", at.join(", ")));
             }
         }
     }

@@ -23,7 +23,7 @@ h1{font-size:26px;margin:.5em 0 0}h2{font-size:20px;border-bottom:2px solid #ddd
 figure{margin:0}figcaption{font-size:12px;color:#666}\
 table{border-collapse:collapse;margin:.4em 0;font-size:14px}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right;vertical-align:top}\
 th{background:#f0f0f0}td.l,th.l{text-align:left}table.kv td{text-align:left}table.kv td:first-child{color:#555;white-space:nowrap}\
-.band{display:block;color:#666;font-size:12px}.tie{color:#36c}\
+.band{display:block;color:#666;font-size:12px}.tie{color:#36c}.small{font-size:13px}ul.small{margin:.2em 0;padding-left:1.2em}\
 .ok{color:#060}.bad{color:#b00}.warn{color:#a60}\
 details{margin:.3em 0}summary{cursor:pointer;font-weight:600}\
 pre{background:#f6f6f6;padding:.5em;overflow-x:auto;font-size:12px}svg{width:100%;height:auto;display:block}\

@@ -87,7 +87,26 @@ fn proxy_ranks(names: &[&str], proxies: &[TanDeltaProxy]) -> Vec<Option<usize>> 
     ranks
 }
 
-/// The flags of a compound in a scene: extrapolated temperatures, contact validity warnings.
+/// How the bands' notes start (crate::bands::scene, crate::bands::window, crate::bands::tail_note).
+const WIDENED_FREQUENCY: &str = "band widened for extrapolation in frequency";
+const WIDENED_TEMPERATURE: &str = "band widened for extrapolation in temperature";
+const BAND_FEWER: &str = "uncertainty band from ";
+const BAND_REFUSED: &str = "uncertainty band refused";
+
+/// Whether a point's warning is one of the bands' notes.
+fn is_band_note(w: &str) -> bool {
+    [
+        WIDENED_FREQUENCY,
+        WIDENED_TEMPERATURE,
+        BAND_FEWER,
+        BAND_REFUSED,
+    ]
+    .iter()
+    .any(|s| w.starts_with(s))
+}
+
+/// The flags of a compound in a scene: extrapolated temperatures, the bands' notes (widened,
+/// replicates failed, refused), contact validity warnings.
 fn flags(o: &CompoundOutcome, scene: &str, allow_extrapolation: bool) -> String {
     let mut f: Vec<String> = Vec::new();
     if let Some(s) = o.standing(scene) {
@@ -104,11 +123,26 @@ fn flags(o: &CompoundOutcome, scene: &str, allow_extrapolation: bool) -> String 
         }
     }
     if let Some((_, pts)) = o.friction.iter().find(|(s, _)| s == scene) {
-        let warned: Vec<String> = pts
-            .iter()
-            .filter(|p| !p.warnings.is_empty())
-            .map(|p| p.temp_c.to_string())
-            .collect();
+        // the bands' own notes (crate::bands: widened by eq. 15.8 or 15.9, replicates failed,
+        // refused) by kind, then the other warnings
+        let at = |keep: &dyn Fn(&str) -> bool| -> Vec<String> {
+            pts.iter()
+                .filter(|p| p.warnings.iter().any(|w| keep(w)))
+                .map(|p| p.temp_c.to_string())
+                .collect()
+        };
+        for (what, start) in [
+            ("† band widened in frequency", WIDENED_FREQUENCY),
+            ("† band widened in temperature", WIDENED_TEMPERATURE),
+            ("band from fewer replicates", BAND_FEWER),
+            ("band refused", BAND_REFUSED),
+        ] {
+            let t = at(&|w| w.starts_with(start));
+            if !t.is_empty() {
+                f.push(format!("{what} at {} °C", t.join(" ")));
+            }
+        }
+        let warned = at(&|w| !is_band_note(w));
         if !warned.is_empty() {
             f.push(format!("validity warnings at {} °C", warned.join(" ")));
         }

@@ -198,8 +198,63 @@ fn bodies(pts: &[FrictionPoint]) -> Vec<(&str, Vec<f64>, &str)> {
     v
 }
 
-/// How the bands stage's tail note starts (crate::bands::tail_note).
+/// How the bands stage's widened-band notes start (crate::bands::WIDENED_NOTE_START: eq. 15.8's
+/// "in temperature", eq. 15.9's "in frequency").
 const TAIL_NOTE_START: &str = "band widened for extrapolation";
+/// How its notes on failed replicates start (crate::bands::scene).
+const BAND_NOTE_STARTS: [&str; 2] = ["uncertainty band from ", "uncertainty band refused"];
+
+/// The bands' notes under the friction matrix, one line per (scene, temperature): why a band is
+/// widened (†, eqs. 15.8 and 15.9), drawn from fewer replicates or refused; the cell's tooltip
+/// alone would not print nor show on a screenshot. Empty when there are none.
+fn band_notes(friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> String {
+    let mut h = String::new();
+    for (spec, pts) in friction {
+        for p in pts {
+            let notes: Vec<String> = p
+                .warnings
+                .iter()
+                .filter_map(|w| {
+                    if let Some(rest) = w.strip_prefix(TAIL_NOTE_START) {
+                        // "(taken as one standard deviation, docs/MATH.md eq. 15.x)" → "(eq. 15.x)"
+                        let short =
+                            match rest.find("(taken as one standard deviation, docs/MATH.md ") {
+                                Some(i) => format!(
+                                    "{}({}",
+                                    &rest[..i],
+                                    &rest[i + "(taken as one standard deviation, docs/MATH.md "
+                                        .len()..]
+                                ),
+                                None => rest.to_string(),
+                            };
+                        Some(format!("† widened{short}"))
+                    } else {
+                        BAND_NOTE_STARTS
+                            .iter()
+                            .any(|s| w.starts_with(s))
+                            .then(|| w.clone())
+                    }
+                })
+                .collect();
+            if !notes.is_empty() {
+                let _ = write!(
+                    h,
+                    "<li><b>{}</b> at {} °C: {}</li>",
+                    esc(&spec.name),
+                    p.temp_c,
+                    esc(&notes.join("; "))
+                );
+            }
+        }
+    }
+    if h.is_empty() {
+        h
+    } else {
+        format!(
+            "<details class=\"bandnotes\" open><summary>Notes on the bands (taken as one standard deviation on top of the data's scatter, docs/MATH.md §15)</summary><ul class=\"small\">{h}</ul></details>"
+        )
+    }
+}
 
 /// The friction matrix: a row per scene, a column per temperature, F/N with its band; then the
 /// body of each scene and why.
@@ -220,7 +275,7 @@ pub fn friction_matrix(
     let mut h = format!(
         "<h2>Rolling friction F/N</h2><p>Per scene and temperature{}; <span class=\"warn\">*</span> extrapolated shift law (outside the measured temperatures){}. The mean is the ranking's figure.</p><table><tr><th class=\"l\">scene</th><th>mean</th>",
         if banded {
-            ", with the 90 % band (p05–p95) below each value (<span class=\"warn\">†</span>: widened by the spread of the shift law's tail assumptions beyond the measured temperatures; hover for the figure)"
+            ", with the 90 % band (p05–p95) below each value (<span class=\"warn\">†</span>: band widened for extrapolation, in temperature beyond the measured ones or in frequency beyond the measured master curve; the reasons are listed under the table)"
         } else {
             " (no uncertainty bands in this run)"
         },
@@ -249,7 +304,9 @@ pub fn friction_matrix(
         }
         h.push_str("</tr>");
     }
-    h.push_str("</table><ul>");
+    h.push_str("</table>");
+    h.push_str(&band_notes(friction));
+    h.push_str("<ul>");
     for (spec, pts) in friction {
         scene_body(&mut h, spec, pts);
     }
