@@ -170,7 +170,7 @@ pub fn window_note(s_window: f64, ex: &WindowExcess) -> String {
     format!(
         "{WIDENED_NOTE_START} in frequency: the rolling frequency V/l reduced to the reference \
          temperature, {:.2e} Hz, lies {:.1} decades {} the measured master curve ({} {:.2e} Hz); the \
-         Prony spectrum continued past it with the density of the edge changes F/N by {:.0} % \
+         Prony spectrum continued past it with the density and slope of the edge changes F/N by {} \
          (taken as one standard deviation, docs/MATH.md eq. 15.9)",
         ex.reduced_freq_hz,
         ex.decades,
@@ -183,8 +183,20 @@ pub fn window_note(s_window: f64, ex: &WindowExcess) -> String {
             WindowSide::Low => "down to",
         },
         ex.edge_hz,
-        100.0 * s_window.exp_m1()
+        change_text(s_window)
     )
+}
+
+/// A change of ln F by `s` in words: "27 %" up to doubling, then "a factor 3.4" or "a factor 6.5e5".
+fn change_text(s: f64) -> String {
+    let f = s.exp();
+    if f < 2.0 {
+        format!("{:.0} %", 100.0 * s.exp_m1())
+    } else if f < 1000.0 {
+        format!("a factor {f:.1}")
+    } else {
+        format!("a factor {f:.1e}")
+    }
 }
 
 #[cfg(test)]
@@ -212,6 +224,9 @@ mod tests {
         let w = (1e-3, 1e4);
         assert!(excess(w, 1.0).is_none());
         assert!(excess(w, f64::NAN).is_none());
+        assert_eq!(change_text(0.25), "28 %");
+        assert_eq!(change_text(2f64.ln() + 0.2), "a factor 2.4");
+        assert_eq!(change_text(1e5f64.ln()), "a factor 1.0e5");
         let hi = excess(w, 1e6).unwrap();
         assert_eq!(hi.side, WindowSide::High);
         assert!((hi.decades - 2.0).abs() < 1e-12);

@@ -75,7 +75,10 @@ pub fn num_band(v: f64, band: Option<(f64, f64)>) -> (String, String) {
         return (num(v), String::new());
     };
     let e = exponent(v);
-    if !v.is_finite() || (-2..3).contains(&e) {
+    // a band over more than two decades (widened for extrapolation, crate::bands eqs. 15.8, 15.9):
+    // each end with its own power of ten, else the low end reads 0.00 and the high end a long
+    // integer
+    if !v.is_finite() || (-2..3).contains(&e) || hi > 100.0 * lo {
         return (num(v), format!("{}–{}", num(lo), num(hi)));
     }
     let s = 10f64.powi(e);

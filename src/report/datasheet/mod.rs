@@ -96,17 +96,32 @@ fn friction_plot(
     })
 }
 
+/// Bands are drawn no further than this factor beyond the curve's own lowest and highest F/N: a
+/// band widened for extrapolation (crate::bands eqs. 15.8, 15.9) can span ten decades and would
+/// flatten every curve of the plot; the friction table gives it in full.
+pub const BAND_CLIP_FACTOR: f64 = 10.0;
+
 /// One scene's F/N against temperature as a curve with its band (the p05…p95 of each point that
-/// has one).
+/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range).
 pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     let mut c = Curve::new(
         name,
         pts.iter().map(|p| (p.temp_c, p.friction)).collect(),
         Mark::LineDots,
     );
+    let f = pts
+        .iter()
+        .map(|p| p.friction)
+        .filter(|f| f.is_finite() && *f > 0.0);
+    let (lo, hi) = f.fold((f64::INFINITY, 0.0f64), |(a, b), f| (a.min(f), b.max(f)));
+    let (lo, hi) = if lo <= hi {
+        (lo / BAND_CLIP_FACTOR, hi * BAND_CLIP_FACTOR)
+    } else {
+        (0.0, f64::INFINITY)
+    };
     c.band = pts
         .iter()
-        .filter_map(|p| p.band.map(|b| (p.temp_c, b.p05, b.p95)))
+        .filter_map(|p| p.band.map(|b| (p.temp_c, b.p05.max(lo), b.p95.min(hi))))
         .collect();
     c
 }

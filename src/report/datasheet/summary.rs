@@ -275,7 +275,7 @@ pub fn friction_matrix(
     let mut h = format!(
         "<h2>Rolling friction F/N</h2><p>Per scene and temperature{}; <span class=\"warn\">*</span> extrapolated shift law (outside the measured temperatures){}. The mean is the ranking's figure.</p><table><tr><th class=\"l\">scene</th><th>mean</th>",
         if banded {
-            ", with the 90 % band (p05–p95) below each value (<span class=\"warn\">†</span>: band widened for extrapolation, in temperature beyond the measured ones or in frequency beyond the measured master curve; the reasons are listed under the table)"
+            ", with the 90 % band (p05–p95) below each value (<span class=\"warn\">†</span>: band widened for extrapolation, in temperature beyond the measured ones or in frequency beyond the measured master curve; the reasons are listed under the table; the plot draws bands no further than a decade beyond each scene's curve)"
         } else {
             " (no uncertainty bands in this run)"
         },
