@@ -149,9 +149,9 @@ fn a_truncated_master_curve_widens_and_flags_the_points_beyond_its_window() {
         band.p95
     );
     // inside the truncated window: no term, no note of it
-    for i in 1..TEMPS_C.len() {
+    for (i, p) in cut_pts.iter().enumerate().skip(1) {
         if cut.window[i].is_none() {
-            let notes = cut.point_band(i, cut_pts[i].friction).1;
+            let notes = cut.point_band(i, p.friction).1;
             assert!(
                 notes.iter().all(|n| !n.contains("in frequency")),
                 "{notes:?}"
