@@ -12,8 +12,8 @@
 //! the contact solver (the body of the scene); nothing of the fit or the ensemble enters it. That
 //! truth is itself checked against an independent contact path in tests/known_truth.rs.
 //!
-//! In CI: noise seeds 1 and 2 (about 30 s on 2 cores; 250/264 = 94.7 % on this commit). The full
-//! figure over 10 seeds (about 2 min; 1130/1320 = 85.6 %, per seed 72–98.5 %):
+//! In CI: noise seeds 1 and 2 (about 30 s on 2 cores; 252/264 = 95.5 % with eqs. 15.6b–15.9). The full
+//! figure over 10 seeds (about 2 min; 1142/1320 = 86.5 %, per seed 72.7–99.2 %):
 //! `cargo test --release --test tests bands_calibration_ten_seeds -- --ignored --nocapture`.
 //! Both print the coverage per seed, compound and scene, and the misses. The 2-seed check is the
 //! weaker one: single seeds range from 72 % to 98.5 %, so it catches a band that is far off (too

@@ -84,7 +84,7 @@ impl SceneRatios {
                 None,
                 vec![format!(
                     "uncertainty band refused: {failed} of {n} bootstrap replicates failed to \
-                     solve here (first: {why}); more than a quarter failed, so the rest would not \
+                     solve here (first: {why}), more than a quarter, so the rest would not \
                      give a band"
                 )],
             );

@@ -169,7 +169,7 @@ pub const WIDENED_NOTE_START: &str = "band widened for extrapolation";
 pub fn window_note(s_window: f64, ex: &WindowExcess) -> String {
     format!(
         "{WIDENED_NOTE_START} in frequency: the rolling frequency V/l reduced to the reference \
-         temperature, {:.2e} Hz, lies {:.1} decades {} the measured master curve ({} {:.2e} Hz); the \
+         temperature, {:.2e} Hz, lies {:.1} decades {} the measured master curve ({} {:.2e} Hz), and the \
          Prony spectrum continued past it with the density and slope of the edge changes F/N by {} \
          (taken as one standard deviation, docs/MATH.md eq. 15.9)",
         ex.reduced_freq_hz,
