@@ -280,9 +280,17 @@ fn failed_band_replicates_are_counted_and_too_many_refuse_the_band() {
         .all(|(n, p05)| !n.contains("uncertainty band") && !p05.is_empty()));
     assert!(!sheet.contains("uncertainty band") && !warnings.contains("uncertainty band"));
 
-    // 5 of 32 fail (≤ a quarter): every band is kept and says how many of how many and why
+    // 5 of 32 fail (≤ a quarter): every band is kept and says how many of how many and why; and
+    // the ensemble's own note on failed refits (as crate::bands::build_ensemble writes it, here
+    // put in the reused fit file) reaches friction.csv's warnings, the datasheet and the ranking
     break_replicates(&fit, 5);
+    let refits = "3 of 32 bootstrap refits failed and were left out (first: injected)";
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&fit).unwrap()).unwrap();
+    v["bands"]["notes"] = serde_json::json!([refits]);
+    std::fs::write(&fit, serde_json::to_string(&v).unwrap()).unwrap();
     run();
+    assert!(std::fs::read_to_string(&friction).unwrap().contains(refits));
     let (rows, sheet, warnings, mean_p05) = texts();
     let said = "uncertainty band from 27 of 32 bootstrap replicates: 5 failed";
     for (note, p05) in &rows {
@@ -296,6 +304,7 @@ fn failed_band_replicates_are_counted_and_too_many_refuse_the_band() {
     assert!(sheet.contains(said), "datasheet");
     assert!(warnings.contains(said), "ranking.csv: {warnings}");
     assert!(!mean_p05.is_empty(), "the mean's band is kept");
+    assert!(sheet.contains(refits) && warnings.contains(refits));
 
     // 9 of 32 (more than a quarter): refused, with the count and the reason, in all three places
     break_replicates(&fit, 9);

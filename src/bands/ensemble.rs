@@ -212,6 +212,29 @@ fn replicate(
     })
 }
 
+/// The verdict on the refits, `failed` the reasons of those that failed out of `asked`: refused
+/// when more than a quarter failed ([`super::too_many_failed`]), else the ensemble's notes (how
+/// many of how many failed and the first reason; none when none failed).
+fn refit_verdict(failed: &[&String], asked: usize) -> Result<Vec<String>, BandError> {
+    if super::friction::too_many_failed(failed.len(), asked) {
+        return Err(BandError::TooFewReplicates {
+            ok: asked - failed.len(),
+            asked,
+            first: failed.first().map_or(String::new(), |s| s.to_string()),
+        });
+    }
+    Ok(failed
+        .first()
+        .map(|first| {
+            crate::results::cap_line(&format!(
+                "{} of {asked} bootstrap refits failed and were left out (first: {first})",
+                failed.len()
+            ))
+        })
+        .into_iter()
+        .collect())
+}
+
 /// The bootstrap ensemble of `fit` (made from `master` of `measurement`), in parallel over
 /// replicates. Errors when the scatter cannot be estimated or more than a quarter of the refits
 /// fail (crate::bands::too_many_failed); when fewer fail, the ensemble's notes say how many of how
@@ -240,22 +263,7 @@ pub fn build_ensemble(
         .collect();
     let failed: Vec<&String> = results.iter().filter_map(|r| r.as_ref().err()).collect();
     let replicates: Vec<BandReplicate> = results.iter().filter_map(|r| r.clone().ok()).collect();
-    if super::friction::too_many_failed(failed.len(), settings.replicates) {
-        return Err(BandError::TooFewReplicates {
-            ok: replicates.len(),
-            asked: settings.replicates,
-            first: failed.first().map_or(String::new(), |s| s.to_string()),
-        });
-    }
-    let mut notes = Vec::new();
-    if !failed.is_empty() {
-        notes.push(crate::results::cap_line(&format!(
-            "{} of {} bootstrap refits failed and were left out (first: {})",
-            failed.len(),
-            settings.replicates,
-            failed[0]
-        )));
-    }
+    let notes = refit_verdict(&failed, settings.replicates)?;
     Ok(BandEnsemble {
         method: format!(
             "residual bootstrap of the master curve (wild, Gaussian weights) with isotherm shifts drawn as a random walk from the shift stage's standard errors and isotherm temperatures from their drift; Prony refit at λ = {:e}, exact creep conversion",
@@ -272,6 +280,24 @@ pub fn build_ensemble(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn failed_refits_are_counted_and_more_than_a_quarter_refuse_the_ensemble() {
+        let why = "prony: QP did not converge".to_string();
+        assert!(refit_verdict(&[], 32).unwrap().is_empty());
+        // 8 of 32: a quarter, kept, the note says how many of how many and why
+        let notes = refit_verdict(&[&why; 8], 32).unwrap();
+        assert_eq!(
+            notes,
+            ["8 of 32 bootstrap refits failed and were left out (first: prony: QP did not converge)"]
+        );
+        // 9 of 32: refused, the error says so with the reason
+        let e = refit_verdict(&[&why; 9], 32).unwrap_err().to_string();
+        assert!(
+            e.contains("only 23 of 32") && e.contains("more than a quarter") && e.contains("QP"),
+            "{e}"
+        );
+    }
 
     #[test]
     fn the_shift_walk_keeps_each_marginal_standard_error() {

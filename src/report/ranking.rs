@@ -179,6 +179,13 @@ fn bodies_and_warnings(o: &CompoundOutcome, scene: &str) -> (String, String) {
             warnings.push(format!("{} °C: {w}", p.temp_c));
         }
     }
+    // the bands' compound-level warnings (failed refits, bands not computed) hold for every scene
+    warnings.extend(
+        o.warnings
+            .iter()
+            .filter(|w| w.starts_with("uncertainty band"))
+            .cloned(),
+    );
     (
         models.join(" "),
         warnings.join("; ").replace(['\r', '\n'], " "),

@@ -259,6 +259,14 @@ pub fn write_report(
         allow_extrapolation,
         &friction_svg,
     ));
+    // the bands' own compound-level warnings (failed refits of the ensemble, bands not computed:
+    // crate::pipeline's band warnings) under the friction they concern
+    for w in fit_warnings
+        .iter()
+        .filter(|w| w.starts_with("uncertainty band"))
+    {
+        let _ = write!(h, "<p class=\"warn\">{}</p>", esc(w));
+    }
     let _ = write!(
         h,
         "<h2>Viscoelastic curves</h2><p>Lines: the Prony fit shifted by the law used ({}); points: the measurement. Reference temperature {:.2} °C.</p><div class=\"grid\">{master_svg}{curves_html}{iso_svg}{shift_svg}</div>",
