@@ -1,4 +1,5 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod auto_budget;
 mod auto_vs_richardson;
 mod bands_calibration;
 mod bands_cli;
