@@ -27,6 +27,7 @@ mod fuzz_inputs;
 mod golden_outputs;
 mod ingest_cli;
 mod known_truth;
+mod layer_degree;
 mod layer_props;
 mod master_cli;
 mod master_plateau;
