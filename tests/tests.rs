@@ -13,6 +13,7 @@ mod contact_rear;
 mod contact_scene;
 mod contact_thesis;
 mod contact_thesis_vs_exact;
+mod covered_job;
 mod dma_errors;
 mod dma_formats;
 mod dma_quirks;
