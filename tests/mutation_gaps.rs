@@ -239,6 +239,45 @@ fn rear_scan_reaches_the_lowest_point_of_the_roll_far_behind() {
     }
 }
 
+/// On solved contacts (one term; β > 0 for f = 10, b = 1 and β < 0 for b = 0.1 and 0.01, the roll
+/// still descending behind the edge) the gap behind the contact is smallest next to the rear edge,
+/// where it opens like |ξ|^{3/2} (docs/MATH.md §11; the 4 877-case scan found no other minimum):
+/// `rear_scan` reports the first point, 1e−3 λ behind the edge, with the gap open, and brute force
+/// over [−6 λ, −1e−3 λ] finds nothing smaller. Surviving mutant: `k_min > 0` made `>= 0` in the
+/// refinement's guard (`rear_gap.rs`), which then takes the edge point as an interior minimum and
+/// indexes before the first point.
+#[test]
+fn rear_scan_of_a_solved_contact_finds_the_gap_smallest_at_the_rear_edge() {
+    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::half_space::modes::Modes;
+    use viscoroll::contact::half_space::rear_gap::{rear_scan, GapEvaluator};
+    use viscoroll::contact::CreepTerm;
+    let lam = 1.0;
+    for b in [1.0, 0.1, 0.01] {
+        let m = Modes::new(&[CreepTerm { f: 10.0, b }]);
+        let sol = solve_at_lambda(&m, lam, QuadratureSettings::default());
+        let ev = GapEvaluator::new(&m, 1.0, &sol, 1e-3 * lam);
+        let (g_want, x_want) = dense_min(&ev, lam);
+        let s = rear_scan(&m, 1.0, &sol);
+        eprintln!(
+            "b {b} (β {:.4}): scan {:.6e} at {} ; brute force {g_want:.6e} at {x_want}",
+            sol.beta, s.min_gap_ratio, s.at_xi
+        );
+        assert!(
+            s.min_gap_ratio > 0.0,
+            "b {b}: gap closed {}",
+            s.min_gap_ratio
+        );
+        assert_eq!(s.at_xi, -1e-3 * lam, "b {b}: minimum not at the edge");
+        // brute force samples the same function at the same edge point (and finer elsewhere)
+        assert!(
+            (s.min_gap_ratio - g_want).abs() <= 1e-12 * g_want.abs().max(1e-6),
+            "b {b}: {} vs {g_want}",
+            s.min_gap_ratio
+        );
+    }
+}
+
 /// As [`dense_min`] over ξ ∈ [−`reach`, 0): 3 000 points, then 2 000 across the best one's
 /// neighbours.
 fn dense_min_over(
