@@ -65,6 +65,9 @@ pub struct LayerSettings {
     /// Largest degree of the spectral solver's layer term (default 48; module doc of
     /// [`super::spectral`]: the switch to this scheme).
     pub p_max: usize,
+    /// Warm start of the spectral solver (λ guess, d ln N′/d ln λ), e.g. from a neighbouring map
+    /// node; [`super::spectral::SpectralSettings::start`]. Default `None`.
+    pub start: Option<(f64, f64)>,
 }
 
 impl Default for LayerSettings {
@@ -76,6 +79,7 @@ impl Default for LayerSettings {
             load: LoadSettings::default(),
             spectral: true,
             p_max: 48,
+            start: None,
         }
     }
 }
@@ -278,7 +282,7 @@ pub fn contact_checks(
     let ext = n / 2;
     let h = sol.lambda / n as f64;
     let m = n + ext;
-    let a = kernel.hat_averages(m, h);
+    let a = kernel.check_hat_averages(m, h);
     let at = |k: i64| a[(k + m as i64) as usize];
     // s(i) = Σⱼ Qⱼ[A(−j) − A(i−j)] − (iΔβ − (iΔ)²/2): the body's deflection (eq. 3.19, relative to
     // the rear edge) minus the roll's depth (eq. 3.22); the roll is above the surface where s ≥ 0.

@@ -62,10 +62,12 @@
 //! for compressible covers (README criterion table).
 //!
 //! # Speed (`cargo bench --bench layer_profile`, README covers section)
-//! A load point costs 7–12 solves at given λ: a coarse secant loop at p ≤ 16 from a closed-form
-//! guess ([`secant`]), the lumping calibration (its solve at λ reused), the degree checked against
-//! p/2 at that λ (one solve per degree), the fine secant loop to 1e−10 in N′ from the calibration's
-//! solve; the p/2 check is repeated at the λ found only when λ moved by ≥ 1e−3.
+//! A load point costs 6–11 solves at given λ: a coarse secant loop at p ≤ 16 from a closed-form
+//! guess or the caller's warm start ([`secant`], [`at_load::SpectralSettings::start`]), the solve at
+//! the calibration λ with its p/2 companion from the same columns
+//! ([`at_lambda::solve_at_lambda_pair`]), the lumping calibration, one solve per doubling of the
+//! degree, the fine secant loop to 1e−10 in N′ from the calibration's solve; the p/2 check is
+//! repeated at the λ found only when λ moved by ≥ 1e−3.
 
 pub mod at_lambda;
 pub mod at_load;
