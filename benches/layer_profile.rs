@@ -69,7 +69,11 @@ fn main() {
             let h = hr * hs.lambda;
             let nu = 0.5;
             for tol in [1e-4, 1e-6] {
-                let st = SpectralSettings { tol, p_max: 48 };
+                let st = SpectralSettings {
+                    tol,
+                    p_max: 48,
+                    start: None,
+                };
                 let (a, t) = time_it(|| {
                     solve_spectral_at_load(&terms, load, h, nu, &st)
                         .unwrap()

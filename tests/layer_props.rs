@@ -202,8 +202,18 @@ fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
         let label =
             format!("spectral case {case}: {m} terms, J∞/J_g {ratio:.3e}, h/λ {hr:.3e}, ν {nu:.3}");
         let solve = |tol: f64| {
-            solve_spectral_at_load(&terms, load, h, nu, &SpectralSettings { tol, p_max: 48 })
-                .unwrap_or_else(|e| panic!("{label}: {e}"))
+            solve_spectral_at_load(
+                &terms,
+                load,
+                h,
+                nu,
+                &SpectralSettings {
+                    tol,
+                    p_max: 48,
+                    start: None,
+                },
+            )
+            .unwrap_or_else(|e| panic!("{label}: {e}"))
         };
         let Some(a) = solve(1e-6) else {
             println!("{label}: declined (cover too thin for p ≤ 48)");

@@ -65,6 +65,9 @@ pub struct LayerSettings {
     /// Largest degree of the spectral solver's layer term (default 48; module doc of
     /// [`super::spectral`]: the switch to this scheme).
     pub p_max: usize,
+    /// Warm start of the spectral solver (λ guess, d ln N′/d ln λ), e.g. from a neighbouring map
+    /// node; [`super::spectral::SpectralSettings::start`]. Default `None`.
+    pub start: Option<(f64, f64)>,
 }
 
 impl Default for LayerSettings {
@@ -76,6 +79,7 @@ impl Default for LayerSettings {
             load: LoadSettings::default(),
             spectral: true,
             p_max: 48,
+            start: None,
         }
     }
 }

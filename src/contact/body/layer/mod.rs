@@ -91,6 +91,7 @@ pub fn layer_at_load(
         let spectral_settings = spectral::SpectralSettings {
             tol: settings.tol,
             p_max: settings.p_max,
+            start: settings.start,
         };
         match spectral::solve_spectral_at_load(terms, load, thickness, poisson, &spectral_settings)
         {

@@ -513,6 +513,7 @@ fn criterion_nu049() {
                     &SpectralSettings {
                         tol: 1e-5,
                         p_max: 160,
+                        start: None,
                     },
                 )
                 .unwrap() else {

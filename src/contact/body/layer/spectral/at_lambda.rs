@@ -327,10 +327,19 @@ mod tests {
         )
         .unwrap();
         for tol in [1e-4, 1e-6, 1e-8] {
-            let s =
-                solve_spectral_at_load(&terms, load, h, nu, &SpectralSettings { tol, p_max: 96 })
-                    .unwrap()
-                    .unwrap();
+            let s = solve_spectral_at_load(
+                &terms,
+                load,
+                h,
+                nu,
+                &SpectralSettings {
+                    tol,
+                    p_max: 96,
+                    start: None,
+                },
+            )
+            .unwrap()
+            .unwrap();
             eprintln!(
                 "tol {tol}: λ {} F {} est {:.1e} iters {} p {} warn {:?} | hat λ {} F {} est {:.1e}",
                 s.solution.lambda,
@@ -343,6 +352,46 @@ mod tests {
                 hat.solution.friction_rho,
                 hat.error_estimate
             );
+        }
+    }
+
+    #[test]
+    fn warm_start_gives_the_same_answer() {
+        use super::super::at_load::{solve_spectral_at_load, SpectralSettings};
+        let terms = vec![CreepTerm { f: 3.0, b: 0.5 }, CreepTerm { f: 20.0, b: 4.0 }];
+        let (load, h, nu) = (0.1, 0.3, 0.3);
+        for tol in [1e-4, 1e-6] {
+            let st = |start| SpectralSettings {
+                tol,
+                p_max: 96,
+                start,
+            };
+            let cold = solve_spectral_at_load(&terms, load, h, nu, &st(None))
+                .unwrap()
+                .unwrap();
+            // an unusable hint is ignored: the cold solve, bit for bit
+            let bad = solve_spectral_at_load(&terms, load, h, nu, &st(Some((-1.0, 2.0))))
+                .unwrap()
+                .unwrap();
+            assert_eq!(bad.solution, cold.solution);
+            // a hint 2 % off (a neighbouring node), with and without its slope: the same answer
+            // within the loops' stop (N′ to 1e−10, so λ to ~1e−10 and ρF/N to ~1e−9; 1e−8 allowed)
+            for slope in [f64::NAN, 2.2] {
+                let lam = 1.02 * cold.solution.lambda;
+                let warm = solve_spectral_at_load(&terms, load, h, nu, &st(Some((lam, slope))))
+                    .unwrap()
+                    .unwrap();
+                let c = &cold.solution;
+                let w = &warm.solution;
+                assert!(
+                    (w.lambda / c.lambda - 1.0).abs() < 1e-8,
+                    "{} vs {}",
+                    w.lambda,
+                    c.lambda
+                );
+                assert!((w.friction_rho / c.friction_rho - 1.0).abs() < 1e-8);
+                assert!(warm.error_estimate <= tol);
+            }
         }
     }
 }

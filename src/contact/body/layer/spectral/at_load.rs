@@ -29,6 +29,12 @@ pub struct SpectralSettings {
     /// Largest degree p of the layer term (module doc of [`super`]: p ≈ 0.5·log₁₀(1/tol)·L/h′ is
     /// needed, so this caps L/h′ at about 2·p_max/log₁₀(1/tol)). Default 96.
     pub p_max: usize,
+    /// Warm start: (λ guess, d ln N′/d ln λ there), e.g. a neighbouring map node's answer, in place
+    /// of the closed-form guess of [`super::secant::start_guess`]. A slope that is not finite or
+    /// outside [0.5, 5] is replaced by the closed-form guess's; a λ that is not finite and > 0 is
+    /// ignored. The answer does not depend on it beyond the load loops' stopping tolerances. Default
+    /// `None`.
+    pub start: Option<(f64, f64)>,
 }
 
 impl Default for SpectralSettings {
@@ -36,6 +42,7 @@ impl Default for SpectralSettings {
         Self {
             tol: 1e-4,
             p_max: 96,
+            start: None,
         }
     }
 }
@@ -365,7 +372,7 @@ pub fn solve_spectral_at_load(
     // guess (module [`super::secant`]) to N′ within 1e−4 (λ to ≤ 2e−4, d ln N′/d ln λ ≥ ½); the
     // bracketed Brent loop from a cold bracket if the secant fails
     let (c, mut iterations, mut slope, (gf, gn)) =
-        pb.coarse(tol, start_guess(terms, load, thickness, nu))?;
+        pb.coarse(tol, warm_start(settings.start, terms, load, thickness, nu))?;
     let mut lam = c.lambda;
     let mut fr_over_l = c.friction_rho / lam;
     let mut warnings = Vec::new();
@@ -437,6 +444,27 @@ pub fn solve_spectral_at_load(
         fr_over_l = fr / lambda;
     }
     unreachable!("the round loop returns at round 2")
+}
+
+/// The start of the coarse loop: the caller's hint where it is usable, else (and for its slope when
+/// that is unusable) the closed-form guess ([`SpectralSettings::start`]).
+fn warm_start(
+    hint: Option<(f64, f64)>,
+    terms: &[CreepTerm],
+    load: f64,
+    thickness: f64,
+    nu: f64,
+) -> (f64, f64) {
+    match hint {
+        Some((lam, slope)) if lam.is_finite() && lam > 0.0 => {
+            if slope.is_finite() && (0.5..=5.0).contains(&slope) {
+                (lam, slope)
+            } else {
+                (lam, start_guess(terms, load, thickness, nu).1)
+            }
+        }
+        _ => start_guess(terms, load, thickness, nu),
+    }
 }
 
 /// Step 3: the degree-p solution `at_p` at λ checked against p/2, p doubled until it passes (or
