@@ -142,7 +142,8 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
         for f in files.iter().take(k) {
             let name = f.file_stem().and_then(|s| s.to_str()).unwrap_or("c");
             let c0 = cpu_s();
-            let m = viscoroll::dma::read_files(&[f.clone()], &Default::default()).expect("reads");
+            let m = viscoroll::dma::read_files(std::slice::from_ref(f), &Default::default())
+                .expect("reads");
             let (mut fit, master) =
                 viscoroll::pipeline::fit_compound::fit_measurement_master(name, &m, &opts.fit)
                     .expect("fits");

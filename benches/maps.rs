@@ -137,10 +137,7 @@ fn covered(name: &str, creep: &viscoroll::CreepSpectrum, queries: &[MapQuery]) -
         let t0 = Instant::now();
         problem.node(x, y, 0.1 * tol).expect("node solves");
         let node = t0.elapsed().as_secs_f64();
-        let settings = MapSettings {
-            tol,
-            ..MapSettings::default()
-        };
+        let settings = MapSettings::covered(tol);
         let t0 = Instant::now();
         let (_, s) = covered_map(&problem, queries, &settings).expect("covered map builds");
         let time = t0.elapsed().as_secs_f64();
@@ -156,7 +153,7 @@ fn covered(name: &str, creep: &viscoroll::CreepSpectrum, queries: &[MapQuery]) -
             shapes.join(", "),
             s.error_estimate,
             s.interpolation_estimate,
-            s.node_estimate,
+            s.node_error_bound,
             node * 1e3
         ));
     }
