@@ -282,7 +282,7 @@ pub fn contact_checks(
     let ext = n / 2;
     let h = sol.lambda / n as f64;
     let m = n + ext;
-    let a = kernel.hat_averages(m, h);
+    let a = kernel.check_hat_averages(m, h);
     let at = |k: i64| a[(k + m as i64) as usize];
     // s(i) = Σⱼ Qⱼ[A(−j) − A(i−j)] − (iΔβ − (iΔ)²/2): the body's deflection (eq. 3.19, relative to
     // the rear edge) minus the roll's depth (eq. 3.22); the roll is above the surface where s ≥ 0.

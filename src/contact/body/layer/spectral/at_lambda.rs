@@ -38,7 +38,8 @@ pub fn solve_at_lambda(
 
     // the layer term of every column
     let lt = LayerTerm::new(modes, l, thickness, nu, p);
-    let g: Vec<Vec<f64>> = cols.iter().map(|col| lt.apply(&col.h)).collect();
+    let hs: Vec<&[f64]> = cols.iter().map(|col| col.h.as_slice()).collect();
+    let g = lt.apply_all(&hs);
 
     let (a, r) = system(&cols, &gexp, &g, n, p, l);
     let x = solve_equilibrated(a, r);

@@ -31,12 +31,27 @@
 //! J_{k+1} oscillates slower; the Gauss error for e^{iωx} with ω = 4 on 16 nodes is ~(eω/64)^{32}
 //! < 1e−20). At a node κ only orders k + 1 ≤ min(κ + 12κ^{1/3} + 30, n with (κ/2)ⁿ/n! < 1e−22)
 //! carry weight (J_n(κ) < 1e−20
-//! //! beyond), which keeps the log region cheap. J_n by Miller's backward recurrence normalised by
+//! beyond), which keeps the log region cheap. J_n by Miller's backward recurrence normalised by
 //! J₀ + 2ΣJ₂ₖ = 1 (A&S 9.1.46, 9.12).
+//!
+//! # Evaluation: two matrix products
+//! With wₙ the weights at the nodes κₙ, Φₙ = pr + i·pi and vₙₖ = πwₙ(k+1)J_{k+1}(κₙ), the factor
+//! (−i)^k is real for even k (c = ±v) and imaginary for odd k (c = iγ, γ = ∓v), so
+//!
+//! ```text
+//!   even k: G_k(t) = Σₙ cₙₖ (pr sin κₙt + pi cos κₙt),   odd k: G_k(t) = Σₙ γₙₖ (pr cos κₙt − pi sin κₙt),
+//! ```
+//!
+//! and at the mirrored Lobatto point −t only the sign of the sine parts changes. The values at the
+//! p + 1 points are therefore [pr sin; pi cos]·C_even and [pr cos; pi sin]·Γ_odd at the points
+//! t ≥ 0 (two products of (p + 2) × nodes by nodes × n_J/2, SIMD matrix multiplication), the
+//! Chebyshev coefficients a DCT-I matrix times those values, and G for all columns of the solve one
+//! more product ([`LayerTerm::apply_all`]).
 
 use crate::contact::body::half_space::modes::Modes;
 use crate::contact::body::layer::compliance::layer_defect;
 use crate::special::gauss_legendre::gauss_legendre;
+use nalgebra::DMatrix;
 use std::f64::consts::PI;
 
 /// R(t) < 2e−15 beyond t = κh′/L = 20 ((4t²/κ)e^{−2t}, module doc of `compliance`).
@@ -44,24 +59,59 @@ const T_MAX: f64 = 20.0;
 
 /// J₀…J_nmax at x > 0 (Miller's backward recurrence, normalised by J₀ + 2ΣJ₂ₖ = 1).
 pub fn bessel_j(x: f64, nmax: usize) -> Vec<f64> {
-    let top = nmax as f64 + x;
-    let start = 2 * ((top + 20.0 + (40.0 * top).sqrt()) as usize / 2 + 1);
-    let mut j = vec![0.0; start + 2];
-    j[start] = 1e-30;
-    let mut norm_scale = 1.0;
+    let mut out = [Vec::new()];
+    bessel_j_lanes(&[x], nmax, &mut out);
+    let [j] = out;
+    j
+}
+
+/// Lanes of [`bessel_j_lanes`]: independent recurrences run side by side, so that their
+/// multiply-add chains overlap (one recurrence alone waits on each step's latency).
+pub const LANES: usize = 4;
+
+/// [`bessel_j`] at up to [`LANES`] points at once: `out[q]` = J₀…J_nmax at `xs[q]`. Each lane starts
+/// at the highest start the lanes need (a higher start only makes Miller's algorithm more accurate).
+pub fn bessel_j_lanes(xs: &[f64], nmax: usize, out: &mut [Vec<f64>]) {
+    let w = xs.len().min(LANES).min(out.len());
+    let start = xs[..w]
+        .iter()
+        .map(|&x| {
+            let top = nmax as f64 + x;
+            2 * ((top + 20.0 + (40.0 * top).sqrt()) as usize / 2 + 1)
+        })
+        .max()
+        .unwrap_or(2);
+    let mut tox = [0.0; LANES];
+    for (t, &x) in tox.iter_mut().zip(&xs[..w]) {
+        *t = 2.0 / x;
+    }
+    let mut j = vec![[0.0_f64; LANES]; start + 2];
+    j[start] = [1e-30; LANES];
     for k in (1..=start).rev() {
-        j[k - 1] = 2.0 * k as f64 / x * j[k] - j[k + 1];
-        if j[k - 1].abs() > 1e250 {
-            for v in j[k - 1..].iter_mut() {
-                *v *= 1e-250;
+        let kf = k as f64;
+        let (lo, hi) = j.split_at_mut(k);
+        let (jk, jk1) = (hi[0], hi[1]);
+        let mut big = false;
+        for q in 0..LANES {
+            let v = kf * tox[q] * jk[q] - jk1[q];
+            lo[k - 1][q] = v;
+            big |= v.abs() > 1e250;
+        }
+        if big {
+            for row in j[k - 1..].iter_mut() {
+                for (q, v) in row.iter_mut().enumerate() {
+                    if q < w {
+                        *v *= 1e-250;
+                    }
+                }
             }
-            norm_scale *= 1e-250;
         }
     }
-    let _ = norm_scale;
-    let norm = j[0] + 2.0 * j.iter().skip(2).step_by(2).sum::<f64>();
-    j.truncate(nmax + 1);
-    j.iter().map(|v| v / norm).collect()
+    for (q, o) in out[..w].iter_mut().enumerate() {
+        let norm = j[0][q] + 2.0 * j.iter().skip(2).step_by(2).map(|r| r[q]).sum::<f64>();
+        o.clear();
+        o.extend(j[..=nmax].iter().map(|r| r[q] / norm));
+    }
 }
 
 /// Number of pressure coefficients the layer term sees at κ_hi (module doc).
@@ -73,7 +123,7 @@ pub fn orders_needed(kappa_hi: f64) -> usize {
 #[derive(Debug, Clone)]
 pub struct LayerTerm {
     /// (p + 1) × n_J.
-    pub coef: Vec<Vec<f64>>,
+    pub coef: DMatrix<f64>,
     /// Number of pressure orders n_J.
     pub orders: usize,
 }
@@ -178,13 +228,41 @@ impl LayerTerm {
         let h_over_l = thickness / l;
         let kappa_hi = (T_MAX / h_over_l).min(T_MAX * (2.0 * p as f64).max(200.0));
         let orders = orders_needed(kappa_hi);
-        let ts: Vec<f64> = (0..=p).map(|i| (PI * i as f64 / p as f64).cos()).collect();
-        // values[l][k]: G at Lobatto point l for a_k = 1
-        let mut values = vec![vec![0.0; orders]; p + 1];
-        let mut je_re = vec![0.0; orders];
-        let mut je_im = vec![0.0; orders];
-        let mut sc = vec![(0.0, 0.0); p + 1];
-        for (kappa, w) in nodes(rule, kappa_hi, h_over_l, nu) {
+        let nodes = nodes(rule, kappa_hi, h_over_l, nu);
+        let nn = nodes.len();
+        // (module doc, "Evaluation") rows i = 0…p/2 of the Lobatto points t_i = cos(πi/p) ≥ 0; the
+        // mirrored rows p − i follow from the parity of sin and cos
+        let half = p / 2;
+        let ts: Vec<f64> = (0..=half)
+            .map(|i| (PI * i as f64 / p as f64).cos())
+            .collect();
+        let (ne, no) = (orders.div_ceil(2), orders / 2);
+        // B_even[n][k/2] = c_{n,k}, B_odd[n][(k−1)/2] = γ_{n,k}; left factors [pr·sin; pi·cos] and
+        // [pr·cos; pi·sin] at the half rows
+        let mut b_even = DMatrix::<f64>::zeros(nn, ne);
+        let mut b_odd = DMatrix::<f64>::zeros(nn, no);
+        let mut left_e = DMatrix::<f64>::zeros(2 * (half + 1), nn);
+        let mut left_o = DMatrix::<f64>::zeros(2 * (half + 1), nn);
+        // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there), and for small κ
+        // far fewer: J_{k+1}(κ) ≤ (κ/2)^{k+1}/(k+1)!
+        let wanted: Vec<usize> = nodes
+            .iter()
+            .map(|&(kappa, _)| {
+                orders_needed(kappa)
+                    .min(orders)
+                    .min(small_kappa_orders(kappa))
+            })
+            .collect();
+        let mut js: Vec<Vec<f64>> = vec![Vec::new(); nn];
+        for (chunk, (jc, wc)) in nodes
+            .chunks(LANES)
+            .zip(js.chunks_mut(LANES).zip(wanted.chunks(LANES)))
+        {
+            let xs: Vec<f64> = chunk.iter().map(|&(k, _)| k).collect();
+            let nmax = wc.iter().copied().max().unwrap_or(1);
+            bessel_j_lanes(&xs, nmax, jc);
+        }
+        for (n, &(kappa, w)) in nodes.iter().enumerate() {
             // Φ(κ/L)
             let kk = kappa / l;
             let (mut pr, mut pi) = (1.0, 0.0);
@@ -193,78 +271,75 @@ impl LayerTerm {
                 pr += f * b / d;
                 pi += f * kk / d;
             }
-            // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there), and for
-            // small κ far fewer: J_{k+1}(κ) ≤ (κ/2)^{k+1}/(k+1)!
-            let mut used = orders_needed(kappa)
-                .min(orders)
-                .min(small_kappa_orders(kappa));
-            let j = bessel_j(kappa, used);
+            let mut used = wanted[n];
+            let j = &js[n];
             while used > 1 && j[used].abs() < 1e-22 {
                 used -= 1;
             }
+            let ww = PI * w;
             // (k+1)(−i)^k J_{k+1}: (−i)^k = 1, −i, −1, i
             for k in 0..used {
-                let v = (k + 1) as f64 * j[k + 1];
-                let (r, i) = match k % 4 {
-                    0 => (v, 0.0),
-                    1 => (0.0, -v),
-                    2 => (-v, 0.0),
-                    _ => (0.0, v),
-                };
-                // times Φ
-                je_re[k] = pr * r - pi * i;
-                je_im[k] = pr * i + pi * r;
-            }
-            // the Lobatto points are symmetric, t_{p−i} = −t_i: half the sines and cosines
-            for i in 0..=p / 2 {
-                let (s, c) = (kappa * ts[i]).sin_cos();
-                sc[i] = (s, c);
-                sc[p - i] = (-s, c);
-            }
-            for (row, &(s, c)) in values.iter_mut().zip(&sc) {
-                let ww = PI * w;
-                // Im[(re + i·im)(c + i·s)] = re·s + im·c
-                let (a, b) = (ww * s, ww * c);
-                for ((r, jr), ji) in row[..used].iter_mut().zip(&je_re).zip(&je_im) {
-                    *r += jr * a + ji * b;
+                let v = ww * (k + 1) as f64 * j[k + 1];
+                match k % 4 {
+                    0 => b_even[(n, k / 2)] = v,
+                    1 => b_odd[(n, k / 2)] = -v,
+                    2 => b_even[(n, k / 2)] = -v,
+                    _ => b_odd[(n, k / 2)] = v,
                 }
+            }
+            for (i, &t) in ts.iter().enumerate() {
+                let (sn, cs) = (kappa * t).sin_cos();
+                left_e[(i, n)] = pr * sn;
+                left_e[(half + 1 + i, n)] = pi * cs;
+                left_o[(i, n)] = pr * cs;
+                left_o[(half + 1 + i, n)] = pi * sn;
+            }
+        }
+        let xe = &left_e * &b_even;
+        let xo = &left_o * &b_odd;
+        // values[l][k]: G at Lobatto point l for a_k = 1
+        let mut values = DMatrix::<f64>::zeros(p + 1, orders);
+        for i in 0..=half {
+            for k in 0..orders {
+                let (plus, minus) = if k % 2 == 0 {
+                    let (x1, x2) = (xe[(i, k / 2)], xe[(half + 1 + i, k / 2)]);
+                    (x2 + x1, x2 - x1)
+                } else {
+                    let (x3, x4) = (xo[(i, k / 2)], xo[(half + 1 + i, k / 2)]);
+                    (x3 - x4, x3 + x4)
+                };
+                values[(i, k)] = plus;
+                values[(p - i, k)] = minus;
             }
         }
         // Chebyshev coefficients of the interpolant (DCT-I at the Lobatto points, as
         // `special::chebyshev::lobatto_coefficients`, with its (p+1)² cosines computed once)
-        let dct: Vec<Vec<f64>> = (0..=p)
-            .map(|m| {
-                let edge = if m == 0 || m == p { 0.5 } else { 1.0 };
-                (0..=p)
-                    .map(|i| {
-                        let w = if i == 0 || i == p { 0.5 } else { 1.0 };
-                        edge * w * 2.0 / p as f64 * (PI * (m * i) as f64 / p as f64).cos()
-                    })
-                    .collect()
-            })
-            .collect();
-        let mut coef = vec![vec![0.0; orders]; p + 1];
-        for (crow, drow) in coef.iter_mut().zip(&dct) {
-            for (&d, vrow) in drow.iter().zip(&values) {
-                for (c, v) in crow.iter_mut().zip(vrow) {
-                    *c += d * v;
-                }
-            }
+        let dct = DMatrix::<f64>::from_fn(p + 1, p + 1, |m, i| {
+            let edge = if m == 0 || m == p { 0.5 } else { 1.0 };
+            let w = if i == 0 || i == p { 0.5 } else { 1.0 };
+            edge * w * 2.0 / p as f64 * (PI * (m * i) as f64 / p as f64).cos()
+        });
+        LayerTerm {
+            coef: dct * values,
+            orders,
         }
-        LayerTerm { coef, orders }
+    }
+
+    /// Chebyshev coefficients g_m of G for each column's H̃ coefficients (a_k = h_{k+1}), by one
+    /// matrix product.
+    pub fn apply_all(&self, hs: &[&[f64]]) -> Vec<Vec<f64>> {
+        let h = DMatrix::<f64>::from_fn(self.orders, hs.len(), |k, c| {
+            hs[c].get(k + 1).copied().unwrap_or(0.0)
+        });
+        let g = &self.coef * h;
+        g.column_iter()
+            .map(|c| c.iter().copied().collect())
+            .collect()
     }
 
     /// Chebyshev coefficients g_m of G for the H̃ coefficients `h` (a_k = h_{k+1}).
     pub fn apply(&self, h: &[f64]) -> Vec<f64> {
-        self.coef
-            .iter()
-            .map(|row| {
-                row.iter()
-                    .zip(h.iter().skip(1))
-                    .map(|(g, a)| g * a)
-                    .sum::<f64>()
-            })
-            .collect()
+        self.apply_all(&[h]).swap_remove(0)
     }
 }
 
@@ -314,18 +389,12 @@ mod quadrature_tests {
                     lo: 1e-3 * prod.lo,
                 };
                 let slow = LayerTerm::with_rule(&m, l, h, 0.4, 16, dense);
-                let big = slow
-                    .coef
-                    .iter()
-                    .flatten()
-                    .fold(0.0_f64, |a, v| a.max(v.abs()));
-                for (rf, rs) in fast.coef.iter().zip(&slow.coef) {
-                    for (a, b) in rf.iter().zip(rs) {
-                        assert!(
-                            (a - b).abs() <= 3e-12 * big,
-                            "L {l} h {h}: {a} vs {b} (largest {big})"
-                        );
-                    }
+                let big = slow.coef.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+                for (a, b) in fast.coef.iter().zip(slow.coef.iter()) {
+                    assert!(
+                        (a - b).abs() <= 3e-12 * big,
+                        "L {l} h {h}: {a} vs {b} (largest {big})"
+                    );
                 }
             }
         }
@@ -347,17 +416,13 @@ mod dct_tests {
             let col: Vec<f64> = (0..=12)
                 .map(|i| {
                     let t = (PI * i as f64 / 12.0).cos();
-                    let c: Vec<f64> = lt.coef.iter().map(|r| r[k]).collect();
+                    let c: Vec<f64> = lt.coef.column(k).iter().copied().collect();
                     crate::special::chebyshev::clenshaw(&c, t)
                 })
                 .collect();
             let again = lobatto_coefficients(&col);
-            for (a, row) in again.iter().zip(&lt.coef) {
-                assert!(
-                    (a - row[k]).abs() < 1e-12 * (1.0 + a.abs()),
-                    "{a} vs {}",
-                    row[k]
-                );
+            for (a, c) in again.iter().zip(lt.coef.column(k).iter()) {
+                assert!((a - c).abs() < 1e-12 * (1.0 + a.abs()), "{a} vs {c}");
             }
         }
     }
