@@ -29,38 +29,90 @@ pub fn solve_at_lambda(
     p: usize,
     step: f64,
 ) -> LambdaSolution {
-    let l = 0.5 * lambda;
-    let n = modes.len();
-    let c: Vec<f64> = modes.b.iter().map(|b| b * l).collect();
-    let mu: Vec<f64> = (0..n).map(|j| modes.kappa(j) * l).collect();
-    let cols = columns(modes, l, &mu, p);
-    let gexp = laplace_exterior(&c, &cols, step);
+    let prep = Prepared::new(modes, lambda, p, step);
+    let lt = LayerTerm::new(modes, prep.l, thickness, nu, p);
+    prep.solve(&lt, p)
+}
 
-    // the layer term of every column
-    let lt = LayerTerm::new(modes, l, thickness, nu, p);
-    let hs: Vec<&[f64]> = cols.iter().map(|col| col.h.as_slice()).collect();
-    let g = lt.apply_all(&hs);
+/// The solutions at degree p and p/2 (p even, ≥ 4) from one set of columns, exterior transforms
+/// and layer-term values: the p/2 system's columns are the first N + p/2 + 1 of degree p's (the
+/// Volterra columns are exact to rounding for either degree, module [`super::volterra`]) and its
+/// Lobatto points the even ones of p ([`LayerTerm::halved`]), so the p/2 solve that estimates the
+/// error of degree p costs one small linear system.
+pub fn solve_at_lambda_pair(
+    modes: &Modes,
+    lambda: f64,
+    thickness: f64,
+    nu: f64,
+    p: usize,
+    step: f64,
+) -> (LambdaSolution, LambdaSolution) {
+    let prep = Prepared::new(modes, lambda, p, step);
+    let lt = LayerTerm::new(modes, prep.l, thickness, nu, p);
+    let full = prep.solve(&lt, p);
+    let half = prep.solve(&lt.halved(), p / 2);
+    (full, half)
+}
 
-    let (a, r) = system(&cols, &gexp, &g, n, p, l);
-    let x = solve_equilibrated(a, r);
-    let ib = n + p + 1;
-    let len = cols.iter().map(|c| c.h.len()).max().unwrap_or(3).max(3);
-    let mut fcoef = vec![0.0; len];
-    for (k, col) in cols.iter().enumerate() {
-        for (f, v) in fcoef.iter_mut().zip(&col.h) {
-            *f += x[k] * v;
+/// The columns of degree p and their exterior transforms at λ.
+struct Prepared {
+    lambda: f64,
+    l: f64,
+    n: usize,
+    mu: Vec<f64>,
+    cols: Vec<Column>,
+    gexp: DMatrix<f64>,
+}
+
+impl Prepared {
+    fn new(modes: &Modes, lambda: f64, p: usize, step: f64) -> Self {
+        let l = 0.5 * lambda;
+        let n = modes.len();
+        let c: Vec<f64> = modes.b.iter().map(|b| b * l).collect();
+        let mu: Vec<f64> = (0..n).map(|j| modes.kappa(j) * l).collect();
+        let cols = columns(modes, l, &mu, p);
+        let gexp = laplace_exterior(&c, &cols, step);
+        Prepared {
+            lambda,
+            l,
+            n,
+            mu,
+            cols,
+            gexp,
         }
     }
-    fcoef[0] = 0.0;
-    let beta = x[ib];
-    let (f1, f2) = (fcoef[1], fcoef[2]);
-    LambdaSolution {
-        lambda,
-        beta,
-        load: PI * l * f1,
-        friction_rho: l - beta + l * f2 / (2.0 * f1),
-        coefficients: fcoef,
-        mu_max: mu.iter().cloned().fold(0.0, f64::max),
+
+    /// The solution at degree `q` ≤ p with the layer term `lt` of degree q: the first N + q + 1
+    /// columns.
+    fn solve(&self, lt: &LayerTerm, q: usize) -> LambdaSolution {
+        let (n, l, lambda) = (self.n, self.l, self.lambda);
+        let cols = &self.cols[..n + q + 1];
+        let gexp = self.gexp.columns(0, n + q + 1).into_owned();
+        // the layer term of every column
+        let hs: Vec<&[f64]> = cols.iter().map(|col| col.h.as_slice()).collect();
+        let g = lt.apply_all(&hs);
+
+        let (a, r) = system(cols, &gexp, &g, n, q, l);
+        let x = solve_equilibrated(a, r);
+        let ib = n + q + 1;
+        let len = cols.iter().map(|c| c.h.len()).max().unwrap_or(3).max(3);
+        let mut fcoef = vec![0.0; len];
+        for (k, col) in cols.iter().enumerate() {
+            for (f, v) in fcoef.iter_mut().zip(&col.h) {
+                *f += x[k] * v;
+            }
+        }
+        fcoef[0] = 0.0;
+        let beta = x[ib];
+        let (f1, f2) = (fcoef[1], fcoef[2]);
+        LambdaSolution {
+            lambda,
+            beta,
+            load: PI * l * f1,
+            friction_rho: l - beta + l * f2 / (2.0 * f1),
+            coefficients: fcoef,
+            mu_max: self.mu.iter().cloned().fold(0.0, f64::max),
+        }
     }
 }
 
@@ -392,6 +444,40 @@ mod tests {
                 );
                 assert!((w.friction_rho / c.friction_rho - 1.0).abs() < 1e-8);
                 assert!(warm.error_estimate <= tol);
+            }
+        }
+    }
+
+    #[test]
+    fn pair_half_is_the_half_degree_solve() {
+        // the p/2 companion of solve_at_lambda_pair (columns, transforms and layer-term values of
+        // degree p reused) against an independent solve at p/2: the same equations, so equal to
+        // rounding (the Volterra columns' truncation differs below 1e−15, module `volterra`);
+        // 1e−11 relative allowed
+        use super::solve_at_lambda_pair;
+        for (terms, h, nu) in [
+            (vec![CreepTerm { f: 10.0, b: 1.0 }], 0.3, 0.5),
+            (
+                vec![CreepTerm { f: 3.0, b: 0.5 }, CreepTerm { f: 20.0, b: 4.0 }],
+                0.1,
+                0.3,
+            ),
+        ] {
+            let m = Modes::new(&terms);
+            for p in [8, 16, 32] {
+                let (full, half) = solve_at_lambda_pair(&m, 1.0, h, nu, p, 0.4);
+                let a = solve_at_lambda(&m, 1.0, h, nu, p, 0.4);
+                let b = solve_at_lambda(&m, 1.0, h, nu, p / 2, 0.4);
+                for (x, y) in [(&full, &a), (&half, &b)] {
+                    assert!(
+                        (x.load / y.load - 1.0).abs() < 1e-11,
+                        "p {p}: {} vs {}",
+                        x.load,
+                        y.load
+                    );
+                    assert!((x.beta - y.beta).abs() < 1e-11);
+                    assert!((x.friction_rho / y.friction_rho - 1.0).abs() < 1e-11);
+                }
             }
         }
     }

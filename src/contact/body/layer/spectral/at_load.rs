@@ -7,7 +7,7 @@
 //! `layer-spectral`) or `None` when the cover is too thin for the degree cap (the caller falls back
 //! to the hat scheme and says so).
 
-use super::at_lambda::solve_at_lambda;
+use super::at_lambda::{solve_at_lambda, solve_at_lambda_pair};
 use super::secant::{bracket as secant_bracket, secant_loop, start_guess, Start};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{
@@ -80,7 +80,25 @@ fn solve_reduced(
     p: usize,
     step: f64,
 ) -> LambdaSolution {
-    let mut s = solve_at_lambda(&red.modes, lambda, h, nu, p, step);
+    unscale(red, solve_at_lambda(&red.modes, lambda, h, nu, p, step))
+}
+
+/// [`solve_reduced`] at degrees p and p/2 from one set of columns
+/// ([`super::at_lambda::solve_at_lambda_pair`]).
+fn solve_reduced_pair(
+    red: &Reduction,
+    lambda: f64,
+    h: f64,
+    nu: f64,
+    p: usize,
+    step: f64,
+) -> (LambdaSolution, LambdaSolution) {
+    let (a, b) = solve_at_lambda_pair(&red.modes, lambda, h, nu, p, step);
+    (unscale(red, a), unscale(red, b))
+}
+
+/// N′ and the coefficients of a reduced solution divided by s = 1 + Σ_lumped fᵢ/bᵢ.
+fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution {
     s.load /= red.scale;
     for c in s.coefficients.iter_mut() {
         *c /= red.scale;
@@ -229,6 +247,19 @@ impl LoadProblem<'_> {
             wl,
             g,
         )
+    }
+
+    /// [`Self::solve`] at degrees p and p/2 from one set of columns (p even).
+    fn solve_pair(
+        &self,
+        red: &Reduction,
+        lambda: f64,
+        p: usize,
+        wl: f64,
+        g: (f64, f64, f64),
+    ) -> (LambdaSolution, LambdaSolution) {
+        let (a, b) = solve_reduced_pair(red, lambda, self.thickness, self.nu, p, self.step);
+        (corrected(a, wl, g), corrected(b, wl, g))
     }
 
     /// One load loop at a fixed reduction, gains and degree, started near `near` (or cold).
@@ -384,7 +415,8 @@ pub fn solve_spectral_at_load(
             return Ok(None);
         }
         let wl = w_lambda(terms, &red);
-        let at_lam = solve_reduced(&red, lam, thickness, nu, p, step);
+        // the solve at p and its p/2 companion from the same columns (p is a multiple of 4)
+        let (at_lam, at_half) = solve_reduced_pair(&red, lam, thickness, nu, p, step);
         iterations += 1;
         let (gains, amp) = if red.lumped.is_empty() {
             ((gf, gn, 0.0), 0.0) // nothing lumped: the gains multiply W = 0
@@ -393,12 +425,13 @@ pub fn solve_spectral_at_load(
             calibrate(terms, &red, &at_lam, thickness, nu, p, step)
         };
         // 3. the degree checked against p/2 at this λ (within 2e−4 of the root), doubled until
-        // it passes: one solve per degree, and the solve at the degree kept starts the load loop
+        // it passes: one solve per degree (p/2 comes with it), and the solve at the degree kept
+        // starts the load loop
         let (at_p, p, e_pre) = degree_precheck(
             &pb,
             &red,
             lam,
-            corrected(at_lam, wl, gains),
+            (corrected(at_lam, wl, gains), corrected(at_half, wl, gains)),
             p,
             settings,
             &mut iterations,
@@ -467,26 +500,26 @@ fn warm_start(
     }
 }
 
-/// Step 3: the degree-p solution `at_p` at λ checked against p/2, p doubled until it passes (or
-/// the cap); returns the solution at the degree kept, that degree and the (ρF/N, λ) error.
+/// Step 3: the degree-p solution at λ checked against its p/2 companion (`pair`), p doubled until
+/// it passes (or the cap); returns the solution at the degree kept, that degree and the (ρF/N, λ)
+/// error.
 #[allow(clippy::too_many_arguments)]
 fn degree_precheck(
     pb: &LoadProblem,
     red: &Reduction,
     lam: f64,
-    mut at_p: LambdaSolution,
+    pair: (LambdaSolution, LambdaSolution),
     mut p: usize,
     settings: &SpectralSettings,
     iterations: &mut usize,
     (wl, gains): (f64, (f64, f64, f64)),
 ) -> (LambdaSolution, usize, (f64, f64)) {
     let tol = settings.tol;
-    let mut half = pb.solve(red, lam, p / 2, wl, gains);
-    *iterations += 1;
+    let (mut at_p, mut half) = pair;
     let mut e_pre = degree_error(&half, &at_p);
     while e_pre.0.max(e_pre.1) > 0.3 * tol && 2 * p <= settings.p_max {
         p *= 2;
-        half = std::mem::replace(&mut at_p, pb.solve(red, lam, p, wl, gains));
+        (at_p, half) = pb.solve_pair(red, lam, p, wl, gains);
         *iterations += 1;
         e_pre = degree_error(&half, &at_p);
     }

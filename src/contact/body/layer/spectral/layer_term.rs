@@ -124,6 +124,8 @@ pub fn orders_needed(kappa_hi: f64) -> usize {
 pub struct LayerTerm {
     /// (p + 1) × n_J.
     pub coef: DMatrix<f64>,
+    /// G at the p + 1 Lobatto points for a_k = 1, (p + 1) × n_J (kept for [`LayerTerm::halved`]).
+    values: DMatrix<f64>,
     /// Number of pressure orders n_J.
     pub orders: usize,
 }
@@ -191,6 +193,16 @@ fn nodes(rule: LogRule, kappa_hi: f64, thickness_over_l: f64, nu: f64) -> Vec<(f
         }
     }
     out
+}
+
+/// The DCT-I matrix from values at the p + 1 Lobatto points to Chebyshev coefficients (as
+/// `special::chebyshev::lobatto_coefficients`, with its (p+1)² cosines computed once).
+fn dct(p: usize) -> DMatrix<f64> {
+    DMatrix::<f64>::from_fn(p + 1, p + 1, |m, i| {
+        let edge = if m == 0 || m == p { 0.5 } else { 1.0 };
+        let w = if i == 0 || i == p { 0.5 } else { 1.0 };
+        edge * w * 2.0 / p as f64 * (PI * (m * i) as f64 / p as f64).cos()
+    })
 }
 
 /// Orders n ≥ 1 beyond which J_n(κ) < 1e−22 by J_n(κ) ≤ (κ/2)ⁿ/n! (for κ < 1; else `usize::MAX`).
@@ -312,16 +324,24 @@ impl LayerTerm {
                 values[(p - i, k)] = minus;
             }
         }
-        // Chebyshev coefficients of the interpolant (DCT-I at the Lobatto points, as
-        // `special::chebyshev::lobatto_coefficients`, with its (p+1)² cosines computed once)
-        let dct = DMatrix::<f64>::from_fn(p + 1, p + 1, |m, i| {
-            let edge = if m == 0 || m == p { 0.5 } else { 1.0 };
-            let w = if i == 0 || i == p { 0.5 } else { 1.0 };
-            edge * w * 2.0 / p as f64 * (PI * (m * i) as f64 / p as f64).cos()
-        });
+        // Chebyshev coefficients of the interpolant (DCT-I at the Lobatto points)
         LayerTerm {
-            coef: dct * values,
+            coef: dct(p) * &values,
+            values,
             orders,
+        }
+    }
+
+    /// The layer term of degree p/2 (p even): the Lobatto points of p/2 are the even ones of p,
+    /// t_{2i} = cos(πi/(p/2)), so only its DCT is new.
+    pub fn halved(&self) -> LayerTerm {
+        let p = self.values.nrows() - 1;
+        let q = p / 2;
+        let values = DMatrix::<f64>::from_fn(q + 1, self.orders, |i, k| self.values[(2 * i, k)]);
+        LayerTerm {
+            coef: dct(q) * &values,
+            values,
+            orders: self.orders,
         }
     }
 
