@@ -193,6 +193,110 @@ fn rear_scan_finds_the_interior_minimum_of_the_gap() {
     }
 }
 
+/// The same minimiser when the roll's lowest point β lies far behind the contact (β = −8 λ and
+/// −15 λ, beyond the last fixed offset 6 λ of the scan): the rigid profile ξβ − ξ²/2 is deepest at
+/// ξ = β, so the gap's minimum lies near the lowest point, ξ* = β + ρv′(ξ*), where the surface
+/// recovers slowly — a second contact would form there first. Checked against brute force over
+/// [−3|β|, 0) (the minimum within 1e−8 of λ²/8 and its place within 1e−3 λ) and against the
+/// geometry (ξ* within 0.5|β| of β). Surviving mutant: the points at 0.5…2.5 β not added
+/// (`rear_gap.rs`, `sol.beta < 0.0` made `== 0.0`): the scan then stopped at −6 λ, 2–9 λ short.
+#[test]
+fn rear_scan_reaches_the_lowest_point_of_the_roll_far_behind() {
+    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::half_space::modes::Modes;
+    use viscoroll::contact::half_space::rear_gap::{rear_scan, GapEvaluator};
+    use viscoroll::contact::CreepTerm;
+    let lam = 1.0;
+    let m = Modes::new(&[CreepTerm { f: 10.0, b: 0.1 }]);
+    let solved = solve_at_lambda(&m, lam, QuadratureSettings::default());
+    for beta in [-8.0, -15.0] {
+        let mut sol = solved.clone();
+        sol.beta = beta * lam;
+        let ev = GapEvaluator::new(&m, 1.0, &sol, 1e-3 * lam);
+        let (g_want, x_want) = dense_min_over(&ev, lam, 3.0 * beta.abs() * lam);
+        let s = rear_scan(&m, 1.0, &sol);
+        eprintln!(
+            "β {beta}: scan {:.12e} at {:.6} ; brute force {g_want:.12e} at {x_want:.6}",
+            s.min_gap_ratio, s.at_xi
+        );
+        assert!(
+            (x_want - sol.beta).abs() < 0.5 * sol.beta.abs(),
+            "β {beta}: the minimum at {x_want}, not near the lowest point"
+        );
+        // tolerances as in `rear_scan_finds_the_interior_minimum_of_the_gap` (golden section to
+        // ~1e−9, brute force ~1e−10 of λ²/8 relative to the gap's O(β²/λ²) size here: 1e−8 scaled)
+        let scale = g_want.abs().max(1.0);
+        assert!(
+            (s.min_gap_ratio - g_want).abs() < 1e-8 * scale,
+            "β {beta}: {} vs {g_want}",
+            s.min_gap_ratio
+        );
+        assert!(
+            (s.at_xi - x_want).abs() < 1e-3 * lam,
+            "β {beta}: at {}",
+            s.at_xi
+        );
+    }
+}
+
+/// On solved contacts (one term; β > 0 for f = 10, b = 1 and β < 0 for b = 0.1 and 0.01, the roll
+/// still descending behind the edge) the gap behind the contact is smallest next to the rear edge,
+/// where it opens like |ξ|^{3/2} (docs/MATH.md §11; the 4 877-case scan found no other minimum):
+/// `rear_scan` reports the first point, 1e−3 λ behind the edge, with the gap open, and brute force
+/// over [−6 λ, −1e−3 λ] finds nothing smaller. Surviving mutant: `k_min > 0` made `>= 0` in the
+/// refinement's guard (`rear_gap.rs`), which then takes the edge point as an interior minimum and
+/// indexes before the first point.
+#[test]
+fn rear_scan_of_a_solved_contact_finds_the_gap_smallest_at_the_rear_edge() {
+    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::half_space::modes::Modes;
+    use viscoroll::contact::half_space::rear_gap::{rear_scan, GapEvaluator};
+    use viscoroll::contact::CreepTerm;
+    let lam = 1.0;
+    for b in [1.0, 0.1, 0.01] {
+        let m = Modes::new(&[CreepTerm { f: 10.0, b }]);
+        let sol = solve_at_lambda(&m, lam, QuadratureSettings::default());
+        let ev = GapEvaluator::new(&m, 1.0, &sol, 1e-3 * lam);
+        let (g_want, x_want) = dense_min(&ev, lam);
+        let s = rear_scan(&m, 1.0, &sol);
+        eprintln!(
+            "b {b} (β {:.4}): scan {:.6e} at {} ; brute force {g_want:.6e} at {x_want}",
+            sol.beta, s.min_gap_ratio, s.at_xi
+        );
+        assert!(
+            s.min_gap_ratio > 0.0,
+            "b {b}: gap closed {}",
+            s.min_gap_ratio
+        );
+        assert_eq!(s.at_xi, -1e-3 * lam, "b {b}: minimum not at the edge");
+        // brute force samples the same function at the same edge point (and finer elsewhere)
+        assert!(
+            (s.min_gap_ratio - g_want).abs() <= 1e-12 * g_want.abs().max(1e-6),
+            "b {b}: {} vs {g_want}",
+            s.min_gap_ratio
+        );
+    }
+}
+
+/// As [`dense_min`] over ξ ∈ [−`reach`, 0): 3 000 points, then 2 000 across the best one's
+/// neighbours.
+fn dense_min_over(
+    ev: &viscoroll::contact::half_space::rear_gap::GapEvaluator,
+    lam: f64,
+    reach: f64,
+) -> (f64, f64) {
+    let scan = |a: f64, b: f64, n: usize| {
+        (0..=n)
+            .map(|i| a + (b - a) * i as f64 / n as f64)
+            .filter(|&x| x < 0.0)
+            .map(|x| (ev.gap_ratio(x), x))
+            .fold((f64::INFINITY, 0.0), |m, p| if p.0 < m.0 { p } else { m })
+    };
+    let (_, x0) = scan(-reach, -1e-3 * lam, 3000);
+    let h = reach / 3000.0;
+    scan(x0 - 2.0 * h, (x0 + 2.0 * h).min(-1e-3 * lam), 2000)
+}
+
 /// The bonded layer's kernel correction (`layer::kernel`, module doc: A_D(j) = −∫₀^∞ (R(kh′)/k)·
 /// Re[Φ(k)·Δ·(sinc²(kΔ/2)e^{ikjΔ} − 1)] dk up to one constant) against an independent composite
 /// quadrature of the differences A_D(j) − A_D(0), whose integrand R/k·Re[Φ Δ sinc² (e^{ikjΔ} − 1)]

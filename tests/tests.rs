@@ -1,4 +1,5 @@
 //! Integration tests: one binary (links once on a 2-core CI). Each file under tests/ is a module.
+mod auto_budget;
 mod auto_vs_richardson;
 mod bands_calibration;
 mod bands_cli;
@@ -12,6 +13,7 @@ mod contact_rear;
 mod contact_scene;
 mod contact_thesis;
 mod contact_thesis_vs_exact;
+mod covered_job;
 mod dma_errors;
 mod dma_formats;
 mod dma_quirks;
@@ -26,6 +28,7 @@ mod fuzz_inputs;
 mod golden_outputs;
 mod ingest_cli;
 mod known_truth;
+mod layer_degree;
 mod layer_props;
 mod master_cli;
 mod master_plateau;

@@ -1,0 +1,230 @@
+//! The main job's covered scene against direct solves (issue 19, README "Bugs they catch": F/N doubled
+//! in the covered map was caught by one unit test only). A standard linear solid (the compound's
+//! fit with its creep spectrum replaced by the exact SLS, as in `physical_units`) as a 2 mm cover
+//! bonded to a rigid carcass; `viscoroll run` writes friction.csv (each point solved by
+//! `roll_cover`, body chosen by `auto`, at `COVER_TOL` = 1e−3) and friction_map.csv /
+//! friction_map_2d.csv (the covered map: a 2-D interpolant of bonded-layer solves in s = l_g/(V·a_T)
+//! and η = h/l_g, converted back to F*/N* = φ·l_g/R and l = λ·l_g).
+//!
+//! Reference, per point: the library's `roll_cover` on the bonded layer (`ModelChoice::Layer`) at
+//! tol 1e−6 for the same scene in SI units with the spectrum shifted by that point's a_T — a direct
+//! solve through the scene conversion of `contact::scene`, none of the map's interpolation or its
+//! conversion. Tolerances from the stated ones: friction.csv 2·COVER_TOL (the solver's estimate ≤ 1e−3
+//! and, where `auto` chose a cheaper body than the layer, its model error ≤ 1e−3), the maps COVER_TOL
+//! (the covered map's error estimate, interpolation plus node solves, ≤ its tolerance 1e−3; it says
+//! so when not), plus 1e−6 for the reference and 5e−6 for a_T printed to 6 decimals of log10.
+
+use crate::reference::{rel, temp_dir, Kind, Sls};
+use crate::support::{json, viscoroll as run};
+use std::collections::HashMap;
+use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
+use viscoroll::contact::{Body, Scene};
+use viscoroll::CreepSpectrum;
+
+const COVER_TOL: f64 = 1e-3;
+const RADIUS_M: f64 = 0.1;
+const COVER_M: f64 = 2e-3;
+
+/// The SLS of `physical_units::main_job_friction_tables_and_maps_match_the_exact_sls` (the
+/// realistic compound's own law at its reference temperature): E₀ = 1 GPa, E∞ = 4 MPa, τ_r = 1 ms,
+/// ν = 0.3; its creep spectrum with every τ multiplied by `a_t`.
+fn sls(a_t: f64) -> Sls {
+    Sls {
+        kind: Kind::Tensile,
+        poisson: 0.3,
+        glassy_pa: 1e9,
+        relaxed_pa: 4e6,
+        tau_relax_s: 1e-3 * a_t,
+    }
+}
+
+/// The direct layer solve of one point: (F*/N*, contact length in m).
+fn direct(load_n_per_m: f64, speed_m_s: f64, a_t: f64) -> (f64, f64) {
+    let spectrum: CreepSpectrum = serde_json::from_str(&sls(a_t).creep_json()).expect("SLS JSON");
+    let scene = Scene {
+        radius_m: RADIUS_M,
+        load_n_per_m,
+        speed_m_s,
+        poisson: Some(0.3),
+        body: Body::HalfSpace,
+    };
+    let r = roll_cover(&scene, &spectrum, Some(COVER_M), ModelChoice::Layer, 1e-6)
+        .expect("direct layer solve");
+    assert!(
+        r.error_estimate <= 1e-6,
+        "reference estimate {}",
+        r.error_estimate
+    );
+    (r.roll.friction, r.roll.contact_length_m)
+}
+
+type Row = HashMap<String, String>;
+
+fn rows(path: &std::path::Path) -> Vec<Row> {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let head: Vec<String> = lines
+        .next()
+        .expect("header")
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    lines
+        .map(|l| {
+            head.iter()
+                .cloned()
+                .zip(l.split(',').map(str::to_string))
+                .collect()
+        })
+        .collect()
+}
+
+fn f64_of(r: &Row, k: &str) -> f64 {
+    r[k].parse().unwrap_or_else(|_| panic!("{k} = {}", r[k]))
+}
+
+#[test]
+fn covered_friction_tables_and_maps_match_direct_layer_solves() {
+    use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
+    let dir = temp_dir("covered-run");
+    let input = dir.join("in");
+    std::fs::create_dir_all(&input).unwrap();
+    let protocol = DmaProtocol {
+        temps_c: (0..=16).map(|i| -60.0 + 10.0 * i as f64).collect(),
+        ..DmaProtocol::default()
+    };
+    std::fs::write(
+        input.join("sls.csv"),
+        dma_csv(&dma_rows(&realistic_compounds()[0], &protocol)),
+    )
+    .unwrap();
+    // 100 mm roll, 2 kN/m, 0.5 m/s: on the half-space the contact would run from ~0.5 mm (glassy) to
+    // ~15 mm (relaxed); on the 2 mm cover it is 0.94–1.34 mm over −10…30 °C (measured), so `auto`
+    // solves the bonded layer at every friction.csv point; the maps move load and speed further.
+    let scenes = input.join("scenes.toml");
+    std::fs::write(
+        &scenes,
+        r#"[[scene]]
+name = "covered-sls"
+description = "exact SLS on a 2 mm cover"
+roll_radius_mm = 100.0
+load_n_per_m = 2000.0
+speed_m_s = 0.5
+poisson = 0.3
+cover_thickness_mm = 2.0
+temps_c = [-10.0, 0.0, 10.0, 20.0, 30.0]
+map_temps_c = [0.0, 20.0]
+map_speeds_m_s = [0.01, 0.1, 1.0, 10.0]
+map_loads_n_per_m = [500.0, 2000.0, 8000.0]
+"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let job = |expect: &str| {
+        let v = json(&run(&[
+            "run",
+            input.to_str().unwrap(),
+            "--scenes",
+            scenes.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--json",
+            "--no-bands",
+        ]));
+        assert!(
+            v.to_string().contains(expect),
+            "fit action {expect} expected: {v}"
+        );
+    };
+    job("fitted");
+    // the fit's creep spectrum replaced by the exact SLS at the reference temperature; the shift law
+    // stays the fit's, and each row says its a_T
+    let fit_path = out.join("fits").join("sls.json");
+    let mut fit: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&fit_path).unwrap()).unwrap();
+    let s = sls(1.0);
+    fit["creep"] = serde_json::from_str(&s.creep_json()).unwrap();
+    fit["relaxation"] = serde_json::json!({
+        "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": s.relaxed_pa,
+        "terms": [{"modulus_pa": s.glassy_pa - s.relaxed_pa, "tau_s": s.tau_relax_s}]
+    });
+    std::fs::write(&fit_path, serde_json::to_vec_pretty(&fit).unwrap()).unwrap();
+    job("reused");
+
+    let report = out.join("reports").join("sls");
+    let mut a_t = HashMap::new();
+    let mut worst = 0.0f64;
+    let mut check = |what: &str, got: f64, want: f64, allowed: f64| {
+        let e = rel(got, want).abs();
+        worst = worst.max(e);
+        assert!(
+            e <= allowed,
+            "{what}: {got} vs direct {want} ({e:.1e} > {allowed:.0e})"
+        );
+    };
+    let table = rows(&report.join("friction.csv"));
+    assert_eq!(table.len(), 5, "{table:?}");
+    for r in &table {
+        let a = 10f64.powf(f64_of(r, "log10_a_t"));
+        a_t.insert(r["temp_c"].clone(), a);
+        let (friction, length_m) = direct(2000.0, 0.5, a);
+        let model = r.get("model").cloned().unwrap_or_default();
+        let allowed = if model == "layer" { 1.0 } else { 2.0 } * COVER_TOL + 6e-6;
+        println!(
+            "friction.csv T = {}: F/N {} (direct {friction:.9e}), l {} mm (direct {:.6}), body {model:?}",
+            r["temp_c"],
+            r["friction"],
+            r["contact_length_mm"],
+            length_m * 1e3
+        );
+        check(
+            &format!("F/N at {}", r["temp_c"]),
+            f64_of(r, "friction"),
+            friction,
+            allowed,
+        );
+        check(
+            &format!("resistance at {}", r["temp_c"]),
+            f64_of(r, "resistance_n_per_m"),
+            friction * 2000.0,
+            allowed,
+        );
+        check(
+            &format!("contact length at {}", r["temp_c"]),
+            f64_of(r, "contact_length_mm") * 1e-3,
+            length_m,
+            allowed,
+        );
+    }
+    let mut map_rows = 0;
+    for (name, stride) in [("friction_map.csv", 1), ("friction_map_2d.csv", 7)] {
+        let map = rows(&report.join(name));
+        assert!(!map.is_empty(), "{name} is empty");
+        for r in map.iter().step_by(stride) {
+            let (friction, length_m) = direct(
+                f64_of(r, "load_n_per_m"),
+                f64_of(r, "speed_m_s"),
+                a_t[&r["temp_c"]],
+            );
+            let allowed = COVER_TOL + 6e-6;
+            check(
+                &format!("{name} {r:?}"),
+                f64_of(r, "friction"),
+                friction,
+                allowed,
+            );
+            if let Some(l) = r.get("contact_length_mm") {
+                check(
+                    &format!("{name} {r:?} contact length"),
+                    l.parse::<f64>().unwrap() * 1e-3,
+                    length_m,
+                    allowed,
+                );
+            }
+            map_rows += 1;
+        }
+    }
+    println!("{map_rows} map points checked; worst relative difference {worst:.1e}");
+    assert!(map_rows >= 14, "{map_rows} map points");
+    let _ = std::fs::remove_dir_all(&dir);
+}
