@@ -69,7 +69,11 @@ fn the_degree_follows_the_cover_and_meets_tol() {
         (1e-3, 0.004),
     ];
     for (tol, hr) in cases {
-        let settings = SpectralSettings { tol, p_max: 48 };
+        let settings = SpectralSettings {
+            tol,
+            p_max: 48,
+            start: None,
+        };
         let h = hr * hs.lambda;
         let a = solve_spectral_at_load(&terms, load, h, nu, &settings)
             .expect("solves")
@@ -100,6 +104,7 @@ fn the_degree_follows_the_cover_and_meets_tol() {
     let settings = SpectralSettings {
         tol: 1e-6,
         p_max: 48,
+        start: None,
     };
     let thin =
         solve_spectral_at_load(&terms, load, 1e-4 * hs.lambda, nu, &settings).expect("solves");
