@@ -5,8 +5,17 @@
 //! as `viscoroll run` runs it (every fit made: a fresh output folder), with the shipped scenes, in a
 //! 2-thread pool. Prints a table: with bands (the default) and, unless `--bands-only`, with
 //! `--no-bands`. Run: `cargo bench --bench library` (`-- --n 20` for a smaller library).
+//!
+//! `-- --profile K`: instead, the main job's stages one by one on the first K compounds of the
+//! library, in a 1-thread pool (so wall time = CPU time): master curve + fit, the bands' ensemble,
+//! and per scene the friction table, its bands and its maps (with the maps' node solves); prints
+//! the CPU seconds per compound of each (the report writing is the rest of the run's time).
 
+use std::path::Path;
 use std::time::Instant;
+use viscoroll::pipeline::scenes::{
+    friction_maps, friction_vs_temperature, pipeline_contact_settings, pipeline_map_settings,
+};
 use viscoroll::pipeline::{run_all, RunOptions};
 use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 
@@ -40,6 +49,11 @@ fn main() {
         .and_then(|v| v.parse().ok())
         .unwrap_or(100);
     let bands_only = args.iter().any(|a| a == "--bands-only");
+    let profile: Option<usize> = args
+        .iter()
+        .position(|a| a == "--profile")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|v| v.parse().ok());
     let root = std::env::temp_dir().join(format!("viscoroll-bench-library-{}", std::process::id()));
     let input = root.join("compounds");
     std::fs::create_dir_all(&input).expect("a temp folder");
@@ -58,6 +72,11 @@ fn main() {
         "library: {n} compounds written in {:.1} s",
         t0.elapsed().as_secs_f64()
     );
+    if let Some(k) = profile {
+        profile_stages(&input, &root, k.min(n));
+        let _ = std::fs::remove_dir_all(&root);
+        return;
+    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(2)
         .build()
@@ -90,4 +109,104 @@ fn main() {
         );
     }
     let _ = std::fs::remove_dir_all(&root);
+}
+
+/// The main job's stages on the first `k` compounds of `input`, one thread, CPU seconds per
+/// compound of each (module doc).
+fn profile_stages(input: &Path, root: &Path, k: usize) {
+    let opts =
+        RunOptions::for_folder(input, &root.join("out-profile"), None, None).expect("options");
+    let bs = opts.bands.clone().expect("bands on by default");
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a 1-thread pool");
+    let mut files: Vec<_> = std::fs::read_dir(input)
+        .expect("the library folder")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .collect();
+    files.sort();
+    // (stage, CPU s summed over compounds, count of solves summed)
+    let mut rows: Vec<(String, f64, usize)> = Vec::new();
+    let mut add = |name: String, t: f64, solves: usize| match rows.iter_mut().find(|r| r.0 == name)
+    {
+        Some(r) => {
+            r.1 += t;
+            r.2 += solves;
+        }
+        None => rows.push((name, t, solves)),
+    };
+    let contact = pipeline_contact_settings();
+    let map_settings = pipeline_map_settings();
+    pool.install(|| {
+        for f in files.iter().take(k) {
+            let name = f.file_stem().and_then(|s| s.to_str()).unwrap_or("c");
+            let c0 = cpu_s();
+            let m = viscoroll::dma::read_files(std::slice::from_ref(f), &Default::default())
+                .expect("reads");
+            let (mut fit, master) =
+                viscoroll::pipeline::fit_compound::fit_measurement_master(name, &m, &opts.fit)
+                    .expect("fits");
+            let c1 = cpu_s();
+            add("read + master curve + fit".into(), c1 - c0, 0);
+            fit.bands = viscoroll::bands::build_ensemble(&master, &m, &fit, &bs).ok();
+            let c2 = cpu_s();
+            add("bands: ensemble (refits)".into(), c2 - c1, 0);
+            for spec in &opts.scenes.scene {
+                let body = if spec.cover_thickness_mm.is_some() {
+                    "cover"
+                } else {
+                    "half-space"
+                };
+                let c0 = cpu_s();
+                let points = friction_vs_temperature(&fit, spec, &contact).expect("table");
+                let c1 = cpu_s();
+                add(
+                    format!("{} ({body}): friction table", spec.name),
+                    c1 - c0,
+                    points.len(),
+                );
+                if let Some(e) = fit.bands.as_ref() {
+                    let nominal: Vec<f64> = points.iter().map(|p| p.friction).collect();
+                    viscoroll::bands::scene_bands_given(
+                        &fit,
+                        e,
+                        &spec.scene(),
+                        spec.cover_thickness_mm.map(|h| h * 1e-3),
+                        &spec.temps_c,
+                        &bs,
+                        &nominal,
+                    );
+                }
+                let c2 = cpu_s();
+                add(format!("{} ({body}): bands", spec.name), c2 - c1, 0);
+                if !spec.map_temps_c.is_empty() {
+                    let maps = friction_maps(&fit, spec, &map_settings).expect("maps");
+                    add(
+                        format!("{} ({body}): maps", spec.name),
+                        cpu_s() - c2,
+                        maps.solves,
+                    );
+                }
+            }
+        }
+    });
+    println!("profile: {k} compounds, 1 thread; CPU s per compound (solves per compound)\n");
+    println!("| stage | CPU per compound (s) | solves per compound |\n|---|---:|---:|");
+    let total: f64 = rows.iter().map(|r| r.1).sum();
+    for (name, t, solves) in &rows {
+        println!(
+            "| {name} | {:.3} | {} |",
+            t / k as f64,
+            if *solves > 0 {
+                format!("{:.0}", *solves as f64 / k as f64)
+            } else {
+                String::new()
+            }
+        );
+    }
+    println!(
+        "| total (without the reports) | {:.3} | |",
+        total / k as f64
+    );
 }

@@ -297,7 +297,8 @@ struct MapSolve {
 }
 
 /// A covered scene's map values from the 2-D interpolant on the bonded layer (cover `h_mm`), at a
-/// tolerance of at least [`COVER_TOL`]. A surface that cannot be built gives no values and the
+/// tolerance of at least [`COVER_TOL`], with the covered maps' own panels and degrees
+/// ([`MapSettings::covered`]; only `settings.tol` is taken from `settings`). A surface that cannot be built gives no values and the
 /// reason in the warnings; one short of its tolerance says so.
 fn covered_values(
     creep: &crate::CreepSpectrum,
@@ -307,7 +308,7 @@ fn covered_values(
     settings: &MapSettings,
 ) -> MapSolve {
     let tol = settings.tol.max(COVER_TOL);
-    let cs = MapSettings { tol, ..*settings };
+    let cs = MapSettings::covered(tol);
     let mut out = MapSolve {
         values: None,
         error_estimate: 0.0,
@@ -327,7 +328,9 @@ fn covered_values(
                 out.warnings.push(format!(
                     "covered map: error estimate {:.1e} (interpolation {:.1e} + layer \
                      solves {:.1e}) exceeds its tolerance {tol:.0e}",
-                    surface.error_estimate, surface.interpolation_estimate, surface.node_estimate
+                    surface.error_estimate,
+                    surface.interpolation_estimate,
+                    surface.node_error_bound
                 ));
             }
             out.values = Some(v);

@@ -34,7 +34,7 @@
 use super::reduced::ReducedProblem;
 use super::surface::CoveredSurface;
 use super::{FrictionMapError, MapQuery, MapSettings, MapValue};
-use crate::contact::body::layer::{solve_cover, ModelChoice};
+use crate::contact::body::layer::{layer_at_load, LayerSettings};
 use crate::CreepSpectrum;
 use rayon::prelude::*;
 
@@ -95,17 +95,35 @@ impl CoveredProblem {
     /// Solve the dimensionless covered problem on the bonded layer at s = e^x, η = e^y (N′ = 1/4) to
     /// `tol` (the layer solver's floor applies; its warning is returned).
     pub fn node(&self, x: f64, y: f64, tol: f64) -> Result<CoveredNode, FrictionMapError> {
+        self.node_from(x, y, tol, None)
+    }
+
+    /// [`Self::node`] with the layer solver's load loop started from `start` = (λ guess,
+    /// d ln N′/d ln λ) (a neighbouring node's answer; `None`: the solver's closed-form start). The
+    /// answer does not depend on the start beyond the load loop's stopping tolerance (N′ to 1e−10).
+    pub fn node_from(
+        &self,
+        x: f64,
+        y: f64,
+        tol: f64,
+        start: Option<(f64, f64)>,
+    ) -> Result<CoveredNode, FrictionMapError> {
         let s_s = x.exp();
-        let c = solve_cover(
+        // the bonded layer as `solve_cover(…, ModelChoice::Layer, tol)` solves it
+        let settings = LayerSettings {
+            tol,
+            n_max: 512,
+            start,
+            ..LayerSettings::default()
+        };
+        let a = layer_at_load(
             &self.reduced.terms(s_s),
             0.25,
             y.exp(),
             self.poisson,
-            ModelChoice::Layer,
-            tol,
+            &settings,
         )
         .map_err(|source| FrictionMapError::Solve { s_s, source })?;
-        let a = c.answer;
         let (phi, lambda) = (a.solution.friction_rho, a.solution.lambda);
         if !(phi > 0.0 && phi.is_finite()) {
             return Err(FrictionMapError::NonPositive { s_s, phi });

@@ -50,6 +50,7 @@ mod covered;
 #[cfg(test)]
 mod covered_tests;
 mod curve;
+mod nodes;
 mod reduced;
 mod surface;
 
@@ -118,7 +119,21 @@ pub struct MapSettings {
     pub start_degree: usize,
     /// Largest degree before a panel is halved (default 32); degrees double, reusing the nodes.
     pub max_degree: usize,
+    /// Covered maps: initial panel width in y = ln η (default [`surface::ETA_PANEL_WIDTH`]).
+    pub eta_panel_width: f64,
+    /// Covered maps: starting degree in y; 0 (the default) chooses it per panel from the panel's
+    /// width and the tolerance ([`CoveredSurface`]).
+    pub eta_start_degree: usize,
+    /// Covered maps: the layer node solves' tolerance as a fraction of `tol` (default
+    /// [`COVERED_NODE_TOL_RATIO`]; the node errors enter the surface's estimate times the Lebesgue
+    /// constants, [`CoveredSurface`]).
+    pub node_tol_ratio: f64,
 }
+
+/// Default tolerance of a covered map's node solves over the map's: the spectral layer solve costs
+/// about the same at 1e−3 and 1e−6 (`cargo bench --bench maps_covered -- --nodecost`), so its
+/// error, times the Lebesgue constants (≈ 5–6), is kept small beside the interpolation's.
+pub const COVERED_NODE_TOL_RATIO: f64 = 0.01;
 
 impl Default for MapSettings {
     fn default() -> Self {
@@ -127,6 +142,23 @@ impl Default for MapSettings {
             panel_width: 4.0 * std::f64::consts::LN_10,
             start_degree: 16,
             max_degree: 32,
+            eta_panel_width: surface::ETA_PANEL_WIDTH,
+            eta_start_degree: surface::ETA_START_DEGREE,
+            node_tol_ratio: COVERED_NODE_TOL_RATIO,
+        }
+    }
+}
+
+impl MapSettings {
+    /// The settings of a covered map at `tol`: panels of four decades in s starting at degree 8 in
+    /// s (doubled to 16 and 32 reusing the nodes; measured on the shipped and synthetic compounds,
+    /// `cargo bench --bench maps`: fewer layer solves than starting at 12 or 16, or panels of 3 or
+    /// 6 decades), the degree in η chosen per panel.
+    pub fn covered(tol: f64) -> Self {
+        MapSettings {
+            tol,
+            start_degree: 8,
+            ..MapSettings::default()
         }
     }
 }
