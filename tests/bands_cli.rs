@@ -305,6 +305,16 @@ fn failed_band_replicates_are_counted_and_too_many_refuse_the_band() {
     assert!(warnings.contains(said), "ranking.csv: {warnings}");
     assert!(!mean_p05.is_empty(), "the mean's band is kept");
     assert!(sheet.contains(refits) && warnings.contains(refits));
+    // and `roll --json` on the fit file gives the same note beside its band (`bands_notes`)
+    let o = roll_idler(&fit, "20", &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["friction_p05"].is_f64(), "{v}");
+    let notes = v["bands_notes"].as_array().unwrap();
+    assert!(
+        notes.iter().any(|n| n.as_str().unwrap().contains(said)),
+        "{v}"
+    );
 
     // 9 of 32 (more than a quarter): refused, with the count and the reason, in all three places
     break_replicates(&fit, 9);
@@ -318,6 +328,11 @@ fn failed_band_replicates_are_counted_and_too_many_refuse_the_band() {
     assert!(sheet.contains(said), "datasheet");
     assert!(warnings.contains(said), "ranking.csv: {warnings}");
     assert!(mean_p05.is_empty(), "nor a band of the mean");
+    let o = roll_idler(&fit, "20", &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["friction_p05"].is_null(), "{v}");
+    assert!(v["bands_note"].as_str().unwrap().contains(said), "{v}");
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -8,7 +8,7 @@
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
 //! `rho`, `time_scale_s`, `creep`), the numerics (`scheme`, `n`, `iterations`) and the 90 %
 //! uncertainty band `friction_p05`, `friction_p50`, `friction_p95` (crate::bands: a fit file made by
-//! `viscoroll run` carries the bootstrap ensemble; otherwise null, with the reason in `bands_note`).
+//! `viscoroll run` carries the bootstrap ensemble; otherwise null, with the reason in `bands_note`), and the band's notes in `bands_notes`.
 //! With a cover (`--cover-mm`) the band is solved on the covered body as in the main job
 //! (crate::bands::scene_ratios_on, docs/MATH.md eq. 15.6); `--model winkler` (the conveyor tools'
 //! model, not the one the bands solve) has none.
@@ -67,16 +67,44 @@ pub struct Args {
     pub json: bool,
 }
 
+/// A friction band with the notes the main job gives the same point (widened beyond the measured
+/// temperatures, eq. 15.8, or frequencies, eq. 15.9; replicates that failed), or why there is none.
+pub(super) struct RollBand {
+    /// The 90 % band, or why there is none.
+    pub band: Result<crate::results::FrictionBand, String>,
+    /// The band's notes, as in friction.csv's note column.
+    pub notes: Vec<String>,
+}
+
+impl From<Result<crate::results::FrictionBand, String>> for RollBand {
+    fn from(band: Result<crate::results::FrictionBand, String>) -> Self {
+        Self {
+            band,
+            notes: Vec::new(),
+        }
+    }
+}
+
 /// The 90 % band of the friction `friction` of `scene` at `--temp-c` (crate::bands), on a cover of
 /// `cover_m` bonded to a rigid carcass (solved as the main job solves a covered scene, eq. 15.6) or
-/// on the half-space (`None`), or why there is none.
+/// on the half-space (`None`), with its notes, or why there is none.
 pub(super) fn band(
     args: &Args,
     source: &CreepSource,
     scene: &Scene,
     cover_m: Option<f64>,
     friction: f64,
-) -> Result<crate::results::FrictionBand, String> {
+) -> RollBand {
+    band_or_why(args, source, scene, cover_m, friction).unwrap_or_else(|why| Err(why).into())
+}
+
+fn band_or_why(
+    args: &Args,
+    source: &CreepSource,
+    scene: &Scene,
+    cover_m: Option<f64>,
+    friction: f64,
+) -> Result<RollBand, String> {
     if args.no_bands {
         return Err("skipped (--no-bands)".into());
     }
@@ -87,9 +115,15 @@ pub(super) fn band(
         return Err("this fit file carries no bootstrap ensemble (made by `viscoroll fit` or `run --no-bands`): `viscoroll run` on its measurement adds one".into());
     };
     let settings = crate::bands::BandSettings::default();
-    let ratios = crate::bands::scene_ratios_on(fit, ensemble, scene, cover_m, &[t], &settings);
-    crate::bands::band_of(friction, &ratios[0])
-        .ok_or_else(|| "too few replicate solves succeeded for a band".to_string())
+    let bands = crate::bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
+    let (band, notes) = bands.point_band(0, friction);
+    Ok(match band {
+        Some(b) => RollBand { band: Ok(b), notes },
+        None if notes.is_empty() => {
+            Err("too few replicate solves succeeded for a band".to_string()).into()
+        }
+        None => Err(notes.join("; ")).into(),
+    })
 }
 
 /// Run `viscoroll roll`.
@@ -163,7 +197,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 
 /// Print through the shared printer: the `auto` diagnostics in the JSON object, the dimensionless
 /// problem and the numerics in the text.
-fn print_answer(args: &Args, r: &SourceRoll, band: &Result<crate::results::FrictionBand, String>) {
+fn print_answer(args: &Args, r: &SourceRoll, band: &RollBand) {
     let (sol, shifted) = (&r.roll, &r.shift);
     let d = &sol.dimensionless;
     let mut json_extra = serde_json::Map::new();
@@ -215,12 +249,14 @@ fn print_answer(args: &Args, r: &SourceRoll, band: &Result<crate::results::Frict
     .print();
 }
 
-/// The band's JSON fields (`friction_p05`, `friction_p50`, `friction_p95`, null without one, and
-/// `bands_note`) into `json`, and its text line.
+/// The band's JSON fields (`friction_p05`, `friction_p50`, `friction_p95`, null without one,
+/// `bands_note` why there is none, and `bands_notes` what the band carries) into `json`, and its
+/// text lines.
 pub(super) fn band_fields(
-    band: &Result<crate::results::FrictionBand, String>,
+    rb: &RollBand,
     json: &mut serde_json::Map<String, serde_json::Value>,
 ) -> String {
+    let band = &rb.band;
     for (k, v) in [
         ("friction_p05", band.as_ref().ok().map(|b| b.p05)),
         ("friction_p50", band.as_ref().ok().map(|b| b.p50)),
@@ -229,11 +265,18 @@ pub(super) fn band_fields(
         json.insert(k.into(), serde_json::json!(v));
     }
     json.insert("bands_note".into(), serde_json::json!(band.as_ref().err()));
+    json.insert("bands_notes".into(), serde_json::json!(rb.notes));
     match band {
-        Ok(b) => format!(
-            "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
-            b.p05, b.p95, b.p50
-        ),
+        Ok(b) => {
+            let mut line = format!(
+                "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
+                b.p05, b.p95, b.p50
+            );
+            for n in &rb.notes {
+                line.push_str(&format!("\n  band note: {n}"));
+            }
+            line
+        }
         Err(why) => format!("friction band: none: {why}"),
     }
 }

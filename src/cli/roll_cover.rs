@@ -50,7 +50,7 @@ pub fn run(
     // The band is solved on the body the main job's bands solve (`auto`, eq. 15.6): on the cover,
     // or on the half-space when one was asked for; the uniaxial Winkler model has none.
     let band = match choice {
-        ModelChoice::Winkler => Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()),
+        ModelChoice::Winkler => Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()).into(),
         ModelChoice::HalfSpace => super::roll::band(args, source, scene, None, r.roll.friction),
         ModelChoice::Auto | ModelChoice::Layer => super::roll::band(
             args,
