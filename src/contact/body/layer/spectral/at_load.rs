@@ -73,9 +73,10 @@ fn rule_for(tol: f64) -> LaplaceRule {
 /// Bound of the relative error of N′, ρF/N and β that the Laplace `rule` causes at L/h′ = `l_over_h`:
 /// 2(1 + (L/h′)²)(e^{−π²/step} + 10·cut), measured against a dense rule over grid offsets
 /// (`laplace_rule_errors_within_their_bounds`: the step's error ~e^{−π²/step} from the strip of
-/// analyticity |Im ln σ| < π/2, the cut's ≤ cut of the row, both growing like (L/h′)² on thin
-/// covers). At the degree cap's thinnest cover (L/h′ ≈ 24 at tol 1e−4) it is 6e−6 for step 0.5 and
-/// cut 1e−10, tol/17 after the estimate's factor 3; at L/h′ ≤ 2.3 (h/λ ≥ 0.2) ≤ 4e−8.
+/// analyticity |Im ln σ| < π/2, the cut's ≤ cut of the row before the system's amplification (≤ 10
+/// measured), both growing like (L/h′)² on thin covers). At the degree cap's thinnest cover
+/// (L/h′ ≈ 24 at tol 1e−4; extrapolated, measured up to L/h′ = 5) it is 4.2e−6 for step 0.5 and cut
+/// 1e−10, tol/8 after the estimate's factor 3; at L/h′ ≤ 2.3 (h/λ ≥ 0.2) ≤ 5e−8.
 fn quadrature_bound(rule: LaplaceRule, l_over_h: f64) -> f64 {
     2.0 * (1.0 + l_over_h * l_over_h)
         * ((-std::f64::consts::PI.powi(2) / rule.step).exp() + 10.0 * rule.cut)
