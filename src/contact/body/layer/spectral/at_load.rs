@@ -7,7 +7,7 @@
 //! `layer-spectral`) or `None` when the cover is too thin for the degree cap (the caller falls back
 //! to the hat scheme and says so).
 
-use super::at_lambda::{solve_at_lambda, solve_at_lambda_pair};
+use super::at_lambda::{solve_at_lambda_pair, solve_at_lambda_rule, LaplaceRule};
 use super::secant::{bracket as secant_bracket, secant_loop, start_guess, Start};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{
@@ -51,16 +51,35 @@ impl Default for SpectralSettings {
 /// [`super::secant`]: three or four are the rule).
 const SECANT_SOLVES: usize = 12;
 
-/// Trapezoid step of the Laplace quadrature for a tolerance and its error bound (the `auto` scheme's
-/// measured rule on 1–30-term problems: errors ≤ 2e−11 at step 0.4, ~1e−15 at 0.3; three times that
-/// is added to the estimate). Step 0.6 (≤ 5e−8) is not used: a thick cover's answer is otherwise
-/// exact to ~1e−12 and the property tests compare at 1e−8.
-fn step_for(tol: f64) -> (f64, f64) {
-    if tol >= 1e-7 {
-        (0.4, 6e-11)
+/// The Laplace quadrature ([`LaplaceRule`]) for a tolerance: step 0.5 at tol ≥ 1e−4, 0.4 down to
+/// 1e−7, 0.3 below; lower cut 1e−6·tol (1e−20 below 1e−7). Its error is bounded by
+/// [`quadrature_bound`].
+fn rule_for(tol: f64) -> LaplaceRule {
+    if tol >= 1e-4 {
+        LaplaceRule {
+            step: 0.5,
+            cut: 1e-6 * tol,
+        }
+    } else if tol >= 1e-7 {
+        LaplaceRule {
+            step: 0.4,
+            cut: 1e-6 * tol,
+        }
     } else {
-        (0.3, 3e-15)
+        LaplaceRule::with_step(0.3)
     }
+}
+
+/// Bound of the relative error of N′, ρF/N and β that the Laplace `rule` causes at L/h′ = `l_over_h`:
+/// 2(1 + (L/h′)²)(e^{−π²/step} + 10·cut), measured against a dense rule over grid offsets
+/// (`laplace_rule_errors_within_their_bounds`: the step's error ~e^{−π²/step} from the strip of
+/// analyticity |Im ln σ| < π/2, the cut's ≤ cut of the row before the system's amplification (≤ 10
+/// measured), both growing like (L/h′)² on thin covers). At the degree cap's thinnest cover
+/// (L/h′ ≈ 24 at tol 1e−4; extrapolated, measured up to L/h′ = 5) it is 4.2e−6 for step 0.5 and cut
+/// 1e−10, tol/8 after the estimate's factor 3; at L/h′ ≤ 2.3 (h/λ ≥ 0.2) ≤ 5e−8.
+fn quadrature_bound(rule: LaplaceRule, l_over_h: f64) -> f64 {
+    2.0 * (1.0 + l_over_h * l_over_h)
+        * ((-std::f64::consts::PI.powi(2) / rule.step).exp() + 10.0 * rule.cut)
 }
 
 /// Degree p for a contact of half-length L on a cover h′ at `tol`: the measured convergence of the
@@ -78,9 +97,12 @@ fn solve_reduced(
     h: f64,
     nu: f64,
     p: usize,
-    step: f64,
+    rule: LaplaceRule,
 ) -> LambdaSolution {
-    unscale(red, solve_at_lambda(&red.modes, lambda, h, nu, p, step))
+    unscale(
+        red,
+        solve_at_lambda_rule(&red.modes, lambda, h, nu, p, rule),
+    )
 }
 
 /// [`solve_reduced`] at degrees p and p/2 from one set of columns
@@ -91,9 +113,9 @@ fn solve_reduced_pair(
     h: f64,
     nu: f64,
     p: usize,
-    step: f64,
+    rule: LaplaceRule,
 ) -> (LambdaSolution, LambdaSolution) {
-    let (a, b) = solve_at_lambda_pair(&red.modes, lambda, h, nu, p, step);
+    let (a, b) = solve_at_lambda_pair(&red.modes, lambda, h, nu, p, rule);
     (unscale(red, a), unscale(red, b))
 }
 
@@ -117,7 +139,7 @@ fn calibrate(
     h: f64,
     nu: f64,
     p: usize,
-    step: f64,
+    rule: LaplaceRule,
 ) -> ((f64, f64, f64), f64) {
     let lambda = sol.lambda;
     let (gf, gn) = model_gains(terms, lambda);
@@ -144,7 +166,7 @@ fn calibrate(
         terms
     };
     let w_star = lump_weight(&terms[star], lambda);
-    let with = solve_reduced(&unlump(terms, red, star), lambda, h, nu, p, step);
+    let with = solve_reduced(&unlump(terms, red, star), lambda, h, nu, p, rule);
     let g = (
         (with.friction_rho - sol.friction_rho) / lambda / w_star,
         (with.load - sol.load) / sol.load / w_star,
@@ -220,8 +242,8 @@ struct LoadProblem<'a> {
     load: f64,
     thickness: f64,
     nu: f64,
-    /// Trapezoid step of the Laplace quadrature.
-    step: f64,
+    /// The Laplace quadrature.
+    rule: LaplaceRule,
     /// s = 1 + Σ fᵢ/bᵢ of the full problem.
     s_full: f64,
     /// The secant loops' bracket in ln λ.
@@ -243,7 +265,7 @@ impl LoadProblem<'_> {
         g: (f64, f64, f64),
     ) -> LambdaSolution {
         corrected(
-            solve_reduced(red, lambda, self.thickness, self.nu, p, self.step),
+            solve_reduced(red, lambda, self.thickness, self.nu, p, self.rule),
             wl,
             g,
         )
@@ -258,7 +280,7 @@ impl LoadProblem<'_> {
         wl: f64,
         g: (f64, f64, f64),
     ) -> (LambdaSolution, LambdaSolution) {
-        let (a, b) = solve_reduced_pair(red, lambda, self.thickness, self.nu, p, self.step);
+        let (a, b) = solve_reduced_pair(red, lambda, self.thickness, self.nu, p, self.rule);
         (corrected(a, wl, g), corrected(b, wl, g))
     }
 
@@ -386,14 +408,14 @@ pub fn solve_spectral_at_load(
     positive("layer thickness h/(VT)", thickness)?;
     let kernel = LayerKernel::new(terms, thickness, nu)?; // validates the terms and ν
     let tol = settings.tol;
-    let (step, e_quad) = step_for(tol);
+    let rule = rule_for(tol);
     let s_full = 1.0 + terms.iter().map(|t| t.f / t.b).sum::<f64>();
     let pb = LoadProblem {
         terms,
         load,
         thickness,
         nu,
-        step,
+        rule,
         s_full,
         safe: secant_bracket(load, thickness, nu, s_full),
         load_settings: LoadSettings::default(),
@@ -416,13 +438,13 @@ pub fn solve_spectral_at_load(
         }
         let wl = w_lambda(terms, &red);
         // the solve at p and its p/2 companion from the same columns (p is a multiple of 4)
-        let (at_lam, at_half) = solve_reduced_pair(&red, lam, thickness, nu, p, step);
+        let (at_lam, at_half) = solve_reduced_pair(&red, lam, thickness, nu, p, rule);
         iterations += 1;
         let (gains, amp) = if red.lumped.is_empty() {
             ((gf, gn, 0.0), 0.0) // nothing lumped: the gains multiply W = 0
         } else {
             iterations += 1;
-            calibrate(terms, &red, &at_lam, thickness, nu, p, step)
+            calibrate(terms, &red, &at_lam, thickness, nu, p, rule)
         };
         // 3. the degree checked against p/2 at this λ (within 2e−4 of the root), doubled until
         // it passes: one solve per degree (p/2 comes with it), and the solve at the degree kept
@@ -453,6 +475,7 @@ pub fn solve_spectral_at_load(
         )?;
         let lambda = sol.lambda;
         let fr = sol.friction_rho;
+        let e_quad = 3.0 * quadrature_bound(rule, 0.5 * sol.lambda / thickness);
         let est = estimate(terms, &red, &sol, lam, (wl, gains, amp), e_p, e_quad);
         let next = select(
             terms,
