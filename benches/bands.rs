@@ -12,29 +12,11 @@ use viscoroll::pipeline::fit_compound::fit_measurement_master;
 use viscoroll::pipeline::{run_all, FitOptions, RunOptions};
 use viscoroll::results::SceneSet;
 
-const REPEATS: usize = 5;
+#[path = "support/cpu.rs"]
+mod cpu;
+use cpu::cpu_s;
 
-/// CPU time of this process so far (user + system, every thread), s: fields 14 and 15 of
-/// /proc/self/stat in clock ticks (100 per second on Linux); NaN where it cannot be read. Wall time
-/// on a shared machine moves with the other load; CPU time much less.
-fn cpu_s() -> f64 {
-    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
-        return f64::NAN;
-    };
-    // The command name (field 2) may hold spaces: count from the closing parenthesis.
-    let rest = stat.rsplit_once(')').map_or("", |r| r.1);
-    let f: Vec<f64> = rest
-        .split_whitespace()
-        .skip(11)
-        .take(2)
-        .filter_map(|v| v.parse().ok())
-        .collect();
-    if f.len() == 2 {
-        (f[0] + f[1]) / 100.0
-    } else {
-        f64::NAN
-    }
-}
+const REPEATS: usize = 5;
 
 fn main() {
     let pool = rayon::ThreadPoolBuilder::new()

@@ -19,26 +19,9 @@ use viscoroll::pipeline::scenes::{
 use viscoroll::pipeline::{run_all, RunOptions};
 use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 
-/// CPU time of this process so far (user + system, every thread), s, from /proc/self/stat (100
-/// ticks per second on Linux); NaN where it cannot be read. On a shared machine the wall time moves
-/// with the other load, the CPU time much less.
-fn cpu_s() -> f64 {
-    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
-        return f64::NAN;
-    };
-    let rest = stat.rsplit_once(')').map_or("", |r| r.1);
-    let f: Vec<f64> = rest
-        .split_whitespace()
-        .skip(11)
-        .take(2)
-        .filter_map(|v| v.parse().ok())
-        .collect();
-    if f.len() == 2 {
-        (f[0] + f[1]) / 100.0
-    } else {
-        f64::NAN
-    }
-}
+#[path = "support/cpu.rs"]
+mod cpu;
+use cpu::cpu_s;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

@@ -27,26 +27,9 @@ use viscoroll::contact::{roll, Body};
 use viscoroll::pipeline::scenes::pipeline_contact_settings;
 use viscoroll::pipeline::{fit_files, FitOptions};
 
-/// CPU time of this process so far (user + system, all threads), s, from /proc/self/stat (100
-/// ticks per second); NaN where it cannot be read. On a loaded machine the wall time of the
-/// 2-thread map moves with the other load; CPU / 2 is what it takes on two idle cores.
-fn cpu_s() -> f64 {
-    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
-        return f64::NAN;
-    };
-    let rest = stat.rsplit_once(')').map_or("", |r| r.1);
-    let f: Vec<f64> = rest
-        .split_whitespace()
-        .skip(11)
-        .take(2)
-        .filter_map(|v| v.parse().ok())
-        .collect();
-    if f.len() == 2 {
-        (f[0] + f[1]) / 100.0
-    } else {
-        f64::NAN
-    }
-}
+#[path = "support/cpu.rs"]
+mod cpu;
+use cpu::cpu_s;
 
 fn log_spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
     (0..n)

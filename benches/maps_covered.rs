@@ -21,6 +21,10 @@ use viscoroll::pipeline::{fit_files, fit_measurement, FitOptions};
 use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 use viscoroll::testdata::SplitMix64;
 
+#[path = "support/cpu.rs"]
+mod cpu;
+use cpu::cpu_s;
+
 fn log_spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
     (0..n)
         .map(|i| (a.ln() + (b.ln() - a.ln()) * i as f64 / (n - 1) as f64).exp())
@@ -322,16 +326,4 @@ fn main() {
             }
         }
     }
-}
-
-fn cpu_s() -> f64 {
-    let stat = std::fs::read_to_string("/proc/self/stat").unwrap();
-    let rest = stat.rsplit_once(')').unwrap().1;
-    let f: Vec<f64> = rest
-        .split_whitespace()
-        .skip(11)
-        .take(2)
-        .map(|v| v.parse().unwrap())
-        .collect();
-    (f[0] + f[1]) / 100.0
 }
