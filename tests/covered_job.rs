@@ -14,8 +14,7 @@
 //! (the covered map's error estimate, interpolation plus node solves, ≤ its tolerance 1e−3; it says
 //! so when not), plus 1e−6 for the reference and 5e−6 for a_T printed to 6 decimals of log10.
 
-use crate::reference::{rel, temp_dir, Kind, Sls};
-use crate::support::{json, viscoroll as run};
+use crate::reference::{csv_rows, job_on_sls, rel, Kind, Sls};
 use std::collections::HashMap;
 use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
 use viscoroll::contact::{Body, Scene};
@@ -60,50 +59,17 @@ fn direct(load_n_per_m: f64, speed_m_s: f64, a_t: f64) -> (f64, f64) {
 
 type Row = HashMap<String, String>;
 
-fn rows(path: &std::path::Path) -> Vec<Row> {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let head: Vec<String> = lines
-        .next()
-        .expect("header")
-        .split(',')
-        .map(str::to_string)
-        .collect();
-    lines
-        .map(|l| {
-            head.iter()
-                .cloned()
-                .zip(l.split(',').map(str::to_string))
-                .collect()
-        })
-        .collect()
-}
-
 fn f64_of(r: &Row, k: &str) -> f64 {
     r[k].parse().unwrap_or_else(|_| panic!("{k} = {}", r[k]))
 }
 
 #[test]
 fn covered_friction_tables_and_maps_match_direct_layer_solves() {
-    use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
-    let dir = temp_dir("covered-run");
-    let input = dir.join("in");
-    std::fs::create_dir_all(&input).unwrap();
-    let protocol = DmaProtocol {
-        temps_c: (0..=16).map(|i| -60.0 + 10.0 * i as f64).collect(),
-        ..DmaProtocol::default()
-    };
-    std::fs::write(
-        input.join("sls.csv"),
-        dma_csv(&dma_rows(&realistic_compounds()[0], &protocol)),
-    )
-    .unwrap();
     // 100 mm roll, 2 kN/m, 0.5 m/s: on the half-space the contact would run from ~0.5 mm (glassy) to
     // ~15 mm (relaxed); on the 2 mm cover it is 0.94–1.34 mm over −10…30 °C (measured), so `auto`
     // solves the bonded layer at every friction.csv point; the maps move load and speed further.
-    let scenes = input.join("scenes.toml");
-    std::fs::write(
-        &scenes,
+    let (dir, report) = job_on_sls(
+        "covered-run",
         r#"[[scene]]
 name = "covered-sls"
 description = "exact SLS on a 2 mm cover"
@@ -117,41 +83,9 @@ map_temps_c = [0.0, 20.0]
 map_speeds_m_s = [0.01, 0.1, 1.0, 10.0]
 map_loads_n_per_m = [500.0, 2000.0, 8000.0]
 "#,
-    )
-    .unwrap();
-    let out = dir.join("out");
-    let job = |expect: &str| {
-        let v = json(&run(&[
-            "run",
-            input.to_str().unwrap(),
-            "--scenes",
-            scenes.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--json",
-            "--no-bands",
-        ]));
-        assert!(
-            v.to_string().contains(expect),
-            "fit action {expect} expected: {v}"
-        );
-    };
-    job("fitted");
-    // the fit's creep spectrum replaced by the exact SLS at the reference temperature; the shift law
-    // stays the fit's, and each row says its a_T
-    let fit_path = out.join("fits").join("sls.json");
-    let mut fit: serde_json::Value =
-        serde_json::from_slice(&std::fs::read(&fit_path).unwrap()).unwrap();
-    let s = sls(1.0);
-    fit["creep"] = serde_json::from_str(&s.creep_json()).unwrap();
-    fit["relaxation"] = serde_json::json!({
-        "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": s.relaxed_pa,
-        "terms": [{"modulus_pa": s.glassy_pa - s.relaxed_pa, "tau_s": s.tau_relax_s}]
-    });
-    std::fs::write(&fit_path, serde_json::to_vec_pretty(&fit).unwrap()).unwrap();
-    job("reused");
-
-    let report = out.join("reports").join("sls");
+        &sls(1.0),
+        &["--no-bands"],
+    );
     let mut a_t = HashMap::new();
     let mut worst = 0.0f64;
     let mut check = |what: &str, got: f64, want: f64, allowed: f64| {
@@ -162,7 +96,7 @@ map_loads_n_per_m = [500.0, 2000.0, 8000.0]
             "{what}: {got} vs direct {want} ({e:.1e} > {allowed:.0e})"
         );
     };
-    let table = rows(&report.join("friction.csv"));
+    let table = csv_rows(&report.join("friction.csv"));
     assert_eq!(table.len(), 5, "{table:?}");
     for r in &table {
         let a = 10f64.powf(f64_of(r, "log10_a_t"));
@@ -198,7 +132,7 @@ map_loads_n_per_m = [500.0, 2000.0, 8000.0]
     }
     let mut map_rows = 0;
     for (name, stride) in [("friction_map.csv", 1), ("friction_map_2d.csv", 7)] {
-        let map = rows(&report.join(name));
+        let map = csv_rows(&report.join(name));
         assert!(!map.is_empty(), "{name} is empty");
         for r in map.iter().step_by(stride) {
             let (friction, length_m) = direct(

@@ -7,7 +7,9 @@
 //! A wrong factor anywhere between SI and the dimensionless problem (C, N′, ρ, T, the pressure
 //! scale, F/N = (ρF/N)/ρ) moves at least one of these numbers by far more than the tolerances.
 
-use crate::reference::{exact_sls, hertz, rel, temp_dir, Expected, Kind, SceneSi, Sls};
+use crate::reference::{
+    csv_rows, exact_sls, hertz, job_on_sls, rel, temp_dir, Expected, Kind, SceneSi, Sls,
+};
 use crate::support::{json, num, viscoroll as run};
 use std::path::Path;
 
@@ -239,23 +241,16 @@ fn readme_roll_example_numbers() {
 /// F/N by at most |d ln(F/N)/d ln V| ≤ 1 times that).
 #[test]
 fn main_job_friction_tables_and_maps_match_the_exact_sls() {
-    use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
-    let dir = temp_dir("si-run");
-    let input = dir.join("in");
-    std::fs::create_dir_all(&input).unwrap();
-    let compound = &realistic_compounds()[0];
-    let protocol = DmaProtocol {
-        temps_c: (0..=16).map(|i| -60.0 + 10.0 * i as f64).collect(),
-        ..DmaProtocol::default()
+    // The SLS at the fit's reference temperature: E₀ = 1 GPa, E∞ = 4 MPa, τ_r = 1 ms (τ_c = 0.25 s).
+    let sls = Sls {
+        kind: Kind::Tensile,
+        poisson: 0.3,
+        glassy_pa: 1e9,
+        relaxed_pa: 4e6,
+        tau_relax_s: 1e-3,
     };
-    std::fs::write(
-        input.join("sls.csv"),
-        dma_csv(&dma_rows(compound, &protocol)),
-    )
-    .unwrap();
-    let scenes = input.join("scenes.toml");
-    std::fs::write(
-        &scenes,
+    let (dir, report) = job_on_sls(
+        "si-run",
         r#"[[scene]]
 name = "sls"
 description = "exact SLS check"
@@ -268,63 +263,10 @@ map_temps_c = [0.0, 20.0]
 map_speeds_m_s = [0.01, 0.1, 1.0, 10.0]
 map_loads_n_per_m = [500.0, 2000.0, 8000.0]
 "#,
-    )
-    .unwrap();
-    let out = dir.join("out");
-    let job = |expect: &str| {
-        let v = json(&run(&[
-            "run",
-            input.to_str().unwrap(),
-            "--scenes",
-            scenes.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--json",
-        ]));
-        assert!(
-            v.to_string().contains(expect),
-            "fit action {expect} expected: {v}"
-        );
-    };
-    job("fitted");
-    // The SLS at the fit's reference temperature: E₀ = 1 GPa, E∞ = 4 MPa, τ_r = 1 ms (τ_c = 0.25 s).
-    let sls = Sls {
-        kind: Kind::Tensile,
-        poisson: 0.3,
-        glassy_pa: 1e9,
-        relaxed_pa: 4e6,
-        tau_relax_s: 1e-3,
-    };
-    let fit_path = out.join("fits").join("sls.json");
-    let mut fit: serde_json::Value =
-        serde_json::from_slice(&std::fs::read(&fit_path).unwrap()).unwrap();
-    fit["creep"] = serde_json::from_str(&sls.creep_json()).unwrap();
-    fit["relaxation"] = serde_json::json!({
-        "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": sls.relaxed_pa,
-        "terms": [{"modulus_pa": sls.glassy_pa - sls.relaxed_pa, "tau_s": sls.tau_relax_s}]
-    });
-    std::fs::write(&fit_path, serde_json::to_vec_pretty(&fit).unwrap()).unwrap();
-    job("reused");
-
-    let report = out.join("reports").join("sls");
-    let rows = |name: &str| -> Vec<std::collections::HashMap<String, String>> {
-        let text = std::fs::read_to_string(report.join(name)).unwrap();
-        let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-        let head: Vec<String> = lines
-            .next()
-            .unwrap()
-            .split(',')
-            .map(str::to_string)
-            .collect();
-        lines
-            .map(|l| {
-                head.iter()
-                    .cloned()
-                    .zip(l.split(',').map(str::to_string))
-                    .collect()
-            })
-            .collect()
-    };
+        &sls,
+        &[],
+    );
+    let rows = |name: &str| csv_rows(&report.join(name));
     let f64_of = |r: &std::collections::HashMap<String, String>, k: &str| -> f64 {
         r[k].parse().unwrap_or_else(|_| panic!("{k} = {}", r[k]))
     };

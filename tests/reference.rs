@@ -263,3 +263,83 @@ pub fn friction_at_length(
     let (load_r, friction_rho_r) = thesis_richardson(&creep_arg, 1.0);
     (friction_rho_r / rho, load_r / load - 1.0)
 }
+
+/// A one-compound folder through `viscoroll run`: a synthetic export of the first realistic compound
+/// (17 isotherms, −60…100 °C) named `sls`, with `scenes_toml`; then the fit file's relaxation and
+/// creep spectra replaced by `sls` and the job run again. The fit is reused (same inputs, same
+/// settings), so every friction in the reports is the SLS's, shifted by the fit's own law. `extra`:
+/// more `run` arguments. Returns (the temp folder to remove, the compound's reports folder).
+pub fn job_on_sls(
+    tag: &str,
+    scenes_toml: &str,
+    sls: &Sls,
+    extra: &[&str],
+) -> (std::path::PathBuf, std::path::PathBuf) {
+    use crate::support::{json, viscoroll};
+    use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
+    let dir = temp_dir(tag);
+    let input = dir.join("in");
+    std::fs::create_dir_all(&input).unwrap();
+    let protocol = DmaProtocol {
+        temps_c: (0..=16).map(|i| -60.0 + 10.0 * i as f64).collect(),
+        ..DmaProtocol::default()
+    };
+    std::fs::write(
+        input.join("sls.csv"),
+        dma_csv(&dma_rows(&realistic_compounds()[0], &protocol)),
+    )
+    .unwrap();
+    let scenes = input.join("scenes.toml");
+    std::fs::write(&scenes, scenes_toml).unwrap();
+    let out = dir.join("out");
+    let job = |expect: &str| {
+        let mut args = vec![
+            "run",
+            input.to_str().unwrap(),
+            "--scenes",
+            scenes.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--json",
+        ];
+        args.extend_from_slice(extra);
+        let v = json(&viscoroll(&args));
+        assert!(
+            v.to_string().contains(expect),
+            "fit action {expect} expected: {v}"
+        );
+    };
+    job("fitted");
+    let fit_path = out.join("fits").join("sls.json");
+    let mut fit: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&fit_path).unwrap()).unwrap();
+    fit["creep"] = serde_json::from_str(&sls.creep_json()).unwrap();
+    fit["relaxation"] = serde_json::json!({
+        "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": sls.relaxed_pa,
+        "terms": [{"modulus_pa": sls.glassy_pa - sls.relaxed_pa, "tau_s": sls.tau_relax_s}]
+    });
+    std::fs::write(&fit_path, serde_json::to_vec_pretty(&fit).unwrap()).unwrap();
+    job("reused");
+    let report = out.join("reports").join("sls");
+    (dir, report)
+}
+
+/// The rows of a report CSV (comment lines `#` skipped) as header → cell maps.
+pub fn csv_rows(path: &std::path::Path) -> Vec<std::collections::HashMap<String, String>> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let head: Vec<String> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    lines
+        .map(|l| {
+            head.iter()
+                .cloned()
+                .zip(l.split(',').map(str::to_string))
+                .collect()
+        })
+        .collect()
+}
