@@ -62,8 +62,8 @@ pub use friction::{
     COVER_BAND_TOL,
 };
 pub use scene::{
-    scene_bands_given, scene_bands_on, scene_ratios, scene_ratios_full_on, scene_ratios_on,
-    SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
+    scene_bands_given, scene_bands_on, scene_ratios_full_on, scene_ratios_on, SceneRatios,
+    WindowTerm, COVER_SOLVED_REPLICATES,
 };
 pub use window::{window_note, WindowExcess, WindowSide, WIDENED_NOTE_START};
 

@@ -131,19 +131,7 @@ impl SceneRatios {
 }
 
 /// Per temperature of `temps_c`, the ratio F_b/F̂ of each replicate b (NaN where a solve failed),
-/// both on the half-space of `scene` (its body is not used; [`scene_ratios_on`] with a cover solves
-/// the covered body). Parallel over (temperature, replicate).
-pub fn scene_ratios(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    temps_c: &[f64],
-    settings: &BandSettings,
-) -> Vec<Vec<f64>> {
-    scene_ratios_on(fit, ensemble, scene, None, temps_c, settings)
-}
-
-/// [`scene_ratios`] on a cover of `cover_m` bonded to a rigid carcass (eq. 15.6): each replicate's
+/// on a cover of `cover_m` bonded to a rigid carcass (eq. 15.6): each replicate's
 /// creep spectrum, shifted by its own law, through the body `auto` chooses
 /// (`roll_cover`, at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
 /// friction; `None`: the half-space at `settings.contact_tol`. On a cover, only
