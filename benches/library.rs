@@ -150,7 +150,10 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                     points.len(),
                 );
                 if let Some(e) = fit.bands.as_ref() {
-                    let nominal: Vec<f64> = points.iter().map(|p| p.friction).collect();
+                    let nominal: Vec<(f64, f64)> = points
+                        .iter()
+                        .map(|p| (p.friction, p.contact_length_mm * 1e-3))
+                        .collect();
                     viscoroll::bands::scene_bands_given(
                         &fit,
                         e,

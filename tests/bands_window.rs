@@ -9,6 +9,7 @@
 //! temperature (no eq. 15.8 term).
 
 use std::path::PathBuf;
+use viscoroll::bands::window::{measured_window_hz, RAMP_DECADES};
 use viscoroll::bands::{build_ensemble, scene_bands_on, BandSettings, SceneRatios, WindowSide};
 use viscoroll::contact::roll;
 use viscoroll::creep::relaxation_to_creep;
@@ -16,14 +17,16 @@ use viscoroll::dma::{read_files, IngestOptions};
 use viscoroll::pipeline::fit_compound::fit_measurement_master;
 use viscoroll::pipeline::scenes::{friction_vs_temperature, pipeline_contact_settings, SceneSet};
 use viscoroll::pipeline::FitOptions;
-use viscoroll::results::FrictionPoint;
-use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
+use viscoroll::results::{CompoundFit, FrictionPoint, SceneSpec};
+use viscoroll::testdata::realistic::{
+    dma_csv, dma_rows, realistic_compounds, DmaProtocol, RealisticCompound,
+};
 
 const TEMPS_C: [f64; 4] = [-40.0, -30.0, -10.0, 20.0];
 
-/// The tyre-like scene's points at [`TEMPS_C`] and their band ratios for the compound measured
-/// from `lowest_c` up, and the true friction at each point.
-fn banded(lowest_c: f64, tag: &str) -> (Vec<FrictionPoint>, SceneRatios, Vec<f64>) {
+/// nr-tread measured from `lowest_c` up (−60 … +100 °C every 5 K, seed 1), fitted with its
+/// bootstrap ensemble as the main job does, and the true compound.
+fn truncated_fit(lowest_c: f64, tag: &str) -> (CompoundFit, RealisticCompound) {
     let compound = realistic_compounds()
         .into_iter()
         .find(|c| c.name == "nr-tread")
@@ -43,14 +46,28 @@ fn banded(lowest_c: f64, tag: &str) -> (Vec<FrictionPoint>, SceneRatios, Vec<f64
     std::fs::write(&path, dma_csv(&dma_rows(&compound, &protocol))).unwrap();
     let m = read_files(&[path], &IngestOptions::default()).unwrap();
     let (mut fit, master) = fit_measurement_master("nr-tread", &m, &FitOptions::default()).unwrap();
-    let bs = BandSettings::default();
-    fit.bands = Some(build_ensemble(&master, &m, &fit, &bs).unwrap());
+    fit.bands = Some(build_ensemble(&master, &m, &fit, &BandSettings::default()).unwrap());
+    let _ = std::fs::remove_dir_all(&dir);
+    (fit, compound)
+}
+
+/// The shipped tyre-like scene at `temps_c`.
+fn tyre_like(temps_c: &[f64]) -> SceneSpec {
     let mut spec = SceneSet::shipped()
         .scene
         .into_iter()
         .find(|s| s.name == "tyre-like")
         .unwrap();
-    spec.temps_c = TEMPS_C.to_vec();
+    spec.temps_c = temps_c.to_vec();
+    spec
+}
+
+/// The tyre-like scene's points at [`TEMPS_C`] and their band ratios for the compound measured
+/// from `lowest_c` up, and the true friction at each point.
+fn banded(lowest_c: f64, tag: &str) -> (Vec<FrictionPoint>, SceneRatios, Vec<f64>) {
+    let (fit, compound) = truncated_fit(lowest_c, tag);
+    let bs = BandSettings::default();
+    let spec = tyre_like(&TEMPS_C);
     assert!(spec.cover_thickness_mm.is_none(), "a half-space scene");
     let settings = pipeline_contact_settings();
     let points = friction_vs_temperature(&fit, &spec, &settings).unwrap();
@@ -73,7 +90,6 @@ fn banded(lowest_c: f64, tag: &str) -> (Vec<FrictionPoint>, SceneRatios, Vec<f64
             roll(&spec.scene(), &c, &settings).unwrap().friction
         })
         .collect();
-    let _ = std::fs::remove_dir_all(&dir);
     (points, r, truth)
 }
 
@@ -148,7 +164,7 @@ fn a_truncated_master_curve_widens_and_flags_the_points_beyond_its_window() {
         band.p05,
         band.p95
     );
-    // inside the truncated window: no term, no note of it
+    // further inside the truncated window than the ramp's half decade: no term, no note of it
     for (i, p) in cut_pts.iter().enumerate().skip(1) {
         if cut.window[i].is_none() {
             let notes = cut.point_band(i, p.friction).1;
@@ -158,4 +174,181 @@ fn a_truncated_master_curve_widens_and_flags_the_points_beyond_its_window() {
             );
         }
     }
+}
+
+/// Δ, the decades of the reduced rolling frequency V/l·a_T above the top of the fit's measured
+/// window, from the point's contact length.
+fn decades_above(fit: &CompoundFit, spec: &SceneSpec, p: &FrictionPoint) -> f64 {
+    let (_, hi) = measured_window_hz(fit).unwrap();
+    (spec.speed_m_s / (p.contact_length_mm * 1e-3) * 10f64.powf(p.log10_a_t) / hi).log10()
+}
+
+#[test]
+fn the_window_term_has_no_step_at_the_edge_of_the_window() {
+    // nr-tread measured from −40 °C: the tyre scene's reduced rolling frequency crosses the top of
+    // the window a few kelvin above −40 °C. Find where Δ runs from +0.3 to −(RAMP + 0.2) decades
+    // on a 1 K grid, then sweep that range finely.
+    let (fit, _) = truncated_fit(-40.0, "sweep");
+    let settings = pipeline_contact_settings();
+    let coarse: Vec<f64> = (0..=30).map(|k| -40.0 + k as f64).collect();
+    let spec = tyre_like(&coarse);
+    let pts = friction_vs_temperature(&fit, &spec, &settings).unwrap();
+    let d: Vec<f64> = pts.iter().map(|p| decades_above(&fit, &spec, p)).collect();
+    println!("Δ on the coarse grid: {d:?}");
+    let first = d
+        .iter()
+        .rposition(|&x| x > 0.3)
+        .expect("a point 0.3 decades above");
+    let last = d
+        .iter()
+        .position(|&x| x < -(RAMP_DECADES + 0.2))
+        .expect("a point well inside");
+    assert!(first < last);
+    let (t0, t1) = (coarse[first], coarse[last]);
+    // the fine sweep: step h = 0.05 K
+    let h = 0.05;
+    let n = ((t1 - t0) / h).round() as usize;
+    let fine: Vec<f64> = (0..=n).map(|k| t0 + h * k as f64).collect();
+    let spec = tyre_like(&fine);
+    let pts = friction_vs_temperature(&fit, &spec, &settings).unwrap();
+    let r = scene_bands_on(
+        &fit,
+        fit.bands.as_ref().unwrap(),
+        &spec.scene(),
+        None,
+        &fine,
+        &BandSettings::default(),
+    );
+    let hw: Vec<f64> = (0..fine.len()).map(|i| half_width(&r, i, 1.0)).collect();
+    for (i, t) in fine.iter().enumerate() {
+        println!(
+            "{t:.2} °C: Δ {:+.3}, term {:?}, half-width {:.4}",
+            decades_above(&fit, &spec, &pts[i]),
+            r.window[i].as_ref().map(|w| w.s_ln.clone()),
+            hw[i]
+        );
+    }
+    let max_jump = |step: usize| {
+        hw.iter()
+            .step_by(step)
+            .zip(hw.iter().step_by(step).skip(1))
+            .map(|(a, b)| (b - a).abs())
+            .fold(0.0f64, f64::max)
+    };
+    println!(
+        "largest jump: {:.4} at 0.05 K, {:.4} at 0.1 K",
+        max_jump(1),
+        max_jump(2)
+    );
+    // The term starts half a decade inside the window and no further in (the contact lengths
+    // here are the main job's, at 1e-4 of the band's: 0.01 decade left for that at the border).
+    let mut ramped = 0;
+    for (i, p) in pts.iter().enumerate() {
+        let delta = decades_above(&fit, &spec, p);
+        if delta < -(RAMP_DECADES + 0.01) {
+            assert!(r.window[i].is_none(), "{} °C: {:?}", fine[i], r.window[i]);
+        } else if delta > -(RAMP_DECADES - 0.01) {
+            assert!(r.window[i].is_some(), "{} °C", fine[i]);
+            ramped += usize::from(delta < 0.0);
+        }
+    }
+    assert!(ramped > 10, "the sweep crosses the ramp ({ramped} points)");
+    // The term's size at the edge, s_e (the first point inside): a term switched on at full size
+    // there, as before eq. 15.9c, makes the band's log half-width step by about 1.645 s_e (the
+    // data's own half-width, 0.015 there, is small against it). The sweep's largest jump between
+    // neighbours 0.05 K apart must stay under a tenth of that ...
+    let edge = pts
+        .iter()
+        .position(|p| decades_above(&fit, &spec, p) <= 0.0)
+        .unwrap();
+    let s_e = *r.window[edge].as_ref().unwrap().s_ln.as_ref().unwrap();
+    let bound = 0.1 * 1.645 * s_e;
+    println!("s_e = {s_e:.4}, bound {bound:.4}");
+    assert!(
+        max_jump(1) < bound,
+        "largest jump {:.4} ≥ {bound:.4}",
+        max_jump(1)
+    );
+    // ... and halve when the step halves (a continuous width; a step at the edge would stay):
+    // 0.6 leaves room for the sweep's largest slope not falling on the same pair of points.
+    assert!(
+        max_jump(1) < 0.6 * max_jump(2),
+        "{} vs {}",
+        max_jump(1),
+        max_jump(2)
+    );
+}
+
+#[test]
+fn a_cover_reads_its_rolling_frequency_from_its_own_shorter_contact() {
+    // The tyre scene on a 0.5 mm cover of nr-tread measured from −40 °C: the bonded layer's contact
+    // is 2.6–2.9 mm where the half-space's is 7.4–10 mm, so V/l is 0.4–0.5 decades higher. At
+    // −28 °C the half-space's l puts the reduced rolling frequency 0.6 decades inside the window's
+    // top (no term), the cover's 0.1 inside (the ramp nearly at full weight); at −30 °C 0.25
+    // inside against 0.2 beyond.
+    let (fit, _) = truncated_fit(-40.0, "cover");
+    let settings = pipeline_contact_settings();
+    let temps = [-30.0, -28.0, -24.0];
+    let hs = tyre_like(&temps);
+    let mut cover = tyre_like(&temps);
+    cover.cover_thickness_mm = Some(0.5);
+    let p_hs = friction_vs_temperature(&fit, &hs, &settings).unwrap();
+    let p_cov = friction_vs_temperature(&fit, &cover, &settings).unwrap();
+    let d_hs: Vec<f64> = p_hs.iter().map(|p| decades_above(&fit, &hs, p)).collect();
+    let d_cov: Vec<f64> = p_cov
+        .iter()
+        .map(|p| decades_above(&fit, &cover, p))
+        .collect();
+    println!("Δ half-space {d_hs:?}, cover {d_cov:?}");
+    assert!(p_cov.iter().all(|p| p.model == "layer"), "{p_cov:?}");
+    // the premise: the two lengths put −28 °C on either side of the ramp's start, −30 °C on
+    // either side of the edge
+    assert!(d_hs[1] < -RAMP_DECADES - 0.05 && d_cov[1] > -RAMP_DECADES + 0.05);
+    assert!(d_hs[0] < 0.0 && d_cov[0] > 0.0);
+    let r = scene_bands_on(
+        &fit,
+        fit.bands.as_ref().unwrap(),
+        &cover.scene(),
+        Some(0.5e-3),
+        &temps,
+        &BandSettings::default(),
+    );
+    for (i, p) in p_cov.iter().enumerate() {
+        let (band, notes) = r.point_band(i, p.friction);
+        println!(
+            "{} °C: window {:?}, band {:?}, notes {notes:?}",
+            p.temp_c, r.window[i], band
+        );
+    }
+    // −30 and −28 °C: the term, its reduced frequency from the cover's own contact length (the
+    // band's nominal cover solve is the main job's: auto at 1e−3, so the same l to round-off)
+    for i in 0..2 {
+        let w = r.window[i].as_ref().expect("a window term on the cover");
+        assert_eq!(w.excess.side, WindowSide::High);
+        let f_cov =
+            cover.speed_m_s / (p_cov[i].contact_length_mm * 1e-3) * 10f64.powf(p_cov[i].log10_a_t);
+        assert!(
+            (w.excess.reduced_freq_hz / f_cov - 1.0).abs() < 1e-9,
+            "{} vs {f_cov}",
+            w.excess.reduced_freq_hz
+        );
+        assert!((w.excess.decades - d_cov[i]).abs() < 1e-9);
+        let s = *w.s_ln.as_ref().unwrap();
+        assert!(s > 0.0);
+        let (band, notes) = r.point_band(i, p_cov[i].friction);
+        assert!(
+            notes
+                .iter()
+                .any(|n| n.starts_with("band widened for extrapolation in frequency")),
+            "{notes:?}"
+        );
+        // the band carries the term (as in the test above: 0.6 s for the sampling error of 32)
+        let b = band.unwrap();
+        assert!((b.p95 / b.p05).ln() / 2.0 >= 0.6 * 1.645 * s);
+    }
+    // beyond the edge at −30 °C by the cover's contact, inside by the half-space's
+    assert!(r.window[0].as_ref().unwrap().excess.decades > 0.0);
+    assert!(r.window[1].as_ref().unwrap().excess.decades < 0.0);
+    // −24 °C: 0.7 decades inside even on the cover: no term
+    assert!(r.window[2].is_none(), "{:?}", r.window[2]);
 }

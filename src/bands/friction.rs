@@ -67,8 +67,7 @@ pub fn solver<'a>(
         }
         let at = shifted(c, log10_a_t);
         let f = match cover_m {
-            Some(h_m) => roll_cover(&scene, &at, Some(h_m), ModelChoice::Auto, cover_tol)
-                .map(|r| r.roll.friction),
+            Some(h_m) => cover_roll(&scene, &at, h_m, cover_tol).map(|r| r.friction),
             None => roll(&scene, &at, &cs).map(|r| r.friction),
         }
         .map_err(|e| e.to_string())?;
@@ -101,6 +100,47 @@ pub fn half_space_solve(
         &band_contact_settings(settings),
     )
     .map_err(|e| e.to_string())
+}
+
+/// The solve of [`solver`]'s cover (`auto` body at `tol`) of a spectrum already shifted.
+fn cover_roll(
+    scene: &Scene,
+    at: &CreepSpectrum,
+    cover_m: f64,
+    tol: f64,
+) -> Result<RollSolution, crate::contact::ContactError> {
+    roll_cover(scene, at, Some(cover_m), ModelChoice::Auto, tol).map(|r| r.roll)
+}
+
+/// The fit's own solve on a cover of `cover_m`, as [`solver`] solves it (its friction is the
+/// covered ratios' F̂; its contact length, the covered body's, gives the rolling frequency of
+/// eq. 15.9).
+pub fn cover_solve(
+    scene: &Scene,
+    creep: &CreepSpectrum,
+    log10_a_t: f64,
+    cover_m: f64,
+    settings: &BandSettings,
+) -> Result<RollSolution, String> {
+    let scene = Scene {
+        body: crate::contact::Body::HalfSpace,
+        ..*scene
+    };
+    if !log10_a_t.is_finite() {
+        return Err(format!("log10 a_T is not finite ({log10_a_t})"));
+    }
+    let r = cover_roll(
+        &scene,
+        &shifted(creep, log10_a_t),
+        cover_m,
+        settings.contact_tol.max(COVER_BAND_TOL),
+    )
+    .map_err(|e| e.to_string())?;
+    if r.friction.is_finite() && r.friction > 0.0 {
+        Ok(r)
+    } else {
+        Err(format!("F/N = {} is not finite and positive", r.friction))
+    }
 }
 
 /// A band is refused when more than a quarter of its replicates failed (to refit, or to solve at

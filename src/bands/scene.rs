@@ -8,12 +8,12 @@
 //! [`SceneRatios`].
 
 use super::friction::{
-    half_space_solve, predict_from_half_space, solver, tail_note, tail_term, too_many_failed,
-    Solve, COVER_BAND_TOL,
+    cover_solve, half_space_solve, predict_from_half_space, solver, tail_note, tail_term,
+    too_many_failed, Solve, COVER_BAND_TOL,
 };
 use super::window::{
-    continued_spectrum, excess, measured_window_hz, rolling_reduced_freq_hz, window_note,
-    WindowExcess, WindowSide,
+    continued_spectrum, excess, measured_window_hz, ramp_weight, rolling_reduced_freq_hz,
+    window_note, WindowExcess, WindowSide,
 };
 use super::BandSettings;
 use crate::contact::Scene;
@@ -31,8 +31,8 @@ pub const COVER_SOLVED_REPLICATES: usize = 8;
 pub struct WindowTerm {
     /// Where the point's reduced rolling frequency lies beyond the measured window.
     pub excess: WindowExcess,
-    /// |ln F(continued spectrum) − ln F(fit)| on the scene's body, or why it could not be solved
-    /// (the band is then refused).
+    /// |ln F(continued spectrum) − ln F(fit)| on the scene's body, times the ramp weight of
+    /// eq. 15.9c inside the window's edge, or why it could not be solved (the band is then refused).
     pub s_ln: Result<f64, String>,
 }
 
@@ -180,10 +180,10 @@ pub fn scene_bands_on(
     )
 }
 
-/// [`scene_bands_on`] on a cover with the nominal covered frictions already solved: `nominal[i]`
-/// the fit's friction at `temps_c[i]` on the cover by `auto` at [`COVER_BAND_TOL`] (the main job's
-/// covered points are exactly that solve: crate::pipeline's `COVER_TOL` is the same 1e−3), NaN where
-/// it failed (then solved here). Saves one layer solve per temperature. Without a cover, or with a
+/// [`scene_bands_on`] on a cover with the nominal covered solves already done: `nominal[i]` the
+/// fit's friction and contact length (m) at `temps_c[i]` on the cover by `auto` at
+/// [`COVER_BAND_TOL`] (the main job's covered points are exactly that solve: crate::pipeline's
+/// `COVER_TOL` is the same 1e−3), NaN where it failed (then solved here). Saves one layer solve per temperature. Without a cover, or with a
 /// band tolerance looser than [`COVER_BAND_TOL`], `nominal` is not used (the half-space's ratios
 /// are over the fit solved at the band tolerance, not the report's).
 pub fn scene_bands_given(
@@ -193,7 +193,7 @@ pub fn scene_bands_given(
     cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
-    nominal: &[f64],
+    nominal: &[(f64, f64)],
 ) -> SceneRatios {
     let usable = cover_m.is_some()
         && settings.contact_tol <= COVER_BAND_TOL
@@ -297,8 +297,9 @@ fn predicted(
     Some((v, first))
 }
 
-/// The frequency-window term of the point at `temp_c` (eq. 15.9): `None` inside the measured
-/// window (or without the fit's half-space solve to read its contact length from).
+/// The frequency-window term of the point at `temp_c` (eq. 15.9), weighted by the ramp of
+/// eq. 15.9c inside the edge's last half decade: `None` further inside the measured window (or
+/// without the fit's solve on the scene's body to read its contact length from).
 fn window_term(
     fit: &CompoundFit,
     scene: &Scene,
@@ -321,7 +322,7 @@ fn window_term(
             .as_ref()
             .map_err(|e| format!("the fit's own solve: {e}"))?;
         let f = solve(&creep, log10_a_t)?;
-        Ok((f / f0).ln().abs())
+        Ok(ramp_weight(ex.decades) * (f / f0).ln().abs())
     })();
     Some(WindowTerm { excess: ex, s_ln })
 }
@@ -337,7 +338,7 @@ fn bands_with(
     temps_c: &[f64],
     settings: &BandSettings,
     full: bool,
-    nominal: Option<&[f64]>,
+    nominal: Option<&[(f64, f64)]>,
 ) -> SceneRatios {
     let Some(creep) = fit.creep.as_ref() else {
         return SceneRatios::empty(temps_c.len());
@@ -347,9 +348,8 @@ fn bands_with(
     let half_space = solver(scene, None, settings);
     let covered = solver(scene, cover_m, settings);
     let law = &fit.shift_law;
-    // the fit on the half-space at the band tolerance: the half-space ratios' F̂, and its contact
-    // length the rolling frequency V/l of eq. 15.9 (on a cover too: a cover shortens l by a
-    // fraction of a decade in V/l)
+    // the fit on the half-space at the band tolerance: the half-space ratios' F̂ (and, without a
+    // cover, its contact length l for the rolling frequency V/l of eq. 15.9)
     let hs_fit: Vec<Result<(f64, f64), String>> = temps_c
         .par_iter()
         .map(|&t| {
@@ -361,18 +361,24 @@ fn bands_with(
         .iter()
         .map(|r| r.as_ref().map(|x| x.0).map_err(Clone::clone))
         .collect();
-    // the body's nominal frictions: the half-space's, or on a cover given (finite ones), else solved
-    let body_nominal: Vec<Result<f64, String>> = match cover_m {
-        None => hs_nominal.clone(),
-        Some(_) => temps_c
+    // the body's nominal friction and contact length: the half-space's, or on a cover given
+    // (finite ones), else solved; the cover's l, shorter than the half-space's, sets V/l there
+    let body_fit: Vec<Result<(f64, f64), String>> = match cover_m {
+        None => hs_fit.clone(),
+        Some(h_m) => temps_c
             .par_iter()
             .enumerate()
             .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
-                Some(&f) if f.is_finite() && f > 0.0 => Ok(f),
-                _ => covered(creep, law.log10_a_t(t)),
+                Some(&(f, l)) if f.is_finite() && f > 0.0 && l.is_finite() && l > 0.0 => Ok((f, l)),
+                _ => cover_solve(scene, creep, law.log10_a_t(t), h_m, settings)
+                    .map(|r| (r.friction, r.contact_length_m)),
             })
             .collect(),
     };
+    let body_nominal: Vec<Result<f64, String>> = body_fit
+        .iter()
+        .map(|r| r.as_ref().map(|x| x.0).map_err(Clone::clone))
+        .collect();
     let (mut ratios, first_failure): (Vec<Vec<f64>>, Vec<Option<String>>) = match cover_m {
         None => ratios_over(fit, ensemble, temps_c, &all, &half_space, &body_nominal)
             .into_iter()
@@ -419,7 +425,7 @@ fn bands_with(
         .par_iter()
         .enumerate()
         .map(|(i, &t)| {
-            let l = hs_fit[i].as_ref().ok().map(|x| x.1);
+            let l = body_fit[i].as_ref().ok().map(|x| x.1);
             window_term(fit, scene, t, l, &body_nominal[i], &covered)
         })
         .collect();

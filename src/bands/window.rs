@@ -4,9 +4,11 @@
 //! reads an extrapolated shift law (eq. 15.8).
 //!
 //! Input: a [`CompoundFit`] (its master-curve record gives the measured window, its relaxation
-//! spectrum the loss modulus at the window's edge), the point's speed, contact length and
-//! log10 a_T; output: the [`WindowExcess`] of the point and the relaxation spectrum continued
-//! beyond the edge ([`continued_spectrum`]) whose friction, against the fit's, sizes the term.
+//! spectrum the loss modulus at the window's edge), the point's speed, the contact length of the
+//! body solved (half-space or cover) and log10 a_T; output: the [`WindowExcess`] of the point (also
+//! for a point inside the window's last [`RAMP_DECADES`], where the term starts), the relaxation
+//! spectrum continued beyond the edge ([`continued_spectrum`]) whose friction, against the fit's,
+//! sizes the term, and the [`ramp_weight`] that makes the term continuous across the edge.
 
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
 use crate::results::CompoundFit;
@@ -30,7 +32,8 @@ pub struct WindowExcess {
     pub reduced_freq_hz: f64,
     /// The window's end on that side (lowest or highest master-curve reduced frequency), in Hz.
     pub edge_hz: f64,
-    /// Decades between the two, Δ > 0.
+    /// Decades beyond that end, Δ = |log10(f_red/f_edge)| beyond it, negative inside the window
+    /// (a point within [`RAMP_DECADES`] of the edge gets the term weighted by [`ramp_weight`]).
     pub decades: f64,
 }
 
@@ -38,6 +41,12 @@ pub struct WindowExcess {
 /// (eq. 15.9): E′ and E″ at ω feel the terms with ωτ within about a decade of 1, and a rolling
 /// contact spreads its strain rates over the contact length around V/l.
 pub const CONTACT_SPREAD_DECADES: f64 = 1.0;
+
+/// The term starts this many decades inside the window's edge and rises to its full size at the
+/// edge (eq. 15.9c): the last half decade is the one the edge's slope is read over, and the Prony fit
+/// there is constrained by the end isotherm's last few points only (at 4 points per decade, two or
+/// three), so the fit's spectrum already ends within it while the data barely say so.
+pub const RAMP_DECADES: f64 = 0.5;
 
 /// Continued terms per decade of relaxation time (the Prony grid's usual density; at two per decade
 /// a flat spectrum of Maxwell terms gives E″ flat to ±5 %).
@@ -75,31 +84,43 @@ pub fn rolling_reduced_freq_hz(speed_m_s: f64, contact_length_m: f64, log10_a_t:
     speed_m_s / contact_length_m * 10f64.powf(log10_a_t)
 }
 
-/// Where `reduced_freq_hz` lies beyond `window` (lowest, highest; Hz); `None` inside it or when
-/// not finite.
+/// Where `reduced_freq_hz` lies against the nearer end of `window` (lowest, highest; Hz): beyond
+/// it (Δ > 0) or inside it by less than [`RAMP_DECADES`] (−[`RAMP_DECADES`] < Δ ≤ 0); `None`
+/// further inside, or when not finite.
 pub fn excess(window: (f64, f64), reduced_freq_hz: f64) -> Option<WindowExcess> {
     if !(reduced_freq_hz.is_finite() && reduced_freq_hz > 0.0) {
         return None;
     }
     let (lo, hi) = window;
-    let (side, edge_hz) = if reduced_freq_hz > hi {
-        (WindowSide::High, hi)
-    } else if reduced_freq_hz < lo {
-        (WindowSide::Low, lo)
+    // decades beyond each end (negative inside); the nearer end, i.e. the larger Δ
+    let above = (reduced_freq_hz / hi).log10();
+    let below = (lo / reduced_freq_hz).log10();
+    let (side, edge_hz, decades) = if above >= below {
+        (WindowSide::High, hi, above)
     } else {
-        return None;
+        (WindowSide::Low, lo, below)
     };
-    Some(WindowExcess {
+    (decades.is_finite() && decades > -RAMP_DECADES).then_some(WindowExcess {
         side,
         reduced_freq_hz,
         edge_hz,
-        decades: (reduced_freq_hz / edge_hz).log10().abs(),
+        decades,
     })
 }
 
+/// The weight of the term at Δ decades beyond the edge (eq. 15.9c): 0 at Δ ≤ −[`RAMP_DECADES`],
+/// 1 at Δ ≥ 0, and between them the smooth step 3x² − 2x³ of x = (Δ + [`RAMP_DECADES`]) /
+/// [`RAMP_DECADES`], so that the band's width has neither a step nor a kink where the term starts
+/// or where it reaches its full size.
+pub fn ramp_weight(decades: f64) -> f64 {
+    let x = ((decades + RAMP_DECADES) / RAMP_DECADES).clamp(0.0, 1.0);
+    x * x * (3.0 - 2.0 * x)
+}
+
 /// The fit's spectrum continued beyond the window's edge (eq. 15.9): relaxation terms over
-/// D = Δ + [`CONTACT_SPREAD_DECADES`] decades of τ past the edge time τ_e = 1/(2π f_edge), at
-/// [`TERMS_PER_DECADE`], with the spectrum the data show at the edge continued: its density
+/// D = max(Δ, 0) + [`CONTACT_SPREAD_DECADES`] decades of τ past the edge time τ_e = 1/(2π f_edge),
+/// at [`TERMS_PER_DECADE`] on a grid fixed by the edge, the last one weighted by the fraction of
+/// its step that D covers (so the spectrum, and the term, are continuous in Δ), with the spectrum the data show at the edge continued: its density
 /// H_e = (2/π)·Ê″(ω_e) (the first approximation H(τ) ≈ (2/π)E″(1/τ), Ferry 1980 ch. 4) and its
 /// trend, H(τ) = H_e·(τ_e/τ)^m with m = d ln Ê″/d ln ω over the last [`SLOPE_DECADES`] inside
 /// the window (|m| ≤ [`MAX_SLOPE`]), each term of strength H(τ_k)·ln 10/[`TERMS_PER_DECADE`]. Above the window (shorter times) they add to the
@@ -128,20 +149,23 @@ pub fn continued_spectrum(
     let m = ((loss_e / relax.loss_modulus(omega_in)).ln() / (omega_e / omega_in).ln())
         .clamp(-MAX_SLOPE, MAX_SLOPE);
     let m = if m.is_finite() { m } else { 0.0 };
-    let span = ex.decades + CONTACT_SPREAD_DECADES;
-    let n = (span * TERMS_PER_DECADE).ceil().max(1.0) as usize;
+    // D grid steps: term k covers step k, with weight min(D·TERMS_PER_DECADE − k, 1)
+    let steps = (ex.decades.max(0.0) + CONTACT_SPREAD_DECADES) * TERMS_PER_DECADE;
+    let n = steps.ceil().max(1.0) as usize;
     // τ_k half a grid step past the edge first (the fit's own terms reach it), strength
     // H(τ_k)·ln 10/TERMS_PER_DECADE with H(τ) = H_e·(τ_e/τ)^m
     let mut terms: Vec<RelaxationTerm> = (0..n)
         .map(|k| {
             let decades = (k as f64 + 0.5) / TERMS_PER_DECADE;
             let tau_s = tau_e * 10f64.powf(direction * decades);
+            let weight = (steps - k as f64).min(1.0);
             RelaxationTerm {
-                modulus_pa: h_e * (tau_e / tau_s).powf(m) * std::f64::consts::LN_10
+                modulus_pa: weight * h_e * (tau_e / tau_s).powf(m) * std::f64::consts::LN_10
                     / TERMS_PER_DECADE,
                 tau_s,
             }
         })
+        .filter(|t| t.modulus_pa != 0.0)
         .collect();
     let mut out = relax.clone();
     if ex.side == WindowSide::Low {
@@ -164,12 +188,32 @@ pub fn continued_spectrum(
 /// How the notes of a widened band start (the datasheet's † finds them by it).
 pub const WIDENED_NOTE_START: &str = "band widened for extrapolation";
 
-/// The note of a point whose band holds the frequency-window term `s_window` (eq. 15.9): it reaches
-/// friction.csv's `note`, the datasheet (†) and the ranking through the point's warnings.
+/// The note of a point whose band holds the frequency-window term `s_window` (eq. 15.9, the
+/// weighted term of eq. 15.9c inside the edge's last half decade): it reaches friction.csv's
+/// `note`, the datasheet (†) and the ranking through the point's warnings.
 pub fn window_note(s_window: f64, ex: &WindowExcess) -> String {
+    let (end, reach) = match ex.side {
+        WindowSide::High => ("top", "up to"),
+        WindowSide::Low => ("bottom", "down to"),
+    };
+    if ex.decades <= 0.0 {
+        return format!(
+            "{WIDENED_NOTE_START} in frequency: the rolling frequency V/l reduced to the reference \
+             temperature, {:.2e} Hz, lies {:.2} decades inside the {end} of the measured master \
+             curve ({reach} {:.2e} Hz), in its last {RAMP_DECADES} decade, which few points \
+             constrain; the Prony spectrum continued past the edge with the density and slope of \
+             the edge changes F/N there, and that change weighted by {:.2} (the ramp into the \
+             window), {}, is taken as one standard deviation (docs/MATH.md eqs. 15.9, 15.9c)",
+            ex.reduced_freq_hz,
+            -ex.decades,
+            ex.edge_hz,
+            ramp_weight(ex.decades),
+            change_text(s_window)
+        );
+    }
     format!(
         "{WIDENED_NOTE_START} in frequency: the rolling frequency V/l reduced to the reference \
-         temperature, {:.2e} Hz, lies {:.1} decades {} the measured master curve ({} {:.2e} Hz), and the \
+         temperature, {:.2e} Hz, lies {:.1} decades {} the measured master curve ({reach} {:.2e} Hz), and the \
          Prony spectrum continued past it with the density and slope of the edge changes F/N by {} \
          (taken as one standard deviation, docs/MATH.md eq. 15.9)",
         ex.reduced_freq_hz,
@@ -177,10 +221,6 @@ pub fn window_note(s_window: f64, ex: &WindowExcess) -> String {
         match ex.side {
             WindowSide::High => "above",
             WindowSide::Low => "below",
-        },
-        match ex.side {
-            WindowSide::High => "up to",
-            WindowSide::Low => "down to",
         },
         ex.edge_hz,
         change_text(s_window)
@@ -284,6 +324,66 @@ mod tests {
         let (e1, _) = s.complex_modulus(omega(10.0));
         let (c1, _) = c.complex_modulus(omega(10.0));
         assert!((c1 / e1 - 1.0).abs() < 1e-3, "{c1} {e1}");
+    }
+
+    #[test]
+    fn the_term_starts_half_a_decade_inside_the_edge_and_grows_without_a_step() {
+        let w = (1e-3, 1e4);
+        // 0.3 decades inside the top: Δ = −0.3, the top's side; 0.6 inside: nothing
+        let near = excess(w, 1e4 * 10f64.powf(-0.3)).unwrap();
+        assert_eq!(near.side, WindowSide::High);
+        assert!((near.decades + 0.3).abs() < 1e-12);
+        assert!(excess(w, 1e4 * 10f64.powf(-0.6)).is_none());
+        let near_lo = excess(w, 1e-3 * 10f64.powf(0.2)).unwrap();
+        assert_eq!(near_lo.side, WindowSide::Low);
+        assert!((near_lo.decades + 0.2).abs() < 1e-12);
+        // the weight: 0 at the ramp's start, 1 at the edge and beyond, the smooth step between
+        // (½ half-way, slope 3/(2·RAMP) there), no step and no kink at either end
+        assert_eq!(ramp_weight(-RAMP_DECADES), 0.0);
+        assert_eq!(ramp_weight(-2.0), 0.0);
+        assert_eq!(ramp_weight(0.0), 1.0);
+        assert_eq!(ramp_weight(3.0), 1.0);
+        assert!((ramp_weight(-RAMP_DECADES / 2.0) - 0.5).abs() < 1e-15);
+        let eps = 1e-7;
+        let slope = (ramp_weight(-0.25 + eps) - ramp_weight(-0.25 - eps)) / (2.0 * eps);
+        assert!((slope - 1.5 / RAMP_DECADES).abs() < 1e-6, "{slope}");
+        for end in [-RAMP_DECADES, 0.0] {
+            let slope = (ramp_weight(end + eps) - ramp_weight(end - eps)) / (2.0 * eps);
+            assert!(slope.abs() < 1e-6, "{end}: {slope}");
+        }
+        // Inside the window the continuation is the edge's (one decade, D = 1): the same spectrum
+        // at Δ = −0.3 and Δ = 0.
+        let s = flat();
+        let at = |d: f64| {
+            let ex = WindowExcess {
+                side: WindowSide::High,
+                reduced_freq_hz: 1e3 * 10f64.powf(d),
+                edge_hz: 1e3,
+                decades: d,
+            };
+            continued_spectrum(&s, &ex).unwrap()
+        };
+        assert_eq!(at(-0.3), at(0.0));
+        // Beyond it, D = Δ + 1 grows continuously: the glassy modulus (the sum of the terms) at
+        // Δ = 0.5 ± 1e-9, where a term was added whole before, differs by ~1e-9 of a term;
+        // half-way through a step it has half the new term (2 terms per decade, each ≈ 1 MPa).
+        let g = |d: f64| at(d).instantaneous_modulus();
+        assert!(
+            (g(0.5 + 1e-9) - g(0.5 - 1e-9)).abs() < 1e-2,
+            "{}",
+            g(0.5 + 1e-9) - g(0.5 - 1e-9)
+        );
+        let half = g(0.75) - g(0.5);
+        assert!((half / 0.5e6 - 1.0).abs() < 0.05, "{half}");
+        // the note of a point inside says so, with the weight
+        let n = window_note(0.1, &near);
+        assert!(
+            n.starts_with(WIDENED_NOTE_START)
+                && n.contains("0.30 decades inside the top")
+                && n.contains(&format!("weighted by {:.2}", ramp_weight(-0.3)))
+                && n.contains("11 %"),
+            "{n}"
+        );
     }
 
     #[test]

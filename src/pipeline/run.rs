@@ -249,8 +249,12 @@ fn scene_bands(
     let r = match solved.iter().find(|(k, _)| *k == key) {
         Some((_, r)) => r.clone(),
         None => {
-            // a cover's nominal frictions are the points just solved (same body, tol)
-            let nominal: Vec<f64> = points.iter().map(|p| p.friction).collect();
+            // a cover's nominal frictions and contact lengths are the points just solved (same
+            // body, tol)
+            let nominal: Vec<(f64, f64)> = points
+                .iter()
+                .map(|p| (p.friction, p.contact_length_mm * 1e-3))
+                .collect();
             let r = crate::bands::scene_bands_given(
                 fit, ensemble, &key.0, cover_m, &key.1, bs, &nominal,
             );
