@@ -17,10 +17,22 @@
 //! `cargo test --release --test tests bands_calibration_ten_seeds -- --ignored --nocapture`.
 //! Both print the coverage per seed, compound and scene, and the misses. The 2-seed check is the
 //! weaker one: single seeds range from 72 % to 98.5 %, so it catches a band that is far off (too
-//! narrow or too wide by ~2×), not a few points of coverage.
+//! narrow or too wide by ~2×), not a few points of coverage. Those measurements reach every
+//! point's rolling frequency, so neither model-error term enters them.
+//!
+//! Truncated measurements (the frequency-window term, eq. 15.9): the same compounds measured from
+//! −20 °C up only ([`TRUNCATED_FROM_C`]), so that −40 and −30 °C lie beyond the measured
+//! temperatures and at −20 °C (at some points −10 °C) the scenes' reduced rolling frequencies lie
+//! 0.01–1.9 decades above the window's top; the coverage is reported apart for the points inside the window, in the ramp of
+//! its last half decade (eq. 15.9c), beyond it at a measured temperature, and beyond the measured
+//! temperatures. Over 10 seeds (about 1.5 min): 1150/1320 = 87.1 %; inside 689/810 = 85.1 %, ramp
+//! 83/83 = 100 %, beyond the window 167/187 = 89.3 % (all 20 misses above the band), beyond the
+//! temperatures 211/240 = 87.9 %:
+//! `cargo test --release --test tests bands_calibration_truncated_ten_seeds -- --ignored --nocapture`.
+//! CI runs seeds 1–2 of it (`bands_cover_the_true_friction_on_truncated_measurements_two_seeds`).
 
 use std::path::PathBuf;
-use viscoroll::bands::{band_of, build_ensemble, scene_ratios_on, BandSettings};
+use viscoroll::bands::{band_of, build_ensemble, scene_bands_on, BandSettings};
 use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
 use viscoroll::contact::roll;
 use viscoroll::creep::relaxation_to_creep;
@@ -49,8 +61,24 @@ fn shifted(c: &CreepSpectrum, log10_a_t: f64) -> CreepSpectrum {
     s
 }
 
-/// One point: (compound, scene, T, truth, friction, band p05, p95, (m, s) of ln F_b/F̂).
-type Point = (String, String, f64, f64, f64, f64, f64, (f64, f64));
+/// One (compound, scene, temperature) point of the calibration.
+#[derive(Debug, Clone)]
+struct Point {
+    compound: String,
+    scene: String,
+    temp_c: f64,
+    truth: f64,
+    friction: f64,
+    p05: f64,
+    p95: f64,
+    /// (m, s) of ln F_b/F̂.
+    stats: (f64, f64),
+    /// Δ of the frequency-window term (eq. 15.9; negative inside the window's edge, eq. 15.9c),
+    /// `None` without one.
+    window_decades: Option<f64>,
+    /// Beyond the measured temperatures (the shift-law tail term, eq. 15.8).
+    extrapolated: bool,
+}
 
 /// Mean and standard deviation of the finite ln ratios (as crate::bands::band_of reads them).
 fn log_stats(r: &[f64]) -> (f64, f64) {
@@ -71,19 +99,32 @@ fn log_stats(r: &[f64]) -> (f64, f64) {
 /// centred on F itself (p50 = F, half-width 1.645 s) and the basic bootstrap (the bias e^m reflected:
 /// p50 = F·e^(−m)).
 fn other_readings(p: &Point) -> (bool, bool) {
-    let (m, s) = p.7;
+    let (m, s) = p.stats;
     let z = viscoroll::bands::friction::Z95;
-    let inside = |c: f64| p.4 * (c - z * s).exp() <= p.3 && p.3 <= p.4 * (c + z * s).exp();
+    let inside = |c: f64| {
+        p.friction * (c - z * s).exp() <= p.truth && p.truth <= p.friction * (c + z * s).exp()
+    };
     (inside(0.0), inside(-m))
 }
 
-/// Every (compound, scene, temperature) point of one noise seed.
-fn points_of_seed(seed: u64) -> Vec<Point> {
+/// Every (compound, scene, temperature) point of one noise seed, the compounds measured from
+/// `lowest_c` up (the default protocol's −60 … +100 °C every 5 K, cut below `lowest_c`).
+fn points_of_seed(seed: u64, lowest_c: f64) -> Vec<Point> {
+    let default = DmaProtocol::default();
     let protocol = DmaProtocol {
         seed,
-        ..DmaProtocol::default()
+        temps_c: default
+            .temps_c
+            .iter()
+            .copied()
+            .filter(|t| *t >= lowest_c)
+            .collect(),
+        ..default
     };
-    let dir = std::env::temp_dir().join(format!("viscoroll-bands-{}-{}", std::process::id(), seed));
+    let dir = std::env::temp_dir().join(format!(
+        "viscoroll-bands-{}-{seed}-{lowest_c}",
+        std::process::id()
+    ));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let scenes = SceneSet::shipped();
@@ -105,8 +146,8 @@ fn points_of_seed(seed: u64) -> Vec<Point> {
             let scene = spec.scene();
             let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
             let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
-            let ratios = scene_ratios_on(&fit, ensemble, &scene, cover_m, &spec.temps_c, &bs);
-            for (p, r) in got.iter().zip(&ratios) {
+            let bands = scene_bands_on(&fit, ensemble, &scene, cover_m, &spec.temps_c, &bs);
+            for (i, (p, r)) in got.iter().zip(&bands.ratios).enumerate() {
                 let true_at_t = shifted(&true_creep, compound.law.log10_a_t(p.temp_c));
                 let truth = match spec.cover_thickness_mm {
                     Some(h_mm) => {
@@ -124,16 +165,18 @@ fn points_of_seed(seed: u64) -> Vec<Point> {
                     None => roll(&scene, &true_at_t, &settings).unwrap().friction,
                 };
                 let b = band_of(p.friction, r).expect("a band at every point");
-                out.push((
-                    compound.name.clone(),
-                    spec.name.clone(),
-                    p.temp_c,
+                out.push(Point {
+                    compound: compound.name.clone(),
+                    scene: spec.name.clone(),
+                    temp_c: p.temp_c,
                     truth,
-                    p.friction,
-                    b.p05,
-                    b.p95,
-                    log_stats(r),
-                ));
+                    friction: p.friction,
+                    p05: b.p05,
+                    p95: b.p95,
+                    stats: log_stats(r),
+                    window_decades: bands.window[i].as_ref().map(|w| w.excess.decades),
+                    extrapolated: bands.tail_ln[i].is_some(),
+                });
             }
         }
     }
@@ -142,24 +185,41 @@ fn points_of_seed(seed: u64) -> Vec<Point> {
 }
 
 fn covered(p: &Point) -> bool {
-    p.5 <= p.3 && p.3 <= p.6
+    p.p05 <= p.truth && p.truth <= p.p95
 }
 
-/// Coverage table over `seeds` (per seed and compound, per scene, total); returns the total.
-fn calibrate(seeds: &[u64]) -> f64 {
+/// Where a point lies against the measured window and temperatures (for the coverage table).
+fn class(p: &Point) -> &'static str {
+    match (p.extrapolated, p.window_decades) {
+        (true, _) => "beyond the measured temperatures (eq. 15.8)",
+        (false, None) => "inside the window, no term",
+        (false, Some(d)) if d <= 0.0 => "inside the window's last half decade (ramp, eq. 15.9c)",
+        (false, Some(_)) => "beyond the window at a measured temperature (eq. 15.9)",
+    }
+}
+
+/// `hit/n = x %` of the points.
+fn coverage_of<'a>(pts: impl Iterator<Item = &'a Point>) -> (usize, usize) {
+    pts.fold((0, 0), |(h, n), p| (h + usize::from(covered(p)), n + 1))
+}
+
+fn pct((h, n): (usize, usize)) -> String {
+    if n == 0 {
+        return format!("{h:>4}/{n:<4}   (none)");
+    }
+    format!("{h:>4}/{n:<4} = {:>5.1} %", 100.0 * h as f64 / n as f64)
+}
+
+/// Coverage table over `seeds`, the compounds measured from `lowest_c` up (per seed and compound,
+/// per scene, per class of [`class`], total); returns every point.
+fn calibrate(seeds: &[u64], lowest_c: f64) -> Vec<Point> {
     let mut all: Vec<(u64, Point)> = Vec::new();
     for &seed in seeds {
-        let pts = points_of_seed(seed);
-        let n = pts.len();
-        let hit = pts.iter().filter(|p| covered(p)).count();
-        let mut line = format!(
-            "seed {seed:>2}: {hit:>3}/{n} = {:>5.1} %",
-            100.0 * hit as f64 / n as f64
-        );
+        let pts = points_of_seed(seed, lowest_c);
+        let mut line = format!("seed {seed:>2}: {}", pct(coverage_of(pts.iter())));
         for c in ["nr-br-idler", "nr-tread", "sbr-tread", "high-tg-tread"] {
-            let of: Vec<&Point> = pts.iter().filter(|p| p.0 == c).collect();
-            let h = of.iter().filter(|p| covered(p)).count();
-            line += &format!("  {c} {h}/{}", of.len());
+            let (h, n) = coverage_of(pts.iter().filter(|p| p.compound == c));
+            line += &format!("  {c} {h}/{n}");
         }
         println!("{line}");
         all.extend(pts.into_iter().map(|p| (seed, p)));
@@ -170,19 +230,42 @@ fn calibrate(seeds: &[u64]) -> f64 {
         .map(|s| s.name.clone())
         .collect();
     for s in &scenes {
-        let of: Vec<_> = all.iter().filter(|(_, p)| &p.1 == s).collect();
-        let h = of.iter().filter(|(_, p)| covered(p)).count();
+        let c = coverage_of(all.iter().map(|(_, p)| p).filter(|p| &p.scene == s));
+        println!("scene {s}: {}", pct(c));
+    }
+    for k in [
+        "inside the window, no term",
+        "inside the window's last half decade (ramp, eq. 15.9c)",
+        "beyond the window at a measured temperature (eq. 15.9)",
+        "beyond the measured temperatures (eq. 15.8)",
+    ] {
+        let of: Vec<&Point> = all
+            .iter()
+            .map(|(_, p)| p)
+            .filter(|p| class(p) == k)
+            .collect();
+        let mut w: Vec<f64> = of.iter().map(|p| (p.p95 / p.p05).ln() / 2.0).collect();
+        w.sort_by(f64::total_cmp);
+        let d: Vec<f64> = of.iter().filter_map(|p| p.window_decades).collect();
+        let above = of.iter().filter(|p| p.truth > p.p95).count();
+        let below = of.iter().filter(|p| p.truth < p.p05).count();
         println!(
-            "scene {s}: {h}/{} = {:.1} %",
-            of.len(),
-            100.0 * h as f64 / of.len() as f64
+            "{k:<56} {}  median log half-width {:.3}, Δ {:.2} … {:.2}; missed {above} above, \
+             {below} below",
+            pct(coverage_of(of.iter().copied())),
+            w.get(w.len() / 2).copied().unwrap_or(f64::NAN),
+            d.iter().copied().fold(f64::INFINITY, f64::min),
+            d.iter().copied().fold(f64::NEG_INFINITY, f64::max),
         );
     }
     // Relative half-width of the bands and |error| / half-width, medians.
-    let mut width: Vec<f64> = all.iter().map(|(_, p)| 0.5 * (p.6 - p.5) / p.4).collect();
+    let mut width: Vec<f64> = all
+        .iter()
+        .map(|(_, p)| 0.5 * (p.p95 - p.p05) / p.friction)
+        .collect();
     let mut err: Vec<f64> = all
         .iter()
-        .map(|(_, p)| (p.4 - p.3).abs() / (0.5 * (p.6 - p.5)))
+        .map(|(_, p)| (p.friction - p.truth).abs() / (0.5 * (p.p95 - p.p05)))
         .collect();
     width.sort_by(f64::total_cmp);
     err.sort_by(f64::total_cmp);
@@ -193,27 +276,40 @@ fn calibrate(seeds: &[u64]) -> f64 {
     );
     for (seed, p) in all.iter().filter(|(_, p)| !covered(p)).take(40) {
         println!(
-            "missed: seed {seed} {} {} {} °C: true {:.4e}, F/N {:.4e}, band {:.4e} … {:.4e}",
-            p.0, p.1, p.2, p.3, p.4, p.5, p.6
+            "missed: seed {seed} {} {} {} °C ({}): true {:.4e}, F/N {:.4e}, band {:.4e} … {:.4e}",
+            p.compound,
+            p.scene,
+            p.temp_c,
+            class(p),
+            p.truth,
+            p.friction,
+            p.p05,
+            p.p95
         );
     }
+    let n = all.len() as f64;
     let centred = all.iter().filter(|(_, p)| other_readings(p).0).count();
     let basic = all.iter().filter(|(_, p)| other_readings(p).1).count();
     println!(
         "other readings of the same replicates: centred on F {:.1} %, basic bootstrap {:.1} %",
-        100.0 * centred as f64 / all.len() as f64,
-        100.0 * basic as f64 / all.len() as f64
+        100.0 * centred as f64 / n,
+        100.0 * basic as f64 / n
     );
-    let hit = all.iter().filter(|(_, p)| covered(p)).count();
-    let total = hit as f64 / all.len() as f64;
-    println!("total: {hit}/{} = {:.1} %", all.len(), 100.0 * total);
-    total
+    let all: Vec<Point> = all.into_iter().map(|(_, p)| p).collect();
+    println!("total: {}", pct(coverage_of(all.iter())));
+    all
+}
+
+/// The fraction of `pts` covered.
+fn total(pts: &[Point]) -> f64 {
+    let (h, n) = coverage_of(pts.iter());
+    h as f64 / n as f64
 }
 
 /// CI: two noise seeds (264 points); the same acceptance range as the full sweep.
 #[test]
 fn bands_cover_the_true_friction_two_seeds() {
-    let total = calibrate(&[1, 2]);
+    let total = total(&calibrate(&[1, 2], -60.0));
     assert!(
         (COVERAGE.0..=COVERAGE.1).contains(&total),
         "coverage {total:.3} outside {COVERAGE:?}"
@@ -224,9 +320,90 @@ fn bands_cover_the_true_friction_two_seeds() {
 #[test]
 #[ignore = "10-seed calibration; run on demand (see the module docs)"]
 fn bands_calibration_ten_seeds() {
-    let total = calibrate(&(1..=10).collect::<Vec<u64>>());
+    let total = total(&calibrate(&(1..=10).collect::<Vec<u64>>(), -60.0));
     assert!(
         (COVERAGE.0..=COVERAGE.1).contains(&total),
         "coverage {total:.3} outside {COVERAGE:?}"
     );
+}
+
+/// Lowest isotherm of the truncated measurements, °C: at −20 °C (and for some compounds and
+/// scenes at −10 °C) the scenes' reduced rolling frequencies lie up to 1.9 decades above the
+/// window's top (V/l is 0.8–7 kHz against the sweep's top of 100 Hz); −40 and −30 °C are beyond
+/// the measured temperatures too.
+const TRUNCATED_FROM_C: f64 = -20.0;
+
+/// The points of `pts` inside the window (no term) and beyond it (Δ > 0), at measured
+/// temperatures.
+fn inside_and_beyond(pts: &[Point]) -> (Vec<Point>, Vec<Point>) {
+    let measured = pts.iter().filter(|p| !p.extrapolated);
+    (
+        measured
+            .clone()
+            .filter(|p| p.window_decades.is_none())
+            .cloned()
+            .collect(),
+        measured
+            .filter(|p| p.window_decades.is_some_and(|d| d > 0.0))
+            .cloned()
+            .collect(),
+    )
+}
+
+/// CI: the truncated measurements over two noise seeds (264 points, about 40 of them beyond the
+/// window at a measured temperature): the total in the issue's range, and points beyond the
+/// window there to check (too few on two seeds to assert their own coverage: its sampling
+/// error is ±5 %).
+#[test]
+fn bands_cover_the_true_friction_on_truncated_measurements_two_seeds() {
+    let pts = calibrate(&[1, 2], TRUNCATED_FROM_C);
+    let (_, beyond) = inside_and_beyond(&pts);
+    assert!(
+        beyond.len() >= 20,
+        "{} points beyond the window",
+        beyond.len()
+    );
+    let total = total(&pts);
+    assert!(
+        (COVERAGE.0..=COVERAGE.1).contains(&total),
+        "coverage {total:.3} outside {COVERAGE:?}"
+    );
+}
+
+/// The truncated measurements (isotherms from [`TRUNCATED_FROM_C`] up), 10 noise seeds (1320
+/// points): the coverage inside and beyond the measured window, each in the issue's range; the
+/// points of the ramp inside the window's edge (eq. 15.9c) must not be under-covered (module docs:
+/// they are over-covered, the price of a band without a step at the edge).
+#[test]
+#[ignore = "10-seed calibration on truncated measurements; run on demand (see the module docs)"]
+fn bands_calibration_truncated_ten_seeds() {
+    let pts = calibrate(&(1..=10).collect::<Vec<u64>>(), TRUNCATED_FROM_C);
+    let (inside, beyond) = inside_and_beyond(&pts);
+    let ramp: Vec<Point> = pts
+        .iter()
+        .filter(|p| !p.extrapolated && p.window_decades.is_some_and(|d| d <= 0.0))
+        .cloned()
+        .collect();
+    println!(
+        "inside {:.3} ({} points), ramp {:.3} ({}), beyond the window {:.3} ({})",
+        total(&inside),
+        inside.len(),
+        total(&ramp),
+        ramp.len(),
+        total(&beyond),
+        beyond.len()
+    );
+    assert!(
+        beyond.len() >= 100,
+        "{} points beyond the window",
+        beyond.len()
+    );
+    for (what, of) in [("total", &pts), ("inside", &inside), ("beyond", &beyond)] {
+        let c = total(of);
+        assert!(
+            (COVERAGE.0..=COVERAGE.1).contains(&c),
+            "{what}: coverage {c:.3} outside {COVERAGE:?}"
+        );
+    }
+    assert!(total(&ramp) >= COVERAGE.0, "ramp: {:.3}", total(&ramp));
 }

@@ -33,9 +33,10 @@
 //!    main job solves (`auto` at 1e−3, eq. 15.6).
 //!    The band of a scene mean takes per replicate the mean of F_t·ratio_(b,t).
 //!    Model error beyond the data: a point beyond the measured temperatures gets the spread of the
-//!    shift law's tail assumptions (eq. 15.8); a point whose rolling frequency V/l, reduced by
-//!    a_T, lies beyond the measured master curve gets the change of F/N when the spectrum is
-//!    continued past the window's edge with the edge's density (eq. 15.9); each as one standard
+//!    shift law's tail assumptions (eq. 15.8); a point whose rolling frequency V/l (l the contact
+//!    length of the body solved), reduced by a_T, lies beyond the measured master curve gets the
+//!    change of F/N when the spectrum is continued past the window's edge with the edge's density
+//!    (eq. 15.9), from half a decade inside the edge on, ramped up to it (eq. 15.9c); each as one standard
 //!    deviation, drawn into every replicate (super::scene). A replicate solve that fails is
 //!    counted: the band says how many of how many and why, and is refused when more than a
 //!    quarter failed (also for the refits of the ensemble).
