@@ -29,7 +29,8 @@ pub const COVER_SOLVED_REPLICATES: usize = 8;
 /// The frequency-window term of one point (eq. 15.9).
 #[derive(Debug, Clone, PartialEq)]
 pub struct WindowTerm {
-    /// Where the point's reduced rolling frequency lies beyond the measured window.
+    /// Where the point's reduced rolling frequency lies beyond the measured window (or inside its
+    /// edge's last half decade, eq. 15.9c).
     pub excess: WindowExcess,
     /// |ln F(continued spectrum) − ln F(fit)| on the scene's body, times the ramp weight of
     /// eq. 15.9c inside the window's edge, or why it could not be solved (the band is then refused).
@@ -43,7 +44,8 @@ pub struct SceneRatios {
     pub ratios: Vec<Vec<f64>>,
     /// The shift-law tail term s_tail of eq. 15.8 (ln F), `None` inside the measured temperatures.
     pub tail_ln: Vec<Option<f64>>,
-    /// The frequency-window term of eq. 15.9, `None` inside the measured reduced frequencies.
+    /// The frequency-window term of eq. 15.9, `None` more than half a decade inside the measured
+    /// reduced frequencies.
     pub window: Vec<Option<WindowTerm>>,
     /// The first failed replicate solve's reason (`None` when none failed).
     pub first_failure: Vec<Option<String>>,
@@ -183,9 +185,10 @@ pub fn scene_bands_on(
 /// [`scene_bands_on`] on a cover with the nominal covered solves already done: `nominal[i]` the
 /// fit's friction and contact length (m) at `temps_c[i]` on the cover by `auto` at
 /// [`COVER_BAND_TOL`] (the main job's covered points are exactly that solve: crate::pipeline's
-/// `COVER_TOL` is the same 1e−3), NaN where it failed (then solved here). Saves one layer solve per temperature. Without a cover, or with a
-/// band tolerance looser than [`COVER_BAND_TOL`], `nominal` is not used (the half-space's ratios
-/// are over the fit solved at the band tolerance, not the report's).
+/// `COVER_TOL` is the same 1e−3), NaN where it failed (then solved here). Saves one layer solve
+/// per temperature. Without a cover, or with a band tolerance looser than [`COVER_BAND_TOL`],
+/// `nominal` is not used (the half-space's ratios are over the fit solved at the band tolerance,
+/// not the report's).
 pub fn scene_bands_given(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
