@@ -1,12 +1,14 @@
 //! The frequency-window term of the bands (issue 16; crate::bands::window, docs/MATH.md eq. 15.9):
 //! a synthetic compound whose master curve is truncated at its high-frequency end gets a wider,
-//! flagged band where the rolling frequency lies beyond the measured window, and no term inside it.
+//! flagged band where the rolling frequency lies beyond the measured window, a ramped term in the
+//! window's last half decade (eq. 15.9c) and none further inside; the band's width has no step
+//! where the frequency crosses the edge; on a cover the rolling frequency is the cover's own V/l.
 //!
 //! The compound is viscoroll::testdata::realistic's nr-tread measured twice: over −60 … +100 °C
 //! (the default protocol) and over −40 … +100 °C only. Its master curve's top then falls from
 //! 100 Hz·a_T(−60) to 100 Hz·a_T(−40), and at −40 °C the tyre-like scene's rolling frequency V/l
-//! (20 m/s over a contact of ~10 mm: ~2 kHz) lies beyond it, while −40 °C is still a measured
-//! temperature (no eq. 15.8 term).
+//! (20 m/s over a half-space contact of 5.4 mm: 3.7 kHz) lies beyond it, while −40 °C is still a
+//! measured temperature (no eq. 15.8 term).
 
 use std::path::PathBuf;
 use viscoroll::bands::window::{measured_window_hz, RAMP_DECADES};
