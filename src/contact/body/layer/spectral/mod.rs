@@ -65,6 +65,9 @@
 //! doubled it: on a thin compressible cover whose correction is 65 % of ρF/N (`tests/layer_thin_gains.rs`,
 //! g_F = 0.016436, 0.016198, 0.016196 at p = 6, 12, ≥ 24), the answer at p = 48 was 1.0e−4 off
 //! with an estimate of 4.1e−5; it is now 1.5e−6 off (the lumping's second-order term).
+//! Last, ρF/N = L − β + … is a difference of O(λ) terms, so on a nearly elastic cover its round-off,
+//! 8ε(λ + |β|)/|ρF/N| times the lumping's amplification (as in the half-space `auto` scheme), is
+//! added too, and named in the warning when it is what keeps the estimate above tol.
 //!
 //! # Where it stops: the switch to the hat scheme
 //! The layer term costs ~(L/h′)²·p per solve (κ up to 20L/h′, orders up to κ), so the degree is
