@@ -204,3 +204,47 @@ fn roundoff_of_a_small_friction_is_counted() {
         );
     }
 }
+
+/// The hat collocation (the fallback for covers too thin for the spectral solver, and its own
+/// estimate) on the case: ρF/N converges to first order there (errors 2.4e−2 … 6.7e−4 at
+/// n = 32 … 1024, halving), so the change from n/2 to n equals the error, and the estimate needs its
+/// safety factor (`collocation::FRICTION_SAFETY` = 2) to bound it with a margin. Asserted: the
+/// errors of λ and ρF/N against the fixed-degree reference are within the estimate with a margin of
+/// 1.5 (before the factor: 1.00, an estimate of 1.345e−3 for an error of 1.341e−3 at n = 512, the
+/// largest n the `auto` path uses), and an estimate above tol is flagged.
+#[test]
+fn hat_collocation_estimate_keeps_a_margin_on_the_case() {
+    use viscoroll::contact::body::layer::collocation::solve_layer_at_load;
+    use viscoroll::contact::body::layer::{LayerKernel, LayerSettings};
+    let terms = terms();
+    let kernel = LayerKernel::new(&terms, H_CASE, NU).expect("kernel");
+    let tol = 1e-3;
+    let settings = LayerSettings {
+        tol,
+        n_max: 512,
+        spectral: false,
+        ..Default::default()
+    };
+    let a = solve_layer_at_load(&kernel, LOAD, &settings).expect("solves");
+    let s = &a.solution;
+    let (lam_ref, fr_ref) = checked_reference(&terms, H_CASE, s.lambda);
+    let (e_l, e_fr) = (rel(s.lambda, lam_ref), rel(s.friction_rho, fr_ref));
+    eprintln!(
+        "hat tol {tol:e}: n {} estimate {:.3e}, error λ {e_l:.3e} ρF/N {e_fr:.3e} {:?}",
+        s.n, a.error_estimate, a.warnings
+    );
+    assert!(
+        1.5 * e_l.max(e_fr) <= a.error_estimate,
+        "errors λ {e_l:e}, ρF/N {e_fr:e}: the estimate {:e} keeps no margin",
+        a.error_estimate
+    );
+    if a.error_estimate > tol {
+        assert!(
+            a.warnings
+                .iter()
+                .any(|w| w.contains("tolerance not reached")),
+            "{:?}",
+            a.warnings
+        );
+    }
+}
