@@ -49,10 +49,8 @@ fn reference(terms: &[CreepTerm], load: f64, h: f64, nu: f64, lam: f64) -> (f64,
 /// half-space contact length λ_hs (L/h′ from 0.4 to 14 at the layer's own, shorter contact), ν = 0.3,
 /// at tol 1e−6 and 1e−3: each answer is accepted, meets tol by its estimate, and the estimate bounds
 /// the true error; the degree is at least what the convergence rate asks, 0.4·log₁₀(1/tol)·L/h′.
-/// A cover 1e−4·λ_hs (L/h′ ≈ 300: a degree ≈ 900 needed) is declined. (Not included: covers where
-/// the rule starts above p_max/2, e.g. h = 0.01·λ_hs at 1e−6, p = 28: the p/2 check cannot double
-/// and the answer is flagged although it is right to 2e−10 — a pessimistic estimate, not a wrong
-/// answer.)
+/// A cover 1e−4·λ_hs (L/h′ ≈ 300: a degree ≈ 900 needed) is declined. (Covers where the rule starts
+/// near the cap: `at_the_degree_cap_the_estimate_is_geometric`.)
 #[test]
 fn the_degree_follows_the_cover_and_meets_tol() {
     let terms = [CreepTerm { f: 10.0, b: 1.0 }];
@@ -113,4 +111,48 @@ fn the_degree_follows_the_cover_and_meets_tol() {
         "a cover 1e−4 λ_hs accepted: {:?}",
         thin.map(|a| a.solution.n)
     );
+}
+
+/// Where the degree cannot grow (the rule starts at the cap, or reaches it) and the p/2 comparison
+/// alone is above tol, the p/4 solve from the same columns gives the geometric estimate
+/// 3·r·e(p/2), r = e(p/2)/e(p/4) (`at_load::degree_error_at_cap`). The case of the former flag: h =
+/// 0.01·λ_hs at tol 1e−6 (L/h′ ≈ 8, the rule starts at p = 28), right to 2e−10 but flagged
+/// "tolerance not reached" when the p/2 check could not double past p_max = 48. Now with p_max = 28
+/// (the start is the cap) and 48 (the degree grows to 40): accepted within tol without the flag,
+/// and the estimate bounds the true error against the fixed-degree reference.
+#[test]
+fn at_the_degree_cap_the_estimate_is_geometric() {
+    let terms = [CreepTerm { f: 10.0, b: 1.0 }];
+    let (load, nu, tol) = (0.25, 0.3, 1e-6);
+    let hs = solve_auto_at_load(&terms, load, &AutoSettings::default()).expect("half-space");
+    let h = 0.01 * hs.lambda;
+    for p_max in [28, 48] {
+        let settings = SpectralSettings {
+            tol,
+            p_max,
+            ..Default::default()
+        };
+        let a = solve_spectral_at_load(&terms, load, h, nu, &settings)
+            .expect("solves")
+            .expect("accepted");
+        let s = &a.solution;
+        let (lam_ref, fr_ref) = reference(&terms, load, h, nu, s.lambda);
+        let (e_l, e_fr) = (rel(s.lambda, lam_ref), rel(s.friction_rho, fr_ref));
+        eprintln!(
+            "p_max {p_max}: p {} est {:.2e} err λ {e_l:.2e} ρF/N {e_fr:.2e} {:?}",
+            s.n, a.error_estimate, a.warnings
+        );
+        assert!(s.n <= p_max);
+        assert!(
+            a.error_estimate <= tol && a.warnings.is_empty(),
+            "p_max {p_max}: estimate {:e} ({:?})",
+            a.error_estimate,
+            a.warnings
+        );
+        assert!(
+            e_l <= a.error_estimate && e_fr <= a.error_estimate,
+            "p_max {p_max}: errors {e_l:e} {e_fr:e} above the estimate {:e}",
+            a.error_estimate
+        );
+    }
 }
