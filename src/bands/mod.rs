@@ -30,7 +30,10 @@
 //! 5. Band (eq. 15.5): with d_b = ln(F_b/F̂), mean m and standard deviation s over the replicates,
 //!    p50 = F·e^m and p05, p95 = F·e^(m ∓ 1.645 s) (log-normal: smoother than empirical 5 %
 //!    quantiles of 32 replicates). A covered scene's ratios are solved on the covered body the
-//!    main job solves (`auto` at 1e−3, eq. 15.6).
+//!    main job solves (`auto` at 1e−3, eq. 15.6): 8 replicates on the body the fit's own solve
+//!    chose, started from its contact length, the rest from their half-space ratios (eq. 15.6b),
+//!    at every other temperature where the cover/half-space ratio can be carried between them
+//!    (eq. 15.6c). Scenes with the same roll and temperatures share their half-space solves.
 //!    The band of a scene mean takes per replicate the mean of F_t·ratio_(b,t).
 //!    Model error beyond the data: a point beyond the measured temperatures gets the spread of the
 //!    shift law's tail assumptions (eq. 15.8); a point whose rolling frequency V/l, reduced by
@@ -58,12 +61,13 @@ pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
 pub use ensemble::build_ensemble;
 pub use error::BandError;
 pub use friction::{
-    band_of, mean_band, predict_from_half_space, tail_alternatives, tail_note, too_many_failed,
-    COVER_BAND_TOL,
+    band_of, mean_band, predict_from_half_space, replicate_choice, tail_alternatives, tail_note,
+    too_many_failed, CoverSolve, COVER_BAND_TOL,
 };
 pub use scene::{
-    scene_bands_given, scene_bands_on, scene_ratios_full_on, scene_ratios_on, SceneRatios,
-    WindowTerm, COVER_SOLVED_REPLICATES,
+    cover_solved_temps, half_space_ratios, scene_bands_given, scene_bands_on,
+    scene_ratios_every_temp_on, scene_ratios_full_on, scene_ratios_on, HalfSpaceRatios,
+    SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
 };
 pub use window::{window_note, WindowExcess, WindowSide, WIDENED_NOTE_START};
 
