@@ -53,6 +53,11 @@ pub struct SceneRatios {
     /// this temperature from its neighbours (eq. 15.6c), drawn into every replicate; `None` where
     /// they were solved, and off a cover.
     pub carried_ln: Vec<Option<f64>>,
+    /// The replicate solves' error carried into the band (ln F, per temperature): on the
+    /// half-space, the fit's own solve's error estimate plus the median of the replicates' (their
+    /// tolerance, [`BandSettings::contact_tol`], is looser than the report's); 0 on a cover (its
+    /// ratios are solved at the main job's own 1e−3, eq. 15.6).
+    pub solver_ln: Vec<f64>,
 }
 
 impl SceneRatios {
@@ -63,6 +68,7 @@ impl SceneRatios {
             window: vec![None; n],
             first_failure: vec![None; n],
             carried_ln: vec![None; n],
+            solver_ln: vec![0.0; n],
         }
     }
 
@@ -106,7 +112,7 @@ impl SceneRatios {
                 )],
             );
         }
-        let Some(band) = super::band_of(value, r) else {
+        let Some(mut band) = super::band_of(value, r) else {
             return (
                 None,
                 vec![format!(
@@ -115,6 +121,12 @@ impl SceneRatios {
                 )],
             );
         };
+        // the solver's error: each quantile moved outwards by it (docs/MATH.md eq. 15.5b)
+        let e = self.solver_ln.get(i).copied().unwrap_or(0.0);
+        if e.is_finite() && e > 0.0 {
+            band.p05 *= (-e).exp();
+            band.p95 *= e.exp();
+        }
         let mut notes = Vec::new();
         if let Some(Some(s)) = self.tail_ln.get(i) {
             notes.push(tail_note(*s));
@@ -282,6 +294,9 @@ pub struct HalfSpaceRatios {
     pub fit: Vec<Result<(f64, f64), String>>,
     /// Per temperature, per replicate, F_b/F̂ or why it failed.
     pub ratios: Vec<Vec<Result<f64, String>>>,
+    /// Per temperature, the fit's solve's error estimate plus the median of the replicates' (ln F;
+    /// eq. 15.5b).
+    pub error_ln: Vec<f64>,
 }
 
 /// [`HalfSpaceRatios`] of `fit` and its `ensemble` at `temps_c` on `scene`'s roll (its body and any
@@ -299,34 +314,64 @@ pub fn half_space_ratios(
         ..*scene
     };
     let law = &fit.shift_law;
-    let fit_solves: Vec<Result<(f64, f64), String>> = temps_c
-        .par_iter()
-        .map(|&t| {
-            half_space_solve(&scene, creep, law.log10_a_t(t), settings)
-                .map(|r| (r.friction, r.contact_length_m))
+    let solve = |c: &CreepSpectrum, t: f64| {
+        half_space_solve(&scene, c, law.log10_a_t(t), settings).and_then(|r| {
+            let f = r.friction;
+            if f.is_finite() && f > 0.0 {
+                let e = r.dimensionless.error_estimate.unwrap_or(0.0);
+                Ok((f, r.contact_length_m, if e.is_finite() { e } else { 0.0 }))
+            } else {
+                Err(format!("F/N = {f} is not finite and positive"))
+            }
+        })
+    };
+    let fit_solves: Vec<Result<(f64, f64, f64), String>> =
+        temps_c.par_iter().map(|&t| solve(creep, t)).collect();
+    let nb = ensemble.replicates.len();
+    let mut flat: Vec<Result<(f64, f64), String>> = (0..temps_c.len() * nb)
+        .into_par_iter()
+        .map(|k| {
+            let (i, b) = (k / nb, k % nb);
+            let (f0, _, _) = fit_solves[i]
+                .as_ref()
+                .map_err(|e| format!("the fit's own solve failed: {e}"))?;
+            let r = &ensemble.replicates[b];
+            let (f, _, e) =
+                half_space_solve(&scene, &r.creep, r.log10_a_t(law, temps_c[i]), settings).map(
+                    |s| {
+                        let e = s.dimensionless.error_estimate.unwrap_or(0.0);
+                        (s.friction, 0.0, if e.is_finite() { e } else { 0.0 })
+                    },
+                )?;
+            if !(f.is_finite() && f > 0.0) {
+                return Err(format!("F/N = {f} is not finite and positive"));
+            }
+            Ok((f / f0, e))
         })
         .collect();
-    let nominal: Vec<Result<f64, String>> = fit_solves
-        .iter()
-        .map(|r| r.as_ref().map(|x| x.0).map_err(Clone::clone))
-        .collect();
-    let hs = solver(&scene, None, settings);
-    let all: Vec<usize> = (0..ensemble.replicates.len()).collect();
-    let at: Vec<usize> = (0..temps_c.len()).collect();
-    let ratios = ratios_over(
-        fit,
-        ensemble,
-        temps_c,
-        &at,
-        &all,
-        &|_, c, l| hs(c, l),
-        &nominal,
-    );
+    let mut ratios = Vec::with_capacity(temps_c.len());
+    let mut error_ln = Vec::with_capacity(temps_c.len());
+    for i in 0..temps_c.len() {
+        let rest = flat.split_off(nb);
+        let row = std::mem::replace(&mut flat, rest);
+        let mut e: Vec<f64> = row
+            .iter()
+            .filter_map(|r| r.as_ref().ok().map(|x| x.1))
+            .collect();
+        e.sort_by(f64::total_cmp);
+        let e0 = fit_solves[i].as_ref().map_or(0.0, |x| x.2);
+        error_ln.push(e0 + e.get(e.len() / 2).copied().unwrap_or(0.0));
+        ratios.push(row.into_iter().map(|r| r.map(|x| x.0)).collect());
+    }
     Some(HalfSpaceRatios {
         scene,
         temps_c: temps_c.to_vec(),
-        fit: fit_solves,
+        fit: fit_solves
+            .into_iter()
+            .map(|r| r.map(|(f, l, _)| (f, l)))
+            .collect(),
         ratios,
+        error_ln,
     })
 }
 
@@ -818,6 +863,10 @@ fn bands_with(
         window,
         first_failure,
         carried_ln: carried_sd,
+        solver_ln: match cover_m {
+            None => hs.error_ln.clone(),
+            Some(_) => vec![0.0; temps_c.len()],
+        },
     }
 }
 
@@ -839,6 +888,7 @@ mod tests {
             window: vec![None],
             first_failure: vec![(failed > 0).then(|| "contact: λ not bracketed".to_string())],
             carried_ln: vec![None],
+            solver_ln: vec![0.0],
         }
     }
 
@@ -897,5 +947,103 @@ mod tests {
         });
         let (b, notes) = r.point_band(0, 1e-3);
         assert!(b.is_none() && notes[0].contains("layer: no convergence"));
+    }
+
+    #[test]
+    fn solved_temperatures_are_the_ends_and_every_other_one() {
+        // unsorted, 9 temperatures: in order of T the 1st, 3rd, … 9th
+        let t = [0.0, -40.0, 40.0, -20.0, 20.0, -30.0, 30.0, -10.0, 10.0];
+        let got: Vec<f64> = cover_solved_temps(&t).iter().map(|&i| t[i]).collect();
+        assert_eq!(got, vec![0.0, -40.0, 40.0, -20.0, 20.0]);
+        // an even count keeps the last one too; fewer than 5: all
+        let t = [-40.0, -30.0, -20.0, -10.0, 0.0, 10.0];
+        assert_eq!(cover_solved_temps(&t), vec![0, 2, 4, 5]);
+        assert_eq!(
+            cover_solved_temps(&[0.0, 10.0, 20.0, 30.0]),
+            vec![0, 1, 2, 3]
+        );
+    }
+
+    #[test]
+    fn carried_ratios_are_exact_for_a_straight_q_and_their_error_is_measured_for_a_parabola() {
+        // temperatures −40 … 40 every 10 K; 8 solved replicates, half-space ratios spread wide
+        // (ln spread ≈ 0.9), q_b(T) = κ_b·T² + λ_b·T: the line between neighbours 10 K either side
+        // of T lies κ_b·10² above q, and the measured error, from the line over 20 K either side
+        // of an interior solved temperature (κ_b·20²), scaled by 10·10/(20·20), is the same
+        let temps: Vec<f64> = (0..9).map(|i| -40.0 + 10.0 * i as f64).collect();
+        let k = 8;
+        let kappa: Vec<f64> = (0..k).map(|b| 1e-6 * (b as f64 - 3.5)).collect();
+        let lam: Vec<f64> = (0..k).map(|b| 1e-4 * (b as f64 - 3.5)).collect();
+        let hs: Vec<Vec<Result<f64, String>>> = temps
+            .iter()
+            .map(|_| {
+                (0..32)
+                    .map(|b| Ok((0.1 * (b as f64 - 15.5)).exp()))
+                    .collect()
+            })
+            .collect();
+        let q = |b: usize, t: f64| kappa[b] * t * t + lam[b] * t;
+        let solved = cover_solved_temps(&temps);
+        let sub: Vec<Vec<Result<f64, String>>> = solved
+            .iter()
+            .map(|&i| {
+                (0..k)
+                    .map(|b| Ok(hs[i][b].clone().unwrap() * q(b, temps[i]).exp()))
+                    .collect()
+            })
+            .collect();
+        let (out, sd) = carried(&temps, &solved, &hs, &sub);
+        let rms = (kappa.iter().map(|x| x * x).sum::<f64>() / k as f64).sqrt() * 100.0;
+        for i in 0..temps.len() {
+            let row = out[i]
+                .as_ref()
+                .expect("every temperature carried or solved");
+            if solved.contains(&i) {
+                assert!(sd[i].is_none());
+                continue;
+            }
+            // the carried error's standard deviation: rms over b of κ_b·10² (round-off only)
+            let s = sd[i].expect("carried");
+            assert!(
+                (s - rms).abs() <= 1e-9 * rms,
+                "T {}: {s} vs {rms}",
+                temps[i]
+            );
+            for b in 0..k {
+                let got = (row[b].clone().unwrap() / hs[i][b].clone().unwrap()).ln();
+                let want = q(b, temps[i]) + kappa[b] * 100.0;
+                assert!(
+                    (got - want).abs() < 1e-12,
+                    "T {} b {b}: {got} vs {want}",
+                    temps[i]
+                );
+            }
+        }
+        // a q that spreads as much as the half-space ratios: nothing is carried
+        let wide: Vec<Vec<Result<f64, String>>> = solved
+            .iter()
+            .map(|&i| {
+                (0..k)
+                    .map(|b| Ok(hs[i][b].clone().unwrap() * (0.2 * b as f64).exp()))
+                    .collect()
+            })
+            .collect();
+        let (out, sd) = carried(&temps, &solved, &hs, &wide);
+        for i in (0..temps.len()).filter(|i| !solved.contains(i)) {
+            assert!(out[i].is_none() && sd[i].is_none(), "T {}", temps[i]);
+        }
+    }
+
+    #[test]
+    fn the_solver_error_moves_each_quantile_outwards() {
+        let plain = with_failures(0);
+        let mut widened = with_failures(0);
+        widened.solver_ln = vec![3e-4];
+        let (a, _) = plain.point_band(0, 1e-3);
+        let (b, _) = widened.point_band(0, 1e-3);
+        let (a, b) = (a.unwrap(), b.unwrap());
+        assert!(((b.p05 / a.p05).ln() + 3e-4).abs() < 1e-12);
+        assert!(((b.p95 / a.p95).ln() - 3e-4).abs() < 1e-12);
+        assert_eq!(a.p50, b.p50);
     }
 }
