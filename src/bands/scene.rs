@@ -351,7 +351,7 @@ pub fn half_space_ratios(
         .collect();
     let mut ratios = Vec::with_capacity(temps_c.len());
     let mut error_ln = Vec::with_capacity(temps_c.len());
-    for i in 0..temps_c.len() {
+    for own in &fit_solves {
         let rest = flat.split_off(nb);
         let row = std::mem::replace(&mut flat, rest);
         let mut e: Vec<f64> = row
@@ -359,7 +359,7 @@ pub fn half_space_ratios(
             .filter_map(|r| r.as_ref().ok().map(|x| x.1))
             .collect();
         e.sort_by(f64::total_cmp);
-        let e0 = fit_solves[i].as_ref().map_or(0.0, |x| x.2);
+        let e0 = own.as_ref().map_or(0.0, |x| x.2);
         error_ln.push(e0 + e.get(e.len() / 2).copied().unwrap_or(0.0));
         ratios.push(row.into_iter().map(|r| r.map(|x| x.0)).collect());
     }
