@@ -31,6 +31,7 @@ mod ingest_cli;
 mod known_truth;
 mod layer_degree;
 mod layer_props;
+mod layer_thin_gains;
 mod master_cli;
 mod master_plateau;
 mod master_real;

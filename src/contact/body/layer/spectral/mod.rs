@@ -54,6 +54,21 @@
 //! lumping correction's estimates of the `auto` scheme. Measured against tol 1e−9 refinements
 //! (`tests/layer_props.rs`, property 4) the estimates are 100–1000× the true error.
 //!
+//! The lumping correction (ρF/N += λ·g_F·W, N′ ×= 1 + g_N·W, β += g_β·W, W = Σwᵢ of the lumped
+//! modes) uses gains g measured by a solve with one lumped mode kept: a solve of the same layer
+//! problem, so g carries a degree error too. It is measured at the degree p kept by the p/2 check,
+//! with its p/2 companion from the same columns, and |g(p) − g(p/2)|·W is added to the estimate:
+//! g converges geometrically in p like the solution (it is a difference quotient of two such
+//! solutions), so the p/2 difference bounds the error of g(p) by the same argument as above. The
+//! p/2 comparison of the solution cannot see this error (both degrees are corrected with the same
+//! g). Until this was added, g came from the rule's first degree and was kept when the check
+//! doubled it: on a thin compressible cover whose correction is 65 % of ρF/N (`tests/layer_thin_gains.rs`,
+//! g_F = 0.016436, 0.016198, 0.016196 at p = 6, 12, ≥ 24), the answer at p = 48 was 1.0e−4 off
+//! with an estimate of 4.1e−5; it is now 1.5e−6 off (the lumping's second-order term).
+//! Last, ρF/N = L − β + … is a difference of O(λ) terms, so on a nearly elastic cover its round-off,
+//! 8ε(λ + |β|)/|ρF/N| times the lumping's amplification (as in the half-space `auto` scheme), is
+//! added too, and named in the warning when it is what keeps the estimate above tol.
+//!
 //! # Where it stops: the switch to the hat scheme
 //! The layer term costs ~(L/h′)²·p per solve (κ up to 20L/h′, orders up to κ), so the degree is
 //! capped at `p_max` = 48 (`LayerSettings`): covers with h′/L < 0.5·log₁₀(1/tol)/48, i.e. h/λ below
