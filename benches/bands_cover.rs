@@ -1,14 +1,16 @@
 //! Covered bands, cheap against full (issue 16, cost of the bands): on the shipped compounds
 //! (data/), the covered scene's (conveyor-idler, 5 mm cover) replicate ratios by the full bootstrap
-//! (every replicate solved on the cover, `scene_ratios_full_on`) and by the main job's estimate
-//! (8 replicates on the cover, the rest from their half-space ratios by regression, eq. 15.6b,
-//! `scene_ratios_on`): CPU time of each in a 2-thread pool, and per temperature the band's log
-//! half-width ln(p95/p05)/2 and its median ln(p50/F) by both. Run:
-//! `cargo bench --bench bands_cover`.
+//! (every replicate solved on the cover, `scene_ratios_full_on`), by 8 replicates on the cover at
+//! every temperature and the rest from their half-space ratios by regression (eq. 15.6b,
+//! `scene_ratios_every_temp_on`) and by the main job's estimate (the same 8 solved at every other
+//! temperature and carried between them, eq. 15.6c, `scene_ratios_on`): CPU time of each in a
+//! 2-thread pool, and per temperature the band's log half-width ln(p95/p05)/2 and its median
+//! ln(p50/F) by each. Run: `cargo bench --bench bands_cover`.
 
 use std::time::Instant;
 use viscoroll::bands::{
-    band_of, build_ensemble, scene_ratios_full_on, scene_ratios_on, BandSettings,
+    band_of, build_ensemble, scene_bands_on, scene_ratios_every_temp_on, scene_ratios_full_on,
+    BandSettings,
 };
 use viscoroll::dma::{read_files, IngestOptions};
 use viscoroll::pipeline::fit_compound::fit_measurement_master;
@@ -65,46 +67,83 @@ fn main() {
             spec.cover_thickness_mm.unwrap_or(f64::NAN)
         );
         println!(
-            "{:<18} {:>6} {:>9} {:>9} {:>9} {:>9} {:>8}",
-            "compound", "T °C", "w full", "w cheap", "m full", "m cheap", "w ratio"
+            "{:<18} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>7} {:>7} {:>8}",
+            "compound", "T °C", "w full", "w every", "w main", "m full", "m every", "m main",
+            "every/f", "main/f", "carried"
         );
-        let mut worst: f64 = 1.0;
-        let mut best: f64 = 1.0;
+        // (ratio of half-widths to the full's: every temperature, main job's) over the points
+        // whose full half-width exceeds 0.01, and over all
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [0.0f64; 2];
+        let mut lo_all = [f64::INFINITY; 2];
+        let mut hi_all = [0.0f64; 2];
+        let mut max_dm = [0.0f64; 2];
         let mut costs = Vec::new();
         for (name, files) in sets {
             let m = read_files(&files, &IngestOptions::default()).unwrap();
             let (fit, master) = fit_measurement_master(name, &m, &FitOptions::default()).unwrap();
             let e = build_ensemble(&master, &m, &fit, &bs).unwrap();
+            let timed = |f: &dyn Fn() -> Vec<Vec<f64>>| {
+                let (t, c) = (Instant::now(), cpu_s());
+                let r = f();
+                (r, t.elapsed().as_secs_f64(), cpu_s() - c)
+            };
+            let scene = spec.scene();
+            let temps = &spec.temps_c;
+            let (full, t_full, c_full) =
+                timed(&|| scene_ratios_full_on(&fit, &e, &scene, cover_m, temps, &bs));
+            let (every, t_every, c_every) =
+                timed(&|| scene_ratios_every_temp_on(&fit, &e, &scene, cover_m, temps, &bs));
             let (t, c) = (Instant::now(), cpu_s());
-            let full = scene_ratios_full_on(&fit, &e, &spec.scene(), cover_m, &spec.temps_c, &bs);
-            let (t_full, c_full) = (t.elapsed().as_secs_f64(), cpu_s() - c);
-            let (t, c) = (Instant::now(), cpu_s());
-            let cheap = scene_ratios_on(&fit, &e, &spec.scene(), cover_m, &spec.temps_c, &bs);
-            let (t_cheap, c_cheap) = (t.elapsed().as_secs_f64(), cpu_s() - c);
-            costs.push((name, t_full, c_full, t_cheap, c_cheap));
-            for (i, temp) in spec.temps_c.iter().enumerate() {
-                let (Some(a), Some(b)) = (band_of(1.0, &full[i]), band_of(1.0, &cheap[i])) else {
+            let main_bands = scene_bands_on(&fit, &e, &scene, cover_m, temps, &bs);
+            let (t_main, c_main) = (t.elapsed().as_secs_f64(), cpu_s() - c);
+            let main = main_bands.ratios.clone();
+            costs.push((name, t_full, c_full, t_every, c_every, t_main, c_main));
+            for (i, temp) in temps.iter().enumerate() {
+                let (Some(a), Some(b), Some(c)) = (
+                    band_of(1.0, &full[i]),
+                    band_of(1.0, &every[i]),
+                    band_of(1.0, &main[i]),
+                ) else {
                     println!("{name:<18} {temp:>6} no band");
                     continue;
                 };
-                let (wa, wb) = ((a.p95 / a.p05).ln() / 2.0, (b.p95 / b.p05).ln() / 2.0);
-                worst = worst.max(wb / wa);
-                best = best.min(wb / wa);
+                let w = |b: &viscoroll::results::FrictionBand| (b.p95 / b.p05).ln() / 2.0;
+                let (wa, wb, wc) = (w(&a), w(&b), w(&c));
+                for (j, r) in [wb / wa, wc / wa].into_iter().enumerate() {
+                    lo_all[j] = lo_all[j].min(r);
+                    hi_all[j] = hi_all[j].max(r);
+                    if wa > 0.01 {
+                        lo[j] = lo[j].min(r);
+                        hi[j] = hi[j].max(r);
+                    }
+                }
+                max_dm[0] = max_dm[0].max((b.p50.ln() - a.p50.ln()).abs());
+                max_dm[1] = max_dm[1].max((c.p50.ln() - a.p50.ln()).abs());
                 println!(
-                    "{name:<18} {temp:>6} {wa:>9.4} {wb:>9.4} {:>+9.4} {:>+9.4} {:>8.2}",
+                    "{name:<18} {temp:>6} {wa:>9.4} {wb:>9.4} {wc:>9.4} {:>+9.4} {:>+9.4} {:>+9.4} {:>7.2} {:>7.2} {:>8}",
                     a.p50.ln(),
                     b.p50.ln(),
-                    wb / wa
+                    c.p50.ln(),
+                    wb / wa,
+                    wc / wa,
+                    main_bands.carried_ln[i].map_or("solved".into(), |s| format!("{s:.4}"))
                 );
             }
         }
-        println!("half-width cheap/full: {best:.2} … {worst:.2}");
+        for (j, what) in ["every temperature", "main job (carried)"].iter().enumerate() {
+            println!(
+                "half-width {what}/full: {:.2} … {:.2} where full > 0.01, {:.2} … {:.2} at all; \
+                 |median − full's| ≤ {:.4}",
+                lo[j], hi[j], lo_all[j], hi_all[j], max_dm[j]
+            );
+        }
         println!(
-            "\n{:<18} {:>12} {:>12} {:>12} {:>12}",
-            "compound", "full wall s", "full CPU s", "cheap wall s", "cheap CPU s"
+            "\n{:<18} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}",
+            "compound", "full wall", "full CPU", "every wall", "every CPU", "main wall", "main CPU"
         );
-        for (name, a, b, c, d) in costs {
-            println!("{name:<18} {a:>12.2} {b:>12.2} {c:>12.2} {d:>12.2}");
+        for (name, a, b, c, d, e, f) in costs {
+            println!("{name:<18} {a:>10.2} {b:>10.2} {c:>10.2} {d:>10.2} {e:>10.2} {f:>10.2}");
         }
     });
 }

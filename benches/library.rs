@@ -13,6 +13,7 @@
 
 use std::path::Path;
 use std::time::Instant;
+use viscoroll::contact::body::layer::BodyModel;
 use viscoroll::pipeline::scenes::{
     friction_maps, friction_vs_temperature, pipeline_contact_settings, pipeline_map_settings,
 };
@@ -135,6 +136,8 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
             fit.bands = viscoroll::bands::build_ensemble(&master, &m, &fit, &bs).ok();
             let c2 = cpu_s();
             add("bands: ensemble (refits)".into(), c2 - c1, 0);
+            // the half-space solves shared by scenes with the same roll (as the main job does)
+            let mut half_space: Vec<viscoroll::bands::HalfSpaceRatios> = Vec::new();
             for spec in &opts.scenes.scene {
                 let body = if spec.cover_thickness_mm.is_some() {
                     "cover"
@@ -150,9 +153,31 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                     points.len(),
                 );
                 if let Some(e) = fit.bands.as_ref() {
-                    let nominal: Vec<(f64, f64)> = points
+                    let hs_scene = viscoroll::contact::Scene {
+                        body: viscoroll::contact::Body::HalfSpace,
+                        ..spec.scene()
+                    };
+                    let shared = |h: &viscoroll::bands::HalfSpaceRatios| {
+                        h.scene == hs_scene && h.temps_c == spec.temps_c
+                    };
+                    if !half_space.iter().any(shared) {
+                        half_space.extend(viscoroll::bands::half_space_ratios(
+                            &fit,
+                            e,
+                            &spec.scene(),
+                            &spec.temps_c,
+                            &bs,
+                        ));
+                    }
+                    // as the main job hands them on (crate::pipeline::run)
+                    let nominal: Vec<viscoroll::bands::CoverSolve> = points
                         .iter()
-                        .map(|p| (p.friction, p.contact_length_mm * 1e-3))
+                        .map(|p| {
+                            let body = [BodyModel::HalfSpace, BodyModel::Layer, BodyModel::Winkler]
+                                .into_iter()
+                                .find(|m| m.name() == p.model);
+                            (p.friction, p.contact_length_mm * 1e-3, body)
+                        })
                         .collect();
                     viscoroll::bands::scene_bands_given(
                         &fit,
@@ -162,6 +187,7 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                         &spec.temps_c,
                         &bs,
                         &nominal,
+                        half_space.iter().find(|h| shared(h)),
                     );
                 }
                 let c2 = cpu_s();

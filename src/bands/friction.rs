@@ -3,12 +3,12 @@
 //! solved the same way, then the band of each point and of the scene mean.
 //!
 //! Input: a [`CompoundFit`], a [`Scene`], [`BandSettings`]; output: the solver of the replicate
-//! solves ([`solver`]), the covered regression (eq. 15.6b), the shift-law tail term (eq. 15.8) and,
+//! solves ([`solver`], [`cover_solver`]), the covered regression (eq. 15.6b), the shift-law tail term (eq. 15.8) and,
 //! from replicate ratios F_b/F̂ (assembled per scene in super::scene), [`FrictionBand`]s
 //! ([`band_of`], [`mean_band`]).
 
 use super::BandSettings;
-use crate::contact::body::layer::{roll_cover, ModelChoice};
+use crate::contact::body::layer::{roll_cover_from, BodyModel, ModelChoice};
 use crate::contact::{roll, AutoSettings, ContactSettings, RollSolution, Scene, Scheme};
 use crate::results::{CompoundFit, FrictionBand, FrictionPoint};
 use crate::CreepSpectrum;
@@ -48,8 +48,8 @@ pub const COVER_BAND_TOL: f64 = 1e-3;
 pub type Solve<'a> = dyn Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a;
 
 /// The solver of one scene for the bands: F/N of a creep spectrum at log10 a_T on the half-space
-/// (`cover_m` None, `auto` at the band tolerance) or the cover ([`roll_cover`], `auto` body at
-/// [`COVER_BAND_TOL`] or the band tolerance if looser), or the solver's error.
+/// (`cover_m` None, `auto` at the band tolerance) or the cover ([`cover_solver`] started cold), or
+/// the solver's error.
 pub fn solver<'a>(
     scene: &'a Scene,
     cover_m: Option<f64>,
@@ -60,22 +60,83 @@ pub fn solver<'a>(
         ..*scene
     };
     let cs = band_contact_settings(settings);
+    let on_cover = cover_m.map(|h_m| cover_solver(&scene, h_m, settings));
+    move |c: &CreepSpectrum, log10_a_t: f64| match &on_cover {
+        Some(solve) => solve(c, log10_a_t, None, ModelChoice::Auto).map(|r| r.0),
+        None => {
+            if !log10_a_t.is_finite() {
+                return Err(format!("log10 a_T is not finite ({log10_a_t})"));
+            }
+            let f = roll(&scene, &shifted(c, log10_a_t), &cs)
+                .map_err(|e| e.to_string())?
+                .friction;
+            positive_friction(f)
+        }
+    }
+}
+
+fn positive_friction(f: f64) -> Result<f64, String> {
+    if f.is_finite() && f > 0.0 {
+        Ok(f)
+    } else {
+        Err(format!("F/N = {f} is not finite and positive"))
+    }
+}
+
+/// The body a replicate of a covered scene is solved on: the body the fit's own solve at that
+/// temperature chose (`model`), so that F_b/F̂ is a ratio on one body and the replicate skips the
+/// `auto` choice (its half-space solve with the gap check costs about a third of a replicate's layer
+/// solve; measured by `cargo bench --bench bands_levers`); `auto` when the fit's body is not known
+/// or is one `roll_cover` cannot be asked for by name (the constrained Winkler foundation).
+pub fn replicate_choice(model: Option<BodyModel>) -> ModelChoice {
+    match model {
+        Some(BodyModel::Layer) => ModelChoice::Layer,
+        Some(BodyModel::HalfSpace) => ModelChoice::HalfSpace,
+        Some(BodyModel::Winkler) => ModelChoice::Winkler,
+        Some(BodyModel::WinklerConstrained) | None => ModelChoice::Auto,
+    }
+}
+
+/// One covered solve of the bands: F/N, contact length in m, the body solved (`None`: not known).
+pub type CoverSolve = (f64, f64, Option<BodyModel>);
+
+/// A covered solve of the bands ([`cover_solver`]): creep spectrum, log10 a_T, start, body.
+pub trait CoverSolver:
+    Fn(&CreepSpectrum, f64, Option<(f64, f64)>, ModelChoice) -> Result<CoverSolve, String> + Sync
+{
+}
+
+impl<F> CoverSolver for F where
+    F: Fn(&CreepSpectrum, f64, Option<(f64, f64)>, ModelChoice) -> Result<CoverSolve, String>
+        + Sync
+{
+}
+
+/// The covered solver of a scene for the bands: F/N, contact length in m and body of a creep
+/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`], the
+/// body `choice` at [`COVER_BAND_TOL`] or the band tolerance if looser), the layer solve started
+/// from `start` = (contact length in m, d ln N′/d ln λ) when given (the fit's own covered solve at
+/// the same temperature: a replicate's contact differs from it by its scatter, a few per cent; the
+/// answer does not depend on the start beyond the load loop's stopping tolerance), or the
+/// solver's error.
+pub fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl CoverSolver {
+    let scene = Scene {
+        body: crate::contact::Body::HalfSpace,
+        ..*scene
+    };
     let cover_tol = settings.contact_tol.max(COVER_BAND_TOL);
-    move |c: &CreepSpectrum, log10_a_t: f64| {
+    move |c: &CreepSpectrum, log10_a_t: f64, start: Option<(f64, f64)>, choice: ModelChoice| {
         if !log10_a_t.is_finite() {
             return Err(format!("log10 a_T is not finite ({log10_a_t})"));
         }
         let at = shifted(c, log10_a_t);
-        let f = match cover_m {
-            Some(h_m) => cover_roll(&scene, &at, h_m, cover_tol).map(|r| r.friction),
-            None => roll(&scene, &at, &cs).map(|r| r.friction),
-        }
-        .map_err(|e| e.to_string())?;
-        if f.is_finite() && f > 0.0 {
-            Ok(f)
-        } else {
-            Err(format!("F/N = {f} is not finite and positive"))
-        }
+        let r = roll_cover_from(&scene, &at, Some(h_m), choice, cover_tol, start)
+            .map_err(|e| e.to_string())?;
+        Ok((
+            positive_friction(r.roll.friction)?,
+            r.roll.contact_length_m,
+            Some(r.model),
+        ))
     }
 }
 
@@ -100,47 +161,6 @@ pub fn half_space_solve(
         &band_contact_settings(settings),
     )
     .map_err(|e| e.to_string())
-}
-
-/// The solve of [`solver`]'s cover (`auto` body at `tol`) of a spectrum already shifted.
-fn cover_roll(
-    scene: &Scene,
-    at: &CreepSpectrum,
-    cover_m: f64,
-    tol: f64,
-) -> Result<RollSolution, crate::contact::ContactError> {
-    roll_cover(scene, at, Some(cover_m), ModelChoice::Auto, tol).map(|r| r.roll)
-}
-
-/// The fit's own solve on a cover of `cover_m`, as [`solver`] solves it (its friction is the
-/// covered ratios' F̂; its contact length, the covered body's, gives the rolling frequency of
-/// eq. 15.9).
-pub fn cover_solve(
-    scene: &Scene,
-    creep: &CreepSpectrum,
-    log10_a_t: f64,
-    cover_m: f64,
-    settings: &BandSettings,
-) -> Result<RollSolution, String> {
-    let scene = Scene {
-        body: crate::contact::Body::HalfSpace,
-        ..*scene
-    };
-    if !log10_a_t.is_finite() {
-        return Err(format!("log10 a_T is not finite ({log10_a_t})"));
-    }
-    let r = cover_roll(
-        &scene,
-        &shifted(creep, log10_a_t),
-        cover_m,
-        settings.contact_tol.max(COVER_BAND_TOL),
-    )
-    .map_err(|e| e.to_string())?;
-    if r.friction.is_finite() && r.friction > 0.0 {
-        Ok(r)
-    } else {
-        Err(format!("F/N = {} is not finite and positive", r.friction))
-    }
 }
 
 /// A band is refused when more than a quarter of its replicates failed (to refit, or to solve at

@@ -1,6 +1,6 @@
 //! The replicate ratios of one compound in one scene (docs/MATH.md §15, steps 4–5): every replicate
 //! of the ensemble solved at every temperature of the scene, as a ratio to the fit's own friction
-//! solved the same way (eqs. 15.5, 15.6, 15.6b), with the model-error terms of the points beyond the
+//! solved the same way (eqs. 15.5, 15.6, 15.6b, 15.6c), with the model-error terms of the points beyond the
 //! measured temperatures (eq. 15.8) and beyond the measured frequencies (eq. 15.9) drawn in, and the
 //! failed solves counted; then each point's band with its notes ([`SceneRatios::point_band`]).
 //!
@@ -8,16 +8,18 @@
 //! [`SceneRatios`].
 
 use super::friction::{
-    cover_solve, half_space_solve, predict_from_half_space, solver, tail_note, tail_term,
-    too_many_failed, Solve, COVER_BAND_TOL,
+    cover_solver, half_space_solve, predict_from_half_space, replicate_choice, solver, tail_note,
+    tail_term, too_many_failed, CoverSolve, Solve, COVER_BAND_TOL,
 };
 use super::window::{
     continued_spectrum, excess, measured_window_hz, ramp_weight, rolling_reduced_freq_hz,
     window_note, WindowExcess, WindowSide,
 };
 use super::BandSettings;
+use crate::contact::body::layer::{BodyModel, ModelChoice};
 use crate::contact::Scene;
 use crate::results::{BandEnsemble, CompoundFit, FrictionBand};
+use crate::CreepSpectrum;
 use rayon::prelude::*;
 
 /// Replicates of a covered scene whose ratios are solved on the covered body itself (eq. 15.6b);
@@ -49,6 +51,15 @@ pub struct SceneRatios {
     pub window: Vec<Option<WindowTerm>>,
     /// The first failed replicate solve's reason (`None` when none failed).
     pub first_failure: Vec<Option<String>>,
+    /// On a cover, the standard deviation (ln F) of the error of the covered ratios carried to
+    /// this temperature from its neighbours (eq. 15.6c), drawn into every replicate; `None` where
+    /// they were solved, and off a cover.
+    pub carried_ln: Vec<Option<f64>>,
+    /// The replicate solves' error carried into the band (ln F, per temperature): on the
+    /// half-space, the fit's own solve's error estimate plus the median of the replicates' (their
+    /// tolerance, [`BandSettings::contact_tol`], is looser than the report's); 0 on a cover (its
+    /// ratios are solved at the main job's own 1e−3, eq. 15.6).
+    pub solver_ln: Vec<f64>,
 }
 
 impl SceneRatios {
@@ -58,6 +69,8 @@ impl SceneRatios {
             tail_ln: vec![None; n],
             window: vec![None; n],
             first_failure: vec![None; n],
+            carried_ln: vec![None; n],
+            solver_ln: vec![0.0; n],
         }
     }
 
@@ -101,7 +114,7 @@ impl SceneRatios {
                 )],
             );
         }
-        let Some(band) = super::band_of(value, r) else {
+        let Some(mut band) = super::band_of(value, r) else {
             return (
                 None,
                 vec![format!(
@@ -110,6 +123,12 @@ impl SceneRatios {
                 )],
             );
         };
+        // the solver's error: each quantile moved outwards by it (docs/MATH.md eq. 15.5b)
+        let e = self.solver_ln.get(i).copied().unwrap_or(0.0);
+        if e.is_finite() && e > 0.0 {
+            band.p05 *= (-e).exp();
+            band.p95 *= e.exp();
+        }
         let mut notes = Vec::new();
         if let Some(Some(s)) = self.tail_ln.get(i) {
             notes.push(tail_note(*s));
@@ -135,9 +154,10 @@ impl SceneRatios {
 /// Per temperature of `temps_c`, the ratio F_b/F̂ of each replicate b (NaN where a solve failed),
 /// on a cover of `cover_m` bonded to a rigid carcass (eq. 15.6): each replicate's
 /// creep spectrum, shifted by its own law, through the body `auto` chooses
-/// (`roll_cover`, at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
+/// ([`cover_solver`], at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
 /// friction; `None`: the half-space at `settings.contact_tol`. On a cover, only
-/// [`COVER_SOLVED_REPLICATES`] replicates are solved on the cover; the rest come from their
+/// [`COVER_SOLVED_REPLICATES`] replicates are solved on the cover, at every other temperature
+/// ([`cover_solved_temps`]; eq. 15.6c carries them to the others); the rest come from their
 /// half-space ratios (eq. 15.6b, [`predict_from_half_space`]). Points beyond the measured
 /// temperatures or frequencies get the terms of eqs. 15.8 and 15.9 ([`scene_bands_on`]).
 pub fn scene_ratios_on(
@@ -162,11 +182,46 @@ pub fn scene_ratios_full_on(
     temps_c: &[f64],
     settings: &BandSettings,
 ) -> Vec<Vec<f64>> {
-    bands_with(fit, ensemble, scene, cover_m, temps_c, settings, true, None).ratios
+    bands_with(
+        fit,
+        ensemble,
+        scene,
+        cover_m,
+        temps_c,
+        settings,
+        CoverMode::Full,
+        None,
+        None,
+    )
+    .ratios
+}
+
+/// [`scene_ratios_on`] with the [`COVER_SOLVED_REPLICATES`] solved on the cover at every
+/// temperature (eq. 15.6b without 15.6c): the reference the carried ratios are checked against.
+pub fn scene_ratios_every_temp_on(
+    fit: &CompoundFit,
+    ensemble: &BandEnsemble,
+    scene: &Scene,
+    cover_m: Option<f64>,
+    temps_c: &[f64],
+    settings: &BandSettings,
+) -> Vec<Vec<f64>> {
+    bands_with(
+        fit,
+        ensemble,
+        scene,
+        cover_m,
+        temps_c,
+        settings,
+        CoverMode::EveryTemp,
+        None,
+        None,
+    )
+    .ratios
 }
 
 /// [`scene_ratios_on`] with the model-error terms it drew in and the failures it met (module doc,
-/// eqs. 15.6, 15.6b, 15.8, 15.9). Each term enters each replicate as a factor e^(s·u_b), u_b
+/// eqs. 15.6, 15.6b, 15.6c, 15.8, 15.9). Each term enters each replicate as a factor e^(s·u_b), u_b
 /// standard normal, one draw per replicate, term and side (below, above the measured range): the
 /// alternative's change is taken as one standard deviation, so the 90 % band spans ±1.645 of it.
 pub fn scene_bands_on(
@@ -178,17 +233,29 @@ pub fn scene_bands_on(
     settings: &BandSettings,
 ) -> SceneRatios {
     bands_with(
-        fit, ensemble, scene, cover_m, temps_c, settings, false, None,
+        fit,
+        ensemble,
+        scene,
+        cover_m,
+        temps_c,
+        settings,
+        CoverMode::Carried,
+        None,
+        None,
     )
 }
 
-/// [`scene_bands_on`] on a cover with the nominal covered solves already done: `nominal[i]` the
-/// fit's friction and contact length (m) at `temps_c[i]` on the cover by `auto` at
-/// [`COVER_BAND_TOL`] (the main job's covered points are exactly that solve: crate::pipeline's
-/// `COVER_TOL` is the same 1e−3), NaN where it failed (then solved here). Saves one layer solve
-/// per temperature. Without a cover, or with a band tolerance looser than [`COVER_BAND_TOL`],
-/// `nominal` is not used (the half-space's ratios are over the fit solved at the band tolerance,
-/// not the report's).
+/// [`scene_bands_on`] with what the main job has already solved: `nominal[i]` = (F/N, contact
+/// length in m, body) of the fit at `temps_c[i]` on the cover by `auto` at [`COVER_BAND_TOL`] (the
+/// main job's covered points are exactly that solve: crate::pipeline's `COVER_TOL` is the same
+/// 1e−3), NaN where it failed (then solved here), which saves one layer solve per temperature,
+/// starts each replicate's layer solve there and solves it on the same body
+/// ([`replicate_choice`]); and `half_space`, the replicates' half-space ratios of
+/// another scene with the same roll and temperatures ([`half_space_ratios`]; used only when it is
+/// of this scene, else solved here). Without a cover, or with a band tolerance looser than
+/// [`COVER_BAND_TOL`], `nominal` is not used (the half-space's ratios are over the fit solved at
+/// the band tolerance, not the report's).
+#[allow(clippy::too_many_arguments)]
 pub fn scene_bands_given(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
@@ -196,7 +263,8 @@ pub fn scene_bands_given(
     cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
-    nominal: &[(f64, f64)],
+    nominal: &[CoverSolve],
+    half_space: Option<&HalfSpaceRatios>,
 ) -> SceneRatios {
     let usable = cover_m.is_some()
         && settings.contact_tol <= COVER_BAND_TOL
@@ -208,9 +276,117 @@ pub fn scene_bands_given(
         cover_m,
         temps_c,
         settings,
-        false,
+        CoverMode::Carried,
         usable.then_some(nominal),
+        half_space,
     )
+}
+
+/// The half-space solves of the bands in one scene: the fit's own (F̂, contact length) and every
+/// replicate's ratio F_b/F̂ per temperature, at the band tolerance. The same for every scene with
+/// the same roll (radius, load, speed, ν) and temperatures, whatever its body: a covered scene's
+/// regression (eq. 15.6b) and its half-space twin share them ([`scene_bands_given`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HalfSpaceRatios {
+    /// The roll they were solved for (on the half-space).
+    pub scene: Scene,
+    /// Its temperatures, °C.
+    pub temps_c: Vec<f64>,
+    /// Per temperature, the fit's (F/N, contact length in m) on the half-space, or why it failed.
+    pub fit: Vec<Result<(f64, f64), String>>,
+    /// Per temperature, per replicate, F_b/F̂ or why it failed.
+    pub ratios: Vec<Vec<Result<f64, String>>>,
+    /// Per temperature, the fit's solve's error estimate plus the median of the replicates' (ln F;
+    /// eq. 15.5b).
+    pub error_ln: Vec<f64>,
+}
+
+/// [`HalfSpaceRatios`] of `fit` and its `ensemble` at `temps_c` on `scene`'s roll (its body and any
+/// cover ignored); `None` without a creep spectrum.
+pub fn half_space_ratios(
+    fit: &CompoundFit,
+    ensemble: &BandEnsemble,
+    scene: &Scene,
+    temps_c: &[f64],
+    settings: &BandSettings,
+) -> Option<HalfSpaceRatios> {
+    let creep = fit.creep.as_ref()?;
+    let scene = Scene {
+        body: crate::contact::Body::HalfSpace,
+        ..*scene
+    };
+    let law = &fit.shift_law;
+    let solve = |c: &CreepSpectrum, t: f64| {
+        half_space_solve(&scene, c, law.log10_a_t(t), settings).and_then(|r| {
+            let f = r.friction;
+            if f.is_finite() && f > 0.0 {
+                let e = r.dimensionless.error_estimate.unwrap_or(0.0);
+                Ok((f, r.contact_length_m, if e.is_finite() { e } else { 0.0 }))
+            } else {
+                Err(format!("F/N = {f} is not finite and positive"))
+            }
+        })
+    };
+    let fit_solves: Vec<Result<(f64, f64, f64), String>> =
+        temps_c.par_iter().map(|&t| solve(creep, t)).collect();
+    let nb = ensemble.replicates.len();
+    let mut flat: Vec<Result<(f64, f64), String>> = (0..temps_c.len() * nb)
+        .into_par_iter()
+        .map(|k| {
+            let (i, b) = (k / nb, k % nb);
+            let (f0, _, _) = fit_solves[i]
+                .as_ref()
+                .map_err(|e| format!("the fit's own solve failed: {e}"))?;
+            let r = &ensemble.replicates[b];
+            let (f, _, e) =
+                half_space_solve(&scene, &r.creep, r.log10_a_t(law, temps_c[i]), settings).map(
+                    |s| {
+                        let e = s.dimensionless.error_estimate.unwrap_or(0.0);
+                        (s.friction, 0.0, if e.is_finite() { e } else { 0.0 })
+                    },
+                )?;
+            if !(f.is_finite() && f > 0.0) {
+                return Err(format!("F/N = {f} is not finite and positive"));
+            }
+            Ok((f / f0, e))
+        })
+        .collect();
+    let mut ratios = Vec::with_capacity(temps_c.len());
+    let mut error_ln = Vec::with_capacity(temps_c.len());
+    for own in &fit_solves {
+        let rest = flat.split_off(nb);
+        let row = std::mem::replace(&mut flat, rest);
+        let mut e: Vec<f64> = row
+            .iter()
+            .filter_map(|r| r.as_ref().ok().map(|x| x.1))
+            .collect();
+        e.sort_by(f64::total_cmp);
+        let e0 = own.as_ref().map_or(0.0, |x| x.2);
+        error_ln.push(e0 + e.get(e.len() / 2).copied().unwrap_or(0.0));
+        ratios.push(row.into_iter().map(|r| r.map(|x| x.0)).collect());
+    }
+    Some(HalfSpaceRatios {
+        scene,
+        temps_c: temps_c.to_vec(),
+        fit: fit_solves
+            .into_iter()
+            .map(|r| r.map(|(f, l, _)| (f, l)))
+            .collect(),
+        ratios,
+        error_ln,
+    })
+}
+
+/// How a covered scene's replicates are solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum CoverMode {
+    /// Every replicate on the cover at every temperature (eq. 15.6).
+    Full,
+    /// [`COVER_SOLVED_REPLICATES`] on the cover at every temperature, the rest by eq. 15.6b.
+    EveryTemp,
+    /// [`COVER_SOLVED_REPLICATES`] on the cover at [`cover_solved_temps`], carried to the other
+    /// temperatures by eq. 15.6c, the rest by eq. 15.6b (the main job's).
+    Carried,
 }
 
 /// A standard normal draw of replicate `b` for stream `stream` of the bands' seed: the same for
@@ -222,6 +398,8 @@ fn replicate_normal(seed: u64, stream: u64, b: usize) -> f64 {
 
 /// Stream of the covered regression's residual draws (eq. 15.6b).
 const STREAM_COVER: u64 = 0x636f_7665_7200_0001;
+/// Stream of the draws of the carried covered ratios' error (eq. 15.6c).
+const STREAM_COVER_CARRIED: u64 = 0x636f_7665_7200_0002;
 /// Streams of the extrapolation term's draws below and above the measured temperatures (eq. 15.8).
 const STREAM_TAIL_LOW: u64 = 0x7461_696c_0000_0001;
 const STREAM_TAIL_HIGH: u64 = 0x7461_696c_0000_0002;
@@ -229,31 +407,36 @@ const STREAM_TAIL_HIGH: u64 = 0x7461_696c_0000_0002;
 const STREAM_WINDOW_LOW: u64 = 0x7769_6e64_0000_0001;
 const STREAM_WINDOW_HIGH: u64 = 0x7769_6e64_0000_0002;
 
-/// Per temperature, per replicate of `which` (indices into the ensemble), F_b/F̂ over the given
-/// nominal frictions F̂ solved by `solve`, or why it failed; parallel over (temperature, replicate).
+/// A replicate solve at temperature index i: F/N of a creep spectrum at log10 a_T, or why not.
+type SolveAt<'a> = dyn Fn(usize, &CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a;
+
+/// Per temperature index of `at`, per replicate of `which` (indices into the ensemble), F_b/F̂
+/// over the nominal frictions F̂ (`nominal`, by temperature index) solved by `solve`, or why it
+/// failed; parallel over (temperature, replicate).
 fn ratios_over(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
     temps_c: &[f64],
+    at: &[usize],
     which: &[usize],
-    solve: &Solve,
+    solve: &SolveAt,
     nominal: &[Result<f64, String>],
 ) -> Vec<Vec<Result<f64, String>>> {
     let law = &fit.shift_law;
     let nb = which.len();
-    let mut flat: Vec<Result<f64, String>> = (0..temps_c.len() * nb)
+    let mut flat: Vec<Result<f64, String>> = (0..at.len() * nb)
         .into_par_iter()
         .map(|k| {
-            let (i, b) = (k / nb, which[k % nb]);
+            let (i, b) = (at[k / nb], which[k % nb]);
             let f0 = nominal[i]
                 .as_ref()
                 .map_err(|e| format!("the fit's own solve failed: {e}"))?;
             let r = &ensemble.replicates[b];
-            Ok(solve(&r.creep, r.log10_a_t(law, temps_c[i]))? / f0)
+            Ok(solve(i, &r.creep, r.log10_a_t(law, temps_c[i]))? / f0)
         })
         .collect();
-    let mut out = Vec::with_capacity(temps_c.len());
-    for _ in 0..temps_c.len() {
+    let mut out = Vec::with_capacity(at.len());
+    for _ in 0..at.len() {
         let rest = flat.split_off(nb);
         out.push(std::mem::replace(&mut flat, rest));
     }
@@ -300,6 +483,172 @@ fn predicted(
     Some((v, first))
 }
 
+/// Fewest temperatures of a covered scene for which its replicates are carried between
+/// temperatures (eq. 15.6c): with fewer, every one is solved.
+const CARRY_MIN_TEMPS: usize = 5;
+
+/// A temperature's covered ratios are carried from its solved neighbours (eq. 15.6c) only where
+/// the departures q_b there spread by at most this fraction of the half-space ratios' own spread at
+/// the temperature, and the carried error's standard deviation is as small: any error in carrying
+/// q then moves the band's width by about this fraction at most (the band's spread is that of
+/// ln(hs_b/ĥs) + q_b); elsewhere (a cover that changes the band fast with temperature) they are
+/// solved. Checked against solving every temperature by `cargo bench --bench bands_cover`.
+const CARRY_SPREAD_FRACTION: f64 = 0.1;
+
+/// The temperatures (indices into `temps_c`) at which a covered scene's replicates are solved on
+/// the cover first (eq. 15.6c): in order of temperature, the first, every other one and the last;
+/// all of them with fewer than [`CARRY_MIN_TEMPS`] or when a temperature is not finite.
+pub fn cover_solved_temps(temps_c: &[f64]) -> Vec<usize> {
+    let n = temps_c.len();
+    if n < CARRY_MIN_TEMPS || temps_c.iter().any(|t| !t.is_finite()) {
+        return (0..n).collect();
+    }
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| temps_c[a].total_cmp(&temps_c[b]));
+    let mut keep: Vec<usize> = order.iter().copied().step_by(2).collect();
+    if n % 2 == 0 {
+        keep.push(order[n - 1]);
+    }
+    keep.sort_unstable();
+    keep
+}
+
+/// Sample standard deviation of the finite values (NaN with fewer than two).
+fn spread<'a>(v: impl Iterator<Item = &'a Result<f64, String>>) -> f64 {
+    let x: Vec<f64> = v
+        .filter_map(|r| r.as_ref().ok().copied())
+        .filter(|x| x.is_finite())
+        .collect();
+    let n = x.len() as f64;
+    if x.len() < 2 {
+        return f64::NAN;
+    }
+    let m = x.iter().sum::<f64>() / n;
+    (x.iter().map(|v| (v - m) * (v - m)).sum::<f64>() / (n - 1.0)).sqrt()
+}
+
+/// Per temperature, the covered ratios of one temperature, carried or solved.
+type Carried = (Vec<Option<Vec<Result<f64, String>>>>, Vec<Option<f64>>);
+
+/// The covered ratios of the solved replicates carried from the temperatures `solved` to the
+/// others (eq. 15.6c), per temperature (`None` where it is to be solved: [`CARRY_SPREAD_FRACTION`]),
+/// and the standard deviation of the carried ratios' error (ln F; `None` where solved). With
+/// q_b(T) = ln(cov_b/ĉov) − ln(hs_b/ĥs) the departure of replicate b's cover/half-space ratio from
+/// the fit's, q_b at a temperature T between solved neighbours T₋ < T < T₊ is the straight line
+/// between them, and its covered ratio hs_b/ĥs·e^(q_b). The error of that line is
+/// ½(T − T₋)(T₊ − T)·q″: it is measured at each interior solved temperature T_j by the line through
+/// its own solved neighbours (distances a, c), e_b = q_b(T_j) − line, and scaled by
+/// (T − T₋)(T₊ − T)/(a·c); its mean square over the replicates and the interior solved neighbours
+/// of T (every interior solved temperature when neither neighbour is one) is the variance. Where
+/// no interior solved temperature measured it, every temperature is to be solved.
+fn carried(
+    temps_c: &[f64],
+    solved: &[usize],
+    hs: &[Vec<Result<f64, String>>],
+    sub: &[Vec<Result<f64, String>>],
+) -> Carried {
+    let n = temps_c.len();
+    let k = sub.first().map_or(0, Vec::len);
+    let mut order: Vec<usize> = solved.to_vec();
+    order.sort_by(|&a, &b| temps_c[a].total_cmp(&temps_c[b]));
+    // q at the solved temperatures, by position in `order`
+    let q_at = |i: usize| -> Vec<Result<f64, String>> {
+        let s = solved.iter().position(|&j| j == i).expect("a solved index");
+        (0..k)
+            .map(|b| {
+                let c = sub[s][b].clone()?;
+                let h = hs[i][b].clone()?;
+                let q = (c / h).ln();
+                if q.is_finite() {
+                    Ok(q)
+                } else {
+                    Err(format!("covered/half-space ratio {c}/{h} not finite"))
+                }
+            })
+            .collect()
+    };
+    let q: Vec<Vec<Result<f64, String>>> = order.iter().map(|&i| q_at(i)).collect();
+    let line = |qa: &Result<f64, String>,
+                qb: &Result<f64, String>,
+                w: f64|
+     -> Result<f64, String> { Ok(qa.clone()? * (1.0 - w) + qb.clone()? * w) };
+    // the error measured at each interior solved temperature, as mean of e²/(a·c)²
+    let mut measured: Vec<Option<f64>> = vec![None; order.len()];
+    for p in 1..order.len().saturating_sub(1) {
+        let (t0, t, t1) = (
+            temps_c[order[p - 1]],
+            temps_c[order[p]],
+            temps_c[order[p + 1]],
+        );
+        let (a, c) = (t - t0, t1 - t);
+        if !(a > 0.0 && c > 0.0) {
+            continue;
+        }
+        let e: Vec<f64> = (0..k)
+            .filter_map(|b| {
+                let l = line(&q[p - 1][b], &q[p + 1][b], a / (a + c)).ok()?;
+                Some(q[p][b].clone().ok()? - l)
+            })
+            .collect();
+        if e.len() * 2 > k {
+            measured[p] =
+                Some(e.iter().map(|x| x * x).sum::<f64>() / e.len() as f64 / (a * c).powi(2));
+        }
+    }
+    let all: Vec<f64> = measured.iter().flatten().copied().collect();
+    let mut out: Vec<Option<Vec<Result<f64, String>>>> = vec![None; n];
+    let mut sd: Vec<Option<f64>> = vec![None; n];
+    for (s, &i) in solved.iter().enumerate() {
+        out[i] = Some(sub[s].clone());
+    }
+    if all.is_empty() {
+        return (out, sd);
+    }
+    for i in (0..n).filter(|i| !solved.contains(i)) {
+        let t = temps_c[i];
+        // solved neighbours by position in `order` (the ends are always solved)
+        let p1 = order
+            .iter()
+            .position(|&j| temps_c[j] >= t)
+            .unwrap_or(order.len() - 1)
+            .max(1);
+        let p0 = p1 - 1;
+        let (t0, t1) = (temps_c[order[p0]], temps_c[order[p1]]);
+        let w = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
+        let near: Vec<f64> = [measured[p0], measured[p1]].into_iter().flatten().collect();
+        let per_ac2 = if near.is_empty() {
+            all.iter().sum::<f64>() / all.len() as f64
+        } else {
+            near.iter().sum::<f64>() / near.len() as f64
+        };
+        let ac = (t - t0).max(0.0) * (t1 - t).max(0.0);
+        let s_carried = (per_ac2 * ac * ac).sqrt();
+        let s_q = spread(q[p0].iter()).max(spread(q[p1].iter()));
+        let ln_hs: Vec<Result<f64, String>> = hs[i]
+            .iter()
+            .map(|r| r.as_ref().map(|x| x.ln()).map_err(Clone::clone))
+            .collect();
+        let s_hs = spread(ln_hs.iter());
+        // NaN spreads (too few finite values) do not pass: solved by the caller
+        let small = s_q.max(s_carried) <= CARRY_SPREAD_FRACTION * s_hs;
+        if !small {
+            continue;
+        }
+        sd[i] = Some(s_carried);
+        out[i] = Some(
+            (0..k)
+                .map(|b| {
+                    let qb = line(&q[p0][b], &q[p1][b], w)
+                        .map_err(|e| format!("carried from a failed solve: {e}"))?;
+                    let h = hs[i][b].clone()?;
+                    Ok(h * qb.exp())
+                })
+                .collect(),
+        );
+    }
+    (out, sd)
+}
+
 /// The frequency-window term of the point at `temp_c` (eq. 15.9), weighted by the ramp of
 /// eq. 15.9c inside the edge's last half decade: `None` further inside the measured window (or
 /// without the fit's solve on the scene's body to read its contact length from).
@@ -330,8 +679,8 @@ fn window_term(
     Some(WindowTerm { excess: ex, s_ln })
 }
 
-/// [`scene_bands_on`] with every replicate solved on the cover (`full`), or the covered ones
-/// predicted from the half-space (eq. 15.6b).
+/// [`scene_bands_on`] with the covered replicates solved as `mode` says, the covered nominal
+/// frictions (F/N, contact length in m) given or solved, the half-space ratios given or solved.
 #[allow(clippy::too_many_arguments)]
 fn bands_with(
     fit: &CompoundFit,
@@ -340,101 +689,149 @@ fn bands_with(
     cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
-    full: bool,
-    nominal: Option<&[(f64, f64)]>,
+    mode: CoverMode,
+    nominal: Option<&[CoverSolve]>,
+    half_space: Option<&HalfSpaceRatios>,
 ) -> SceneRatios {
     let Some(creep) = fit.creep.as_ref() else {
         return SceneRatios::empty(temps_c.len());
     };
+    let hs_scene = Scene {
+        body: crate::contact::Body::HalfSpace,
+        ..*scene
+    };
+    // the half-space solves: the fit's F̂ and contact length (the rolling frequency V/l of eq.
+    // 15.9, on a cover too: a cover shortens l by a fraction of a decade in V/l) and the ratios
+    let own;
+    let hs = match half_space.filter(|h| h.scene == hs_scene && h.temps_c == temps_c) {
+        Some(h) => h,
+        None => match half_space_ratios(fit, ensemble, scene, temps_c, settings) {
+            Some(h) => {
+                own = h;
+                &own
+            }
+            None => return SceneRatios::empty(temps_c.len()),
+        },
+    };
     let nb = ensemble.replicates.len();
     let all: Vec<usize> = (0..nb).collect();
-    let half_space = solver(scene, None, settings);
+    let every: Vec<usize> = (0..temps_c.len()).collect();
     let covered = solver(scene, cover_m, settings);
     let law = &fit.shift_law;
-    // the fit on the half-space at the band tolerance: the half-space ratios' F̂ (and, without a
-    // cover, its contact length l for the rolling frequency V/l of eq. 15.9)
-    let hs_fit: Vec<Result<(f64, f64), String>> = temps_c
-        .par_iter()
-        .map(|&t| {
-            half_space_solve(scene, creep, law.log10_a_t(t), settings)
-                .map(|r| (r.friction, r.contact_length_m))
-        })
-        .collect();
-    let hs_nominal: Vec<Result<f64, String>> = hs_fit
-        .iter()
-        .map(|r| r.as_ref().map(|x| x.0).map_err(Clone::clone))
-        .collect();
-    // the body's nominal friction and contact length: the half-space's, or on a cover given
-    // (finite ones), else solved; the cover's l, shorter than the half-space's, sets V/l there
-    let body_fit: Vec<Result<(f64, f64), String>> = match cover_m {
-        None => hs_fit.clone(),
-        Some(h_m) => temps_c
-            .par_iter()
-            .enumerate()
-            .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
-                Some(&(f, l)) if f.is_finite() && f > 0.0 && l.is_finite() && l > 0.0 => Ok((f, l)),
-                _ => cover_solve(scene, creep, law.log10_a_t(t), h_m, settings)
-                    .map(|r| (r.friction, r.contact_length_m)),
-            })
+    // the body's nominal (F/N, contact length, body): the half-space's, or on a cover given
+    // (finite ones), else solved
+    let body_nominal: Vec<Result<CoverSolve, String>> = match cover_m {
+        None => hs
+            .fit
+            .iter()
+            .map(|r| r.clone().map(|(f, l)| (f, l, Some(BodyModel::HalfSpace))))
             .collect(),
+        Some(h_m) => {
+            let on_cover = cover_solver(scene, h_m, settings);
+            temps_c
+                .par_iter()
+                .enumerate()
+                .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
+                    Some(&x) if x.0.is_finite() && x.0 > 0.0 => Ok(x),
+                    _ => on_cover(creep, law.log10_a_t(t), None, ModelChoice::Auto),
+                })
+                .collect()
+        }
     };
-    let body_nominal: Vec<Result<f64, String>> = body_fit
+    let f_nominal: Vec<Result<f64, String>> = body_nominal
         .iter()
         .map(|r| r.as_ref().map(|x| x.0).map_err(Clone::clone))
         .collect();
+    let mut carried_sd: Vec<Option<f64>> = vec![None; temps_c.len()];
     let (mut ratios, first_failure): (Vec<Vec<f64>>, Vec<Option<String>>) = match cover_m {
-        None => ratios_over(fit, ensemble, temps_c, &all, &half_space, &body_nominal)
-            .into_iter()
-            .map(split)
-            .unzip(),
-        Some(_) if full => ratios_over(fit, ensemble, temps_c, &all, &covered, &body_nominal)
-            .into_iter()
-            .map(split)
-            .unzip(),
-        Some(_) => {
-            let hs = ratios_over(fit, ensemble, temps_c, &all, &half_space, &hs_nominal);
-            let k = COVER_SOLVED_REPLICATES.min(nb);
-            let first: Vec<usize> = (0..k).collect();
-            let sub = ratios_over(fit, ensemble, temps_c, &first, &covered, &body_nominal);
-            let z: Vec<f64> = (0..nb)
-                .map(|b| replicate_normal(settings.seed, STREAM_COVER, b))
-                .collect();
-            hs.into_iter()
-                .zip(sub)
-                .enumerate()
-                .map(|(i, (hs, sub))| {
-                    predicted(hs, sub, &z).unwrap_or_else(|| {
-                        // too few covered solves succeeded for the regression: all on the cover
-                        let one = ratios_over(
-                            fit,
-                            ensemble,
-                            &temps_c[i..=i],
-                            &all,
-                            &covered,
-                            &body_nominal[i..=i],
-                        );
-                        split(one.into_iter().next().unwrap_or_default())
+        None => hs.ratios.iter().cloned().map(split).unzip(),
+        Some(h_m) => {
+            // each replicate solved on the body of the fit's own solve at that temperature, its
+            // layer solve started from the fit's contact there
+            let on_cover = cover_solver(scene, h_m, settings);
+            let warm = |i: usize, c: &CreepSpectrum, l: f64| {
+                let own = body_nominal[i].as_ref().ok();
+                let start = own
+                    .map(|x| x.1)
+                    .filter(|l| l.is_finite() && *l > 0.0)
+                    .map(|l| (l, f64::NAN));
+                on_cover(c, l, start, replicate_choice(own.and_then(|x| x.2))).map(|r| r.0)
+            };
+            let solve_all = |at: &[usize]| {
+                ratios_over(fit, ensemble, temps_c, at, &all, &warm, &f_nominal)
+                    .into_iter()
+                    .map(split)
+                    .collect::<Vec<_>>()
+            };
+            if mode == CoverMode::Full {
+                solve_all(&every).into_iter().unzip()
+            } else {
+                let k = COVER_SOLVED_REPLICATES.min(nb);
+                let first: Vec<usize> = (0..k).collect();
+                let at = match mode {
+                    CoverMode::Carried => cover_solved_temps(temps_c),
+                    _ => every.clone(),
+                };
+                let sub = ratios_over(fit, ensemble, temps_c, &at, &first, &warm, &f_nominal);
+                // eq. 15.6c: the other temperatures carried where that is safe, else solved
+                let (partial, sd) = if at.len() == temps_c.len() {
+                    (
+                        sub.into_iter().map(Some).collect(),
+                        vec![None; temps_c.len()],
+                    )
+                } else {
+                    carried(temps_c, &at, &hs.ratios, &sub)
+                };
+                let rest: Vec<usize> = (0..temps_c.len())
+                    .filter(|&i| partial[i].is_none())
+                    .collect();
+                let mut more =
+                    ratios_over(fit, ensemble, temps_c, &rest, &first, &warm, &f_nominal)
+                        .into_iter();
+                let sub: Vec<Vec<Result<f64, String>>> = partial
+                    .into_iter()
+                    .map(|p| p.unwrap_or_else(|| more.next().unwrap_or_default()))
+                    .collect();
+                carried_sd = sd;
+                let z: Vec<f64> = (0..nb)
+                    .map(|b| replicate_normal(settings.seed, STREAM_COVER, b))
+                    .collect();
+                hs.ratios
+                    .iter()
+                    .cloned()
+                    .zip(sub)
+                    .enumerate()
+                    .map(|(i, (hs, sub))| {
+                        predicted(hs, sub, &z).unwrap_or_else(|| {
+                            // too few covered solves succeeded for the regression: all on the cover
+                            solve_all(&[i]).into_iter().next().unwrap_or_default()
+                        })
                     })
-                })
-                .unzip()
+                    .unzip()
+            }
         }
     };
     let tail_ln: Vec<Option<f64>> = temps_c
         .par_iter()
-        .zip(body_nominal.par_iter())
+        .zip(f_nominal.par_iter())
         .map(|(&t, f0)| tail_term(fit, creep, t, *f0.as_ref().ok()?, &covered))
         .collect();
     let window: Vec<Option<WindowTerm>> = temps_c
         .par_iter()
         .enumerate()
         .map(|(i, &t)| {
-            let l = body_fit[i].as_ref().ok().map(|x| x.1);
-            window_term(fit, scene, t, l, &body_nominal[i], &covered)
+            // the contact length of the body solved: on a cover the covered body's, shorter
+            // than the half-space's (eq. 15.9)
+            let l = body_nominal[i].as_ref().ok().map(|x| x.1);
+            window_term(fit, scene, t, l, &f_nominal[i], &covered)
         })
         .collect();
     let (lo, _) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
     for (i, r) in ratios.iter_mut().enumerate() {
         let mut terms: Vec<(f64, u64)> = Vec::new();
+        if let Some(s) = carried_sd[i] {
+            terms.push((s, STREAM_COVER_CARRIED));
+        }
         if let Some(s) = tail_ln[i] {
             let low = temps_c[i] < lo;
             terms.push((
@@ -470,6 +867,11 @@ fn bands_with(
         tail_ln,
         window,
         first_failure,
+        carried_ln: carried_sd,
+        solver_ln: match cover_m {
+            None => hs.error_ln.clone(),
+            Some(_) => vec![0.0; temps_c.len()],
+        },
     }
 }
 
@@ -490,6 +892,8 @@ mod tests {
             tail_ln: vec![None],
             window: vec![None],
             first_failure: vec![(failed > 0).then(|| "contact: λ not bracketed".to_string())],
+            carried_ln: vec![None],
+            solver_ln: vec![0.0],
         }
     }
 
@@ -548,5 +952,103 @@ mod tests {
         });
         let (b, notes) = r.point_band(0, 1e-3);
         assert!(b.is_none() && notes[0].contains("layer: no convergence"));
+    }
+
+    #[test]
+    fn solved_temperatures_are_the_ends_and_every_other_one() {
+        // unsorted, 9 temperatures: in order of T the 1st, 3rd, … 9th
+        let t = [0.0, -40.0, 40.0, -20.0, 20.0, -30.0, 30.0, -10.0, 10.0];
+        let got: Vec<f64> = cover_solved_temps(&t).iter().map(|&i| t[i]).collect();
+        assert_eq!(got, vec![0.0, -40.0, 40.0, -20.0, 20.0]);
+        // an even count keeps the last one too; fewer than 5: all
+        let t = [-40.0, -30.0, -20.0, -10.0, 0.0, 10.0];
+        assert_eq!(cover_solved_temps(&t), vec![0, 2, 4, 5]);
+        assert_eq!(
+            cover_solved_temps(&[0.0, 10.0, 20.0, 30.0]),
+            vec![0, 1, 2, 3]
+        );
+    }
+
+    #[test]
+    fn carried_ratios_are_exact_for_a_straight_q_and_their_error_is_measured_for_a_parabola() {
+        // temperatures −40 … 40 every 10 K; 8 solved replicates, half-space ratios spread wide
+        // (ln spread ≈ 0.9), q_b(T) = κ_b·T² + λ_b·T: the line between neighbours 10 K either side
+        // of T lies κ_b·10² above q, and the measured error, from the line over 20 K either side
+        // of an interior solved temperature (κ_b·20²), scaled by 10·10/(20·20), is the same
+        let temps: Vec<f64> = (0..9).map(|i| -40.0 + 10.0 * i as f64).collect();
+        let k = 8;
+        let kappa: Vec<f64> = (0..k).map(|b| 1e-6 * (b as f64 - 3.5)).collect();
+        let lam: Vec<f64> = (0..k).map(|b| 1e-4 * (b as f64 - 3.5)).collect();
+        let hs: Vec<Vec<Result<f64, String>>> = temps
+            .iter()
+            .map(|_| {
+                (0..32)
+                    .map(|b| Ok((0.1 * (b as f64 - 15.5)).exp()))
+                    .collect()
+            })
+            .collect();
+        let q = |b: usize, t: f64| kappa[b] * t * t + lam[b] * t;
+        let solved = cover_solved_temps(&temps);
+        let sub: Vec<Vec<Result<f64, String>>> = solved
+            .iter()
+            .map(|&i| {
+                (0..k)
+                    .map(|b| Ok(hs[i][b].clone().unwrap() * q(b, temps[i]).exp()))
+                    .collect()
+            })
+            .collect();
+        let (out, sd) = carried(&temps, &solved, &hs, &sub);
+        let rms = (kappa.iter().map(|x| x * x).sum::<f64>() / k as f64).sqrt() * 100.0;
+        for i in 0..temps.len() {
+            let row = out[i]
+                .as_ref()
+                .expect("every temperature carried or solved");
+            if solved.contains(&i) {
+                assert!(sd[i].is_none());
+                continue;
+            }
+            // the carried error's standard deviation: rms over b of κ_b·10² (round-off only)
+            let s = sd[i].expect("carried");
+            assert!(
+                (s - rms).abs() <= 1e-9 * rms,
+                "T {}: {s} vs {rms}",
+                temps[i]
+            );
+            for b in 0..k {
+                let got = (row[b].clone().unwrap() / hs[i][b].clone().unwrap()).ln();
+                let want = q(b, temps[i]) + kappa[b] * 100.0;
+                assert!(
+                    (got - want).abs() < 1e-12,
+                    "T {} b {b}: {got} vs {want}",
+                    temps[i]
+                );
+            }
+        }
+        // a q that spreads as much as the half-space ratios: nothing is carried
+        let wide: Vec<Vec<Result<f64, String>>> = solved
+            .iter()
+            .map(|&i| {
+                (0..k)
+                    .map(|b| Ok(hs[i][b].clone().unwrap() * (0.2 * b as f64).exp()))
+                    .collect()
+            })
+            .collect();
+        let (out, sd) = carried(&temps, &solved, &hs, &wide);
+        for i in (0..temps.len()).filter(|i| !solved.contains(i)) {
+            assert!(out[i].is_none() && sd[i].is_none(), "T {}", temps[i]);
+        }
+    }
+
+    #[test]
+    fn the_solver_error_moves_each_quantile_outwards() {
+        let plain = with_failures(0);
+        let mut widened = with_failures(0);
+        widened.solver_ln = vec![3e-4];
+        let (a, _) = plain.point_band(0, 1e-3);
+        let (b, _) = widened.point_band(0, 1e-3);
+        let (a, b) = (a.unwrap(), b.unwrap());
+        assert!(((b.p05 / a.p05).ln() + 3e-4).abs() < 1e-12);
+        assert!(((b.p95 / a.p95).ln() - 3e-4).abs() < 1e-12);
+        assert_eq!(a.p50, b.p50);
     }
 }

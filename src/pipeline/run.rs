@@ -235,7 +235,8 @@ fn fit_shifted(
 
 /// The friction ratios of each replicate in a scene, and each point's band from them. The ratios are
 /// solved on the scene's body (a cover: eq. 15.6); scenes with the same roll, temperatures and cover
-/// share them (`solved`).
+/// share them (`solved`), and scenes with the same roll and temperatures share their half-space
+/// solves (`half_space`: a covered scene's regression, eq. 15.6b, and its half-space twin).
 fn scene_bands(
     fit: &CompoundFit,
     ensemble: &crate::results::BandEnsemble,
@@ -243,20 +244,37 @@ fn scene_bands(
     bs: &BandSettings,
     points: &mut [FrictionPoint],
     solved: &mut Vec<SolvedRatios>,
+    half_space: &mut Vec<crate::bands::HalfSpaceRatios>,
 ) -> Vec<Vec<f64>> {
     let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
     let key = (spec.scene(), spec.temps_c.clone(), cover_m);
     let r = match solved.iter().find(|(k, _)| *k == key) {
         Some((_, r)) => r.clone(),
         None => {
-            // a cover's nominal frictions and contact lengths are the points just solved (same
-            // body, tol)
-            let nominal: Vec<(f64, f64)> = points
+            let hs_scene = crate::contact::Scene {
+                body: crate::contact::Body::HalfSpace,
+                ..key.0
+            };
+            if !half_space
                 .iter()
-                .map(|p| (p.friction, p.contact_length_mm * 1e-3))
+                .any(|h| h.scene == hs_scene && h.temps_c == key.1)
+            {
+                if let Some(h) = crate::bands::half_space_ratios(fit, ensemble, &key.0, &key.1, bs)
+                {
+                    half_space.push(h);
+                }
+            }
+            let hs = half_space
+                .iter()
+                .find(|h| h.scene == hs_scene && h.temps_c == key.1);
+            // a cover's nominal frictions, contact lengths and bodies are the points just solved
+            // (same body, tol)
+            let nominal: Vec<crate::bands::CoverSolve> = points
+                .iter()
+                .map(|p| (p.friction, p.contact_length_mm * 1e-3, body_of(&p.model)))
                 .collect();
             let r = crate::bands::scene_bands_given(
-                fit, ensemble, &key.0, cover_m, &key.1, bs, &nominal,
+                fit, ensemble, &key.0, cover_m, &key.1, bs, &nominal, hs,
             );
             solved.push((key, r.clone()));
             r
@@ -274,6 +292,21 @@ fn scene_bands(
     r.ratios
 }
 
+/// The body a friction point names (its `model`, `BodyModel::name`); `None` for another name (a
+/// failed point's empty one): its band replicates are then solved by `auto`
+/// (crate::bands::replicate_choice).
+fn body_of(model: &str) -> Option<crate::contact::body::layer::BodyModel> {
+    use crate::contact::body::layer::BodyModel;
+    [
+        BodyModel::HalfSpace,
+        BodyModel::Layer,
+        BodyModel::Winkler,
+        BodyModel::WinklerConstrained,
+    ]
+    .into_iter()
+    .find(|m| m.name() == model)
+}
+
 fn one_compound(
     c: &CompoundInput,
     opts: &RunOptions,
@@ -289,6 +322,7 @@ fn one_compound(
     let mut maps = Vec::new();
     let mut ratios = Vec::new();
     let mut solved: Vec<SolvedRatios> = Vec::new();
+    let mut half_space = Vec::new();
     for spec in &opts.scenes.scene {
         let mut points = friction_vs_temperature(&fit, spec, &settings)?;
         if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
@@ -299,6 +333,7 @@ fn one_compound(
                 bs,
                 &mut points,
                 &mut solved,
+                &mut half_space,
             ));
         } else {
             ratios.push(Vec::new());

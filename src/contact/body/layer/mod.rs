@@ -24,7 +24,10 @@ pub mod winkler;
 pub use collocation::{LayerAnswer, LayerSettings};
 pub use compliance::WinklerColumns;
 pub use kernel::LayerKernel;
-pub use roll_cover::{auto_choice, roll_cover, solve_cover, CoverAnswer, CoverRoll, ModelChoice};
+pub use roll_cover::{
+    auto_choice, roll_cover, roll_cover_from, solve_cover, solve_cover_from, CoverAnswer,
+    CoverRoll, ModelChoice,
+};
 pub use winkler::{Winkler, WinklerAnswer};
 
 use crate::contact::error::ContactError;

@@ -157,6 +157,22 @@ pub fn solve_cover(
     choice: ModelChoice,
     tol: f64,
 ) -> Result<CoverAnswer, ContactError> {
+    solve_cover_from(terms, load, thickness, poisson, choice, tol, None)
+}
+
+/// [`solve_cover`] with the layer solve started from `start` = (λ guess, d ln N′/d ln λ), e.g. a
+/// nearby problem's answer ([`LayerSettings::start`]; `None`: the solver's closed-form start). Only
+/// the bonded layer uses it; the answer does not depend on it beyond the load loop's stopping
+/// tolerance.
+pub fn solve_cover_from(
+    terms: &[CreepTerm],
+    load: f64,
+    thickness: f64,
+    poisson: f64,
+    choice: ModelChoice,
+    tol: f64,
+    start: Option<(f64, f64)>,
+) -> Result<CoverAnswer, ContactError> {
     positive("cover thickness h/(VT)", thickness)?;
     let h = thickness;
     let nu = poisson;
@@ -209,6 +225,7 @@ pub fn solve_cover(
                     let layer_settings = LayerSettings {
                         tol,
                         n_max: 512,
+                        start,
                         ..Default::default()
                     };
                     let a = layer_at_load(terms, load, h, nu, &layer_settings)?;
@@ -236,6 +253,20 @@ pub fn roll_cover(
     cover_m: Option<f64>,
     choice: ModelChoice,
     tol: f64,
+) -> Result<CoverRoll, ContactError> {
+    roll_cover_from(scene, spectrum, cover_m, choice, tol, None)
+}
+
+/// [`roll_cover`] with the layer solve started from `start` = (contact length in m, d ln N′/d ln λ),
+/// e.g. the answer of a nearby spectrum on the same scene ([`solve_cover_from`]; the length is made
+/// dimensionless by this spectrum's own scale VT).
+pub fn roll_cover_from(
+    scene: &Scene,
+    spectrum: &CreepSpectrum,
+    cover_m: Option<f64>,
+    choice: ModelChoice,
+    tol: f64,
+    start: Option<(f64, f64)>,
 ) -> Result<CoverRoll, ContactError> {
     let p = scene.dimensionless(spectrum)?;
     let Some(h_m) = cover_m else {
@@ -270,13 +301,15 @@ pub fn roll_cover(
             value: h_m,
         });
     }
-    let c = solve_cover(
+    let start = start.map(|(l_m, slope)| (l_m / p.length_scale_m, slope));
+    let c = solve_cover_from(
         &p.terms,
         p.load,
         h_m / p.length_scale_m,
         p.poisson,
         choice,
         tol,
+        start,
     )?;
     let a = c.answer;
     let mut warnings = a.warnings;
