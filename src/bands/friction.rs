@@ -113,7 +113,7 @@ impl<F> CoverSolver for F where
 }
 
 /// The covered solver of a scene for the bands: F/N, contact length in m and body of a creep
-/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`], the
+/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`](crate::contact::body::layer::roll_cover_from), the
 /// body `choice` at [`COVER_BAND_TOL`] or the band tolerance if looser), the layer solve started
 /// from `start` = (contact length in m, d ln N′/d ln λ) when given (the fit's own covered solve at
 /// the same temperature: a replicate's contact differs from it by its scatter, a few per cent; the
