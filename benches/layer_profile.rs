@@ -73,6 +73,7 @@ fn main() {
                     tol,
                     p_max: 48,
                     start: None,
+                    checks: true,
                 };
                 let (a, t) = time_it(|| {
                     solve_spectral_at_load(&terms, load, h, nu, &st)

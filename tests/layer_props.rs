@@ -211,6 +211,7 @@ fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
                     tol,
                     p_max: 48,
                     start: None,
+                    checks: true,
                 },
             )
             .unwrap_or_else(|e| panic!("{label}: {e}"))

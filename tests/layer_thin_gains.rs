@@ -130,6 +130,7 @@ fn covers_around_the_case_meet_their_estimates() {
                 tol,
                 p_max: 48,
                 start: None,
+                checks: true,
             };
             let Some(a) = solve_spectral_at_load(&terms, LOAD, h, NU, &settings).expect("solves")
             else {
@@ -169,6 +170,7 @@ fn roundoff_of_a_small_friction_is_counted() {
         tol,
         p_max: 48,
         start: None,
+        checks: true,
     };
     let a = solve_spectral_at_load(&terms, LOAD, h, nu, &settings)
         .expect("solves")

@@ -8,7 +8,7 @@
 //! ([`band_of`], [`mean_band`]).
 
 use super::BandSettings;
-use crate::contact::body::layer::{roll_cover_from, BodyModel, ModelChoice};
+use crate::contact::body::layer::{roll_cover_with, BodyModel, ModelChoice};
 use crate::contact::{roll, AutoSettings, ContactSettings, RollSolution, Scene, Scheme};
 use crate::results::{CompoundFit, FrictionBand, FrictionPoint};
 use crate::CreepSpectrum;
@@ -113,12 +113,15 @@ impl<F> CoverSolver for F where
 }
 
 /// The covered solver of a scene for the bands: F/N, contact length in m and body of a creep
-/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`], the
+/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`](crate::contact::body::layer::roll_cover_from), the
 /// body `choice` at [`COVER_BAND_TOL`] or the band tolerance if looser), the layer solve started
 /// from `start` = (contact length in m, d ln N′/d ln λ) when given (the fit's own covered solve at
 /// the same temperature: a replicate's contact differs from it by its scatter, a few per cent; the
 /// answer does not depend on the start beyond the load loop's stopping tolerance), or the
-/// solver's error.
+/// solver's error. The layer's closing contact checks are skipped ([`roll_cover_with`]): they only
+/// read the solution (same F/N to the bit, `cover_solver_skips_only_the_checks`) and their ratios
+/// and warnings are not in what this hands on; the main job's own solve at each point keeps them
+/// (its friction point's warnings).
 pub fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl CoverSolver {
     let scene = Scene {
         body: crate::contact::Body::HalfSpace,
@@ -130,7 +133,7 @@ pub fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl Co
             return Err(format!("log10 a_T is not finite ({log10_a_t})"));
         }
         let at = shifted(c, log10_a_t);
-        let r = roll_cover_from(&scene, &at, Some(h_m), choice, cover_tol, start)
+        let r = roll_cover_with(&scene, &at, Some(h_m), choice, cover_tol, start, false)
             .map_err(|e| e.to_string())?;
         Ok((
             positive_friction(r.roll.friction)?,
@@ -527,5 +530,52 @@ mod tests {
         );
         assert!(band_of(2.0, &ratios[..5]).is_none());
         assert!(band_of(f64::NAN, &ratios).is_none());
+    }
+
+    #[test]
+    fn cover_solver_skips_only_the_checks() {
+        // The bands' covered solver (closing checks skipped) against the same solve with them
+        // (`roll_cover_from`): F/N and contact length the same to the bit, cold and warm-started,
+        // on the layer and by `auto`, on the example spectrum (R 66.5 mm, 10 kN/m, 4 m/s) on 5 and
+        // 10 mm covers.
+        use crate::contact::body::layer::roll_cover_from;
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/data/spectra/example_creep.json"
+        ))
+        .unwrap();
+        let spec: CreepSpectrum = serde_json::from_str(&text).unwrap();
+        let scene = Scene {
+            radius_m: 0.0665,
+            load_n_per_m: 10_000.0,
+            speed_m_s: 4.0,
+            poisson: None,
+            body: crate::contact::Body::HalfSpace,
+        };
+        let bs = BandSettings::default();
+        let tol = bs.contact_tol.max(COVER_BAND_TOL);
+        for h_m in [5e-3, 10e-3] {
+            let solve = cover_solver(&scene, h_m, &bs);
+            for choice in [ModelChoice::Layer, ModelChoice::Auto] {
+                let cold = roll_cover_from(&scene, &spec, Some(h_m), choice, tol, None).unwrap();
+                assert!(
+                    cold.min_gap_ratio.is_finite(),
+                    "the reference ran its checks"
+                );
+                let l = cold.roll.contact_length_m;
+                for start in [None, Some((1.03 * l, f64::NAN))] {
+                    let with =
+                        roll_cover_from(&scene, &spec, Some(h_m), choice, tol, start).unwrap();
+                    let (f, l_m, model) = solve(&spec, 0.0, start, choice).unwrap();
+                    assert_eq!(
+                        f.to_bits(),
+                        with.roll.friction.to_bits(),
+                        "{h_m} {choice:?}"
+                    );
+                    assert_eq!(l_m.to_bits(), with.roll.contact_length_m.to_bits());
+                    assert_eq!(model, Some(with.model));
+                }
+            }
+        }
     }
 }

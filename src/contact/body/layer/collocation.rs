@@ -68,6 +68,10 @@ pub struct LayerSettings {
     /// Warm start of the spectral solver (λ guess, d ln N′/d ln λ), e.g. from a neighbouring map
     /// node; [`super::spectral::SpectralSettings::start`]. Default `None`.
     pub start: Option<(f64, f64)>,
+    /// Run the spectral solver's closing contact checks ([`super::spectral::SpectralSettings::checks`]:
+    /// the answer is the same without them, its check ratios NaN). The hat scheme always runs its
+    /// own. Default true.
+    pub checks: bool,
 }
 
 impl Default for LayerSettings {
@@ -80,6 +84,7 @@ impl Default for LayerSettings {
             spectral: true,
             p_max: 48,
             start: None,
+            checks: true,
         }
     }
 }

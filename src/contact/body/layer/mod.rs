@@ -25,8 +25,8 @@ pub use collocation::{LayerAnswer, LayerSettings};
 pub use compliance::WinklerColumns;
 pub use kernel::LayerKernel;
 pub use roll_cover::{
-    auto_choice, roll_cover, roll_cover_from, solve_cover, solve_cover_from, CoverAnswer,
-    CoverRoll, ModelChoice,
+    auto_choice, roll_cover, roll_cover_from, roll_cover_with, solve_cover, solve_cover_from,
+    solve_cover_with, CoverAnswer, CoverRoll, ModelChoice,
 };
 pub use winkler::{Winkler, WinklerAnswer};
 
@@ -95,6 +95,7 @@ pub fn layer_at_load(
             tol: settings.tol,
             p_max: settings.p_max,
             start: settings.start,
+            checks: settings.checks,
         };
         match spectral::solve_spectral_at_load(terms, load, thickness, poisson, &spectral_settings)
         {

@@ -173,6 +173,23 @@ pub fn solve_cover_from(
     tol: f64,
     start: Option<(f64, f64)>,
 ) -> Result<CoverAnswer, ContactError> {
+    solve_cover_with(terms, load, thickness, poisson, choice, tol, start, true)
+}
+
+/// [`solve_cover_from`] with the bonded layer's closing contact checks run or not (`checks`,
+/// [`LayerSettings::checks`]: the same answer; without them its check ratios are NaN and no check
+/// warning is raised).
+#[allow(clippy::too_many_arguments)]
+pub fn solve_cover_with(
+    terms: &[CreepTerm],
+    load: f64,
+    thickness: f64,
+    poisson: f64,
+    choice: ModelChoice,
+    tol: f64,
+    start: Option<(f64, f64)>,
+    checks: bool,
+) -> Result<CoverAnswer, ContactError> {
     positive("cover thickness h/(VT)", thickness)?;
     let h = thickness;
     let nu = poisson;
@@ -226,6 +243,7 @@ pub fn solve_cover_from(
                         tol,
                         n_max: 512,
                         start,
+                        checks,
                         ..Default::default()
                     };
                     let a = layer_at_load(terms, load, h, nu, &layer_settings)?;
@@ -268,6 +286,20 @@ pub fn roll_cover_from(
     tol: f64,
     start: Option<(f64, f64)>,
 ) -> Result<CoverRoll, ContactError> {
+    roll_cover_with(scene, spectrum, cover_m, choice, tol, start, true)
+}
+
+/// [`roll_cover_from`] with the bonded layer's closing contact checks run or not (`checks`,
+/// [`solve_cover_with`]).
+pub fn roll_cover_with(
+    scene: &Scene,
+    spectrum: &CreepSpectrum,
+    cover_m: Option<f64>,
+    choice: ModelChoice,
+    tol: f64,
+    start: Option<(f64, f64)>,
+    checks: bool,
+) -> Result<CoverRoll, ContactError> {
     let p = scene.dimensionless(spectrum)?;
     let Some(h_m) = cover_m else {
         if !matches!(choice, ModelChoice::Auto | ModelChoice::HalfSpace) {
@@ -302,7 +334,7 @@ pub fn roll_cover_from(
         });
     }
     let start = start.map(|(l_m, slope)| (l_m / p.length_scale_m, slope));
-    let c = solve_cover_from(
+    let c = solve_cover_with(
         &p.terms,
         p.load,
         h_m / p.length_scale_m,
@@ -310,6 +342,7 @@ pub fn roll_cover_from(
         choice,
         tol,
         start,
+        checks,
     )?;
     let a = c.answer;
     let mut warnings = a.warnings;

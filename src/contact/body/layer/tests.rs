@@ -514,6 +514,7 @@ fn criterion_nu049() {
                         tol: 1e-5,
                         p_max: 160,
                         start: None,
+                        checks: true,
                     },
                 )
                 .unwrap() else {

@@ -455,6 +455,7 @@ mod tests {
                     tol,
                     p_max: 96,
                     start: None,
+                    checks: true,
                 },
             )
             .unwrap()
@@ -484,6 +485,7 @@ mod tests {
                 tol,
                 p_max: 96,
                 start,
+                checks: true,
             };
             let cold = solve_spectral_at_load(&terms, load, h, nu, &st(None))
                 .unwrap()

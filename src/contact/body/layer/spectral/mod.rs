@@ -89,7 +89,7 @@
 //! its p/2 companion), the fine secant loop
 //! from the calibration's solve to |ln N′/N′₀| ≤ max(1e−3·tol, 1e−10) (one solve at tol ≥ 1e−5);
 //! the p/2 check is repeated at the λ found only when λ moved by ≥ 1e−3. The contact checks run on
-//! 64 intervals.
+//! 64 intervals (skipped with [`at_load::SpectralSettings::checks`] false: the bands' replicates).
 
 pub mod at_lambda;
 pub mod at_load;

@@ -195,6 +195,7 @@ mod tests {
                     tol: 1e-8,
                     p_max: 96,
                     start: None,
+                    checks: true,
                 };
                 let a = solve_spectral_at_load(&[], load, h, nu, &st)
                     .unwrap()
