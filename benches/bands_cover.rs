@@ -1,16 +1,15 @@
 //! Covered bands, cheap against full (issue 16, cost of the bands): on the shipped compounds
 //! (data/), the covered scene's (conveyor-idler, 5 mm cover) replicate ratios by the full bootstrap
-//! (every replicate solved on the cover, `scene_ratios_full_on`), by 8 replicates on the cover at
+//! (every replicate solved on the cover, `scene_bands_by` with `CoverMode::Full`), by 8 replicates on the cover at
 //! every temperature and the rest from their half-space ratios by regression (eq. 15.6b,
-//! `scene_ratios_every_temp_on`) and by the main job's estimate (the same 8 solved at every other
+//! `CoverMode::EveryTemp`) and by the main job's estimate (the same 8 solved at every other
 //! temperature and carried between them, eq. 15.6c, `scene_ratios_on`): CPU time of each in a
 //! 2-thread pool, and per temperature the band's log half-width ln(p95/p05)/2 and its median
 //! ln(p50/F) by each. Run: `cargo bench --bench bands_cover`.
 
 use std::time::Instant;
 use viscoroll::bands::{
-    band_of, build_ensemble, scene_bands_on, scene_ratios_every_temp_on, scene_ratios_full_on,
-    BandSettings,
+    band_of, build_ensemble, scene_bands_by, scene_bands_on, BandSettings, CoverMode,
 };
 use viscoroll::dma::{read_files, IngestOptions};
 use viscoroll::pipeline::fit_compound::fit_measurement_master;
@@ -91,9 +90,9 @@ fn main() {
             let scene = spec.scene();
             let temps = &spec.temps_c;
             let (full, t_full, c_full) =
-                timed(&|| scene_ratios_full_on(&fit, &e, &scene, cover_m, temps, &bs));
+                timed(&|| scene_bands_by(&fit, &e, &scene, cover_m, temps, &bs, CoverMode::Full).ratios);
             let (every, t_every, c_every) =
-                timed(&|| scene_ratios_every_temp_on(&fit, &e, &scene, cover_m, temps, &bs));
+                timed(&|| scene_bands_by(&fit, &e, &scene, cover_m, temps, &bs, CoverMode::EveryTemp).ratios);
             let (t, c) = (Instant::now(), cpu_s());
             let main_bands = scene_bands_on(&fit, &e, &scene, cover_m, temps, &bs);
             let (t_main, c_main) = (t.elapsed().as_secs_f64(), cpu_s() - c);

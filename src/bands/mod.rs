@@ -68,9 +68,8 @@ pub use friction::{
     too_many_failed, CoverSolve, COVER_BAND_TOL,
 };
 pub use scene::{
-    cover_solved_temps, half_space_ratios, scene_bands_given, scene_bands_on,
-    scene_ratios_every_temp_on, scene_ratios_full_on, scene_ratios_on, HalfSpaceRatios,
-    SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
+    cover_solved_temps, half_space_ratios, scene_bands_by, scene_bands_given, scene_bands_on,
+    scene_ratios_on, CoverMode, HalfSpaceRatios, SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
 };
 pub use window::{window_note, WindowExcess, WindowSide, WIDENED_NOTE_START};
 

@@ -171,53 +171,22 @@ pub fn scene_ratios_on(
     scene_bands_on(fit, ensemble, scene, cover_m, temps_c, settings).ratios
 }
 
-/// [`scene_ratios_on`] with every replicate solved on the cover (the full bootstrap of eq. 15.6,
-/// 32 layer solves per temperature; the same model-error terms): the reference the cheaper
-/// estimate is checked against.
-pub fn scene_ratios_full_on(
+/// [`scene_bands_on`] with the covered replicates solved as `mode` says: [`CoverMode::Full`] (the
+/// full bootstrap of eq. 15.6, 32 layer solves per temperature) and [`CoverMode::EveryTemp`]
+/// (eq. 15.6b without 15.6c) are the references the main job's [`CoverMode::Carried`] is checked
+/// against (benches/bands_cover.rs); the same model-error terms in each.
+pub fn scene_bands_by(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
     scene: &Scene,
     cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
-) -> Vec<Vec<f64>> {
+    mode: CoverMode,
+) -> SceneRatios {
     bands_with(
-        fit,
-        ensemble,
-        scene,
-        cover_m,
-        temps_c,
-        settings,
-        CoverMode::Full,
-        None,
-        None,
+        fit, ensemble, scene, cover_m, temps_c, settings, mode, None, None,
     )
-    .ratios
-}
-
-/// [`scene_ratios_on`] with the [`COVER_SOLVED_REPLICATES`] solved on the cover at every
-/// temperature (eq. 15.6b without 15.6c): the reference the carried ratios are checked against.
-pub fn scene_ratios_every_temp_on(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    cover_m: Option<f64>,
-    temps_c: &[f64],
-    settings: &BandSettings,
-) -> Vec<Vec<f64>> {
-    bands_with(
-        fit,
-        ensemble,
-        scene,
-        cover_m,
-        temps_c,
-        settings,
-        CoverMode::EveryTemp,
-        None,
-        None,
-    )
-    .ratios
 }
 
 /// [`scene_ratios_on`] with the model-error terms it drew in and the failures it met (module doc,
@@ -232,7 +201,7 @@ pub fn scene_bands_on(
     temps_c: &[f64],
     settings: &BandSettings,
 ) -> SceneRatios {
-    bands_with(
+    scene_bands_by(
         fit,
         ensemble,
         scene,
@@ -240,8 +209,6 @@ pub fn scene_bands_on(
         temps_c,
         settings,
         CoverMode::Carried,
-        None,
-        None,
     )
 }
 
@@ -379,7 +346,7 @@ pub fn half_space_ratios(
 
 /// How a covered scene's replicates are solved.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum CoverMode {
+pub enum CoverMode {
     /// Every replicate on the cover at every temperature (eq. 15.6).
     Full,
     /// [`COVER_SOLVED_REPLICATES`] on the cover at every temperature, the rest by eq. 15.6b.
