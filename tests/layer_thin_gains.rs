@@ -64,23 +64,7 @@ fn rel(a: f64, b: f64) -> f64 {
 
 /// (λ, ρF/N) at load N′ at the fixed degree `p` with every mode kept (module doc), from `lam`.
 fn reference(terms: &[CreepTerm], h: f64, lam: f64, p: usize) -> (f64, f64) {
-    let modes = Modes::new(terms);
-    let solve = |l: f64| fixed_degree(&modes, l, h, NU, p, 0.3);
-    let g = |l: f64| (solve(l).load / LOAD).ln();
-    let (mut u0, mut u1) = (lam.ln(), lam.ln() + 1e-4);
-    let (mut g0, mut g1) = (g(u0.exp()), g(u1.exp()));
-    for _ in 0..30 {
-        if g1.abs() < 1e-13 || g1 == g0 {
-            break;
-        }
-        let u2 = u1 - g1 * (u1 - u0) / (g1 - g0);
-        (u0, g0) = (u1, g1);
-        u1 = u2;
-        g1 = g(u1.exp());
-    }
-    assert!(g1.abs() < 1e-12, "reference load loop: ln N′ off by {g1:e}");
-    let s = solve(u1.exp());
-    (s.lambda, s.friction_rho)
+    crate::layer_degree::fixed_degree_at_load(terms, LOAD, h, NU, p, lam)
 }
 
 /// The reference at p = 96, checked against p = 64 (its own error, module doc).
