@@ -575,15 +575,7 @@ mod tests {
             2.0 * (1.0 + loh * loh)
                 * ((-std::f64::consts::PI.powi(2) / r.step).exp() + 10.0 * r.cut)
         };
-        let twenty: Vec<CreepTerm> = (0..20)
-            .map(|k| {
-                let b = 10f64.powf(-12.0 + 15.0 * k as f64 / 19.0);
-                CreepTerm {
-                    f: 999.0 / 20.0 * b,
-                    b,
-                }
-            })
-            .collect();
+        let twenty = super::super::spread_terms(20, 15.0);
         let dense = LaplaceRule {
             step: 0.2,
             cut: 1e-30,

@@ -910,15 +910,7 @@ mod tests {
         // one-term thick cover): the 64-interval value is at least the 128 one and at most 2³ of it,
         // both positive. The pressure ratio is the minimum over a subset of the same nodes: no
         // smaller.
-        let thirty: Vec<CreepTerm> = (0..30)
-            .map(|k| {
-                let b = 10f64.powf(-12.0 + 24.0 * k as f64 / 29.0);
-                CreepTerm {
-                    f: 999.0 / 30.0 * b,
-                    b,
-                }
-            })
-            .collect();
+        let thirty = super::super::spread_terms(30, 24.0);
         for terms in [vec![CreepTerm { f: 10.0, b: 1.0 }], thirty] {
             for (h, nu) in [(0.3, 0.5), (3.0, 0.3), (30.0, 0.5)] {
                 let a = solve_spectral_at_load(&terms, 0.25, h, nu, &SpectralSettings::default())
