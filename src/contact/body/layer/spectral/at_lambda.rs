@@ -6,7 +6,7 @@
 //! Chebyshev coefficients of H̃) of the reduced problem.
 
 use super::layer_term::LayerTerm;
-use super::volterra::{memory_exact, memory_polynomial, poly_min_mu};
+use super::volterra::{memory_exact_add, memory_polynomial, poly_min_mu};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
 use crate::contact::body::half_space::modes::Modes;
@@ -227,10 +227,7 @@ fn columns(modes: &Modes, l: f64, mu: &[f64], p: usize) -> Vec<Column> {
         if mu[j] < split {
             let size = p + 1 + (83.0 * mu[j]).sqrt().ceil() as usize + 12;
             let fs: Vec<&[f64]> = basis.iter().map(|v| v.as_slice()).collect();
-            let ys = memory_exact(mu[j], &fs, size);
-            for (s, y) in short.iter_mut().zip(&ys) {
-                add_scaled(s, y, -wres[j]);
-            }
+            memory_exact_add(mu[j], &fs, size, -wres[j], &mut short);
         } else {
             for m in 0..=p {
                 let (pp, p1) = memory_polynomial(mu[j], &basis[m]);
