@@ -37,12 +37,84 @@ pub fn theta_w(sigma: f64) -> (f64, f64) {
 /// run for eight points at once and two coefficients per step, s ← s·w² + (aₙw² + aₙ₋₁w)
 /// (independent chains: one sum at a time is bound by the latency of its multiply-add chain).
 pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
+    exterior_values_by(a, thetas, ws, |k| taylor_factors(thetas[k]), out);
+}
+
+/// Terms of the Taylor branch of [`exterior_values`]: (0.5)^k/k! < 1e−17 at k = 18.
+const K: usize = 18;
+
+/// The Taylor branch's factors (−θ)^k/k!, k < K, each from the previous one by ·(−θ/k).
+fn taylor_factors(theta: f64) -> [f64; K] {
+    let mut f = [0.0; K];
+    let mut fac = 1.0;
+    for (k, v) in f.iter_mut().enumerate() {
+        if k > 0 {
+            fac *= -theta / k as f64;
+        }
+        *v = fac;
+    }
+    f
+}
+
+/// Points θ (w = e^{−θ}) at which many series' exterior functions are wanted, with the Taylor
+/// factors of [`exterior_values`] formed once for all series (they depend on θ alone):
+/// [`ExteriorPoints::values`] gives `exterior_values`' results bit for bit.
+pub struct ExteriorPoints {
+    thetas: Vec<f64>,
+    ws: Vec<f64>,
+    /// Taylor factors at the points with θ ≤ 0.5 (the only ones the Taylor branch can take).
+    factors: Vec<[f64; K]>,
+}
+
+impl ExteriorPoints {
+    /// The points θ with w = e^{−θ} (as from [`theta_w`]).
+    pub fn new(thetas: Vec<f64>, ws: Vec<f64>) -> Self {
+        let factors = thetas
+            .iter()
+            .map(|&t| {
+                if t <= 0.5 {
+                    taylor_factors(t)
+                } else {
+                    [0.0; K]
+                }
+            })
+            .collect();
+        ExteriorPoints {
+            thetas,
+            ws,
+            factors,
+        }
+    }
+
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.thetas.len()
+    }
+
+    /// True without points.
+    pub fn is_empty(&self) -> bool {
+        self.thetas.is_empty()
+    }
+
+    /// [`exterior_values`] of the series `a` at these points.
+    pub fn values(&self, a: &[f64], out: &mut [f64]) {
+        exterior_values_by(a, &self.thetas, &self.ws, |k| self.factors[k], out);
+    }
+}
+
+/// [`exterior_values`] with the Taylor factors of point k from `factors(k)`.
+fn exterior_values_by(
+    a: &[f64],
+    thetas: &[f64],
+    ws: &[f64],
+    factors: impl Fn(usize) -> [f64; K],
+    out: &mut [f64],
+) {
     let n_max = a.len().saturating_sub(1);
     if n_max == 0 {
         out.iter_mut().for_each(|v| *v = 0.0);
         return;
     }
-    const K: usize = 18; // (0.5)^k/k! < 1e−17 at k = 18
     let mut moments: Option<[f64; K]> = None;
     let mut horner: Vec<(usize, usize)> = Vec::new(); // (point, n_cut)
     for (k, (&theta, o)) in thetas.iter().zip(out.iter_mut()).enumerate() {
@@ -50,11 +122,7 @@ pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
             let m = moments.get_or_insert_with(|| taylor_moments::<K>(a));
             // Σ_k (−θ)^k/k! m_k
             let mut s = 0.0;
-            let mut fac = 1.0;
-            for (k, mk) in m.iter().enumerate() {
-                if k > 0 {
-                    fac *= -theta / k as f64;
-                }
+            for (fac, mk) in factors(k).iter().zip(m.iter()) {
                 s += fac * mk;
             }
             *o = s;
@@ -140,6 +208,36 @@ mod tests {
                 // summing ~√μ terms of size ≤ 1: a few ulp each
                 assert!((s - exact).abs() < 1e-14, "mu {mu} t {t}: {s} vs {exact}");
             }
+        }
+    }
+
+    #[test]
+    fn exterior_points_give_exterior_values_bit_for_bit() {
+        // the shared Taylor factors are the ones exterior_values forms per call, so the results
+        // must be identical; series long and short (Taylor branch at small θ·n, Horner beyond)
+        let sig: Vec<f64> = (0..60)
+            .map(|k| 1e-14 * 10f64.powf(0.3 * k as f64))
+            .collect();
+        let (th, w): (Vec<f64>, Vec<f64>) = sig.iter().map(|&s| theta_w(s)).unzip();
+        let points = ExteriorPoints::new(th.clone(), w.clone());
+        assert_eq!(points.len(), sig.len());
+        for a in [
+            vec![0.0, 1.0],
+            exp_coefficients(0.3),
+            exp_coefficients(40.0),
+            exp_coefficients(5e4),
+            (0..70)
+                .map(|n| (0.37 * n as f64).cos() / (1.0 + n as f64))
+                .collect(),
+        ] {
+            let mut want = vec![0.0; sig.len()];
+            let mut got = vec![0.0; sig.len()];
+            exterior_values(&a, &th, &w, &mut want);
+            points.values(&a, &mut got);
+            assert_eq!(
+                got.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                want.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+            );
         }
     }
 

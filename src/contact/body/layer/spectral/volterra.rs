@@ -178,9 +178,10 @@ pub fn memory_exact_add(mu: f64, fs: &[&[f64]], m: usize, s: f64, out: &mut [Vec
     let sv: f64 = v.iter().sum();
     let r = fs.len();
     // row k − 1 holds −(antiderivative coefficient k) of every f
+    // (coefficients k > len f vanish: only the first len f rows are filled)
     let mut u = vec![0.0; n * r];
     for (c, f) in fs.iter().enumerate() {
-        for k in 1..m {
+        for k in 1..m.min(f.len() + 1) {
             u[(k - 1) * r + c] = -antiderivative(f, k);
         }
     }
