@@ -47,6 +47,18 @@
 //! t ≥ 0 (two products of (p + 2) × nodes by nodes × n_J/2, SIMD matrix multiplication), the
 //! Chebyshev coefficients a DCT-I matrix times those values, and G for all columns of the solve one
 //! more product ([`LayerTerm::apply_all`]).
+//!
+//! Cost (issue 14, README "Speed work" round 5): the products are formed node-major (each node's
+//! C/Γ entries one contiguous column, written once) and split at κ = 1, where the log part's nodes
+//! carry only the orders k + 1 ≤ 19 of (κ/2)ⁿ/n!; Miller's recurrence runs [`LANES`] nodes side by
+//! side and its normalisation 1/(J₀ + 2ΣJ₂ₖ) is folded into the node's weight (one division per
+//! node, not per order); on the panels of [1, κ_hi], κ = m + h·x (centre m, half-width h, Gauss
+//! abscissa x) and sin κt = sin mt·cos hxt + cos mt·sin hxt with the hxt values shared by all
+//! panels, so one sine-cosine pair per panel and point instead of per node and point (the same
+//! accuracy: sin κt with κt rounded is off by ~1e−16·κt as well). The node arrays come from a small
+//! per-thread pool (`pooled_zeros`): allocated afresh, their pages were faulted in every solve.
+//! `LayerTerm::reference`, the straightforward build, is kept for the tests (≤ 1e−13 of the largest
+//! coefficient, `fast_build_matches_the_reference`).
 
 use crate::contact::body::half_space::modes::Modes;
 use crate::contact::body::layer::compliance::layer_defect;
@@ -69,7 +81,7 @@ pub fn bessel_j(x: f64, nmax: usize) -> Vec<f64> {
 
 /// Lanes of [`bessel_j_lanes`]: independent recurrences run side by side, so that their
 /// multiply-add chains overlap (one recurrence alone waits on each step's latency).
-pub const LANES: usize = 4;
+pub const LANES: usize = 8;
 
 /// [`bessel_j`] at up to [`LANES`] points at once: `out[q]` = J₀…J_nmax at `xs[q]`. Each lane starts
 /// at the highest start the lanes need (a higher start only makes Miller's algorithm more accurate).
@@ -399,7 +411,7 @@ impl LayerTerm {
                 }
             })
             .collect();
-        // Φ(κ/L) = 1 + Σf̂/(b − iκ/L): fᵢbᵢ once per mode
+        // Φ(κ/L) = 1 + Σf̂/(b − iκ/L) = 1 + Σf̂(b + iκ/L)/(b² + (κ/L)²): fᵢbᵢ once per mode
         let fb: Vec<f64> = modes.f.iter().zip(&modes.b).map(|(f, b)| f * b).collect();
         let mut phi = vec![(0.0, 0.0); nn];
         let mut scratch = Vec::new();
@@ -437,9 +449,9 @@ impl LayerTerm {
                 let kk = kappa / l;
                 let (mut pr, mut pi) = (1.0, 0.0);
                 for ((f, b), fb) in modes.f.iter().zip(&modes.b).zip(&fb) {
-                    let d = b * b + kk * kk;
-                    pr += fb / d;
-                    pi += f * kk / d;
+                    let inv = 1.0 / (b * b + kk * kk);
+                    pr += fb * inv;
+                    pi += f * kk * inv;
                 }
                 phi[n] = (pr, pi);
                 if n < nodes.n_log {
