@@ -17,7 +17,10 @@
 //! and y(1) = Σyₙ = 0 closes the system. Truncated at M coefficients (yₘ = 0, the tau method) it is
 //! tridiagonal in y₁…y_{M−1} with y₀ a parameter: y = u + y₀v, then y₀ = −Σu/(1 + Σv). The
 //! tridiagonal part is solved by Gaussian elimination with partial pivoting (backward stable for
-//! tridiagonal matrices; Higham, *Accuracy and Stability of Numerical Algorithms*, SIAM 2002, §9.6).
+//! tridiagonal matrices; Higham, *Accuracy and Stability of Numerical Algorithms*, SIAM 2002, §9.6),
+//! factored once per μ and applied to all right-hand sides of a solve together (the p + 1 basis
+//! polynomials of a slow mode, stored row by row so that each elimination step runs across them:
+//! [`memory_exact_add`]; the same operations per right-hand side as one at a time, bit for bit).
 //! Like Miller's algorithm for Bessel functions, the truncated solve picks the decaying solution of
 //! the three-term recurrence, so it is stable where the forward recurrence is not. y has the
 //! coefficients of f convolved with those of e^{μ(t−1)}, which fall below 1e−18 after ≈ √(83μ)
