@@ -114,7 +114,7 @@ impl Kernel {
 }
 
 /// Add the hat averages of one term's part (fᵢ/bᵢ)h(bᵢξ) of K to `a` (indexed k + m, k = −m..=m).
-fn add_term_hat_averages(t: &CreepTerm, m: usize, h: f64, a: &mut [f64]) {
+pub(crate) fn add_term_hat_averages(t: &CreepTerm, m: usize, h: f64, a: &mut [f64]) {
     let mi = m as i64;
     let len = 2 * m + 1;
     let big_h = t.b * h;
