@@ -28,6 +28,11 @@
 //!   and half-width ½ in t = kh′ against R's singularities at |Im t| ≳ ½ (ellipse ≥ 1 + √2,
 //!   2.4^{−32} ≈ 6e−13). The poles of slow modes near k = 0 lie beyond the first panel's end k_mid:
 //!   ellipse ≥ 2, ~2e−10 of their part.
+//! - **Low region by moments (C4).** There |k·jΔ| ≤ kX ≤ 1, so with z = jΔ,
+//!   sinc²e^{ikz} − 1 = (sinc² − 1) + sinc²·Σ_{n≥1}(ikz)ⁿ/n! and the low nodes' part of A_D(j) is
+//!   −Σ wΔ·Re[Φ(sinc² − 1)] − Σₙ Re[(iz)ⁿMₙ]/n! with the moments Mₙ = Σ wΔ·Φ·sinc²·kⁿ: cost
+//!   (nodes + 2m + 1)·n_max instead of nodes·(2m + 1). Cut at n = 22 (1/23! ≈ 4e−23 of Σ|wΔΦ|;
+//!   no term exceeds Σ|wΔΦ|, so rounding stays ~e·ε of it).
 //!
 //! Measured against the collocation rule (test `check_rule_matches_the_collocation_rule` of the
 //! parent module): ≤ 1e−8 of the largest difference allowed.
@@ -70,6 +75,8 @@ use crate::special::{kernel_bracket, EULER_GAMMA};
 const T_CHECK: f64 = 20.0;
 /// Bound of the neglected low part relative to Δ (C1).
 const LOW_CUT: f64 = 1e-12;
+/// Last order of the low region's Taylor series in kz, |kz| ≤ 1: 1/23! ≈ 4e−23 (C4).
+const LOW_ORDER: usize = 22;
 
 impl LayerKernel {
     /// [`Self::hat_averages`] to ~1e−9 of the largest difference for the contact checks (module
@@ -77,11 +84,63 @@ impl LayerKernel {
     pub fn check_hat_averages(&self, m: usize, delta: f64) -> Vec<f64> {
         let mut a = half_space_check_averages(&self.half_space, m, delta);
         let x_max = (m as f64 + 1.0) * delta;
-        let d = self.correction_on(m, delta, &self.check_nodes(x_max));
-        for (x, y) in a.iter_mut().zip(d) {
-            *x -= y;
+        let nodes = self.check_nodes(x_max);
+        let (low, linear): (Vec<_>, Vec<_>) = nodes.into_iter().partition(|n| n.2);
+        let d = self.correction_on(m, delta, &linear);
+        let d_low = self.low_correction(m, delta, &low);
+        for ((x, y), z) in a.iter_mut().zip(d).zip(d_low) {
+            *x -= y + z;
         }
         a
+    }
+
+    /// The low region's part of A_D(j) (C4): with z = jΔ, kX ≤ 1 and sinc²e^{ikz} − 1 =
+    /// (sinc² − 1) + sinc²Σ_{n≥1}(ikz)ⁿ/n!, A(j) = −Σ_nodes wΔ·Re[Φ(sinc² − 1)] −
+    /// Σ_{n≥1} Re[(iz)ⁿ/n!·Mₙ], Mₙ = Σ_nodes wΔ·Φ·sinc²·kⁿ.
+    fn low_correction(&self, m: usize, delta: f64, nodes: &[(f64, f64, bool)]) -> Vec<f64> {
+        let mut moments = [(0.0_f64, 0.0_f64); LOW_ORDER + 1];
+        let mut constant = 0.0;
+        for &(k, w, _) in nodes {
+            let (pr, pi) = self.phi(k);
+            let u = 0.5 * k * delta;
+            let sinc = if u < 1e-4 {
+                1.0 - u * u / 6.0
+            } else {
+                u.sin() / u
+            };
+            // sinc² − 1 without cancellation (as in `correction_on`)
+            let s2m1 = if u < 1e-2 {
+                (-u * u / 6.0 + u.powi(4) / 120.0) * (sinc + 1.0)
+            } else {
+                sinc * sinc - 1.0
+            };
+            let c = -w * delta;
+            constant += c * pr * s2m1;
+            let (mut re, mut im) = (c * pr * sinc * sinc, c * pi * sinc * sinc);
+            for mn in moments.iter_mut().skip(1) {
+                re *= k;
+                im *= k;
+                mn.0 += re;
+                mn.1 += im;
+            }
+        }
+        let mi = m as i64;
+        (-mi..=mi)
+            .map(|j| {
+                let z = j as f64 * delta;
+                // (iz)ⁿ/n! = (re, im) by recurrence; Re[(a + ib)(mr + i·mi)] = a·mr − b·mi
+                let (mut a, mut b) = (1.0_f64, 0.0_f64);
+                let mut s = constant;
+                for (n, mn) in moments.iter().enumerate().skip(1) {
+                    let f = z / n as f64;
+                    let na = -b * f;
+                    b = a * f;
+                    a = na;
+                    s += a * mn.0 - b * mn.1;
+                }
+                s
+            })
+            .collect()
     }
 
     /// Quadrature nodes (k, weight·R(kh′)/k, low region?) of rules C1–C3 (module doc).
