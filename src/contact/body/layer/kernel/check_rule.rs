@@ -437,4 +437,76 @@ mod tests {
         }
         println!("worst difference / largest: {worst:.1e}");
     }
+
+    /// The gap of `contact_checks` at the nodes outside the contact, on the exact kernel averages
+    /// (`LayerKernel::hat_averages`, the collocation's rule): the reference of the checks' rule.
+    fn gaps_on_exact_kernel(
+        kernel: &LayerKernel,
+        sol: &crate::contact::DimensionlessSolution,
+    ) -> f64 {
+        let n = sol.n;
+        let ext = n / 2;
+        let h = sol.lambda / n as f64;
+        let m = n + ext;
+        let a = kernel.hat_averages(m, h);
+        let at = |k: i64| a[(k + m as i64) as usize];
+        let s = |i: i64| -> f64 {
+            let x = i as f64 * h;
+            let v: f64 = (1..n)
+                .map(|j| sol.pressure[j] * (at(-(j as i64)) - at(i - j as i64)))
+                .sum();
+            v - (x * sol.beta - 0.5 * x * x)
+        };
+        let depth = sol.beta * sol.beta / 2.0;
+        (-(ext as i64)..0)
+            .chain((n as i64 + 1)..=(n + ext) as i64)
+            .map(s)
+            .fold(f64::INFINITY, f64::min)
+            / depth
+    }
+
+    #[test]
+    fn checks_on_the_check_rule_match_the_exact_kernel_and_flag_wrong_solutions() {
+        // `contact_checks` (64 intervals, as the spectral solver runs them) on the check rule
+        // against the same gap on the exact kernel averages, for spectral answers on one term and
+        // 30 terms over 24 decades, thin and thick covers, ν = 0.3 and ½: the kernels differ by
+        // ≤ 6e−11 of their largest difference (tests above), which moves the gap by about that
+        // times Σ|Qⱼ|·Δ/(β²/2) ~ 1: 1e−8 of the indentation allowed, five orders inside the
+        // warning threshold 1e−3. A solution with β 5 % too large (the roll sinks deeper: it
+        // penetrates ahead of the contact) and one with a negative node pressure must be flagged
+        // (ratio < −1e−3) on both kernels.
+        use crate::contact::body::layer::collocation::contact_checks;
+        use crate::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
+        let thirty = crate::contact::body::layer::spectral::spread_terms(30, 24.0);
+        let mut worst = 0.0_f64;
+        for terms in [vec![CreepTerm { f: 10.0, b: 1.0 }], thirty] {
+            for (h, nu) in [(0.3, 0.5), (3.0, 0.3), (30.0, 0.5)] {
+                let a = solve_spectral_at_load(&terms, 0.25, h, nu, &SpectralSettings::default())
+                    .unwrap()
+                    .expect("accepted");
+                let kernel = LayerKernel::new(&terms, h, nu).unwrap();
+                let mut d = a.solution.clone();
+                d.n = 64;
+                d.xi = d.xi.iter().step_by(2).copied().collect();
+                d.pressure = d.pressure.iter().step_by(2).copied().collect();
+                let (q, g) = contact_checks(&kernel, &d).unwrap();
+                let g_ref = gaps_on_exact_kernel(&kernel, &d);
+                worst = worst.max((g - g_ref).abs());
+                assert!(
+                    (g - g_ref).abs() <= 1e-8 && g > 0.0 && q >= 0.0,
+                    "{} terms, h′ {h}: gap {g:e} vs {g_ref:e}",
+                    terms.len()
+                );
+                let mut deep = d.clone();
+                deep.beta *= 1.05;
+                let (_, g_deep) = contact_checks(&kernel, &deep).unwrap();
+                assert!(g_deep < -1e-3 && gaps_on_exact_kernel(&kernel, &deep) < -1e-3);
+                let mut neg = d.clone();
+                let max_q = neg.pressure.iter().cloned().fold(0.0, f64::max);
+                neg.pressure[10] = -0.01 * max_q;
+                assert!(contact_checks(&kernel, &neg).unwrap().0 < -1e-3);
+            }
+        }
+        println!("worst gap difference / indentation: {worst:.1e}");
+    }
 }
