@@ -27,7 +27,8 @@
 //!   eight radians of e^{ikx} (Gauss error for e^{iωu}, ω = 4, on 16 points: (eω/32)^{32} ≈ 1e−15)
 //!   and half-width ½ in t = kh′ against R's singularities at |Im t| ≳ ½ (ellipse ≥ 1 + √2,
 //!   2.4^{−32} ≈ 6e−13). The poles of slow modes near k = 0 lie beyond the first panel's end k_mid:
-//!   ellipse ≥ 2, ~2e−10 of their part.
+//!   ellipse ≥ 2, ~2e−10 of their part. e^{ikjΔ} comes by rotation in j, four nodes side by side
+//!   (independent multiply-add chains).
 //! - **Low region by moments (C4).** There |k·jΔ| ≤ kX ≤ 1, so with z = jΔ,
 //!   sinc²e^{ikz} − 1 = (sinc² − 1) + sinc²·Σ_{n≥1}(ikz)ⁿ/n! and the low nodes' part of A_D(j) is
 //!   −Σ wΔ·Re[Φ(sinc² − 1)] − Σₙ Re[(iz)ⁿMₙ]/n! with the moments Mₙ = Σ wΔ·Φ·sinc²·kⁿ: cost
@@ -93,10 +94,58 @@ impl LayerKernel {
         let x_max = (m as f64 + 1.0) * delta;
         let nodes = self.check_nodes(x_max);
         let (low, linear): (Vec<_>, Vec<_>) = nodes.into_iter().partition(|n| n.2);
-        let d = self.correction_on(m, delta, &linear);
+        let d = self.linear_correction(m, delta, &linear);
         let d_low = self.low_correction(m, delta, &low);
         for ((x, y), z) in a.iter_mut().zip(d).zip(d_low) {
             *x -= y + z;
+        }
+        a
+    }
+
+    /// The linear region's part of A_D(j) (C3): Σ_nodes wΔ·sinc²·Re[Φe^{ikjΔ}] (the "−1" dropped,
+    /// a constant), e^{ikjΔ} by rotation in j as in `correction_on`, four nodes side by side so
+    /// that their rotation chains overlap (one chain alone waits on each step's latency).
+    fn linear_correction(&self, m: usize, delta: f64, nodes: &[(f64, f64, bool)]) -> Vec<f64> {
+        const W: usize = 4;
+        let mut plus = vec![0.0; m + 1]; // j ≥ 0
+        let mut minus = vec![0.0; m + 1]; // −j
+        for chunk in nodes.chunks(W) {
+            // per lane: cr = −wΔ·sinc²·Re Φ, ci = −wΔ·sinc²·Im Φ, the rotation by kΔ
+            let (mut cr, mut ci) = ([0.0_f64; W], [0.0_f64; W]);
+            let (mut rs, mut rc) = ([0.0_f64; W], [1.0_f64; W]);
+            for (q, &(k, w, _)) in chunk.iter().enumerate() {
+                let (pr, pi) = self.phi(k);
+                let u = 0.5 * k * delta;
+                let sinc = if u < 1e-4 {
+                    1.0 - u * u / 6.0
+                } else {
+                    u.sin() / u
+                };
+                let c = -w * delta * sinc * sinc;
+                cr[q] = c * pr;
+                ci[q] = c * pi;
+                let (a, b) = (k * delta).sin_cos();
+                rs[q] = a;
+                rc[q] = b;
+            }
+            let (mut sn, mut co) = ([0.0_f64; W], [1.0_f64; W]);
+            for j in 0..=m {
+                let (mut re, mut im) = (0.0, 0.0);
+                for q in 0..W {
+                    re += cr[q] * co[q];
+                    im += ci[q] * sn[q];
+                    let ns = sn[q] * rc[q] + co[q] * rs[q];
+                    co[q] = co[q] * rc[q] - sn[q] * rs[q];
+                    sn[q] = ns;
+                }
+                plus[j] += re - im;
+                minus[j] += re + im;
+            }
+        }
+        let mut a = vec![0.0; 2 * m + 1];
+        for j in 0..=m {
+            a[m + j] = plus[j];
+            a[m - j] = minus[j];
         }
         a
     }
