@@ -13,7 +13,7 @@
 //!    n = 1024 intervals resolve the cover 20 times, and the reference met 1e−4) and the answer claims
 //!    its tolerance. The other cases (thin covers on the Winkler or flagged) are counted and printed.
 //!
-//! 4. the spectral layer solver alone (the layer body's default, `layer::spectral`) at tol 1e−6 over
+//! 4. the spectral layer solver alone (the layer body's default, `layer::spectral`) at tol 1e−6 and 1e−4 over
 //!    the same random spectra, covers and ν: every answer it gives (it declines covers too thin for
 //!    its degree cap; those, and refinements it declines, are counted) is finite, says when it
 //!    misses tol, and differs from its own refinement at tol 1e−9 by at most its estimate plus the
@@ -172,7 +172,7 @@ fn run(seed: u64, cases: usize) -> (usize, usize) {
 }
 
 /// Property 4 of the module doc over `cases` random cases: (checked, declined as too thin).
-fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
+fn spectral_run(seed: u64, cases: usize, tol: f64) -> (usize, usize) {
     let mut rng = Rng(seed ^ 0x5eed_5bec);
     let load = 0.25;
     let (mut checked, mut declined) = (0, 0);
@@ -216,7 +216,7 @@ fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
             )
             .unwrap_or_else(|e| panic!("{label}: {e}"))
         };
-        let Some(a) = solve(1e-6) else {
+        let Some(a) = solve(tol) else {
             println!("{label}: declined (cover too thin for p ≤ 48)");
             declined += 1;
             continue;
@@ -231,7 +231,7 @@ fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
             .iter()
             .any(|w| w.contains("tolerance not reached"));
         assert!(
-            a.error_estimate <= 1e-6 || flagged,
+            a.error_estimate <= tol || flagged,
             "{label}: unflagged {}",
             a.error_estimate
         );
@@ -257,7 +257,16 @@ fn spectral_run(seed: u64, cases: usize) -> (usize, usize) {
 #[test]
 fn spectral_estimate_honoured_at_tol_1e6() {
     let seed = crate::seed::seed("layer_props::spectral_estimate_honoured_at_tol_1e6");
-    let (checked, declined) = spectral_run(seed, CI_CASES);
+    let (checked, declined) = spectral_run(seed, CI_CASES, 1e-6);
+    println!("spectral: checked {checked}, declined {declined}");
+}
+
+#[test]
+fn spectral_estimate_honoured_at_tol_1e4() {
+    // the speed goal's tolerance: the walk stops earlier and carries further to the root
+    // (`spectral::walk`), so its carry's error counts more here than at 1e−6
+    let seed = crate::seed::seed("layer_props::spectral_estimate_honoured_at_tol_1e4");
+    let (checked, declined) = spectral_run(seed, CI_CASES, 1e-4);
     println!("spectral: checked {checked}, declined {declined}");
 }
 
@@ -265,7 +274,9 @@ fn spectral_estimate_honoured_at_tol_1e6() {
 #[ignore]
 fn spectral_sweep() {
     let seed = crate::seed::seed("layer_props::spectral_sweep");
-    let (checked, declined) = spectral_run(seed, 60);
+    let (checked, declined) = spectral_run(seed, 60, 1e-6);
+    println!("spectral: checked {checked}, declined {declined}");
+    let (checked, declined) = spectral_run(seed, 60, 1e-4);
     println!("spectral: checked {checked}, declined {declined}");
 }
 

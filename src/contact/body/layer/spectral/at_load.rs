@@ -1,17 +1,16 @@
 //! The spectral layer solver at given load N′: mode reduction and lumping correction as in the
-//! half-space `auto` scheme, the secant load loops of [`super::secant`] (the bracketed loop of
-//! [`crate::contact::load`] as their fallback), the degree p raised by the measured convergence
+//! half-space `auto` scheme, the one secant walk of [`super::walk`] (the bracketed loop of
+//! [`crate::contact::load`] as its fallback), the degree p raised by the measured convergence
 //! rate until the p/2 comparison meets the tolerance (at the cap: the geometric estimate from p/4),
-//! and the contact checks.
+//! the lumping calibration, the carry to the root, the error estimate and the contact checks.
 //!
 //! Input: creep terms, N′, h′, ν, [`SpectralSettings`]; output: a [`LayerAnswer`] (scheme
 //! `layer-spectral`) or `None` when the cover is too thin for the degree cap (the caller falls back
 //! to the hat scheme and says so).
 
-use super::at_lambda::{
-    solve_at_lambda_pair, solve_at_lambda_rule, solve_at_lambda_triple, LaplaceRule,
-};
-use super::secant::{bracket as secant_bracket, secant_loop, start_guess, Start};
+use super::at_lambda::{solve_at_lambda_pair, solve_at_lambda_rule, LaplaceRule};
+use super::secant::{bracket as secant_bracket, secant_loop, secant_until, start_guess, Start};
+use super::walk::{Walk, CARRY_CURVATURE};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{
     calibration_mode, lump_weight, lumped_residual, model_gains, select, slow_estimate_at, unlump,
@@ -23,6 +22,7 @@ use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
 use crate::contact::{CreepTerm, DimensionlessSolution};
 use crate::special::chebyshev::sine_series;
+use std::cell::RefCell;
 
 /// Settings of the spectral layer solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -95,7 +95,7 @@ fn quadrature_bound(rule: LaplaceRule, l_over_h: f64) -> f64 {
 
 /// The last secant solve `sol` carried to the secant's root: with g = ln(N′/N′₀) at `sol` and at the
 /// solve before it (`prev`, at u = ln λ), the root u* = u + t·(u − u_prev), t = −g/(g − g_prev),
-/// and every output (β, ρF/N, N′, the coefficients) moved linearly by the same t. The stop
+/// and every output (β, ρF/N, the coefficients) moved linearly by the same t, N′ set to N′₀. The stop
 /// |g| ≤ 1e−3·tol leaves |t| ≲ 1e−3·tol/(g − g_prev) and the linear step's error is of order
 /// t·|u − u_prev|·(the outputs' curvature), far below the stop itself: so where a tiny change of the
 /// input makes the loop stop one solve earlier or later, the answer moves by that error, not by the
@@ -117,7 +117,9 @@ fn to_root(sol: LambdaSolution, prev: Option<&LambdaSolution>, load: f64) -> Lam
     out.lambda = (u + t * (u - u_prev)).exp();
     out.beta = mv(sol.beta, prev.beta);
     out.friction_rho = mv(sol.friction_rho, prev.friction_rho);
-    out.load = mv(sol.load, prev.load);
+    // the carry is the root of g interpolated linearly in ln N′: N′ = N′₀ there (moving N′ itself
+    // linearly would leave it O(t·Δg²) off, 5e−7 after a walk's carry at tol 1e−3)
+    out.load = load;
     for (k, c) in out.coefficients.iter_mut().enumerate() {
         *c = mv(*c, prev.coefficients.get(k).copied().unwrap_or(0.0));
     }
@@ -167,25 +169,11 @@ fn solve_reduced_pair(
     (unscale(red, a), unscale(red, b))
 }
 
-/// [`solve_reduced`] at degrees p, p/2 and p/4 from one set of columns
-/// ([`super::at_lambda::solve_at_lambda_triple`]).
-fn solve_reduced_triple(
-    red: &Reduction,
-    lambda: f64,
-    h: f64,
-    nu: f64,
-    p: usize,
-    rule: LaplaceRule,
-) -> Triple {
-    let (a, b, c) = solve_at_lambda_triple(&red.modes, lambda, h, nu, p, rule);
-    (unscale(red, a), unscale(red, b), unscale(red, c))
-}
-
 /// Solutions at degrees p, p/2 and p/4 at one λ.
-type Triple = (LambdaSolution, LambdaSolution, LambdaSolution);
+pub(super) type Triple = (LambdaSolution, LambdaSolution, LambdaSolution);
 
 /// N′ and the coefficients of a reduced solution divided by s = 1 + Σ_lumped fᵢ/bᵢ.
-fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution {
+pub(super) fn unscale(red: &Reduction, mut s: LambdaSolution) -> LambdaSolution {
     s.load /= red.scale;
     for c in s.coefficients.iter_mut() {
         *c /= red.scale;
@@ -273,7 +261,11 @@ fn calibrate(
 }
 
 /// A reduced solution at λ with the lumping correction of gains `g` applied (W = Σwᵢ at λ).
-fn corrected(mut s: LambdaSolution, w_lambda: f64, g: (f64, f64, f64)) -> LambdaSolution {
+pub(super) fn corrected(
+    mut s: LambdaSolution,
+    w_lambda: f64,
+    g: (f64, f64, f64),
+) -> LambdaSolution {
     let w = w_lambda / s.lambda;
     s.friction_rho += s.lambda * g.0 * w;
     let f = 1.0 + g.1 * w;
@@ -305,7 +297,7 @@ fn to_dimensionless(s: &LambdaSolution, p: usize) -> DimensionlessSolution {
 /// (ρF/N, λ) error of the degree-p solution `full` from its difference with the p/2 one `half` at
 /// the same λ (module doc of [`super`]): the λ error from the N′ error through d ln N′/d ln λ ≥ ½,
 /// and ρF/N moves with λ at most twice as fast.
-fn degree_error(half: &LambdaSolution, full: &LambdaSolution) -> (f64, f64) {
+pub(super) fn degree_error(half: &LambdaSolution, full: &LambdaSolution) -> (f64, f64) {
     let e_ld = rel(half.load, full.load);
     let e_fr =
         rel(half.friction_rho, full.friction_rho).max((half.beta - full.beta).abs() / full.lambda);
@@ -350,7 +342,7 @@ fn decay_rate(l_over_h: f64) -> f64 {
 /// [`decay_rate`] decades per degree, so q/2 = p/2 + log₁₀(10e/tol)/rate brings it to tol/10
 /// (a third of the check's 0.3·tol); a multiple of 4 between p + 4 and 4p, at most `cap`. The p/2
 /// check at q still decides (one more step when the rate was optimistic).
-fn next_degree(p: usize, e: f64, tol: f64, l_over_h: f64, cap: usize) -> usize {
+pub(super) fn next_degree(p: usize, e: f64, tol: f64, l_over_h: f64, cap: usize) -> usize {
     let rate = decay_rate(l_over_h);
     let half = 0.5 * p as f64 + (10.0 * e / tol).log10().max(0.0) / rate;
     let q = ((2.0 * half / 4.0).ceil().min(1e6) as usize * 4).clamp(p + 4, 4 * p);
@@ -366,7 +358,7 @@ fn rel(a: f64, b: f64) -> f64 {
 }
 
 /// W = Σwᵢ of the lumped modes at λ = 1 (their weight at λ is this over λ).
-fn w_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
+pub(super) fn w_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
     red.lumped
         .iter()
         .map(|&i| lump_weight(&terms[i], 1.0))
@@ -490,51 +482,6 @@ impl LoadProblem<'_> {
             Err(_) => self.solve_loop(red, g, p, Some(near), &self.load_settings),
         }
     }
-
-    /// Step 1: a coarse λ at degree ≤ 16 without the lumping correction; returns the solution,
-    /// the solves made, the slope d ln N′/d ln λ and the model gains (g_F, g_N) at the guess.
-    #[allow(clippy::type_complexity)]
-    fn coarse(
-        &self,
-        tol: f64,
-        (lam_guess, slope_guess): (f64, f64),
-    ) -> Result<(LambdaSolution, usize, f64, (f64, f64)), ContactError> {
-        let (terms, thickness) = (self.terms, self.thickness);
-        let coarse_tol = 1e-3_f64.max(tol);
-        let lam = lam_guess;
-        let (gf, gn) = model_gains(terms, lam);
-        let red0 = select(
-            terms,
-            lam,
-            0.3 * coarse_tol * 1e-2,
-            0.3 * coarse_tol,
-            (gf, gn),
-        );
-        let coarse_settings = LoadSettings {
-            rel_tol: 1e-4,
-            lambda_rel_tol: 1e-5,
-            accept_tol: 1e-4,
-            ..LoadSettings::default()
-        };
-        let p0 = degree_for(0.5 * lam, thickness, coarse_tol).min(16);
-        let wl0 = w_lambda(terms, &red0);
-        let coarse = secant_loop(
-            self.load,
-            self.safe,
-            Start::Guess(lam_guess, slope_guess),
-            (1e-4, 1e-6),
-            SECANT_SOLVES,
-            &mut |x| self.solve(&red0, x, p0, wl0, (gf, gn, 0.0)),
-        );
-        let (c, iterations, slope) = match coarse {
-            Ok(c) => (c.sol, c.solves, c.slope),
-            Err(_) => {
-                let (c, it) = self.solve_loop(&red0, (gf, gn, 0.0), p0, None, &coarse_settings)?;
-                (c, it, slope_guess)
-            }
-        };
-        Ok((c, iterations, slope, (gf, gn)))
-    }
 }
 
 /// Solve the bonded layer at load N′ to `settings.tol` (module doc of [`super`]); `Ok(None)` when
@@ -563,72 +510,136 @@ pub fn solve_spectral_at_load(
         load_settings: LoadSettings::default(),
         fine_stop: fine_stop(tol),
     };
-
-    // 1. a coarse λ at degree ≤ 16 without the lumping correction: the secant from the closed-form
-    // guess (module [`super::secant`]) to N′ within 1e−4 (λ to ≤ 2e−4, d ln N′/d ln λ ≥ ½); the
-    // bracketed Brent loop from a cold bracket if the secant fails
-    let (c, mut iterations, mut slope, (gf, gn)) =
-        pb.coarse(tol, warm_start(settings.start, terms, load, thickness, nu))?;
-    let mut lam = c.lambda;
-    let mut fr_over_l = c.friction_rho / lam;
+    let cap = degree_cap(settings.p_max);
+    let (mut lam, mut slope) = warm_start(settings.start, terms, load, thickness, nu);
+    // a cover far too thin for the degree cap at the start (within 25 % of the root, module
+    // [`super::secant`]) is declined without a solve; the rule decides at the λ found below
+    if degree_for(0.35 * lam, thickness, tol) > settings.p_max {
+        return Ok(None);
+    }
+    let model = model_gains(terms, lam);
+    let (mut p_floor, mut fr_over_l) = (8, None);
+    let mut iterations = 0;
     let mut warnings = Vec::new();
     for round in 0..3 {
-        // 2. selection and measured lumping gains at the current λ, at the degree for tol
-        let red = select(terms, lam, 0.3 * tol * fr_over_l, 0.3 * tol, (gf, gn));
-        let p = degree_for(0.5 * lam, thickness, tol);
-        if p > settings.p_max {
+        // 1. the one load loop at the answer's reduction and degree (module [`super::walk`]),
+        // stopped where the carry to the root is accurate; the bracketed Brent loop from the
+        // walk's reduction and degree if the secant fails, and a new walk from its λ
+        let walk = RefCell::new(Walk::new(
+            terms,
+            (thickness, nu),
+            rule,
+            tol,
+            cap,
+            model,
+            p_floor,
+            fr_over_l,
+        ));
+        let looped = secant_until(
+            load,
+            pb.safe,
+            Start::Guess(lam, slope),
+            SECANT_SOLVES,
+            &mut |x| walk.borrow_mut().solve(x),
+            &mut |t| walk.borrow().done(t.proposal.step, t.last_step),
+        );
+        let mut walk = walk.into_inner();
+        iterations += walk.solves;
+        let red = match (looped, walk.red.take()) {
+            (Ok(l), Some(red)) => {
+                slope = l.slope;
+                red
+            }
+            (Err(e), Some(red)) if round < 2 => {
+                let (s, it) = pb.solve_loop(
+                    &red,
+                    (model.0, model.1, 0.0),
+                    walk.p,
+                    None,
+                    &fallback_settings(),
+                )?;
+                iterations += it;
+                lam = s.lambda;
+                fr_over_l = Some(s.friction_rho / s.lambda);
+                let _ = e;
+                continue;
+            }
+            (Err(e), _) => return Err(e),
+            (Ok(_), None) => unreachable!("a finished loop has solved"),
+        };
+        let (wl, p) = (walk.wl, walk.p);
+        let n = walk.seen.len();
+        let (last, prev) = (&walk.seen[n - 1], &walk.seen[n - 2]);
+        let lam_n = last.triple.0.lambda;
+        if degree_for(0.5 * lam_n, thickness, tol) > settings.p_max {
             return Ok(None);
         }
-        let wl = w_lambda(terms, &red);
-        // the solve at p and its p/2 and p/4 companions from the same columns (p is a multiple
-        // of 4)
-        let triple = solve_reduced_triple(&red, lam, thickness, nu, p, rule);
-        iterations += 1;
-        // 3. the degree checked against p/2 at this λ (within 2e−4 of the root), raised by the
-        // measured convergence rate until it passes: one solve per degree (p/2 and p/4 come with
-        // it), with the model's gains standing in for the measured ones (the correction is the
-        // same at p and p/2, so only the size of ρF/N that the difference is relative to depends
-        // on them)
-        let (triple, p) = degree_precheck(
-            &pb,
-            &red,
-            lam,
-            triple,
-            p,
-            settings,
-            &mut iterations,
-            (wl, (gf, gn, 0.0)),
-        );
-        // the lumping gains measured at the degree kept, with their p/2 companion (until this
-        // version they were measured at the first degree and kept when the check doubled it: a
+        // 2. the lumping gains measured at λₙ and the degree kept, with their p/2 companion (until
+        // round 5 the gains came from the first degree and were kept when the check raised it: a
         // true error 2.5 times the estimate, tests/layer_thin_gains.rs)
         let cal = if red.lumped.is_empty() {
             Calibration {
-                gains: (gf, gn, 0.0), // nothing lumped: the gains multiply W = 0
-                half: (gf, gn, 0.0),
+                gains: (model.0, model.1, 0.0), // nothing lumped: the gains multiply W = 0
+                half: (model.0, model.1, 0.0),
                 amp: 0.0,
             }
         } else {
             iterations += 1;
-            calibrate(terms, &red, (&triple.0, &triple.1), thickness, nu, p, rule)
+            calibrate(
+                terms,
+                &red,
+                (&last.triple.0, &last.triple.1),
+                thickness,
+                nu,
+                p,
+                rule,
+            )
         };
         let gains = cal.gains;
-        let at_p = corrected(triple.0, wl, gains);
-        let at_half = corrected(triple.1, wl, gains);
+        let at_p = corrected(last.triple.0.clone(), wl, gains);
+        let at_half = corrected(last.triple.1.clone(), wl, gains);
         let mut e_pre = degree_error(&at_half, &at_p);
         if e_pre.0.max(e_pre.1) > 0.3 * tol {
+            if p < cap && round < 2 {
+                // the measured gains fail the p/2 check the model's passed: a new walk from here
+                // at the degree the measured convergence rate asks
+                p_floor = next_degree(p, e_pre.0.max(e_pre.1), tol, 0.5 * lam_n / thickness, cap);
+                lam = lam_n;
+                fr_over_l = Some(at_p.friction_rho / lam_n);
+                continue;
+            }
             // at the cap: the geometric estimate from the p/4 companion
-            e_pre = degree_error_at_cap(&corrected(triple.2, wl, gains), &at_half, &at_p);
+            e_pre = degree_error_at_cap(
+                &corrected(last.triple.2.clone(), wl, gains),
+                &at_half,
+                &at_p,
+            );
         }
-        // 4. the load loop from there
-        let (sol, it) = pb.fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
-        iterations += it;
-        // 5. the degree's error at the λ found
+        // 3. carried to the root through the solve before (module [`super::walk`]): its
+        // interpolation remainder bounded by the measured curvature; the fine secant loop from
+        // λₙ where the measured gains moved the root too far for that
+        let prev_c = corrected(prev.triple.0.clone(), wl, gains);
+        let carried = to_root(at_p.clone(), Some(&prev_c), load);
+        let (u_n, u_prev, u_root) = (lam_n.ln(), prev_c.lambda.ln(), carried.lambda.ln());
+        let e_carry = CARRY_CURVATURE * (u_root - u_n).abs() * (u_root - u_prev).abs();
+        // `to_root` declines a carry longer than half the last step (then the fine loop goes on)
+        let reached = carried.lambda != at_p.lambda || at_p.load == load;
+        let (sol, e_stop) = if reached && e_carry <= 0.1 * tol {
+            // the N′ error e_carry is a λ error ≤ 2·e_carry (d ln N′/d ln λ ≥ ½)
+            (carried, 2.0 * e_carry)
+        } else {
+            let (s, it) = pb.fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
+            iterations += it;
+            // the fine loop stops at |ln N′/N′₀| ≤ fine_stop (λ within 2× that, counted twice
+            // over; at least the 1e−8 of the former 1e−10 stop)
+            (s, (4.0 * fine_stop(tol)).max(1e-8))
+        };
+        // 4. the degree's error at the λ found
         let (sol, p, e_p) = degree_at_found(
             &pb,
             &red,
             sol,
-            (p, lam, e_pre),
+            (p, lam_n, e_pre),
             settings,
             &mut iterations,
             &mut slope,
@@ -637,10 +648,7 @@ pub fn solve_spectral_at_load(
         let lambda = sol.lambda;
         let fr = sol.friction_rho;
         let e_quad = 3.0 * quadrature_bound(rule, 0.5 * sol.lambda / thickness);
-        // the fine loop stops at |ln N′/N′₀| ≤ fine_stop (λ within 2× that, counted twice over; at
-        // least the 1e−8 of the former 1e−10 stop)
-        let e_stop = (4.0 * fine_stop(tol)).max(1e-8);
-        let (est, floor) = estimate(terms, &red, &sol, lam, (wl, cal), e_p, (e_quad, e_stop));
+        let (est, floor) = estimate(terms, &red, &sol, lam_n, (wl, cal), e_p, (e_quad, e_stop));
         let next = select(
             terms,
             lambda,
@@ -669,13 +677,26 @@ pub fn solve_spectral_at_load(
             }
             return finish(&kernel, sol, p, est, iterations, warnings, settings.checks).map(Some);
         }
+        // 5. another walk with the reduction selected at the λ found
         lam = lambda;
-        fr_over_l = fr / lambda;
+        fr_over_l = Some(fr / lambda);
+        p_floor = p;
     }
     unreachable!("the round loop returns at round 2")
 }
 
-/// The start of the coarse loop: the caller's hint where it is usable, else (and for its slope when
+/// The bracketed Brent loop's settings where the secant walk fails: N′ to 1e−4 (a new walk
+/// starts from its λ).
+fn fallback_settings() -> LoadSettings {
+    LoadSettings {
+        rel_tol: 1e-4,
+        lambda_rel_tol: 1e-5,
+        accept_tol: 1e-4,
+        ..LoadSettings::default()
+    }
+}
+
+/// The start of the walk: the caller's hint where it is usable, else (and for its slope when
 /// that is unusable) the closed-form guess ([`SpectralSettings::start`]).
 fn warm_start(
     hint: Option<(f64, f64)>,
@@ -694,42 +715,6 @@ fn warm_start(
         }
         _ => start_guess(terms, load, thickness, nu),
     }
-}
-
-/// Step 3: the degree-p reduced solution at λ checked against its p/2 companion (`triple`, all
-/// without the lumping correction; the check applies the correction of the provisional gains),
-/// p raised by [`next_degree`] until it passes or reaches the cap; returns the triple (p, p/2, p/4)
-/// at the degree kept and that degree.
-#[allow(clippy::too_many_arguments)]
-fn degree_precheck(
-    pb: &LoadProblem,
-    red: &Reduction,
-    lam: f64,
-    triple: Triple,
-    mut p: usize,
-    settings: &SpectralSettings,
-    iterations: &mut usize,
-    (wl, gains): (f64, (f64, f64, f64)),
-) -> (Triple, usize) {
-    let tol = settings.tol;
-    let cap = degree_cap(settings.p_max);
-    let l_over_h = 0.5 * lam / pb.thickness;
-    let mut triple = triple;
-    let error = |t: &Triple| {
-        let e = degree_error(
-            &corrected(t.1.clone(), wl, gains),
-            &corrected(t.0.clone(), wl, gains),
-        );
-        e.0.max(e.1)
-    };
-    let mut e = error(&triple);
-    while e > 0.3 * tol && p < cap {
-        p = next_degree(p, e, tol, l_over_h, cap);
-        triple = solve_reduced_triple(red, lam, pb.thickness, pb.nu, p, pb.rule);
-        *iterations += 1;
-        e = error(&triple);
-    }
-    (triple, p)
 }
 
 /// Step 5: the degree's error at the λ found: the pre-check's `e_pre` (made at `lam`) when λ

@@ -80,14 +80,16 @@
 //! for compressible covers (README criterion table).
 //!
 //! # Speed (`cargo bench --bench layer_profile`, README covers section)
-//! A load point costs 5–9 solves at given λ: a coarse secant loop at p ≤ 16 from a closed-form
-//! guess (the elastic layer seen as a half-space of the layer's compliance at k = 4/λ, module
-//! [`secant`]) or the caller's warm start ([`at_load::SpectralSettings::start`]), the solve at the
-//! calibration λ with its p/2 and p/4 companions from the same columns
-//! ([`at_lambda::solve_at_lambda_triple`]), one solve per raise of the degree (to the degree the
-//! measured convergence rate asks, not a doubling), the lumping calibration at the degree kept (with
-//! its p/2 companion), the fine secant loop
-//! from the calibration's solve to |ln N′/N′₀| ≤ max(1e−3·tol, 1e−10) (one solve at tol ≥ 1e−5);
+//! A load point costs 4–5 solves at given λ (round 5; 5–9 before): one secant walk ([`walk`])
+//! from a closed-form guess (the elastic layer seen as a half-space of the layer's compliance at
+//! k = 4/λ, module [`secant`]) or the caller's warm start ([`at_load::SpectralSettings::start`]),
+//! every solve at the answer's reduction and degree with its p/2 and p/4 companions from the same
+//! columns ([`at_lambda::solve_at_lambda_triple`]) — a failed p/2 check raises the degree of the
+//! *next* solve by the measured convergence rate, at no solve of its own — stopped when its last two
+//! solves share reduction and degree and the linear carry to the root is accurate (the
+//! interpolation remainder, module [`walk`]); then the lumping calibration at the last solve's λ and
+//! degree (with its p/2 companion), and the carry through the last two solves (`at_load::to_root`).
+//! The fine secant loop runs only where the measured gains moved the root too far for the carry;
 //! the p/2 check is repeated at the λ found only when λ moved by ≥ 1e−3. The contact checks run on
 //! 64 intervals (skipped with [`at_load::SpectralSettings::checks`] false: the bands' replicates).
 
@@ -96,6 +98,7 @@ pub mod at_load;
 pub mod layer_term;
 pub mod secant;
 pub mod volterra;
+pub mod walk;
 
 pub use at_load::{solve_spectral_at_load, SpectralSettings};
 

@@ -39,7 +39,7 @@ use crate::contact::body::half_space::auto::reduction::effective_compliance;
 use crate::contact::body::layer::collocation::lambda_guess;
 use crate::contact::body::layer::compliance::layer_factor;
 use crate::contact::error::ContactError;
-use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Verdict};
+use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Turn, Verdict};
 use crate::contact::CreepTerm;
 
 /// Where a loop starts.
@@ -115,6 +115,24 @@ pub fn secant_loop(
     max_solves: usize,
     solve: &mut dyn FnMut(f64) -> LambdaSolution,
 ) -> Result<Looped, ContactError> {
+    let accept = g_tol.max(1e-8);
+    secant_until(load, bracket, start, max_solves, solve, &mut |t| {
+        let p = t.proposal;
+        p.resid.abs() <= g_tol || (p.step < step_tol && p.resid.abs() <= accept)
+    })
+}
+
+/// The secant of [`secant_loop`] stopped by `done` (shown each turn before the proposed solve:
+/// the residual at the last solve, the proposed step |u_next − u|, the step that led to u); at most
+/// `max_solves`.
+pub(crate) fn secant_until(
+    load: f64,
+    bracket: (f64, f64),
+    start: Start,
+    max_solves: usize,
+    solve: &mut dyn FnMut(f64) -> LambdaSolution,
+    done: &mut dyn FnMut(&Turn<'_>) -> bool,
+) -> Result<Looped, ContactError> {
     let g_of = |s: &LambdaSolution| {
         if s.load > 0.0 && s.load.is_finite() {
             (s.load / load).ln()
@@ -141,7 +159,6 @@ pub fn secant_loop(
         g: g0,
         sol: first,
     };
-    let accept = g_tol.max(1e-8);
     let mut eval = |u: f64| -> Result<(f64, LambdaSolution), ContactError> {
         let s = solve(u.exp());
         let g = g_of(&s);
@@ -153,7 +170,7 @@ pub fn secant_loop(
     };
     let found = iterate(seen, &mut rule, Keep::Last, &mut eval, &mut |t| {
         let p = t.proposal;
-        if p.resid.abs() <= g_tol || (p.step < step_tol && p.resid.abs() <= accept) {
+        if done(t) {
             return Verdict::Done;
         }
         if t.solves >= max_solves || p.width <= 0.0 {
