@@ -1,15 +1,18 @@
 //! Where the time of one spectral layer load point goes (issue 14 speed goals): per load point at
 //! tol 1e−4 and 1e−6 on the 30-term spectrum of `contact_layer` (24 decades, J∞/J_g = 1e3, N′ = ¼,
 //! ν = ½, h/λ_HS = 0.1…3), the solves at given λ it made, and at the λ found the time of one solve
-//! at λ split into its layer term (the κ quadrature) and the rest.
+//! at λ split into its layer term (the κ quadrature) and the rest, and the closing contact checks
+//! alone (`contact_checks` on the answer's 64 intervals, as the solver runs them).
 //! Times are CPU time of the bench's thread (the machine is shared). Run: `cargo bench --bench
 //! layer_profile` (single thread; prints a Markdown table).
 
 use viscoroll::contact::body::half_space::auto::reduction::select;
+use viscoroll::contact::body::layer::collocation::contact_checks;
 use viscoroll::contact::body::layer::spectral::at_lambda::solve_at_lambda;
 use viscoroll::contact::body::layer::spectral::at_load::degree_for;
 use viscoroll::contact::body::layer::spectral::layer_term::LayerTerm;
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
+use viscoroll::contact::body::layer::LayerKernel;
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
 use viscoroll::contact::CreepTerm;
 
@@ -49,8 +52,8 @@ fn time_it<T>(mut f: impl FnMut() -> T) -> (T, f64) {
 
 fn main() {
     let load = 0.25;
-    println!("| spectrum | h/λ_HS | tol | time/load point | solves at λ | p | one solve at λ | of which layer term | estimate |");
-    println!("|---|---|---|---|---|---|---|---|---|");
+    println!("| spectrum | h/λ_HS | tol | time/load point | solves at λ | p | one solve at λ | of which layer term | checks | estimate |");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
     for (name, terms) in [
         ("1 term", spectrum(1, 0.0, 0.0)),
         ("30 terms", spectrum(30, 24.0, 1e3)),
@@ -86,14 +89,21 @@ fn main() {
                 let red = select(&terms, lam, 0.3 * tol * fr, 0.3 * tol, (0.0, 0.0));
                 let (_, t_l) = time_it(|| solve_at_lambda(&red.modes, lam, h, nu, p, 0.4));
                 let (_, t_lt) = time_it(|| LayerTerm::new(&red.modes, 0.5 * lam, h, nu, p));
+                let kernel = LayerKernel::new(&terms, h, nu).unwrap();
+                let mut d = a.solution.clone();
+                d.n = 64;
+                d.xi = d.xi.iter().step_by(2).copied().collect();
+                d.pressure = d.pressure.iter().step_by(2).copied().collect();
+                let (_, t_ck) = time_it(|| contact_checks(&kernel, &d).unwrap());
                 println!(
-                    "| {name} | {hr} | {tol:.0e} | {:.2} ms | {} | {p} (start {}, L/h {:.2}) | {:.3} ms | {:.3} ms | {:.1e} |",
+                    "| {name} | {hr} | {tol:.0e} | {:.2} ms | {} | {p} (start {}, L/h {:.2}) | {:.3} ms | {:.3} ms | {:.3} ms | {:.1e} |",
                     t * 1e3,
                     a.solution.iterations,
                     degree_for(0.5 * lam, h, tol),
                     0.5 * lam / h,
                     t_l * 1e3,
                     t_lt * 1e3,
+                    t_ck * 1e3,
                     a.error_estimate
                 );
             }

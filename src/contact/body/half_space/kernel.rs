@@ -114,7 +114,28 @@ impl Kernel {
 }
 
 /// Add the hat averages of one term's part (fᵢ/bᵢ)h(bᵢξ) of K to `a` (indexed k + m, k = −m..=m).
-fn add_term_hat_averages(t: &CreepTerm, m: usize, h: f64, a: &mut [f64]) {
+pub(crate) fn add_term_hat_averages(t: &CreepTerm, m: usize, h: f64, a: &mut [f64]) {
+    add_term_hat_averages_with(t, m, h, a, &kernel_bracket);
+}
+
+/// The first |k| where [`add_term_hat_averages`] uses the split form (|kH| ≥ 2; 0 for H ≥ 1).
+pub(crate) fn split_from(big_h: f64) -> i64 {
+    if big_h >= 1.0 {
+        0
+    } else {
+        (2.0 / big_h).ceil().min(1e18) as i64
+    }
+}
+
+/// [`add_term_hat_averages`] with h(x) (`kernel_bracket`) evaluated by `bracket` at the points
+/// x = kH, |k| ≥ [`split_from`] − 1, of the split form (the contact checks interpolate it).
+pub(crate) fn add_term_hat_averages_with(
+    t: &CreepTerm,
+    m: usize,
+    h: f64,
+    a: &mut [f64],
+    bracket: &dyn Fn(f64) -> f64,
+) {
     let mi = m as i64;
     let len = 2 * m + 1;
     let big_h = t.b * h;
@@ -143,16 +164,12 @@ fn add_term_hat_averages(t: &CreepTerm, m: usize, h: f64, a: &mut [f64]) {
     let mut v_h2 = vec![0.0; len + 2];
     // Plain second differences of h₂ where |kH| < 2 (h₂ is small there and has no large
     // pieces), the split form elsewhere (its pieces do not cancel once |x| ≳ 1).
-    let split_from = if big_h >= 1.0 {
-        0
-    } else {
-        (2.0 / big_h).ceil().min(1e18) as i64
-    };
+    let split_from = split_from(big_h);
     for (idx, (vh, vh2)) in v_h.iter_mut().zip(v_h2.iter_mut()).enumerate() {
         let k = idx as i64 - mi - 1;
         let x = k as f64 * big_h;
         if k.abs() + 1 >= split_from {
-            *vh = kernel_bracket(x);
+            *vh = bracket(x);
         }
         if k.abs() <= split_from {
             *vh2 = kernel_bracket_int2(x);
