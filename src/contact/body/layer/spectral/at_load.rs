@@ -38,8 +38,8 @@ pub struct SpectralSettings {
     /// ignored. The answer does not depend on it beyond the load loops' stopping tolerances. Default
     /// `None`.
     pub start: Option<(f64, f64)>,
-    /// Run the closing contact checks (min pressure / max, smallest gap outside the contact; about
-    /// 40 % of a warm-started solve at tol 1e−3, `cargo bench --bench bands_levers -- --checks`).
+    /// Run the closing contact checks (min pressure / max, smallest gap outside the contact; 0.1–0.35
+    /// ms, about a tenth of a load point, `cargo bench --bench layer_profile`, checks column).
     /// Without them the answer is the same to the bit (the checks only read the solution) but its
     /// `min_pressure_ratio` and `min_gap_ratio` are NaN and no check warning can be raised: only for
     /// callers that read neither (the bands' replicate solves, `bands::friction::cover_solver`).
@@ -877,9 +877,8 @@ fn finish(
             .collect();
     d.iterations = iterations;
     d.error_estimate = Some(est);
-    // the checks on every second node (64 intervals): their kernel costs ∝ the nodes (half-space
-    // part ∝ terms × 193 offsets, layer part ∝ κ nodes × 193), about two solves at 128 and half
-    // that at 64. The smallest gap sits at the first node outside an edge, now twice as far out,
+    // the checks on every second node (64 intervals): their kernel (`layer/kernel/check_rule.rs`)
+    // costs 0.1–0.35 ms (one to 30 terms), about half a solve at λ. The smallest gap sits at the first node outside an edge, now twice as far out,
     // so it reads 2.8–6.6 times the 128-node value; a penetration narrower than λ/64 next to an
     // edge would go unseen (`checks_on_64_intervals_agree`). Skipped on request (NaN: not checked).
     let (min_pressure_ratio, min_gap_ratio) = if checks {

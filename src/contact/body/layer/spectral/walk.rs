@@ -7,14 +7,14 @@
 //! were made with, for [`super::at_load`] to calibrate, carry to the root and estimate.
 //!
 //! # What a solve does
-//! At each λ the secant asks for ([`super::secant::secant_until`]):
+//! At each λ the secant asks for (`secant::secant_until`):
 //! 1. the modes are selected at λ ([`select`]: fast modes lumped, slow ones dropped within 0.3·tol
 //!    of ρF/N and N′, with the ρF/N/λ of the solve before; the first solve, whose N′ only has to aim
 //!    the secant, with the budgets of tol 1e−3 and ρF/N/λ = 1e−2, as the former coarse loop did);
 //! 2. the degree is the larger of the rule [`degree_for`] at λ and the degree the loop has reached;
 //! 3. the triple (p, p/2, p/4) is solved at λ, its degree error measured with the model gains, and
 //!    when the p/2 check fails the degree for the *next* solve is raised by the measured convergence
-//!    rate ([`next_degree`]): the raise costs no solve of its own (the solve that showed it still
+//!    rate (`at_load::next_degree`): the raise costs no solve of its own (the solve that showed it still
 //!    aims the secant; the former loop re-solved at the same λ after each raise).
 //!
 //! A change of reduction or degree starts a new *generation*. The loop stops only when its last two
