@@ -534,7 +534,7 @@ pub fn solve_spectral_at_load(
     let (mut p_floor, mut fr_over_l) = (8, None);
     let mut iterations = 0;
     let mut warnings = Vec::new();
-    for round in 0..3 {
+    'rounds: for round in 0..3 {
         // 1. the one load loop at the answer's reduction and degree (module [`super::walk`]),
         // stopped where the carry to the root is accurate; the bracketed Brent loop from the
         // walk's reduction and degree if the secant fails, and a new walk from its λ
@@ -587,98 +587,87 @@ pub fn solve_spectral_at_load(
         if degree_for(0.5 * lam_n, thickness, tol) > settings.p_max {
             return Ok(None);
         }
-        // 2. the lumping gains measured at λₙ and the degree kept, with their p/2 companion (until
-        // round 5 the gains came from the first degree and were kept when the check raised it: a
-        // true error 2.5 times the estimate, tests/layer_thin_gains.rs)
-        let cal = if red.lumped.is_empty() {
-            Calibration {
-                gains: (model.0, model.1, 0.0), // nothing lumped: the gains multiply W = 0
-                half: (model.0, model.1, 0.0),
-                amp: 0.0,
-            }
-        } else {
-            // at p/2 first where that is likely to do (its columns cost about half): the gains
-            // enter as λ·g·W, far smaller than the solution, so they need less of the degree. Kept
-            // when their own degree error (p/2 against p/4) is ≤ 0.1·tol, else measured again at
-            // p. On the bench's 30-term spectrum at tol 1e−4 that error was 0.2·tol at L/h′ = 2.2,
-            // 0.04·tol at 1.1 and ≤ 0.009·tol at L/h′ ≤ 0.5, so thinner covers than L/h′ = 1.5
-            // go to p at once
-            let t = &last.triple;
-            let half_first = 0.5 * lam_n / thickness <= 1.5;
-            let cal = half_first.then(|| {
+        // 2. the lumping gains measured at λₙ, with their half-degree companion (until round 5 of
+        // the speed work the gains came from the first degree and were kept when the check raised
+        // it: a true error 2.5 times the estimate, tests/layer_thin_gains.rs). At p/2 first where
+        // p ≥ 16 (its columns cost about half; the gains enter as λ·g·W, far smaller than the
+        // solution, so they need less of the degree): their degree error (p/2 against p/4) is
+        // counted in the estimate, and only if the estimate then misses tol are they measured
+        // again at p and steps 2–4 redone
+        let t = &last.triple;
+        let mut cal_at_half = !red.lumped.is_empty() && p >= 16;
+        let (sol, p, est, floor, gains) = loop {
+            let cal = if red.lumped.is_empty() {
+                Calibration {
+                    gains: (model.0, model.1, 0.0), // nothing lumped: the gains multiply W = 0
+                    half: (model.0, model.1, 0.0),
+                    amp: 0.0,
+                }
+            } else if cal_at_half {
                 iterations += 1;
                 calibrate(terms, &red, (&t.1, &t.2), thickness, nu, p / 2, rule)
-            });
-            match cal {
-                Some(cal)
-                    if cal
-                        .degree_error(wl / lam_n, lam_n, t.1.friction_rho)
-                        .0
-                        .max(cal.degree_error(wl / lam_n, lam_n, t.1.friction_rho).1)
-                        <= 0.1 * tol =>
-                {
-                    cal
+            } else {
+                iterations += 1;
+                calibrate(terms, &red, (&t.0, &t.1), thickness, nu, p, rule)
+            };
+            let gains = cal.gains;
+            let at_p = corrected(t.0.clone(), wl, gains);
+            let at_half = corrected(t.1.clone(), wl, gains);
+            let mut e_pre = degree_error(&at_half, &at_p);
+            if e_pre.0.max(e_pre.1) > 0.3 * tol {
+                if p < cap && round < 2 {
+                    // the measured gains fail the p/2 check the model's passed: a new walk from
+                    // here at the degree the measured convergence rate asks
+                    p_floor =
+                        next_degree(p, e_pre.0.max(e_pre.1), tol, 0.5 * lam_n / thickness, cap);
+                    lam = lam_n;
+                    fr_over_l = Some(at_p.friction_rho / lam_n);
+                    continue 'rounds;
                 }
-                _ => {
-                    iterations += 1;
-                    calibrate(terms, &red, (&t.0, &t.1), thickness, nu, p, rule)
-                }
+                // at the cap: the geometric estimate from the p/4 companion
+                e_pre = degree_error_at_cap(&corrected(t.2.clone(), wl, gains), &at_half, &at_p);
             }
-        };
-        let gains = cal.gains;
-        let at_p = corrected(last.triple.0.clone(), wl, gains);
-        let at_half = corrected(last.triple.1.clone(), wl, gains);
-        let mut e_pre = degree_error(&at_half, &at_p);
-        if e_pre.0.max(e_pre.1) > 0.3 * tol {
-            if p < cap && round < 2 {
-                // the measured gains fail the p/2 check the model's passed: a new walk from here
-                // at the degree the measured convergence rate asks
-                p_floor = next_degree(p, e_pre.0.max(e_pre.1), tol, 0.5 * lam_n / thickness, cap);
-                lam = lam_n;
-                fr_over_l = Some(at_p.friction_rho / lam_n);
+            // 3. carried to the root through the solve before (module [`super::walk`]): its
+            // interpolation remainder bounded by the measured curvature; the fine secant loop
+            // from λₙ where the measured gains moved the root too far for that
+            let prev_c = corrected(prev.triple.0.clone(), wl, gains);
+            let carried = to_root(at_p.clone(), Some(&prev_c), load);
+            let (u_n, u_prev, u_root) = (lam_n.ln(), prev_c.lambda.ln(), carried.lambda.ln());
+            let e_carry = CARRY_CURVATURE * (u_root - u_n).abs() * (u_root - u_prev).abs();
+            // `to_root` declines a carry longer than half the last step (then the fine loop goes
+            // on)
+            let reached = carried.lambda != at_p.lambda || at_p.load == load;
+            let (sol, e_stop) = if reached && e_carry <= 0.1 * tol {
+                // the N′ error e_carry is a λ error ≤ 2·e_carry (d ln N′/d ln λ ≥ ½)
+                (carried, 2.0 * e_carry)
+            } else {
+                let (s, it) = pb.fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
+                iterations += it;
+                // the fine loop stops at |ln N′/N′₀| ≤ fine_stop (λ within 2× that, counted twice
+                // over; at least the 1e−8 of the former 1e−10 stop)
+                (s, (4.0 * fine_stop(tol)).max(1e-8))
+            };
+            // 4. the degree's error at the λ found
+            let (sol, p_found, e_p) = degree_at_found(
+                &pb,
+                &red,
+                sol,
+                (p, lam_n, e_pre),
+                settings,
+                &mut iterations,
+                &mut slope,
+                (wl, gains),
+            )?;
+            let e_quad = 3.0 * quadrature_bound(rule, 0.5 * sol.lambda / thickness);
+            let (est, floor) = estimate(terms, &red, &sol, lam_n, (wl, cal), e_p, (e_quad, e_stop));
+            if est > tol && cal_at_half && p_found == p {
+                cal_at_half = false;
                 continue;
             }
-            // at the cap: the geometric estimate from the p/4 companion
-            e_pre = degree_error_at_cap(
-                &corrected(last.triple.2.clone(), wl, gains),
-                &at_half,
-                &at_p,
-            );
-        }
-        // 3. carried to the root through the solve before (module [`super::walk`]): its
-        // interpolation remainder bounded by the measured curvature; the fine secant loop from
-        // λₙ where the measured gains moved the root too far for that
-        let prev_c = corrected(prev.triple.0.clone(), wl, gains);
-        let carried = to_root(at_p.clone(), Some(&prev_c), load);
-        let (u_n, u_prev, u_root) = (lam_n.ln(), prev_c.lambda.ln(), carried.lambda.ln());
-        let e_carry = CARRY_CURVATURE * (u_root - u_n).abs() * (u_root - u_prev).abs();
-        // `to_root` declines a carry longer than half the last step (then the fine loop goes on)
-        let reached = carried.lambda != at_p.lambda || at_p.load == load;
-        let (sol, e_stop) = if reached && e_carry <= 0.1 * tol {
-            // the N′ error e_carry is a λ error ≤ 2·e_carry (d ln N′/d ln λ ≥ ½)
-            (carried, 2.0 * e_carry)
-        } else {
-            let (s, it) = pb.fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
-            iterations += it;
-            // the fine loop stops at |ln N′/N′₀| ≤ fine_stop (λ within 2× that, counted twice
-            // over; at least the 1e−8 of the former 1e−10 stop)
-            (s, (4.0 * fine_stop(tol)).max(1e-8))
+            break (sol, p_found, est, floor, gains);
         };
-        // 4. the degree's error at the λ found
-        let (sol, p, e_p) = degree_at_found(
-            &pb,
-            &red,
-            sol,
-            (p, lam_n, e_pre),
-            settings,
-            &mut iterations,
-            &mut slope,
-            (wl, gains),
-        )?;
         let lambda = sol.lambda;
         let fr = sol.friction_rho;
-        let e_quad = 3.0 * quadrature_bound(rule, 0.5 * sol.lambda / thickness);
-        let (est, floor) = estimate(terms, &red, &sol, lam_n, (wl, cal), e_p, (e_quad, e_stop));
         let next = select(
             terms,
             lambda,
