@@ -13,7 +13,7 @@
 //!    the secant, with the budgets of tol 1e−3 and ρF/N/λ = 1e−2, as the former coarse loop did);
 //! 2. the degree is the larger of the rule [`degree_for`] at λ and the degree the loop has reached;
 //! 3. the triple (p, p/2, p/4) is solved at λ, its degree error measured with the model gains, and
-//!    when the p/2 check fails the degree for the *next* solve is raised by the measured convergence
+//!    when the p/2 check fails (against 0.3·tol over the lumping's amplification, `degree_budget`) the degree for the *next* solve is raised by the measured convergence
 //!    rate (`at_load::next_degree`): the raise costs no solve of its own (the solve that showed it still
 //!    aims the secant; the former loop re-solved at the same λ after each raise).
 //!
@@ -33,7 +33,9 @@
 //! counts it again at the carry actually made (after the measured gains moved the root).
 
 use super::at_lambda::{solve_at_lambda_triple, LaplaceRule};
-use super::at_load::{corrected, degree_error, degree_for, next_degree, unscale, w_lambda, Triple};
+use super::at_load::{
+    corrected, degree_budget, degree_error, degree_for, next_degree, unscale, w_lambda, Triple,
+};
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{select, Reduction};
 use crate::contact::CreepTerm;
@@ -145,7 +147,7 @@ impl<'a> Walk<'a> {
         let at_p = corrected(triple.0.clone(), self.wl, g);
         let e = degree_error(&corrected(triple.1.clone(), self.wl, g), &at_p);
         let e = e.0.max(e.1);
-        if e > 0.3 * tol && p < self.cap {
+        if e > degree_budget(terms, red, lambda, tol) && p < self.cap {
             self.p = next_degree(p, e, tol, 0.5 * lambda / self.thickness, self.cap);
         }
         self.fr_over_l = Some(at_p.friction_rho / lambda);
