@@ -115,12 +115,7 @@ impl LayerKernel {
             let (mut rs, mut rc) = ([0.0_f64; W], [1.0_f64; W]);
             for (q, &(k, w, _)) in chunk.iter().enumerate() {
                 let (pr, pi) = self.phi(k);
-                let u = 0.5 * k * delta;
-                let sinc = if u < 1e-4 {
-                    1.0 - u * u / 6.0
-                } else {
-                    u.sin() / u
-                };
+                let (_, sinc) = half_sinc(k, delta);
                 let c = -w * delta * sinc * sinc;
                 cr[q] = c * pr;
                 ci[q] = c * pi;
@@ -158,12 +153,7 @@ impl LayerKernel {
         let mut constant = 0.0;
         for &(k, w, _) in nodes {
             let (pr, pi) = self.phi(k);
-            let u = 0.5 * k * delta;
-            let sinc = if u < 1e-4 {
-                1.0 - u * u / 6.0
-            } else {
-                u.sin() / u
-            };
+            let (u, sinc) = half_sinc(k, delta);
             // sinc² − 1 without cancellation (as in `correction_on`)
             let s2m1 = if u < 1e-2 {
                 (-u * u / 6.0 + u.powi(4) / 120.0) * (sinc + 1.0)
@@ -436,6 +426,18 @@ fn add_fast(fast: &[(f64, f64)], m: usize, tables: &Tables, a: &mut [f64]) {
         }
         *ak += s;
     }
+}
+
+/// u = kΔ/2 and sinc u = sin u/u (its Taylor form below u = 1e−4, where 1 − u²/6 is exact to
+/// rounding): the hat's transform factor of both correction regions.
+fn half_sinc(k: f64, delta: f64) -> (f64, f64) {
+    let u = 0.5 * k * delta;
+    let sinc = if u < 1e-4 {
+        1.0 - u * u / 6.0
+    } else {
+        u.sin() / u
+    };
+    (u, sinc)
 }
 
 #[cfg(test)]
