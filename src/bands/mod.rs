@@ -22,8 +22,13 @@
 //!    and the correlation of neighbours. The law at T_k gets δ_k + (d log a_T/dT)·σ_T,k·z.
 //! 3. Moduli (eq. 15.3, wild residual bootstrap): E′*_p = Ê′(ω_p)·exp(z_p r_p), E″ alike, placed at
 //!    the reduced frequency ω_p·10^δ_k of its isotherm k. Each replicate is refitted (eq. 15.4): the
-//!    Prony QP at the fit's own λ (the λ search is not redone: one QP instead of twelve), then the
+//!    Prony QP near the fit's own λ (the λ search is not redone: one QP instead of twelve), then the
 //!    exact creep conversion.
+//! 3b. The fit's own choices (model error, eqs. 15.10–15.12, super::model): each replicate adds
+//!    another shift criterion's shifts (weighted by a standard normal), the shift table's
+//!    interpolation error at each interval's middle, and is refitted at λ·10^U(−1,1) on a
+//!    relaxation-time grid moved within its step. A fit file without an ensemble gets one from its
+//!    own master curve ([`ensemble_from_fit`]; the shifts' scatter is then left out, and said).
 //! 4. Contact: each replicate's creep spectrum, shifted by its own law log a_T(T) + δ(T) (δ linear
 //!    between isotherms, constant beyond the ends), is rolled at the scene's temperatures; the ratio
 //!    F_b/F̂ to the fit's own friction solved at the same tolerance carries the scatter.
@@ -56,12 +61,13 @@ pub mod compare;
 pub mod ensemble;
 pub mod error;
 pub mod friction;
+pub mod model;
 pub mod rng;
 pub mod scene;
 pub mod window;
 
 pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
-pub use ensemble::build_ensemble;
+pub use ensemble::{build_ensemble, ensemble_from_fit, FROM_FIT_FILE_NOTE};
 pub use error::BandError;
 pub use friction::{
     band_of, mean_band, predict_from_half_space, replicate_choice, tail_alternatives, tail_note,

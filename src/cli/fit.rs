@@ -6,12 +6,21 @@
 //! QP with its GCV weight (`crate::pipeline::fit_compound`). An existing fit made from the same inputs
 //! with the same settings is reused; a different one is kept unless `--force` is given.
 //!
+//! The fit file carries the bootstrap ensemble of the uncertainty bands (crate::bands, docs/MATH.md
+//! §15) by default, so that `roll` and `run` give bands from it; `--no-bands` skips it (a fit
+//! reused without one gets it added, the fit itself unchanged). A master curve read already shifted
+//! has no isotherms to resample: its ensemble is made from its points alone
+//! (crate::bands::ensemble_from_fit, whose note says what that leaves out).
+//!
 //! Instead of a measurement, a master curve already shifted can be fitted: pyvisco's master-curve CSV
 //! with its shift-factor CSV (`--master-curve M.csv --shift-factors S.csv`, read by
 //! [`crate::dma::pyvisco`]); its shift table is the fit's shift law, and the WLF and Arrhenius fits
 //! of that table go into the fit file for the cards.
 
-use crate::pipeline::fit_compound::{fit_or_reuse, fit_or_reuse_master, FitAction, FitOptions};
+use crate::bands::BandSettings;
+use crate::pipeline::fit_compound::{
+    fit_or_reuse_master, fit_or_reuse_with_bands, FitAction, FitOptions,
+};
 use anyhow::Context;
 use std::path::PathBuf;
 
@@ -65,6 +74,10 @@ pub struct Args {
     /// Replace an existing, different fit file.
     #[arg(long)]
     pub force: bool,
+    /// Skip the bootstrap ensemble of the uncertainty bands (32 refits; `roll` then makes one from
+    /// the fit file alone, without the shifts' scatter).
+    #[arg(long)]
+    pub no_bands: bool,
     /// Print one JSON object (a summary of the fit) on stdout.
     #[arg(long)]
     pub json: bool,
@@ -92,13 +105,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
     }
-    let (fit, action) = match &source {
-        Source::Measurement(measurement) => {
-            fit_or_reuse(&name, measurement, &args.output, &options, args.force)
-        }
+    let bands = (!args.no_bands).then(BandSettings::default);
+    let (fit, action, no_bands) = match &source {
+        Source::Measurement(measurement) => fit_or_reuse_with_bands(
+            &name,
+            measurement,
+            &args.output,
+            &options,
+            args.force,
+            bands.as_ref(),
+        )
+        .with_context(|| input.clone())?,
         Source::Master(measurement, master) => {
             options.master = master.settings.clone();
-            fit_or_reuse_master(
+            let (mut fit, action) = fit_or_reuse_master(
                 &name,
                 measurement,
                 master,
@@ -106,10 +126,23 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 &options,
                 args.force,
             )
+            .with_context(|| input.clone())?;
+            let why = match bands.as_ref().filter(|_| fit.bands.is_none()) {
+                None => None,
+                Some(s) => match crate::bands::ensemble_from_fit(&fit, s) {
+                    Ok(e) => {
+                        fit.bands = Some(e);
+                        fit.write(&args.output, true)
+                            .with_context(|| args.output.display().to_string())?;
+                        None
+                    }
+                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+                },
+            };
+            (fit, action, why)
         }
-    }
-    .with_context(|| input.clone())?;
-    print_fit(&args, &fit, action);
+    };
+    print_fit(&args, &fit, action, no_bands.as_deref());
     Ok(())
 }
 
@@ -143,9 +176,14 @@ fn fit_options(args: &Args) -> anyhow::Result<FitOptions> {
     Ok(options)
 }
 
-/// Print the fit: one JSON object (`--json`) or a line on stderr, the trade table (`--trade`) and a
-/// warning when the term target is missed.
-fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction) {
+/// Print the fit: one JSON object (`--json`) or a line on stderr, the trade table (`--trade`), a
+/// warning when the term target is missed and one when the bands could not be made (`no_bands`).
+fn print_fit(
+    args: &Args,
+    fit: &crate::pipeline::CompoundFit,
+    action: FitAction,
+    no_bands: Option<&str>,
+) {
     let action = match action {
         FitAction::Reused => "reused",
         FitAction::Fitted => "fitted",
@@ -170,6 +208,9 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
             "term_target_met": info.term_target_met,
             "term_trade": info.term_trade,
             "quality": fit.quality,
+            "bands_replicates": fit.bands.as_ref().map(|b| b.replicates.len()),
+            "bands_note": bands_note(args, fit, no_bands),
+            "bands_notes": fit.bands.as_ref().map_or(&[][..], |b| &b.notes[..]),
         });
         println!("{obj}");
     } else {
@@ -202,6 +243,9 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
             );
         }
     }
+    if let (Some(why), false) = (no_bands, args.json) {
+        eprintln!("{}: WARNING: {why}", fit.compound);
+    }
     if info.term_target_met == Some(false) {
         let t = info.term_target_rms_log10.unwrap_or_default();
         eprintln!(
@@ -212,6 +256,20 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
             args.max_terms.map_or("the dense fit".to_string(), |n| format!("{n} terms")),
             fit.relaxation.terms.len()
         );
+    }
+}
+
+/// Why the fit file carries no ensemble (null when it carries one).
+fn bands_note(
+    args: &Args,
+    fit: &crate::pipeline::CompoundFit,
+    no_bands: Option<&str>,
+) -> Option<String> {
+    match (&fit.bands, no_bands) {
+        (Some(_), _) => None,
+        (None, Some(why)) => Some(why.to_string()),
+        (None, None) if args.no_bands => Some("skipped (--no-bands)".to_string()),
+        (None, None) => Some("not computed".to_string()),
     }
 }
 

@@ -357,11 +357,14 @@ fn existing(
     }
 }
 
-/// Whether `fit` carries an ensemble made with `settings`.
+/// Whether `fit` carries an ensemble made with `settings` that draws the fit's own choices too
+/// (`model_error`, docs/MATH.md eqs. 15.10–15.12; an older ensemble is made again).
 fn has_ensemble(fit: &CompoundFit, settings: &BandSettings) -> bool {
-    fit.bands
-        .as_ref()
-        .is_some_and(|b| b.replicates_requested == settings.replicates && b.seed == settings.seed)
+    fit.bands.as_ref().is_some_and(|b| {
+        b.replicates_requested == settings.replicates
+            && b.seed == settings.seed
+            && b.model_error.is_some()
+    })
 }
 
 /// [`fit_or_reuse`], and with `bands` the fit's bootstrap ensemble (crate::bands): made with a new

@@ -11,7 +11,9 @@ pub mod compound_fit;
 pub mod outcome;
 pub mod scene;
 
-pub use band_ensemble::{BandEnsemble, BandReplicate, ScatterEstimate};
+pub use band_ensemble::{
+    offset_at, BandEnsemble, BandReplicate, ModelErrorSummary, ScatterEstimate,
+};
 pub use compound_fit::{
     CompoundFit, CompoundFitError, FitSettings, InputHash, MeasurementSummary, Provenance,
     QualityFigure, TtsSummary, COMPOUND_FIT_FORMAT_VERSION,
