@@ -80,6 +80,9 @@ struct Point {
     window_decades: Option<f64>,
     /// Beyond the measured temperatures (the shift-law tail term, eq. 15.8).
     extrapolated: bool,
+    /// (p05, p95) of the data's scatter alone (`BandSettings::model_error` off: the bands before
+    /// issue 32), when compared.
+    before: Option<(f64, f64)>,
 }
 
 /// Mean and standard deviation of the finite ln ratios (as crate::bands::band_of reads them).
@@ -115,6 +118,8 @@ struct Case {
     compound: RealisticCompound,
     protocol: DmaProtocol,
     format: ExportFormat,
+    /// Also the band of the data's scatter alone ([`Point::before`]).
+    compare: bool,
 }
 
 /// The default protocol (−60 … +100 °C every 5 K) with noise seed `seed`, cut to [lo, hi] °C.
@@ -160,6 +165,13 @@ fn points_of_case(case: &Case) -> Vec<Point> {
         fit_measurement_master(&compound.name, &m, &FitOptions::default()).unwrap();
     fit.bands = Some(build_ensemble(&master, &m, &fit, &bs).unwrap());
     let ensemble = fit.bands.as_ref().unwrap();
+    let bs_before = BandSettings {
+        model_error: false,
+        ..BandSettings::default()
+    };
+    let before = case
+        .compare
+        .then(|| build_ensemble(&master, &m, &fit, &bs_before).unwrap());
     let (true_creep, _) = relaxation_to_creep(&compound.spectrum).unwrap();
     for base in &scenes.scene {
         let mut spec = base.clone();
@@ -168,6 +180,9 @@ fn points_of_case(case: &Case) -> Vec<Point> {
         let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
         let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
         let bands = scene_bands_on(&fit, ensemble, &scene, cover_m, &spec.temps_c, &bs);
+        let bands_before = before
+            .as_ref()
+            .map(|e| scene_bands_on(&fit, e, &scene, cover_m, &spec.temps_c, &bs_before));
         for (i, (p, r)) in got.iter().zip(&bands.ratios).enumerate() {
             let true_at_t = shifted(&true_creep, compound.law.log10_a_t(p.temp_c));
             let truth = match spec.cover_thickness_mm {
@@ -197,6 +212,10 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                 stats: log_stats(r),
                 window_decades: bands.window[i].as_ref().map(|w| w.excess.decades),
                 extrapolated: bands.tail_ln[i].is_some(),
+                before: bands_before.as_ref().map(|b| {
+                    let b = band_of(p.friction, &b.ratios[i]).expect("a band at every point");
+                    (b.p05, b.p95)
+                }),
             });
         }
     }
@@ -214,6 +233,7 @@ fn points_of_seed(seed: u64, lowest_c: f64) -> Vec<Point> {
                 compound,
                 protocol: protocol(seed, lowest_c, f64::INFINITY),
                 format: ExportFormat::PlainCsv,
+                compare: false,
             })
         })
         .collect()
@@ -271,33 +291,52 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
     compounds.sort();
     compounds.dedup();
     println!(
-        "| compound | covered | median half-width | median log half-width | missed above / below |"
+        "| compound | covered | median half-width | median log half-width | missed above / below \
+         | before: covered | before: median half-width |"
     );
-    println!("| --- | --- | --- | --- | --- |");
+    println!("| --- | --- | --- | --- | --- | --- | --- |");
+    let row = |name: &str, of: &[&Point]| {
+        let (w, lw) = median_widths(of);
+        let before: Vec<Point> = of
+            .iter()
+            .filter_map(|p| {
+                p.before.map(|(p05, p95)| Point {
+                    p05,
+                    p95,
+                    ..(*p).clone()
+                })
+            })
+            .collect();
+        let (bw, _) = median_widths(&before.iter().collect::<Vec<_>>());
+        println!(
+            "| {name} | {} | {:.2} % | {lw:.4} | {} / {} | {} | {:.2} % |",
+            pct(coverage_of(of.iter().copied())),
+            100.0 * w,
+            of.iter().filter(|p| p.truth > p.p95).count(),
+            of.iter().filter(|p| p.truth < p.p05).count(),
+            pct(coverage_of(before.iter())),
+            100.0 * bw
+        );
+    };
     for c in &compounds {
         let of: Vec<&Point> = all
             .iter()
             .map(|(_, p)| p)
             .filter(|p| &p.compound == c)
             .collect();
-        let (w, lw) = median_widths(&of);
-        println!(
-            "| {c} | {} | {:.2} % | {lw:.4} | {} / {} |",
-            pct(coverage_of(of.iter().copied())),
-            100.0 * w,
-            of.iter().filter(|p| p.truth > p.p95).count(),
-            of.iter().filter(|p| p.truth < p.p05).count()
-        );
+        row(c, &of);
     }
     let every: Vec<&Point> = all.iter().map(|(_, p)| p).collect();
-    let (w, lw) = median_widths(&every);
-    println!(
-        "| all | {} | {:.2} % | {lw:.4} | {} / {} |",
-        pct(coverage_of(every.iter().copied())),
-        100.0 * w,
-        every.iter().filter(|p| p.truth > p.p95).count(),
-        every.iter().filter(|p| p.truth < p.p05).count()
-    );
+    row("all", &every);
+    for k in [
+        "inside the window, no term",
+        "inside the window's last half decade (ramp, eq. 15.9c)",
+        "beyond the window at a measured temperature (eq. 15.9)",
+        "beyond the measured temperatures (eq. 15.8)",
+    ] {
+        let of: Vec<&Point> = every.iter().copied().filter(|p| class(p) == k).collect();
+        row(k, &of);
+    }
     let scenes: Vec<String> = SceneSet::shipped()
         .scene
         .iter()
@@ -518,6 +557,7 @@ fn held_out_cases(seeds: &[u64]) -> Vec<(u64, Case)> {
                     compound,
                     protocol: protocol(seed, lo, hi),
                     format: ExportFormat::ALL[(seed as usize + j) % 3],
+                    compare: true,
                 },
             ));
         }

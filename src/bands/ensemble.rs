@@ -187,6 +187,7 @@ fn replicate(
     sc: &Scatter,
     choices: &ModelChoices,
     prony: &PronySettings,
+    jitter: bool,
     rng: &mut Rng,
 ) -> Result<BandReplicate, String> {
     let n = sc.chain.len();
@@ -232,11 +233,15 @@ fn replicate(
     points.sort_by(|a, b| a.reduced_freq_hz.total_cmp(&b.reduced_freq_hz));
     // Eq. 15.12: λ within the search's step either way, the τ grid moved within its own step.
     let step = 1.0 / prony.terms_per_decade;
-    let moved = prony.margin_decades + rng.uniform() * step;
+    let (u, u_lambda) = if jitter {
+        (rng.uniform(), 2.0 * rng.uniform() - 1.0)
+    } else {
+        (0.0, 0.0)
+    };
+    let moved = prony.margin_decades + u * step;
     let prony = PronySettings {
         weight_rule: WeightRule::Fixed {
-            lambda: fit.prony_info.lambda
-                * 10f64.powf(LAMBDA_SPREAD_DECADES * (2.0 * rng.uniform() - 1.0)),
+            lambda: fit.prony_info.lambda * 10f64.powf(LAMBDA_SPREAD_DECADES * u_lambda),
         },
         margin_decades: if moved <= 3.0 {
             moved
@@ -290,7 +295,11 @@ pub fn build_ensemble(
 ) -> Result<BandEnsemble, BandError> {
     settings.validate()?;
     let sc = scatter(master, measurement, fit)?;
-    let choices = model_choices(master, measurement);
+    let choices = if settings.model_error {
+        model_choices(master, measurement)
+    } else {
+        ModelChoices::default()
+    };
     // Around the fit's own λ (no λ search): one QP per replicate instead of `lambda_count`.
     let prony = PronySettings {
         weight_rule: WeightRule::Fixed {
@@ -302,7 +311,15 @@ pub fn build_ensemble(
         .into_par_iter()
         .map(|b| {
             let mut rng = Rng::new(settings.seed, b as u64);
-            replicate(master, fit, &sc, &choices, &prony, &mut rng)
+            replicate(
+                master,
+                fit,
+                &sc,
+                &choices,
+                &prony,
+                settings.model_error,
+                &mut rng,
+            )
         })
         .collect();
     let failed: Vec<&String> = results.iter().filter_map(|r| r.as_ref().err()).collect();
@@ -313,7 +330,7 @@ pub fn build_ensemble(
             "residual bootstrap of the master curve (wild, Gaussian weights) with isotherm shifts drawn as a random walk from the shift stage's standard errors and isotherm temperatures from their drift; the fit's choices drawn too: another shift criterion's shifts, the shift table's interpolation error, λ within a decade of {:e} and the relaxation-time grid moved within its step; Prony refit, exact creep conversion",
             fit.prony_info.lambda
         ),
-        model_error: Some(ModelErrorSummary {
+        model_error: settings.model_error.then(|| ModelErrorSummary {
             criteria: choices.criteria.iter().map(|c| c.0.to_string()).collect(),
             criterion_max_log10: choices.criterion_max_log10(),
             interpolation_max_log10: choices.interpolation_max_log10(),
