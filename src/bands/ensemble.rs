@@ -239,7 +239,7 @@ fn replicate(
         (0.0, 0.0)
     };
     let moved = prony.margin_decades + u * step;
-    let prony = PronySettings {
+    let drawn = PronySettings {
         weight_rule: WeightRule::Fixed {
             lambda: fit.prony_info.lambda * 10f64.powf(LAMBDA_SPREAD_DECADES * u_lambda),
         },
@@ -250,7 +250,11 @@ fn replicate(
         },
         ..prony.clone()
     };
-    let refit = fit_prony(&points, fit.relaxation.kind, fit.relaxation.poisson, &prony)
+    let (kind, poisson) = (fit.relaxation.kind, fit.relaxation.poisson);
+    // Where the QP at the drawn λ and grid does not converge (the solver's limit at small λ), the
+    // replicate is refitted at the fit's own λ and grid.
+    let refit = fit_prony(&points, kind, poisson, &drawn)
+        .or_else(|_| fit_prony(&points, kind, poisson, prony))
         .map_err(|e| e.to_string())?;
     let (creep, _) =
         crate::creep::relaxation_to_creep(&refit.spectrum).map_err(|e| e.to_string())?;

@@ -207,7 +207,7 @@ mod tests {
         );
         let master = build_master_curve(&m, &Default::default()).unwrap();
         let c = model_choices(&master, &m);
-        assert_eq!(c.criteria.len(), 2, "{:?}", c.criteria);
+        assert!(c.criteria.len() >= 2, "{:?}", c.criteria);
         // The shift stage refines each shift to ~1e-10 on exact data; 1e-3 decade is far above
         // that and far below any noise-driven difference (~1e-2).
         assert!(
