@@ -96,9 +96,10 @@ pub struct BandSettings {
     /// outwards by the fit's solve's error estimate plus the median replicate's (eq. 15.5b;
     /// 1.3e−4 median, 4e−4 at most on that library).
     pub contact_tol: f64,
-    /// Draw the fit's own choices into each replicate (eqs. 15.10–15.12; default true). Off, the
-    /// ensemble is the data's scatter alone, as before issue 32: for comparison in the calibration
-    /// (tests/bands_calibration.rs), not for use.
+    /// Draw the fit's own choices into each replicate (eqs. 15.10–15.12). Default false for now:
+    /// on 3 of the 8 held-out compounds of tests/bands_calibration.rs more than a quarter of the
+    /// refits then fail (clarabel: InsufficientProgress / NumericalError), which refuses the band;
+    /// until that is solved the default ensemble is the data's scatter alone, as before issue 32.
     pub model_error: bool,
 }
 
@@ -108,7 +109,7 @@ impl Default for BandSettings {
             replicates: 32,
             seed: 16,
             contact_tol: 1e-3,
-            model_error: true,
+            model_error: false,
         }
     }
 }

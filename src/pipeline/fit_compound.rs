@@ -357,13 +357,13 @@ fn existing(
     }
 }
 
-/// Whether `fit` carries an ensemble made with `settings` that draws the fit's own choices too
-/// (`model_error`, docs/MATH.md eqs. 15.10–15.12; an older ensemble is made again).
+/// Whether `fit` carries an ensemble made with `settings` (with or without the fit's own
+/// choices, docs/MATH.md eqs. 15.10–15.12, as `settings.model_error` asks).
 fn has_ensemble(fit: &CompoundFit, settings: &BandSettings) -> bool {
     fit.bands.as_ref().is_some_and(|b| {
         b.replicates_requested == settings.replicates
             && b.seed == settings.seed
-            && b.model_error.is_some()
+            && b.model_error.is_some() == settings.model_error
     })
 }
 
