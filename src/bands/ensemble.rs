@@ -211,7 +211,12 @@ fn replicate(
     }
     // Eq. 15.11: the interpolation error at each interval's middle, one draw per replicate.
     offsets.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let v = rng.normal();
+    // (No draw without intervals, so the ensemble without model error is the one before issue 32.)
+    let v = if choices.interpolation.is_empty() {
+        0.0
+    } else {
+        rng.normal()
+    };
     let mids: Vec<(f64, f64)> = choices
         .interpolation
         .iter()
