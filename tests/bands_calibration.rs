@@ -31,6 +31,15 @@
 //! `cargo test --release --test tests bands_calibration_truncated_ten_seeds -- --ignored --nocapture`.
 //! CI runs seeds 1–2 of it (`bands_cover_the_true_friction_on_truncated_measurements_two_seeds`).
 
+//!
+//! Held-out set (issue 32): `held_out_compounds` (8 shapes none of the bands were tuned on) × noise
+//! seeds 101–110, whole range or truncated at −20 °C / +40 °C, written as plain CSV, TRIOS text or
+//! Proteus ASCII; each point's band with the fit's own choices drawn (eqs. 15.10–15.12) and, beside
+//! it, the data's scatter alone: `VISCOROLL_HELD_OUT_SEEDS=10 cargo test --release --test tests
+//! bands_calibration_held_out_ten_seeds -- --ignored --nocapture`. Its one-seed-each subset is
+//! ignored too for now: 3 of its 8 cases refuse the model-error ensemble (see
+//! `BandSettings::model_error`).
+
 use std::path::PathBuf;
 use viscoroll::bands::{band_of, build_ensemble, scene_bands_on, BandSettings};
 use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
