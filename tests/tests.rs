@@ -45,6 +45,7 @@ mod pyvisco_interop;
 mod reference;
 mod report_browser;
 mod report_plots;
+mod runs_repeat;
 mod seed;
 mod special_functions;
 mod spectra_cards;
