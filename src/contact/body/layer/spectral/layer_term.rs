@@ -415,7 +415,7 @@ impl LayerTerm {
         p: usize,
         rule: LogRule,
     ) -> LayerTerm {
-        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`at_load::degree_for` with
+        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`degree::degree_for` with
         // tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated: such a solve only
         // steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact lengths of
         // metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.
@@ -577,7 +577,7 @@ impl LayerTerm {
         p: usize,
         rule: LogRule,
     ) -> LayerTerm {
-        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`at_load::degree_for` with
+        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`degree::degree_for` with
         // tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated: such a solve only
         // steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact lengths of
         // metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.
