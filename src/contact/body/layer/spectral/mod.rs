@@ -30,14 +30,14 @@
 //!   V⁻¹g = g − Σⱼ wⱼ∫_t^1e^{−μⱼ(u−t)}g(u)du,     wⱼ = 1/Σᵢ dᵢ/(cᵢ−μⱼ)²
 //! ```
 //!
-//! (one term: w = d, and V⁻¹V[1] = 1 checks by hand). So with r̃ = (L(1+t) − β + G)/π of degree p,
-//! r̃ = Σx_mT_m, every solution on the contact is H̃ = Σₘ x_m V⁻¹[T_m] + Σⱼ Aⱼe^{μⱼ(t−1)}
+//! (one term: w = d, and V⁻¹V\[1\] = 1 checks by hand). So with r̃ = (L(1+t) − β + G)/π of degree p,
+//! r̃ = Σx_mT_m, every solution on the contact is H̃ = Σₘ x_m V⁻¹\[T_m\] + Σⱼ Aⱼe^{μⱼ(t−1)}
 //! (V e^{μⱼ(t−1)} = −Σᵢdᵢe^{−cᵢ(1−t)}/(cᵢ−μⱼ)), and the equation holds iff the coefficients of
-//! every dᵢe^{−cᵢ(1−t)} cancel: N conditions Ĝᵢ[H̃] − ΣⱼAⱼ/(cᵢ−μⱼ) + (the same from V⁻¹[T_m]'s
+//! every dᵢe^{−cᵢ(1−t)} cancel: N conditions Ĝᵢ[H̃] − ΣⱼAⱼ/(cᵢ−μⱼ) + (the same from V⁻¹\[T_m\]'s
 //! exponential parts) = 0. Unknowns Aⱼ, x₀…x_p, β; equations: those N, F₀ = 0 (bounded at both
 //! ends) and x_m = (L(δ_{m0} + δ_{m1}) − βδ_{m0} + g_m[H̃])/π for m = 0…p, g_m the Chebyshev
 //! coefficients of G. For G = 0 this is exactly the `auto` reduction (p₀ + p₁t + ΣAⱼe^{μⱼ(t−1)}).
-//! V⁻¹[T_m] is computed in Chebyshev coefficients by [`volterra`]: exactly (a tridiagonal solve)
+//! V⁻¹\[T_m\] is computed in Chebyshev coefficients by [`volterra`]: exactly (a tridiagonal solve)
 //! for μⱼ < max(p²/4, 30), as a short polynomial plus a multiple of e^{μⱼ(t−1)} above. Fast modes
 //! are lumped and slow ones dropped by the `auto` scheme's [`reduction`](crate::contact::body::half_space::auto::reduction),
 //! with its measured first-order lumping correction (the lumped modes' layers are far thinner than h′).
