@@ -358,8 +358,10 @@ fn budget_edges(cases: usize, rng: &mut Rng) {
         }
     }
     // Prony settings and the fit's term count.
-    let mut p = viscoroll::prony::PronySettings::default();
-    p.lambda_count = limits::PRONY_LAMBDA_COUNT_MAX;
+    let mut p = viscoroll::prony::PronySettings {
+        lambda_count: limits::PRONY_LAMBDA_COUNT_MAX,
+        ..Default::default()
+    };
     assert!(p.validate().is_ok());
     p.lambda_count = 1_000_000_000;
     let e = p.validate().unwrap_err().to_string();
