@@ -227,7 +227,7 @@ fn break_replicates(fit: &Path, k: usize) {
             t["compliance_per_pa"] = serde_json::json!(-c.abs());
         }
     }
-    std::fs::write(fit, serde_json::to_string(&v).unwrap()).unwrap();
+    std::fs::write(fit, super::support::sealed_fit_json(v)).unwrap();
 }
 
 #[test]
@@ -288,7 +288,7 @@ fn failed_band_replicates_are_counted_and_too_many_refuse_the_band() {
     let mut v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&fit).unwrap()).unwrap();
     v["bands"]["notes"] = serde_json::json!([refits]);
-    std::fs::write(&fit, serde_json::to_string(&v).unwrap()).unwrap();
+    std::fs::write(&fit, super::support::sealed_fit_json(v)).unwrap();
     run();
     assert!(std::fs::read_to_string(&friction).unwrap().contains(refits));
     let (rows, sheet, warnings, mean_p05) = texts();

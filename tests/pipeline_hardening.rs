@@ -381,8 +381,9 @@ fn run_takes_tref_and_a_measurement_json_written_by_ingest() {
     let fit: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("fits/m.json")).unwrap()).unwrap();
     assert_eq!(fit["shift_law"]["t_ref_c"].as_f64(), Some(20.0));
+    // refused by the command line's temperature parser (crate::limits), as any invalid value: 2
     let o = run_main(&dir, &out, &["--tref", "1e9"]);
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("--tref"));
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&out);

@@ -54,7 +54,7 @@ pub struct Args {
     pub name: Option<String>,
     /// Reference temperature of the master curve in °C (default: a measured temperature near the
     /// middle of the range).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::temp_c)]
     pub tref: Option<f64>,
     /// Keep at most N relaxation terms (E∞ not counted): the fit chooses their positions and
     /// non-negative weights (e.g. 18 for an LS-DYNA card). Default: no cap.
@@ -184,11 +184,7 @@ fn print_fit(
     action: FitAction,
     no_bands: Option<&str>,
 ) {
-    let action = match action {
-        FitAction::Reused => "reused",
-        FitAction::Fitted => "fitted",
-        FitAction::Replaced => "replaced",
-    };
+    let action = action.word();
     let info = &fit.prony_info;
     let creep_terms = fit.creep.as_ref().map_or(0, |c| c.terms.len());
     if args.json {
@@ -212,10 +208,11 @@ fn print_fit(
             "bands_note": bands_note(args, fit, no_bands),
             "bands_notes": fit.bands.as_ref().map_or(&[][..], |b| &b.notes[..]),
         });
-        println!("{obj}");
+        outln!("{obj}");
     } else {
-        eprintln!(
-            "{}: {action} {} (T_ref {:.2} °C; {} relaxation terms, RMS log10 E′ {:.4}, E″ {:.4}; {} creep terms)",
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
+        errln!(
+            "{}: {action} {} (T_ref {:.2} °C; {} relaxation terms, RMS log10 {storage} {:.4}, {loss} {:.4}; {} creep terms)",
             fit.compound,
             args.output.display(),
             fit.shift_law.t_ref_c(),
@@ -226,9 +223,12 @@ fn print_fit(
         );
     }
     if args.trade && !args.json {
-        eprintln!("terms  RMS log10 E′  RMS log10 E″  max |log10 E′|  max |log10 E″|");
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
+        errln!(
+            "terms  RMS log10 {storage}  RMS log10 {loss}  max |log10 {storage}|  max |log10 {loss}|"
+        );
         for t in &info.term_trade {
-            eprintln!(
+            errln!(
                 "{:5}  {:12.4}  {:12.4}  {:14.3}  {:14.3}{}",
                 t.n_terms,
                 t.rms_log10_storage,
@@ -244,12 +244,13 @@ fn print_fit(
         }
     }
     if let (Some(why), false) = (no_bands, args.json) {
-        eprintln!("{}: WARNING: {why}", fit.compound);
+        errln!("{}: WARNING: {why}", fit.compound);
     }
     if info.term_target_met == Some(false) {
         let t = info.term_target_rms_log10.unwrap_or_default();
-        eprintln!(
-            "{}: WARNING: the term target (RMS log10 E′ {:.4}, E″ {:.4}) is not met within {}; kept {} terms",
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
+        errln!(
+            "{}: WARNING: the term target (RMS log10 {storage} {:.4}, {loss} {:.4}) is not met within {}; kept {} terms",
             fit.compound,
             t[0],
             t[1],
@@ -281,7 +282,7 @@ enum Source {
 
 /// A measurement JSON: the bare serde of Measurement, or an object holding it under "measurement".
 fn read_measurement(path: &std::path::Path) -> anyhow::Result<crate::Measurement> {
-    let text = std::fs::read_to_string(path)
+    let text = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
         .with_context(|| format!("{}: cannot read", path.display()))?;
     // The bare serde of Measurement, or an object holding it under "measurement"; checked like any
     // export (crate::dma::plausible).

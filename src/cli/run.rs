@@ -30,16 +30,25 @@ pub struct Args {
     pub force: bool,
     /// Reference temperature of the master curves in °C [default: the middle isotherm's]; a
     /// compound's `tref_c` in compounds.toml wins.
-    #[arg(long, value_name = "C", allow_negative_numbers = true)]
+    #[arg(long, value_name = "C", allow_negative_numbers = true, value_parser = super::temp_c)]
     pub tref: Option<f64>,
     /// Rank on every temperature that computed, extrapolated ones included (marked) [default:
     /// measured temperatures only].
     #[arg(long)]
     pub allow_extrapolation: bool,
+    /// Relative tolerance of the contact solves and friction maps for every scene without its own
+    /// `tol` (1e-10 … 1e-2) [default: 1e-6 on a half-space, 1e-3 on a cover]. friction.csv gives
+    /// each point's error estimate.
+    #[arg(long, value_name = "TOL")]
+    pub tol: Option<f64>,
     /// Skip the uncertainty bands (p05/p50/p95 of every friction, ties in the ranking): about
     /// 1–2 s less per compound.
     #[arg(long)]
     pub no_bands: bool,
+    /// Longest wait in seconds for another run that holds the output folder's lock (it is told at
+    /// once who holds it, and since when); 0 fails at once.
+    #[arg(long, value_name = "SECONDS", default_value_t = crate::pipeline::run::LOCK_WAIT.as_secs())]
+    pub wait: u64,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -76,7 +85,11 @@ fn run_with_bar(opts: &RunOptions) -> anyhow::Result<crate::pipeline::RunSummary
 pub fn run(args: Args) -> anyhow::Result<()> {
     let mut opts = RunOptions::for_folder(&args.dir, &args.out, args.scenes.as_deref(), args.tref)?;
     opts.force = args.force;
+    if let Some(t) = args.tol {
+        opts.set_tol(t)?;
+    }
     opts.allow_extrapolation = args.allow_extrapolation;
+    opts.lock_wait = std::time::Duration::from_secs(args.wait);
     if args.no_bands {
         opts.bands = None;
     }
@@ -84,15 +97,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let summary = if std::io::stderr().is_terminal() {
         run_with_bar(&opts)?
     } else {
-        run_all(&opts, &|line: &str| eprintln!("{line}"))?
+        run_all(&opts, &|line: &str| errln!("{line}"))?
     };
     let (n, failed, untrusted) = (
         summary.compounds.len(),
         summary.failures(),
         summary.untrusted(),
     );
-    eprintln!(
-        "{n} compounds ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
+    errln!(
+        "{} ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
+        crate::results::counted(n, "compound"),
         start.elapsed().as_secs_f64(),
         summary.index_html.display(),
         summary.ranking_csv.display()
@@ -100,7 +114,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let (code, kind, message) = match summary.status() {
         RunStatus::AllGood => {
             if args.json {
-                println!("{}", serde_json::to_string(&summary)?);
+                outln!("{}", serde_json::to_string(&summary)?);
             }
             return Ok(());
         }
@@ -108,7 +122,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             1,
             "compounds_failed",
             format!(
-                "{failed} of {n} compounds failed (listed in {})",
+                "{failed} of {} failed (listed in {})",
+                crate::results::counted(n, "compound"),
                 summary.index_html.display()
             ),
         ),
@@ -116,7 +131,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             3,
             "untrusted_results",
             format!(
-                "finished, but {untrusted} of {n} compounds have results that are not trusted (listed apart, with reasons, in {})",
+                "finished, but {untrusted} of {} {} results that are not trusted (listed apart, with reasons, in {})",
+                crate::results::counted(n, "compound"),
+                if untrusted == 1 { "has" } else { "have" },
                 summary.index_html.display()
             ),
         ),

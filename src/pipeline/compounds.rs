@@ -1,8 +1,11 @@
 //! Which compounds a folder holds ([`discover`]): an explicit `compounds.toml`, or one compound per
 //! sub-folder and per export file at the top level.
 //!
-//! Input: a folder; output: [`CompoundInput`]s (name, files, per-compound settings) and notes on
-//! what was skipped or renamed. Names become file names under the output folder, so they are
+//! Input: a folder and the paths the run itself owns there (its output folders, the scenes file);
+//! output: [`CompoundInput`]s (name, files, per-compound settings) and notes on what was skipped or
+//! renamed. Without a listing, the run's own paths, `compounds.toml`, `scenes.toml` and hidden
+//! entries (a lock, a temp file) are passed over without a note, so a second run in the same
+//! folder never reads the first one's `fits/` or `reports/`. Names become file names under the output folder, so they are
 //! sanitised ([`sanitise_name`]: no separators, no leading dot, no `..`) and made unique.
 //!
 //! `compounds.toml` (each `[[compound]]`; every key but `name` and `files` optional):
@@ -48,6 +51,9 @@ pub struct CompoundInput {
     pub files: Vec<PathBuf>,
     /// Per-compound settings from `compounds.toml`.
     pub settings: CompoundSettings,
+    /// Why the compound cannot run (an unreadable folder, a setting out of range or beyond the work
+    /// budget), if it cannot: it then fails alone.
+    pub unreadable: Option<String>,
 }
 
 /// Per-compound settings of `compounds.toml`, resolved.
@@ -168,6 +174,10 @@ impl ListedCompound {
             }
         }
         let prony = self.prony.as_ref().map(prony_settings).transpose()?;
+        if let Some(p) = &prony {
+            // within range and the work budget (crate::limits) before any work
+            p.validate().map_err(|e| format!("prony: {e}"))?;
+        }
         Ok(CompoundSettings {
             ingest: any.then_some(o),
             tref_c: self.tref_c,
@@ -332,12 +342,34 @@ fn expand(dir: &Path, pattern: &str) -> Result<Vec<PathBuf>, PipelineError> {
         .collect())
 }
 
-/// The compounds under `dir` and notes on skipped entries (see the module docs).
-pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
+/// Whether a folder entry is the run's own (one of `own`, or a file the run reads as settings) or
+/// hidden: passed over without a note.
+fn is_own_or_hidden(p: &Path, own: &[PathBuf]) -> bool {
+    let name = p
+        .file_name()
+        .map(|n| n.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    if name.starts_with('.') || name == "scenes.toml" || name == "compounds.toml" {
+        return true;
+    }
+    let canon = |q: &Path| std::fs::canonicalize(q).unwrap_or_else(|_| q.to_path_buf());
+    let p = canon(p);
+    own.iter().any(|o| canon(o) == p)
+}
+
+/// The compounds under `dir` and notes on skipped entries (see the module docs); `own` are the
+/// paths the run writes or reads as settings (output folder, `fits/`, `reports/`, scenes file),
+/// never taken as compounds.
+pub fn discover(
+    dir: &Path,
+    own: &[PathBuf],
+) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
     let listing = dir.join("compounds.toml");
     let mut notes = Vec::new();
     if listing.exists() {
-        let text = std::fs::read_to_string(&listing).map_err(io(&listing))?;
+        let text =
+            crate::fsutil::read_regular_to_string(&listing, crate::limits::SETTINGS_BYTES_MAX)
+                .map_err(io(&listing))?;
         let l: Listing = toml::from_str(&text).map_err(|e| PipelineError::Config {
             path: listing.clone(),
             message: e.to_string(),
@@ -352,10 +384,22 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 }
                 files.extend(got);
             }
-            let mut settings = c.settings().map_err(|message| PipelineError::Config {
-                path: listing.clone(),
-                message: format!("compound {:?}: {message}", c.name),
-            })?;
+            // A bad setting (or name) fails its compound only.
+            let checked = crate::limits::name("name", &c.name)
+                .map_err(|e| e.to_string())
+                .and_then(|()| c.settings());
+            let mut settings = match checked {
+                Ok(s) => s,
+                Err(message) => {
+                    out.push(CompoundInput {
+                        name: c.name,
+                        files,
+                        unreadable: Some(format!("{}: {message}", listing.display())),
+                        ..CompoundInput::default()
+                    });
+                    continue;
+                }
+            };
             if let Some(sf) = &c.shift_factors {
                 if files.len() != 1 {
                     return Err(PipelineError::Config {
@@ -373,6 +417,7 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 name: c.name,
                 files,
                 settings,
+                unreadable: None,
             });
         }
         settle_names(&mut out, &mut notes);
@@ -380,15 +425,31 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
     }
     let mut out = Vec::new();
     for p in sorted_entries(dir)? {
+        if is_own_or_hidden(&p, own) {
+            continue;
+        }
         let name = p
             .file_stem()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         if p.is_dir() {
-            let files: Vec<PathBuf> = sorted_entries(&p)?
-                .into_iter()
-                .filter(|f| f.is_file() && is_export(f))
-                .collect();
+            let files: Vec<PathBuf> = match sorted_entries(&p) {
+                Ok(v) => v
+                    .into_iter()
+                    .filter(|f| f.is_file() && is_export(f))
+                    .collect(),
+                Err(e) => {
+                    // An unreadable folder fails its compound only.
+                    out.push(CompoundInput {
+                        name: p
+                            .file_name()
+                            .map_or(name, |n| n.to_string_lossy().into_owned()),
+                        unreadable: Some(e.to_string()),
+                        ..CompoundInput::default()
+                    });
+                    continue;
+                }
+            };
             if files.is_empty() {
                 notes.push(format!(
                     "{}: no DMA export in the folder, skipped",
@@ -426,7 +487,7 @@ mod tests {
     #[test]
     fn shipped_listing_names_three_compounds_with_files() {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
-        let (c, notes) = discover(&dir).unwrap();
+        let (c, notes) = discover(&dir, &[]).unwrap();
         assert!(notes.is_empty(), "{notes:?}");
         let names: Vec<&str> = c.iter().map(|c| c.name.as_str()).collect();
         assert_eq!(names, ["ems-ca", "dmasuite-tensile", "trios-aresg2-lims"]);
@@ -474,7 +535,7 @@ mod tests {
             "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\nmode = \"shear\"\npoisson = 0.45\ntref_c = 20\nprony = { terms_per_decade = 1.5 }\n",
         )
         .unwrap();
-        let (c, _) = discover(&dir).unwrap();
+        let (c, _) = discover(&dir, &[]).unwrap();
         let s = &c[0].settings;
         assert_eq!(s.tref_c, Some(20.0));
         let ingest = s.ingest.as_ref().unwrap();
@@ -496,7 +557,7 @@ mod tests {
                 format!("[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\n{bad}\n"),
             )
             .unwrap();
-            let e = discover(&dir).unwrap_err().to_string();
+            let e = discover(&dir, &[]).unwrap_err().to_string();
             let key = bad.split(' ').next().unwrap();
             assert!(e.contains(key), "{bad}: {e}");
         }

@@ -35,6 +35,8 @@ pub struct RunOptions {
     pub out_dir: PathBuf,
     /// The scenes.
     pub scenes: SceneSet,
+    /// The file the scenes were read from; `None`: the shipped scenes.
+    pub scenes_file: Option<PathBuf>,
     /// Replace fit files that differ.
     pub force: bool,
     /// Fit settings (a compound's own settings in `compounds.toml` override them).
@@ -43,6 +45,8 @@ pub struct RunOptions {
     pub allow_extrapolation: bool,
     /// Uncertainty bands (crate::bands) with these settings; `None` skips them (`--no-bands`).
     pub bands: Option<BandSettings>,
+    /// Longest wait for another run that holds the output folder (`--wait`; default [`LOCK_WAIT`]).
+    pub lock_wait: std::time::Duration,
 }
 
 impl RunOptions {
@@ -55,10 +59,9 @@ impl RunOptions {
         scenes: Option<&Path>,
         tref_c: Option<f64>,
     ) -> Result<Self, PipelineError> {
-        let in_dir = input_dir.join("scenes.toml");
-        let scenes = match scenes {
+        let scenes_file = scenes_file(scenes, input_dir);
+        let scenes = match &scenes_file {
             Some(p) => SceneSet::read(p)?,
-            None if in_dir.is_file() => SceneSet::read(&in_dir)?,
             None => SceneSet::shipped(),
         };
         let mut fit = FitOptions::default();
@@ -75,11 +78,51 @@ impl RunOptions {
             input_dir: input_dir.to_path_buf(),
             out_dir: out_dir.to_path_buf(),
             scenes,
+            scenes_file,
             force: false,
             fit,
             allow_extrapolation: false,
             bands: Some(BandSettings::default()),
+            lock_wait: LOCK_WAIT,
         })
+    }
+}
+
+impl RunOptions {
+    /// `run --tol`: the relative tolerance of the contact solves and friction maps of every scene
+    /// that sets none of its own, checked against the range of a scene's `tol`.
+    pub fn set_tol(&mut self, tol: f64) -> Result<(), PipelineError> {
+        let (lo, hi) = crate::results::scene::TOL_RANGE;
+        if !(lo..=hi).contains(&tol) {
+            return Err(PipelineError::Setting {
+                field: "--tol".into(),
+                message: format!("{tol} is not a relative tolerance in [{lo:e}, {hi:e}]"),
+            });
+        }
+        for s in self.scenes.scene.iter_mut().filter(|s| s.tol.is_none()) {
+            s.tol = Some(tol);
+        }
+        Ok(())
+    }
+}
+
+/// The scenes file of a job: `given` if any, else `DIR/scenes.toml` if it exists, else `None` (the
+/// shipped scenes). `run` and `rank` choose their scenes by this one rule.
+pub fn scenes_file(given: Option<&Path>, dir: &Path) -> Option<PathBuf> {
+    let in_dir = dir.join("scenes.toml");
+    match given {
+        Some(p) => Some(p.to_path_buf()),
+        None if in_dir.is_file() => Some(in_dir),
+        None => None,
+    }
+}
+
+/// Where the scenes came from, for the notes: the file, or the shipped scenes.
+pub fn scenes_origin(file: Option<&Path>) -> String {
+    match file {
+        Some(p) => format!("scenes from {}", p.display()),
+        None => "scenes: the shipped data/scenes.toml (no scenes.toml in the folder, no --scenes)"
+            .to_string(),
     }
 }
 
@@ -124,6 +167,12 @@ fn units_per_compound(scenes: &SceneSet) -> u64 {
 /// The measurement of a compound: its exports read together with its ingest options, or one
 /// measurement JSON written by `viscoroll ingest`.
 fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
+    if let Some(why) = &c.unreadable {
+        return Err(PipelineError::Setting {
+            field: "folder".into(),
+            message: format!("compound {}: {why}", c.name),
+        });
+    }
     let is_json = |p: &PathBuf| {
         p.extension()
             .is_some_and(|e| e.to_string_lossy().eq_ignore_ascii_case("json"))
@@ -139,7 +188,8 @@ fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
             });
         }
         let p = &c.files[0];
-        let text = std::fs::read_to_string(p).map_err(io(p))?;
+        let text = crate::fsutil::read_regular_to_string(p, crate::limits::INPUT_BYTES_MAX)
+            .map_err(io(p))?;
         return Ok(crate::dma::plausible::measurement_from_json(
             &p.display().to_string(),
             &text,
@@ -497,6 +547,12 @@ fn outcome(
         Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
             let mut warnings = compound_warnings(&fit, &friction);
+            if action == FitAction::Repaired {
+                warnings.push(format!(
+                    "fits/{}.json failed its content hash or validation (edited or damaged): fitted again and replaced",
+                    c.name
+                ));
+            }
             warnings.extend(band_warnings(
                 &fit,
                 no_bands.as_deref(),
@@ -505,14 +561,7 @@ fn outcome(
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
-                fit_action: Some(
-                    match action {
-                        FitAction::Reused => "reused",
-                        FitAction::Fitted => "fitted",
-                        FitAction::Replaced => "replaced",
-                    }
-                    .to_string(),
-                ),
+                fit_action: Some(action.word().to_string()),
                 standings: friction
                     .iter()
                     .enumerate()
@@ -549,10 +598,14 @@ fn outcome(
 fn log_line(out: &CompoundOutcome) -> String {
     match &out.error {
         None => format!(
-            "{}: {} fit, {} scenes, {:.2} s{}",
+            "{}: {}, {}, {:.2} s{}",
             out.compound,
-            out.fit_action.as_deref().unwrap_or(""),
-            out.friction.len(),
+            match out.fit_action.as_deref() {
+                Some("reused") => "reused fit",
+                Some("replaced") => "fit replaced (--force)",
+                _ => "new fit",
+            },
+            crate::results::counted(out.friction.len(), "scene"),
             out.seconds,
             if out.is_untrusted() {
                 " (NOT TRUSTED: see the index)"
@@ -597,16 +650,28 @@ pub fn run_all_with_progress(
             path: opts.input_dir.clone(),
         });
     }
-    let (compounds, mut notes) = discover(&opts.input_dir)?;
+    // the run's own paths are never compounds: a second run in the same folder reads only the
+    // inputs again
+    let own = [
+        opts.out_dir.clone(),
+        opts.out_dir.join("fits"),
+        opts.out_dir.join("reports"),
+    ]
+    .into_iter()
+    .chain(opts.scenes_file.clone())
+    .collect::<Vec<_>>();
+    let (compounds, mut notes) = discover(&opts.input_dir, &own)?;
     if compounds.is_empty() {
         return Err(PipelineError::NoCompounds {
             path: opts.input_dir.clone(),
             notes: notes.iter().take(5).cloned().collect::<Vec<_>>().join("; "),
         });
     }
-    let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, LOCK_WAIT, &|pid| {
+    notes.insert(0, scenes_origin(opts.scenes_file.as_deref()));
+    let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, opts.lock_wait, &|holder| {
         log(&format!(
-            "waiting for another viscoroll run (process {pid}) on {}",
+            "waiting up to {} s (--wait) for another viscoroll run on {}: {holder}",
+            opts.lock_wait.as_secs(),
             opts.out_dir.display()
         ))
     })
@@ -704,18 +769,30 @@ fn compare_ranked(
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
-/// compounds first by mean friction, then the others, then the failures.
+/// compounds first by mean friction, then the others, then the failures. With `bands` (and a fit
+/// file that carries its ensemble, as `run` writes it) each point and each mean gets its band as in
+/// `run`, and the ranked compounds their comparisons (`tied_with`), which are returned too.
 pub fn rank_fits(
     fits: &[CompoundFit],
     spec: &crate::results::SceneSpec,
     allow_extrapolation: bool,
-) -> Vec<RankedFit> {
+    bands: Option<&BandSettings>,
+) -> (Vec<RankedFit>, Vec<crate::results::PairComparison>) {
     let settings = pipeline_contact_settings();
     let mut v: Vec<_> = fits
         .par_iter()
         .map(|f| match friction_vs_temperature(f, spec, &settings) {
-            Ok(p) => {
-                let s = standing(&spec.name, &p, &f.untrusted_reasons(), allow_extrapolation);
+            Ok(mut p) => {
+                let ratios = match (bands, f.bands.as_ref()) {
+                    (Some(bs), Some(ensemble)) => {
+                        scene_bands(f, ensemble, spec, bs, &mut p, &mut vec![], &mut vec![])
+                    }
+                    _ => vec![],
+                };
+                let mut s = standing(&spec.name, &p, &f.untrusted_reasons(), allow_extrapolation);
+                if !ratios.is_empty() {
+                    s.band = crate::bands::mean_band(&p, &ratios, &s.temps_c);
+                }
                 Ok((f.compound.clone(), p, s))
             }
             Err(e) => Err((f.compound.clone(), cap_line(&e.to_string()))),
@@ -730,7 +807,21 @@ pub fn rank_fits(
         let (ka, kb) = (key(a), key(b));
         ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
     });
-    v
+    let ranked: Vec<(String, crate::results::FrictionBand)> = v
+        .iter()
+        .filter_map(|r| r.as_ref().ok())
+        .filter(|(_, _, s)| s.trusted())
+        .filter_map(|(c, _, s)| s.band.map(|b| (c.clone(), b)))
+        .collect();
+    let pairs = crate::bands::comparisons(&spec.name, &ranked);
+    for (c, _, s) in v.iter_mut().filter_map(|r| r.as_mut().ok()) {
+        s.tied_with = pairs
+            .iter()
+            .filter(|p| p.tied && (p.a == *c || p.b == *c))
+            .map(|p| if p.a == *c { p.b.clone() } else { p.a.clone() })
+            .collect();
+    }
+    (v, pairs)
 }
 
 /// The output folder's fit path of a compound.

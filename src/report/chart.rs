@@ -90,7 +90,14 @@ pub struct Curve {
     pub mark: Mark,
     /// Its colour (None: the palette by curve index).
     pub colour: Option<RGBColor>,
+    /// Where the band was cut to fit the plot: (x, the cut end's y, `true` when the high end was
+    /// cut). Each is drawn as a triangle pointing on beyond the cut, which the legend explains
+    /// ([`CUT_LEGEND`]).
+    pub band_cut: Vec<(f64, f64, bool)>,
 }
+
+/// The legend's line for the cut marks of [`Curve::band_cut`].
+pub const CUT_LEGEND: &str = "triangle: band cut, runs on beyond";
 
 impl Curve {
     /// A curve of `mark` with no band and the palette's colour.
@@ -101,6 +108,7 @@ impl Curve {
             band: vec![],
             mark,
             colour: None,
+            band_cut: vec![],
         }
     }
 
@@ -407,6 +415,13 @@ fn draw_curve<DB: DrawingBackend>(
             )
             .map_err(e)?;
     }
+    // the cut marks: a triangle at the cut end, pointing on beyond it
+    chart
+        .draw_series(cv.band_cut.iter().filter_map(|&(x, y, high)| {
+            let at = to_axes(c, (x, y))?;
+            Some(EmptyElement::at(at) + cut_triangle(high, col))
+        }))
+        .map_err(e)?;
     let pts: Vec<(f64, f64)> = cv.points.iter().filter_map(|&p| to_axes(c, p)).collect();
     if matches!(cv.mark, Mark::Line | Mark::LineDots | Mark::LineCircles) {
         chart
@@ -447,8 +462,14 @@ fn draw_curve<DB: DrawingBackend>(
     Ok(())
 }
 
+/// A cut mark in pixel offsets from its point: a filled triangle pointing up (`high`) or down.
+fn cut_triangle(high: bool, col: RGBColor) -> Polygon<(i32, i32)> {
+    let s = if high { -1 } else { 1 };
+    Polygon::new(vec![(-6, 0), (6, 0), (0, 9 * s)], col.filled())
+}
+
 /// The legend panel: one entry per named curve (a sample of its mark and its name, wrapped), as
-/// many as fit, then `… and N more`.
+/// many as fit, then `… and N more`; a line on the cut marks when a curve has one.
 fn draw_legend<DB: DrawingBackend>(
     panel: &DrawingArea<DB, Shift>,
     named: &[(usize, &Curve)],
@@ -522,6 +543,14 @@ fn draw_legend<DB: DrawingBackend>(
             y += line;
         }
         y += 6;
+    }
+    if named.iter().any(|(_, cv)| !cv.band_cut.is_empty()) && y + line <= h {
+        panel
+            .draw(&(EmptyElement::at((17, y + line / 2 - 6)) + cut_triangle(true, BLACK)))
+            .map_err(e)?;
+        panel
+            .draw(&Text::new(CUT_LEGEND, (36, y), font.clone()))
+            .map_err(e)?;
     }
     Ok(())
 }

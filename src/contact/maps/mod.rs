@@ -47,6 +47,7 @@
 //! estimate, still inside the tolerance thanks to the half-tolerance budget; the factor 2 covers it.
 
 mod covered;
+mod covered_problem;
 #[cfg(test)]
 mod covered_tests;
 mod curve;
@@ -54,7 +55,8 @@ mod nodes;
 mod reduced;
 mod surface;
 
-pub use covered::{covered_map, CoveredNode, CoveredProblem};
+pub use covered::covered_map;
+pub use covered_problem::{CoveredNode, CoveredProblem};
 pub use curve::ReducedCurve;
 pub use reduced::{node_tol, Node, ReducedProblem, ReducedSolution};
 pub use surface::CoveredSurface;

@@ -102,7 +102,8 @@ fn friction_plot(
 pub const BAND_CLIP_FACTOR: f64 = 10.0;
 
 /// One scene's F/N against temperature as a curve with its band (the p05…p95 of each point that
-/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range).
+/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range; each clipped end in
+/// [`Curve::band_cut`], so the chart marks it).
 pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     let mut c = Curve::new(
         name,
@@ -122,6 +123,17 @@ pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     c.band = pts
         .iter()
         .filter_map(|p| p.band.map(|b| (p.temp_c, b.p05.max(lo), b.p95.min(hi))))
+        .collect();
+    c.band_cut = pts
+        .iter()
+        .filter_map(|p| p.band.map(|b| (p.temp_c, b)))
+        .flat_map(|(t, b)| {
+            [
+                (b.p95 > hi).then_some((t, hi, true)),
+                (b.p05 < lo).then_some((t, lo, false)),
+            ]
+        })
+        .flatten()
         .collect();
     c
 }
@@ -218,7 +230,7 @@ pub fn write_report(
     allow_extrapolation: bool,
     dir: &Path,
 ) -> Result<(), ReportError> {
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    crate::fsutil::jail::create_dir_all(dir).map_err(io(dir))?;
     let prov = provenance_line(fit);
     let flags = fit.untrusted_reasons();
     let scene_maps: Vec<(&SceneSpec, &FrictionMaps)> =
