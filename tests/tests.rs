@@ -27,6 +27,7 @@ mod fit_search_gaps;
 mod fits_outside;
 mod fuzz_inputs;
 mod golden_outputs;
+mod hostile;
 mod ingest_cli;
 mod known_truth;
 mod layer_degree;

@@ -174,9 +174,9 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
             "temperatures": shifts.len(),
             "t_ref_c": t_ref,
         });
-        println!("{obj}");
+        outln!("{obj}");
     } else {
-        eprintln!(
+        errln!(
             "viscoroll export: pyvisco master curve ({} points at T_ref = {t_ref} °C) → {}; shift \
              factors ({} temperatures) → {}",
             points.len(),
@@ -276,7 +276,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         .chain(std::iter::once(card))
         .collect();
     for n in &notes {
-        eprintln!("viscoroll export: {n}");
+        errln!("viscoroll export: {n}");
     }
     if let Some(out) = &args.output {
         write_atomic(out, card.as_bytes(), args.force)?;
@@ -289,12 +289,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "card": card,
             "notes": notes,
         });
-        println!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", serde_json::to_string(&obj)?);
     } else {
         if args.output.is_none() {
-            print!("{card}");
+            out!("{card}");
         }
-        eprintln!(
+        errln!(
             "viscoroll export: {name} card, {} terms{}",
             spectrum.terms.len(),
             shift_label

@@ -45,7 +45,7 @@ pub struct Args {
     pub name: Option<String>,
     /// Reference temperature of the master curve in °C (default: a measured temperature near the
     /// middle of the range).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::temp_c)]
     pub tref: Option<f64>,
     /// Keep at most N relaxation terms (E∞ not counted): the fit chooses their positions and
     /// non-negative weights (e.g. 18 for an LS-DYNA card). Default: no cap.
@@ -146,11 +146,7 @@ fn fit_options(args: &Args) -> anyhow::Result<FitOptions> {
 /// Print the fit: one JSON object (`--json`) or a line on stderr, the trade table (`--trade`) and a
 /// warning when the term target is missed.
 fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction) {
-    let action = match action {
-        FitAction::Reused => "reused",
-        FitAction::Fitted => "fitted",
-        FitAction::Replaced => "replaced",
-    };
+    let action = action.word();
     let info = &fit.prony_info;
     let creep_terms = fit.creep.as_ref().map_or(0, |c| c.terms.len());
     if args.json {
@@ -171,10 +167,10 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
             "term_trade": info.term_trade,
             "quality": fit.quality,
         });
-        println!("{obj}");
+        outln!("{obj}");
     } else {
         let (storage, loss, _) = fit.relaxation.kind.symbols();
-        eprintln!(
+        errln!(
             "{}: {action} {} (T_ref {:.2} °C; {} relaxation terms, RMS log10 {storage} {:.4}, {loss} {:.4}; {} creep terms)",
             fit.compound,
             args.output.display(),
@@ -187,11 +183,11 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
     }
     if args.trade && !args.json {
         let (storage, loss, _) = fit.relaxation.kind.symbols();
-        eprintln!(
+        errln!(
             "terms  RMS log10 {storage}  RMS log10 {loss}  max |log10 {storage}|  max |log10 {loss}|"
         );
         for t in &info.term_trade {
-            eprintln!(
+            errln!(
                 "{:5}  {:12.4}  {:12.4}  {:14.3}  {:14.3}{}",
                 t.n_terms,
                 t.rms_log10_storage,
@@ -209,7 +205,7 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
     if info.term_target_met == Some(false) {
         let t = info.term_target_rms_log10.unwrap_or_default();
         let (storage, loss, _) = fit.relaxation.kind.symbols();
-        eprintln!(
+        errln!(
             "{}: WARNING: the term target (RMS log10 {storage} {:.4}, {loss} {:.4}) is not met within {}; kept {} terms",
             fit.compound,
             t[0],
@@ -228,7 +224,7 @@ enum Source {
 
 /// A measurement JSON: the bare serde of Measurement, or an object holding it under "measurement".
 fn read_measurement(path: &std::path::Path) -> anyhow::Result<crate::Measurement> {
-    let text = std::fs::read_to_string(path)
+    let text = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
         .with_context(|| format!("{}: cannot read", path.display()))?;
     // The bare serde of Measurement, or an object holding it under "measurement"; checked like any
     // export (crate::dma::plausible).

@@ -95,7 +95,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     if failed.is_empty() && apart.is_empty() {
         if args.json {
-            println!("{obj}");
+            outln!("{obj}");
         }
         return Ok(());
     }
@@ -131,9 +131,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
 
 /// The human table on stderr: ranked compounds with F/N per temperature, then the others.
 fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run::RankedFit]) {
-    eprintln!(
+    errln!(
         "scene {}: R = {} mm, {} N/m, {} m/s; lowest rolling friction first",
-        spec.name, spec.roll_radius_mm, spec.load_n_per_m, spec.speed_m_s
+        spec.name,
+        spec.roll_radius_mm,
+        spec.load_n_per_m,
+        spec.speed_m_s
     );
     let mut head = format!(
         "{:>4} {:<24} {:>11} {:>23}",
@@ -142,7 +145,7 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
     for t in &spec.temps_c {
         head.push_str(&format!(" {:>10}", format!("{t} °C")));
     }
-    eprintln!("{head}");
+    errln!("{head}");
     let mut rank = 0;
     for (c, pts, s) in results.iter().filter_map(|r| r.as_ref().ok()) {
         let label = if s.trusted() {
@@ -166,9 +169,9 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
                 if p.extrapolated { "*" } else { " " }
             ));
         }
-        eprintln!("{line}");
+        errln!("{line}");
     }
-    eprintln!("* shift law extrapolated beyond the measured temperatures (averaged only with --allow-extrapolation)");
+    errln!("* shift law extrapolated beyond the measured temperatures (averaged only with --allow-extrapolation)");
     for (c, _, s) in results
         .iter()
         .filter_map(|r| r.as_ref().ok())
@@ -184,9 +187,9 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
         .filter_map(|r| r.as_ref().ok())
         .filter(|(_, _, s)| !s.trusted())
     {
-        eprintln!("{c}: not ranked: {}", s.untrusted.join("; "));
+        errln!("{c}: not ranked: {}", s.untrusted.join("; "));
     }
     for (c, e) in results.iter().filter_map(|r| r.as_ref().err()) {
-        eprintln!("{c}: failed: {e}");
+        errln!("{c}: failed: {e}");
     }
 }

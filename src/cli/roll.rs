@@ -27,7 +27,7 @@ pub struct Args {
     #[arg(value_name = "SPECTRUM.json|FIT.json")]
     pub spectrum: PathBuf,
     /// Temperature in °C (fit files only: the spectrum is shifted there by the fit's shift law).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::temp_c)]
     pub temp_c: Option<f64>,
     /// Roll radius in mm (> 0).
     #[arg(long, allow_negative_numbers = true)]
@@ -136,6 +136,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         if !(v.is_finite() && v > 0.0) {
             bail!("{name} must be finite and > 0, got {v}");
         }
+    }
+    if let Some(h) = args.cover_mm.filter(|h| h.is_finite() && *h > 0.0) {
+        crate::limits::cover("--cover-mm", h, args.radius_mm)?;
     }
     super::spectrum_input::refuse_fluid_or_relaxation(&args.spectrum)?;
     let source = CreepSource::read(&args.spectrum)

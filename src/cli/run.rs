@@ -30,7 +30,7 @@ pub struct Args {
     pub force: bool,
     /// Reference temperature of the master curves in °C [default: the middle isotherm's]; a
     /// compound's `tref_c` in compounds.toml wins.
-    #[arg(long, value_name = "C", allow_negative_numbers = true)]
+    #[arg(long, value_name = "C", allow_negative_numbers = true, value_parser = super::temp_c)]
     pub tref: Option<f64>,
     /// Rank on every temperature that computed, extrapolated ones included (marked) [default:
     /// measured temperatures only].
@@ -45,6 +45,10 @@ pub struct Args {
     /// 1–2 s less per compound.
     #[arg(long)]
     pub no_bands: bool,
+    /// Longest wait in seconds for another run that holds the output folder's lock (it is told at
+    /// once who holds it, and since when); 0 fails at once.
+    #[arg(long, value_name = "SECONDS", default_value_t = crate::pipeline::run::LOCK_WAIT.as_secs())]
+    pub wait: u64,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -85,6 +89,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         opts.set_tol(t)?;
     }
     opts.allow_extrapolation = args.allow_extrapolation;
+    opts.lock_wait = std::time::Duration::from_secs(args.wait);
     if args.no_bands {
         opts.bands = None;
     }
@@ -92,14 +97,14 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let summary = if std::io::stderr().is_terminal() {
         run_with_bar(&opts)?
     } else {
-        run_all(&opts, &|line: &str| eprintln!("{line}"))?
+        run_all(&opts, &|line: &str| errln!("{line}"))?
     };
     let (n, failed, untrusted) = (
         summary.compounds.len(),
         summary.failures(),
         summary.untrusted(),
     );
-    eprintln!(
+    errln!(
         "{} ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
         crate::results::counted(n, "compound"),
         start.elapsed().as_secs_f64(),
@@ -109,7 +114,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let (code, kind, message) = match summary.status() {
         RunStatus::AllGood => {
             if args.json {
-                println!("{}", serde_json::to_string(&summary)?);
+                outln!("{}", serde_json::to_string(&summary)?);
             }
             return Ok(());
         }

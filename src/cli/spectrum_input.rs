@@ -18,8 +18,8 @@ pub struct SpectrumInput {
 
 /// Read a relaxation spectrum JSON or a fit file.
 pub fn read_spectrum_input(path: &Path) -> anyhow::Result<SpectrumInput> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let text = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
+        .with_context(|| format!("cannot read {}", path.display()))?;
     let value: serde_json::Value =
         serde_json::from_str(&text).with_context(|| format!("{}: not JSON", path.display()))?;
     if value.get("format_version").is_some() && value.get("relaxation").is_some() {
@@ -46,7 +46,8 @@ pub fn read_spectrum_input(path: &Path) -> anyhow::Result<SpectrumInput> {
 /// relaxation has none) with the reason: under a load moving steadily over it a fluid flows without
 /// bound (J(t) ~ t/η₀, docs/MATH.md §4), so the rolling contact has no steady state to solve for.
 pub fn refuse_fluid_or_relaxation(path: &Path) -> anyhow::Result<()> {
-    let Ok(text) = std::fs::read_to_string(path) else {
+    let Ok(text) = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
+    else {
         return Ok(()); // the reader that follows reports it
     };
     let Ok(value) = serde_json::from_str::<serde_json::Value>(&text) else {

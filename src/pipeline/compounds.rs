@@ -51,6 +51,9 @@ pub struct CompoundInput {
     pub files: Vec<PathBuf>,
     /// Per-compound settings from `compounds.toml`.
     pub settings: CompoundSettings,
+    /// Why the compound cannot run (an unreadable folder, a setting out of range or beyond the work
+    /// budget), if it cannot: it then fails alone.
+    pub unreadable: Option<String>,
 }
 
 /// Per-compound settings of `compounds.toml`, resolved.
@@ -171,6 +174,10 @@ impl ListedCompound {
             }
         }
         let prony = self.prony.as_ref().map(prony_settings).transpose()?;
+        if let Some(p) = &prony {
+            // within range and the work budget (crate::limits) before any work
+            p.validate().map_err(|e| format!("prony: {e}"))?;
+        }
         Ok(CompoundSettings {
             ingest: any.then_some(o),
             tref_c: self.tref_c,
@@ -360,7 +367,9 @@ pub fn discover(
     let listing = dir.join("compounds.toml");
     let mut notes = Vec::new();
     if listing.exists() {
-        let text = std::fs::read_to_string(&listing).map_err(io(&listing))?;
+        let text =
+            crate::fsutil::read_regular_to_string(&listing, crate::limits::SETTINGS_BYTES_MAX)
+                .map_err(io(&listing))?;
         let l: Listing = toml::from_str(&text).map_err(|e| PipelineError::Config {
             path: listing.clone(),
             message: e.to_string(),
@@ -375,10 +384,22 @@ pub fn discover(
                 }
                 files.extend(got);
             }
-            let mut settings = c.settings().map_err(|message| PipelineError::Config {
-                path: listing.clone(),
-                message: format!("compound {:?}: {message}", c.name),
-            })?;
+            // A bad setting (or name) fails its compound only.
+            let checked = crate::limits::name("name", &c.name)
+                .map_err(|e| e.to_string())
+                .and_then(|()| c.settings());
+            let mut settings = match checked {
+                Ok(s) => s,
+                Err(message) => {
+                    out.push(CompoundInput {
+                        name: c.name,
+                        files,
+                        unreadable: Some(format!("{}: {message}", listing.display())),
+                        ..CompoundInput::default()
+                    });
+                    continue;
+                }
+            };
             if let Some(sf) = &c.shift_factors {
                 if files.len() != 1 {
                     return Err(PipelineError::Config {
@@ -396,6 +417,7 @@ pub fn discover(
                 name: c.name,
                 files,
                 settings,
+                unreadable: None,
             });
         }
         settle_names(&mut out, &mut notes);
@@ -411,10 +433,23 @@ pub fn discover(
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         if p.is_dir() {
-            let files: Vec<PathBuf> = sorted_entries(&p)?
-                .into_iter()
-                .filter(|f| f.is_file() && is_export(f))
-                .collect();
+            let files: Vec<PathBuf> = match sorted_entries(&p) {
+                Ok(v) => v
+                    .into_iter()
+                    .filter(|f| f.is_file() && is_export(f))
+                    .collect(),
+                Err(e) => {
+                    // An unreadable folder fails its compound only.
+                    out.push(CompoundInput {
+                        name: p
+                            .file_name()
+                            .map_or(name, |n| n.to_string_lossy().into_owned()),
+                        unreadable: Some(e.to_string()),
+                        ..CompoundInput::default()
+                    });
+                    continue;
+                }
+            };
             if files.is_empty() {
                 notes.push(format!(
                     "{}: no DMA export in the folder, skipped",

@@ -26,7 +26,8 @@ pub enum CreepSource {
 impl CreepSource {
     /// Read a fit file (it has a `format_version`) or a bare creep spectrum (JSON).
     pub fn read(path: &Path) -> Result<Self, PipelineError> {
-        let text = std::fs::read_to_string(path).map_err(io(path))?;
+        let text = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
+            .map_err(io(path))?;
         let config = |message: String| PipelineError::Config {
             path: path.to_path_buf(),
             message,

@@ -45,6 +45,8 @@ pub struct RunOptions {
     pub allow_extrapolation: bool,
     /// Uncertainty bands (crate::bands) with these settings; `None` skips them (`--no-bands`).
     pub bands: Option<BandSettings>,
+    /// Longest wait for another run that holds the output folder (`--wait`; default [`LOCK_WAIT`]).
+    pub lock_wait: std::time::Duration,
 }
 
 impl RunOptions {
@@ -81,6 +83,7 @@ impl RunOptions {
             fit,
             allow_extrapolation: false,
             bands: Some(BandSettings::default()),
+            lock_wait: LOCK_WAIT,
         })
     }
 }
@@ -164,6 +167,12 @@ fn units_per_compound(scenes: &SceneSet) -> u64 {
 /// The measurement of a compound: its exports read together with its ingest options, or one
 /// measurement JSON written by `viscoroll ingest`.
 fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
+    if let Some(why) = &c.unreadable {
+        return Err(PipelineError::Setting {
+            field: "folder".into(),
+            message: format!("compound {}: {why}", c.name),
+        });
+    }
     let is_json = |p: &PathBuf| {
         p.extension()
             .is_some_and(|e| e.to_string_lossy().eq_ignore_ascii_case("json"))
@@ -179,7 +188,8 @@ fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
             });
         }
         let p = &c.files[0];
-        let text = std::fs::read_to_string(p).map_err(io(p))?;
+        let text = crate::fsutil::read_regular_to_string(p, crate::limits::INPUT_BYTES_MAX)
+            .map_err(io(p))?;
         return Ok(crate::dma::plausible::measurement_from_json(
             &p.display().to_string(),
             &text,
@@ -537,6 +547,12 @@ fn outcome(
         Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
             let mut warnings = compound_warnings(&fit, &friction);
+            if action == FitAction::Repaired {
+                warnings.push(format!(
+                    "fits/{}.json failed its content hash or validation (edited or damaged): fitted again and replaced",
+                    c.name
+                ));
+            }
             warnings.extend(band_warnings(
                 &fit,
                 no_bands.as_deref(),
@@ -545,14 +561,7 @@ fn outcome(
             CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
-                fit_action: Some(
-                    match action {
-                        FitAction::Reused => "reused",
-                        FitAction::Fitted => "fitted",
-                        FitAction::Replaced => "replaced",
-                    }
-                    .to_string(),
-                ),
+                fit_action: Some(action.word().to_string()),
                 standings: friction
                     .iter()
                     .enumerate()
@@ -659,9 +668,10 @@ pub fn run_all_with_progress(
         });
     }
     notes.insert(0, scenes_origin(opts.scenes_file.as_deref()));
-    let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, LOCK_WAIT, &|pid| {
+    let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, opts.lock_wait, &|holder| {
         log(&format!(
-            "waiting for another viscoroll run (process {pid}) on {}",
+            "waiting up to {} s (--wait) for another viscoroll run on {}: {holder}",
+            opts.lock_wait.as_secs(),
             opts.out_dir.display()
         ))
     })

@@ -31,6 +31,9 @@ pub enum PronyError {
         /// The single frequency in Hz.
         freq_hz: f64,
     },
+    /// A setting or the fit it implies is beyond the work budget (crate::limits).
+    #[error("Prony setting {0}")]
+    Budget(#[from] crate::limits::LimitError),
     /// A setting is out of its range.
     #[error("Prony setting `{field}` = {value} is invalid: {reason}")]
     BadSetting {

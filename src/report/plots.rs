@@ -74,8 +74,8 @@ fn ensure_font() {
 }
 
 /// Render with the backend that matches `path`'s extension (SVG or PNG) into a temp file beside it
-/// ([`crate::fsutil::temp_path`], keeping the extension, which the bitmap encoder reads), then move
-/// it into place ([`crate::fsutil::commit`]).
+/// ([`crate::fsutil::TempFile`]: created exclusively, keeping the extension, which the bitmap encoder
+/// reads), then move it into place.
 macro_rules! render_to {
     ($path:expr, $draw:ident ( $($arg:expr),* )) => {{
         let path: &Path = $path;
@@ -85,7 +85,9 @@ macro_rules! render_to {
         if !matches!(ext.as_deref(), Some("svg" | "png")) {
             return Err(PlotError::UnknownFormat { path: path.to_path_buf() });
         }
-        let tmp = crate::fsutil::temp_path(path);
+        let io_err = |source| PlotError::Io { path: path.to_path_buf(), source };
+        let temp = crate::fsutil::TempFile::beside(path).map_err(io_err)?;
+        let tmp = temp.path().to_path_buf();
         let result: Result<(), PlotError> = if ext.as_deref() == Some("svg") {
             let root = SVGBackend::new(&tmp, PLOT_SIZE).into_drawing_area();
             $draw(&root, $($arg),*).map_err(draw_err)
@@ -95,14 +97,8 @@ macro_rules! render_to {
             $draw(&root, $($arg),*).map_err(draw_err)
                 .and_then(|_| root.present().map_err(|e| draw_err(e.to_string())))
         };
-        match result {
-            Ok(()) => crate::fsutil::commit(&tmp, path, true)
-                .map_err(|source| PlotError::Io { path: path.to_path_buf(), source }),
-            Err(e) => {
-                let _ = std::fs::remove_file(&tmp);
-                Err(e)
-            }
-        }
+        // on an error the temp file is removed when dropped
+        result.and_then(|()| temp.commit(true, false).map_err(io_err))
     }};
 }
 

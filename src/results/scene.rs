@@ -89,13 +89,11 @@ impl SceneSpec {
     }
 }
 
-/// Longest list of temperatures, speeds or loads in a scene (each entry costs solves).
-pub const MAX_LIST: usize = 1000;
 /// The range of a scene's `tol` (and `run --tol`): the friction maps' (crate::contact::maps), the
 /// narrower of theirs and the contact solver's.
 pub const TOL_RANGE: (f64, f64) = (1e-10, 1e-2);
-/// Highest scene temperature, °C (no polymer is used above it).
-pub const TEMP_MAX_C: f64 = 1000.0;
+/// Highest scene temperature, °C (no polymer is used above it): [`crate::limits::TEMP_MAX_C`].
+pub const TEMP_MAX_C: f64 = crate::limits::TEMP_MAX_C;
 
 /// The physical range (exclusive lower, inclusive upper bound) of a scene's number, by key: radius
 /// up to 100 m, loads up to 1e8 N/m (100 MN per metre of width: far beyond any rubber contact), speeds
@@ -128,7 +126,11 @@ impl SceneSet {
         if set.scene.is_empty() {
             return Err(cfg("no [[scene]] table".into()));
         }
+        use crate::limits as lim;
+        let budget = |e: lim::LimitError| cfg(e.to_string());
+        lim::at_most("[[scene]] tables", set.scene.len(), lim::SCENES_MAX).map_err(budget)?;
         for (i, s) in set.scene.iter().enumerate() {
+            lim::name(&format!("scene[{i}]: name"), &s.name).map_err(budget)?;
             let at = |key: &str| format!("scene[{i}] ({}): {key}", s.name);
             if s.name.is_empty()
                 || !s
@@ -157,16 +159,13 @@ impl SceneSet {
                     )));
                 }
             }
-            for (key, list) in [("temps_c", &s.temps_c), ("map_temps_c", &s.map_temps_c)] {
-                if list.len() > MAX_LIST
-                    || list
-                        .iter()
-                        .any(|t| !(t.is_finite() && (-273.15..=TEMP_MAX_C).contains(t)))
-                {
-                    return Err(cfg(format!(
-                        "{} must list at most {MAX_LIST} temperatures in °C in [−273.15, {TEMP_MAX_C}]",
-                        at(key)
-                    )));
+            for (key, list, max) in [
+                ("temps_c", &s.temps_c, lim::SCENE_TEMPS_MAX),
+                ("map_temps_c", &s.map_temps_c, lim::MAP_LIST_MAX),
+            ] {
+                lim::at_most(&at(key), list.len(), max).map_err(budget)?;
+                for t in list.iter() {
+                    lim::temperature_c(&at(key), *t).map_err(budget)?;
                 }
             }
             if s.temps_c.is_empty() {
@@ -179,12 +178,7 @@ impl SceneSet {
                 if !list.is_empty() && s.map_temps_c.is_empty() {
                     return Err(cfg(format!("{} needs map_temps_c", at(key))));
                 }
-                if list.len() > MAX_LIST {
-                    return Err(cfg(format!(
-                        "{} lists more than {MAX_LIST} values",
-                        at(key)
-                    )));
-                }
+                lim::at_most(&at(key), list.len(), lim::MAP_LIST_MAX).map_err(budget)?;
                 let (lo, hi) = range_of(key);
                 if let Some(v) = list
                     .iter()
@@ -206,6 +200,13 @@ impl SceneSet {
                     )));
                 }
             }
+            lim::map_cells(
+                &at("map_temps_c × (map_speeds_m_s + map_loads_n_per_m)"),
+                s.map_temps_c.len(),
+                s.map_speeds_m_s.len(),
+                s.map_loads_n_per_m.len(),
+            )
+            .map_err(budget)?;
             if let Some(h) = s.cover_thickness_mm {
                 if !(h.is_finite() && h > 0.0) {
                     return Err(cfg(format!(
@@ -213,6 +214,7 @@ impl SceneSet {
                         at("cover_thickness_mm")
                     )));
                 }
+                lim::cover(&at("cover_thickness_mm"), h, s.roll_radius_mm).map_err(budget)?;
             }
             s.scene().validate().map_err(|e| cfg(at(&e.to_string())))?;
         }
@@ -221,7 +223,8 @@ impl SceneSet {
 
     /// Read a TOML file.
     pub fn read(path: &Path) -> Result<Self, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+        let text = crate::fsutil::read_regular_to_string(path, crate::limits::SETTINGS_BYTES_MAX)
+            .map_err(|source| SceneError::Io {
             path: path.to_path_buf(),
             source,
         })?;

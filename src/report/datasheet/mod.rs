@@ -230,7 +230,7 @@ pub fn write_report(
     allow_extrapolation: bool,
     dir: &Path,
 ) -> Result<(), ReportError> {
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    crate::fsutil::jail::create_dir_all(dir).map_err(io(dir))?;
     let prov = provenance_line(fit);
     let flags = fit.untrusted_reasons();
     let scene_maps: Vec<(&SceneSpec, &FrictionMaps)> =
