@@ -87,10 +87,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if !args.json {
         let others = set.scene.len() - 1;
         if args.scene.is_none() && others > 0 {
-            eprintln!(
-                "{origin}; ranking its first scene ({} more: --scene NAME)",
-                others
-            );
+            eprintln!("{origin}; ranking its first scene ({others} more: --scene NAME)");
         } else {
             eprintln!("{origin}");
         }

@@ -96,8 +96,9 @@ pub struct Curve {
     pub band_cut: Vec<(f64, f64, bool)>,
 }
 
-/// The legend's line for the cut marks of [`Curve::band_cut`].
-pub const CUT_LEGEND: &str = "triangle: band cut, runs on beyond";
+/// The legend's line for the cut marks of [`Curve::band_cut`] (one legend line: at most
+/// [`LEGEND_CHARS`] characters, so a page's text holds it whole).
+pub const CUT_LEGEND: &str = "band cut at edge";
 
 impl Curve {
     /// A curve of `mark` with no band and the palette's colour.
@@ -544,13 +545,17 @@ fn draw_legend<DB: DrawingBackend>(
         }
         y += 6;
     }
-    if named.iter().any(|(_, cv)| !cv.band_cut.is_empty()) && y + line <= h {
+    let cut = wrap(CUT_LEGEND);
+    if named.iter().any(|(_, cv)| !cv.band_cut.is_empty()) && y + line * cut.len() as i32 <= h {
         panel
-            .draw(&(EmptyElement::at((17, y + line / 2 - 6)) + cut_triangle(true, BLACK)))
+            .draw(&(EmptyElement::at((17, y + line / 2 + 2)) + cut_triangle(true, BLACK)))
             .map_err(e)?;
-        panel
-            .draw(&Text::new(CUT_LEGEND, (36, y), font.clone()))
-            .map_err(e)?;
+        for l in cut {
+            panel
+                .draw(&Text::new(l, (36, y), font.clone()))
+                .map_err(e)?;
+            y += line;
+        }
     }
     Ok(())
 }
