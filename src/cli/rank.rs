@@ -7,6 +7,10 @@
 //! `friction`: [{`temp_c`, `friction`, `extrapolated`, …}]}], `apart` [{`compound`,
 //! `mean_friction`, `reasons`}], `failed` [{`compound`, `error`}]. Exit 1 when a fit failed, 3 when
 //! some compound is not trusted.
+//!
+//! `viscoroll rank --out OUT` (no fit files) merges the finished shards of `run --shard K/N` in OUT
+//! into `reports/ranking.csv` and `reports/index.html`, the whole run's ranking and index, and
+//! prints and exits as `viscoroll run` does (crate::pipeline::shard).
 
 use super::Exit;
 use crate::pipeline::{CompoundFit, SceneSet};
@@ -18,8 +22,12 @@ use std::path::PathBuf;
 #[command(after_help = super::EXIT_CODES)]
 pub struct Args {
     /// Fit files (fits/NAME.json).
-    #[arg(required = true)]
+    #[arg(required_unless_present = "out", conflicts_with = "out")]
     pub fits: Vec<PathBuf>,
+    /// Merge the finished shards of `run --shard K/N --out OUT` into OUT's ranking and index
+    /// (instead of ranking fit files in one scene).
+    #[arg(long, value_name = "OUT")]
+    pub out: Option<PathBuf>,
     /// Scene name [default: the first scene].
     #[arg(long)]
     pub scene: Option<String>,
@@ -36,6 +44,9 @@ pub struct Args {
 
 /// Run `viscoroll rank`.
 pub fn run(args: Args) -> anyhow::Result<()> {
+    if let Some(out) = &args.out {
+        return merge(out, args.json);
+    }
     let set = match &args.scenes {
         Some(p) => SceneSet::read(p)?,
         None => SceneSet::shipped(),
@@ -149,4 +160,48 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
     for (c, e) in results.iter().filter_map(|r| r.as_ref().err()) {
         eprintln!("{c}: failed: {e}");
     }
+}
+
+/// `rank --out OUT`: merge the shards; output and exit code as `viscoroll run`'s.
+fn merge(out: &std::path::Path, json: bool) -> anyhow::Result<()> {
+    use crate::pipeline::RunStatus;
+    let summary = crate::pipeline::shard::merge_shards(out)?;
+    let (n, failed, untrusted) = (
+        summary.compounds.len(),
+        summary.failures(),
+        summary.untrusted(),
+    );
+    eprintln!(
+        "{n} compounds merged from the shards ({failed} failed, {untrusted} not trusted); see {} and {}",
+        summary.index_html.display(),
+        summary.ranking_csv.display()
+    );
+    let (code, kind, message) = match summary.status() {
+        RunStatus::AllGood => {
+            if json {
+                println!("{}", serde_json::to_string(&summary)?);
+            }
+            return Ok(());
+        }
+        RunStatus::Failures => (
+            1,
+            "compounds_failed",
+            format!("{failed} of {n} compounds failed (listed in {})", summary.index_html.display()),
+        ),
+        RunStatus::Untrusted => (
+            3,
+            "untrusted_results",
+            format!(
+                "{untrusted} of {n} compounds have results that are not trusted (listed apart, with reasons, in {})",
+                summary.index_html.display()
+            ),
+        ),
+    };
+    Err(Exit {
+        code,
+        kind,
+        message,
+        detail: Some(serde_json::to_value(&summary)?),
+    }
+    .into())
 }
