@@ -12,6 +12,10 @@
 //! …}]}], `apart` [{`compound`, `mean_friction`, `reasons`}], `failed` [{`compound`, `error`}],
 //! `comparisons` [{`a`, `b`, `prob_a_lower`, `tied`}]. Exit 1 when a fit failed, 3 when some
 //! compound is not trusted.
+//!
+//! `viscoroll rank --out OUT` (no fit files) merges the finished shards of `run --shard K/N` in OUT
+//! into `reports/ranking.csv` and `reports/index.html`, the whole run's ranking and index, and
+//! prints and exits as `viscoroll run` does (crate::pipeline::shard).
 
 use super::Exit;
 use crate::pipeline::{CompoundFit, SceneSet};
@@ -23,8 +27,12 @@ use std::path::{Path, PathBuf};
 #[command(after_help = super::EXIT_CODES)]
 pub struct Args {
     /// Fit files (fits/NAME.json).
-    #[arg(required = true)]
+    #[arg(required_unless_present = "out", conflicts_with = "out")]
     pub fits: Vec<PathBuf>,
+    /// Merge the finished shards of `run --shard K/N --out OUT` into OUT's ranking and index
+    /// (instead of ranking fit files in one scene).
+    #[arg(long, value_name = "OUT")]
+    pub out: Option<PathBuf>,
     /// Scene name [default: the first scene].
     #[arg(long)]
     pub scene: Option<String>,
@@ -44,6 +52,9 @@ pub struct Args {
 
 /// Run `viscoroll rank`.
 pub fn run(args: Args) -> anyhow::Result<()> {
+    if let Some(out) = &args.out {
+        return merge(out, args.json);
+    }
     let file = crate::pipeline::run::scenes_file(args.scenes.as_deref(), Path::new("."));
     let set = match &file {
         Some(p) => SceneSet::read(p)?,
@@ -87,9 +98,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if !args.json {
         let others = set.scene.len() - 1;
         if args.scene.is_none() && others > 0 {
-            eprintln!("{origin}; ranking its first scene ({others} more: --scene NAME)");
+            errln!("{origin}; ranking its first scene ({others} more: --scene NAME)");
         } else {
-            eprintln!("{origin}");
+            errln!("{origin}");
         }
         print_table(&spec, &results);
     }
@@ -177,7 +188,7 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
         .filter_map(|r| r.as_ref().ok())
         .filter(|(_, _, s)| s.trusted() && !s.tied_with.is_empty())
     {
-        eprintln!(
+        errln!(
             "{c}: order against {} not significant (tied)",
             s.tied_with.join(", ")
         );
@@ -192,4 +203,48 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
     for (c, e) in results.iter().filter_map(|r| r.as_ref().err()) {
         errln!("{c}: failed: {e}");
     }
+}
+
+/// `rank --out OUT`: merge the shards; output and exit code as `viscoroll run`'s.
+fn merge(out: &std::path::Path, json: bool) -> anyhow::Result<()> {
+    use crate::pipeline::RunStatus;
+    let summary = crate::pipeline::shard::merge_shards(out)?;
+    let (n, failed, untrusted) = (
+        summary.compounds.len(),
+        summary.failures(),
+        summary.untrusted(),
+    );
+    errln!(
+        "{n} compounds merged from the shards ({failed} failed, {untrusted} not trusted); see {} and {}",
+        summary.index_html.display(),
+        summary.ranking_csv.display()
+    );
+    let (code, kind, message) = match summary.status() {
+        RunStatus::AllGood => {
+            if json {
+                outln!("{}", serde_json::to_string(&summary)?);
+            }
+            return Ok(());
+        }
+        RunStatus::Failures => (
+            1,
+            "compounds_failed",
+            format!("{failed} of {n} compounds failed (listed in {})", summary.index_html.display()),
+        ),
+        RunStatus::Untrusted => (
+            3,
+            "untrusted_results",
+            format!(
+                "{untrusted} of {n} compounds have results that are not trusted (listed apart, with reasons, in {})",
+                summary.index_html.display()
+            ),
+        ),
+    };
+    Err(Exit {
+        code,
+        kind,
+        message,
+        detail: Some(serde_json::to_value(&summary)?),
+    }
+    .into())
 }

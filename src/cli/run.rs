@@ -5,6 +5,10 @@
 //! report) on a terminal, plain log lines otherwise (stderr). `--json` prints one object: the
 //! [`crate::pipeline::RunSummary`] on success, else the error object with the summary as `detail`.
 //! Exit codes: 0 all trusted, 1 a compound failed (or none found), 3 finished with untrusted results.
+//!
+//! `--shard K/N` (K from 0) runs every N-th compound in discovery order, for array jobs; the shards
+//! share `--out`, and `viscoroll rank --out OUT` merges them into the ranking and index
+//! (crate::pipeline::shard).
 
 use super::Exit;
 use crate::pipeline::{run_all, run_all_with_progress, ProgressEvent, RunOptions, RunStatus};
@@ -49,6 +53,11 @@ pub struct Args {
     /// once who holds it, and since when); 0 fails at once.
     #[arg(long, value_name = "SECONDS", default_value_t = crate::pipeline::run::LOCK_WAIT.as_secs())]
     pub wait: u64,
+    /// Run only shard K of N (K from 0): the compounds numbered K, K+N, K+2N, … in discovery order
+    /// (compounds.toml's order, else sorted names). Shards share --out; when all are done,
+    /// `viscoroll rank --out OUT` writes the ranking and index.
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<crate::pipeline::shard::Shard>,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -93,6 +102,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if args.no_bands {
         opts.bands = None;
     }
+    opts.shard = args.shard;
     let start = std::time::Instant::now();
     let summary = if std::io::stderr().is_terminal() {
         run_with_bar(&opts)?
@@ -104,13 +114,23 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         summary.failures(),
         summary.untrusted(),
     );
-    errln!(
-        "{} ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
-        crate::results::counted(n, "compound"),
-        start.elapsed().as_secs_f64(),
-        summary.index_html.display(),
-        summary.ranking_csv.display()
-    );
+    match args.shard {
+        None => errln!(
+            "{} ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
+            crate::results::counted(n, "compound"),
+            start.elapsed().as_secs_f64(),
+            summary.index_html.display(),
+            summary.ranking_csv.display()
+        ),
+        Some(s) => errln!(
+            "shard {s}: {} ({failed} failed, {untrusted} not trusted) in {:.2} s; when every shard is done, `viscoroll rank --out {}` writes {} and {}",
+            crate::results::counted(n, "compound"),
+            start.elapsed().as_secs_f64(),
+            args.out.display(),
+            summary.index_html.display(),
+            summary.ranking_csv.display()
+        ),
+    }
     let (code, kind, message) = match summary.status() {
         RunStatus::AllGood => {
             if args.json {

@@ -47,6 +47,8 @@ pub struct RunOptions {
     pub bands: Option<BandSettings>,
     /// Longest wait for another run that holds the output folder (`--wait`; default [`LOCK_WAIT`]).
     pub lock_wait: std::time::Duration,
+    /// Run only this shard's compounds (`--shard K/N`, crate::pipeline::shard); `None`: all.
+    pub shard: Option<super::shard::Shard>,
 }
 
 impl RunOptions {
@@ -84,6 +86,7 @@ impl RunOptions {
             allow_extrapolation: false,
             bands: Some(BandSettings::default()),
             lock_wait: LOCK_WAIT,
+            shard: None,
         })
     }
 }
@@ -660,23 +663,36 @@ pub fn run_all_with_progress(
     .into_iter()
     .chain(opts.scenes_file.clone())
     .collect::<Vec<_>>();
-    let (compounds, mut notes) = discover(&opts.input_dir, &own)?;
-    if compounds.is_empty() {
+    let (all, mut notes) = discover(&opts.input_dir, &own)?;
+    if all.is_empty() {
         return Err(PipelineError::NoCompounds {
             path: opts.input_dir.clone(),
             notes: notes.iter().take(5).cloned().collect::<Vec<_>>().join("; "),
         });
     }
     notes.insert(0, scenes_origin(opts.scenes_file.as_deref()));
-    let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, opts.lock_wait, &|holder| {
+    // a shard locks its own folder and leaves temporary files alone (crate::pipeline::shard)
+    let lock_dir = opts
+        .shard
+        .map_or(opts.out_dir.clone(), |s| s.dir(&opts.out_dir));
+    let _lock = crate::fsutil::DirLock::acquire(&lock_dir, opts.lock_wait, &|holder| {
         log(&format!(
             "waiting up to {} s (--wait) for another viscoroll run on {}: {holder}",
             opts.lock_wait.as_secs(),
-            opts.out_dir.display()
+            lock_dir.display()
         ))
     })
-    .map_err(io(&opts.out_dir))?;
-    let removed = crate::fsutil::remove_stale_temps(&opts.out_dir, 3);
+    .map_err(io(&lock_dir))?;
+    let (positions, compounds): (Vec<usize>, Vec<CompoundInput>) = all
+        .iter()
+        .cloned()
+        .enumerate()
+        .filter(|(i, _)| opts.shard.map_or(true, |s| s.takes(*i)))
+        .unzip();
+    let removed = match opts.shard {
+        None => crate::fsutil::remove_stale_temps(&opts.out_dir, 3),
+        Some(_) => 0,
+    };
     if removed > 0 {
         notes.push(format!(
             "removed {removed} temporary file(s) left by an interrupted run"
@@ -713,9 +729,29 @@ pub fn run_all_with_progress(
     let mut outcomes = outcomes;
     let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
-    notes.extend(stale_reports(&reports, &compounds));
+    notes.extend(stale_reports(&reports, &all));
     let ranking_path = reports.join("ranking.csv");
     let index_path = reports.join("index.html");
+    if let Some(shard) = opts.shard {
+        let summary = RunSummary {
+            compounds: outcomes,
+            notes,
+            allow_extrapolation: opts.allow_extrapolation,
+            ranking_csv: ranking_path,
+            index_html: index_path,
+            comparisons,
+        };
+        let file = super::shard::ShardFile {
+            shard_index: shard.index,
+            shard_count: shard.count,
+            compounds_total: all.len(),
+            positions,
+            scenes: opts.scenes.clone(),
+            summary,
+        };
+        super::shard::write_shard_file(&opts.out_dir, &file)?;
+        return Ok(file.summary);
+    }
     write_file(
         &ranking_path,
         ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
@@ -735,7 +771,7 @@ pub fn run_all_with_progress(
 
 /// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,
 /// in ranking order), and each standing's `tied_with` filled from the ties.
-fn compare_ranked(
+pub(super) fn compare_ranked(
     outcomes: &mut [CompoundOutcome],
     scenes: &SceneSet,
 ) -> Vec<crate::results::PairComparison> {

@@ -47,4 +47,14 @@ pub enum PronyError {
     /// The QP solver could not be set up or returned no usable solution.
     #[error("the Prony QP solver failed: {0}")]
     Solver(String),
+    /// A Prony-term file (pyvisco's CSV, crate::prony::pyvisco_csv) cannot be read.
+    #[error("{file}, line {line}: {message}")]
+    TermsFile {
+        /// The file.
+        file: String,
+        /// 1-based line.
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
 }

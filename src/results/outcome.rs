@@ -31,7 +31,7 @@ pub fn cap_line(s: &str) -> String {
 }
 
 /// A compound in one scene: its mean friction and whether it may be ranked among trusted ones.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SceneStanding {
     /// Scene name.
     pub scene: String,
@@ -110,7 +110,7 @@ pub fn standing(
 }
 
 /// The outcome of one compound.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct CompoundOutcome {
     /// Compound name (sanitised: safe as a file name).
     pub compound: String,
@@ -158,7 +158,7 @@ pub enum RunStatus {
 }
 
 /// The outcome of the main job.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct RunSummary {
     /// One per compound, in discovery order.
     pub compounds: Vec<CompoundOutcome>,

@@ -244,12 +244,16 @@ pub struct FrictionPoint {
     /// Temperature in °C.
     pub temp_c: f64,
     /// log10 a_T used.
+    #[serde(deserialize_with = "nan_if_null")]
     pub log10_a_t: f64,
     /// Rolling-friction coefficient F*/N* (NaN when the solve failed).
+    #[serde(deserialize_with = "nan_if_null")]
     pub friction: f64,
     /// Rolling resistance per unit width in N/m.
+    #[serde(deserialize_with = "nan_if_null")]
     pub resistance_n_per_m: f64,
     /// Contact length in mm.
+    #[serde(deserialize_with = "nan_if_null")]
     pub contact_length_mm: f64,
     /// The temperature lies outside the measured ones (the shift law is extrapolated).
     pub extrapolated: bool,
@@ -285,6 +289,12 @@ pub struct FrictionBand {
     pub p50: f64,
     /// 95th percentile of F*/N*.
     pub p95: f64,
+}
+
+/// An f64 that JSON wrote as `null` (serde_json writes NaN so: a failed point's friction) read
+/// back as NaN.
+fn nan_if_null<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
 }
 
 fn half_space_name() -> String {
