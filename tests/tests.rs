@@ -43,6 +43,7 @@ mod prony_ems_ca;
 mod prony_terms;
 mod pyvisco_interop;
 mod reference;
+mod replicates;
 mod report_browser;
 mod report_plots;
 mod seed;

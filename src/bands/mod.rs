@@ -52,6 +52,7 @@
 //! errors of the instrument (clamping, compliance, thermocouple calibration) that the data cannot
 //! show.
 
+pub mod between;
 pub mod compare;
 pub mod ensemble;
 pub mod error;
@@ -60,7 +61,8 @@ pub mod rng;
 pub mod scene;
 pub mod window;
 
-pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
+pub use between::{between_sd_ln, specimens_note, widen, PRIOR_SD_LN};
+pub use compare::{comparisons, is_tie, prob_lower, prob_text, SIGNIFICANCE};
 pub use ensemble::build_ensemble;
 pub use error::BandError;
 pub use friction::{

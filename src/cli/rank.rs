@@ -60,7 +60,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         match r {
             Ok((c, pts, s)) if s.trusted() => ranking.push(serde_json::json!({
                 "rank": ranking.len() + 1, "compound": c, "mean_friction": s.mean_friction,
-                "standing": s, "friction": pts,
+                "verdict": s.verdict(), "standing": s, "friction": pts,
             })),
             Ok((c, _, s)) => apart.push(serde_json::json!({
                 "compound": c, "mean_friction": s.mean_friction, "reasons": s.untrusted,

@@ -68,6 +68,8 @@ pub fn friction_vs_temperature(
                 model_reason: String::new(),
                 band: None,
                 warnings: vec![],
+                specimens: vec![],
+                undetermined: None,
             };
             // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
             let at = match fit_spectrum_at(fit, t) {
@@ -101,6 +103,8 @@ pub fn friction_vs_temperature(
                             .iter()
                             .map(|w| crate::results::cap_line(w))
                             .collect(),
+                        specimens: vec![],
+                        undetermined: None,
                     },
                     Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
                 };
@@ -123,6 +127,8 @@ pub fn friction_vs_temperature(
                         .iter()
                         .map(|w| crate::results::cap_line(w))
                         .collect(),
+                    specimens: vec![],
+                    undetermined: None,
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }

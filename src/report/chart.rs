@@ -90,6 +90,10 @@ pub struct Curve {
     pub mark: Mark,
     /// Its colour (None: the palette by curve index).
     pub colour: Option<RGBColor>,
+    /// The points (by index into `points`) drawn hollow whatever the mark: not determined.
+    pub hollow: Vec<usize>,
+    /// Ends of the band cut at the plot's range (x, y of the cut): each marked with a cross.
+    pub cut: Vec<(f64, f64)>,
 }
 
 impl Curve {
@@ -101,6 +105,8 @@ impl Curve {
             band: vec![],
             mark,
             colour: None,
+            hollow: vec![],
+            cut: vec![],
         }
     }
 
@@ -423,10 +429,40 @@ fn draw_curve<DB: DrawingBackend>(
             ))
             .map_err(e)?;
     }
+    let solid: Vec<(f64, f64)> = cv
+        .points
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !cv.hollow.contains(i))
+        .filter_map(|(_, &p)| to_axes(c, p))
+        .collect();
+    let hollow: Vec<(f64, f64)> = cv
+        .hollow
+        .iter()
+        .filter_map(|&i| cv.points.get(i).and_then(|&p| to_axes(c, p)))
+        .collect();
+    chart
+        .draw_series(hollow.iter().map(|&p| Circle::new(p, 4, WHITE.filled())))
+        .map_err(e)?;
+    chart
+        .draw_series(
+            hollow
+                .iter()
+                .map(|&p| Circle::new(p, 4, col.stroke_width(2))),
+        )
+        .map_err(e)?;
+    chart
+        .draw_series(
+            cv.cut
+                .iter()
+                .filter_map(|&p| to_axes(c, p))
+                .map(|p| Cross::new(p, 5, col.stroke_width(2))),
+        )
+        .map_err(e)?;
     match cv.mark {
         Mark::LineDots | Mark::Dots | Mark::Stems => {
             chart
-                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
+                .draw_series(solid.iter().map(|&p| Circle::new(p, 3, col.filled())))
                 .map_err(e)?;
         }
         Mark::Circles | Mark::LineCircles => {

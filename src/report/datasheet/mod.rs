@@ -88,6 +88,7 @@ fn friction_plot(
         curves: friction
             .iter()
             .map(|(s, p)| friction_curve(&s.name, p))
+            .chain(specimen_curves(friction))
             .collect(),
         colour_bar: None,
     };
@@ -96,13 +97,35 @@ fn friction_plot(
     })
 }
 
+/// Each replicate specimen's own F/N against temperature per scene (dashed), when the compound
+/// pools several (crate::pipeline::specimens).
+fn specimen_curves(friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> Vec<Curve> {
+    let mut v = Vec::new();
+    for (s, pts) in friction {
+        let n = pts.iter().map(|p| p.specimens.len()).max().unwrap_or(0);
+        for k in 0..n {
+            let points = pts
+                .iter()
+                .filter_map(|p| p.specimens.get(k).map(|&f| (p.temp_c, f)))
+                .collect();
+            v.push(Curve::new(
+                format!("{}, specimen {}", s.name, k + 1),
+                points,
+                Mark::Dashed,
+            ));
+        }
+    }
+    v
+}
+
 /// Bands are drawn no further than this factor beyond the curve's own lowest and highest F/N: a
 /// band widened for extrapolation (crate::bands eqs. 15.8, 15.9) can span ten decades and would
 /// flatten every curve of the plot; the friction table gives it in full.
 pub const BAND_CLIP_FACTOR: f64 = 10.0;
 
 /// One scene's F/N against temperature as a curve with its band (the p05…p95 of each point that
-/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range).
+/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range, each cut end marked with a
+/// cross); points not determined are drawn hollow.
 pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     let mut c = Curve::new(
         name,
@@ -122,6 +145,24 @@ pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     c.band = pts
         .iter()
         .filter_map(|p| p.band.map(|b| (p.temp_c, b.p05.max(lo), b.p95.min(hi))))
+        .collect();
+    // a band cut at the clip is marked where it is cut (issue 31)
+    for p in pts {
+        if let Some(b) = p.band {
+            if b.p05 < lo {
+                c.cut.push((p.temp_c, lo));
+            }
+            if b.p95 > hi {
+                c.cut.push((p.temp_c, hi));
+            }
+        }
+    }
+    // a point not determined is drawn hollow
+    c.hollow = pts
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.undetermined.is_some())
+        .map(|(i, _)| i)
         .collect();
     c
 }
@@ -275,6 +316,7 @@ pub fn write_report(
     );
     h.push_str(&sections::shift_factors(fit, ""));
     h.push_str(&sections::friction(friction, ""));
+    h.push_str(&sections::specimens(fit, friction));
     h.push_str(&sections::trust(fit, friction, allow_extrapolation));
     h.push_str(&maps_html);
     h.push_str(&sections::quality(fit));
