@@ -345,7 +345,7 @@ fn per_temperature(
             .filter(|p| p.counts())
             .map(|p| p.friction)
     };
-    let mut h = String::from("<details open><summary>Rank at each temperature (1 = lowest F/N; – : failed or not determined, never ranked)</summary><table><tr><th class=\"l\">compound</th>");
+    let mut h = String::from("<details open><summary>Rank at each temperature (1 = lowest F/N; n.d.: not determined, – : failed; neither is ranked)</summary><table><tr><th class=\"l\">compound</th>");
     for t in &spec.temps_c {
         let _ = write!(h, "<th>{t} °C</th>");
     }
@@ -370,7 +370,7 @@ fn per_temperature(
         .collect();
     for (i, (o, _)) in list.iter().enumerate() {
         let _ = write!(h, "<tr><td class=\"l\">{}</td>", esc(&o.compound));
-        for col in &ranks {
+        for (k, col) in ranks.iter().enumerate() {
             match col[i] {
                 Some((r, f)) => {
                     let _ = write!(
@@ -380,7 +380,18 @@ fn per_temperature(
                         num(f)
                     );
                 }
-                None => h.push_str("<td>–</td>"),
+                None => match o
+                    .friction
+                    .iter()
+                    .find(|(s, _)| *s == spec.name)
+                    .and_then(|(_, p)| p.iter().find(|p| p.temp_c == spec.temps_c[k]))
+                    .and_then(|p| p.undetermined.as_deref())
+                {
+                    Some(why) => {
+                        let _ = write!(h, "<td class=\"warn\" title=\"{}\">n.d.</td>", esc(why));
+                    }
+                    None => h.push_str("<td>–</td>"),
+                },
             }
         }
         h.push_str("</tr>");
@@ -437,8 +448,10 @@ pub fn index_html(
         "the measured temperatures only"
     };
     let mut h = format!(
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p class=\"sub\">viscoroll {}; F/N averaged per scene over {rule}, lowest first. Compounds whose fit is out of its quality bounds or whose friction failed at a temperature are listed apart, never ranked. The tan δ proxy (tan δ at {PROXY_TEMP_C} °C and {PROXY_FREQ_HZ} Hz, the same for every scene) is ranked among the ranked compounds, lower first; where its rank differs from the rank by predicted friction it is marked.</p>",
-        env!("CARGO_PKG_VERSION")
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p class=\"sub\">viscoroll {}; F/N averaged per scene over {rule}, lowest first. Each compound has one verdict per scene: <i>trusted</i> (every check passed), <i>use with care</i> (ranked; the reasons are listed: master-curve checks, contact validity, points not determined, extrapolation) or <i>not trusted</i> (fit out of its quality bounds, a failed temperature: listed apart, never ranked). Points not determined (band p95/p05 &gt; {ratio}, or more than {limit} K beyond the measured temperatures) are never ranked or averaged. The tan δ proxy (tan δ at {PROXY_TEMP_C} °C and {PROXY_FREQ_HZ} Hz, the same for every scene) is ranked among the ranked compounds, lower first; where its rank differs from the rank by predicted friction it is marked.</p>",
+        env!("CARGO_PKG_VERSION"),
+        ratio = crate::results::UNDETERMINED_BAND_RATIO,
+        limit = crate::results::EXTRAPOLATION_LIMIT_K,
     );
     for (k, spec) in scenes.scene.iter().enumerate() {
         let _ = write!(
