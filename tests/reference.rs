@@ -81,7 +81,7 @@ impl Sls {
         }
     }
 
-    /// The creep-spectrum JSON that `viscoroll roll` reads (README, "Creep spectrum JSON").
+    /// The creep-spectrum JSON that `viscoroll roll` reads (docs/USER_GUIDE.md, "Creep spectrum JSON").
     pub fn creep_json(&self) -> String {
         format!(
             r#"{{"kind": "{}", "poisson": {:e}, "compliance_glassy_per_pa": {:e},

@@ -46,6 +46,7 @@ mod reference;
 mod replicates;
 mod report_browser;
 mod report_plots;
+mod runs_repeat;
 mod seed;
 mod special_functions;
 mod spectra_cards;

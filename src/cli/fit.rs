@@ -173,8 +173,9 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
         });
         println!("{obj}");
     } else {
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
         eprintln!(
-            "{}: {action} {} (T_ref {:.2} °C; {} relaxation terms, RMS log10 E′ {:.4}, E″ {:.4}; {} creep terms)",
+            "{}: {action} {} (T_ref {:.2} °C; {} relaxation terms, RMS log10 {storage} {:.4}, {loss} {:.4}; {} creep terms)",
             fit.compound,
             args.output.display(),
             fit.shift_law.t_ref_c(),
@@ -185,7 +186,10 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
         );
     }
     if args.trade && !args.json {
-        eprintln!("terms  RMS log10 E′  RMS log10 E″  max |log10 E′|  max |log10 E″|");
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
+        eprintln!(
+            "terms  RMS log10 {storage}  RMS log10 {loss}  max |log10 {storage}|  max |log10 {loss}|"
+        );
         for t in &info.term_trade {
             eprintln!(
                 "{:5}  {:12.4}  {:12.4}  {:14.3}  {:14.3}{}",
@@ -204,8 +208,9 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
     }
     if info.term_target_met == Some(false) {
         let t = info.term_target_rms_log10.unwrap_or_default();
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
         eprintln!(
-            "{}: WARNING: the term target (RMS log10 E′ {:.4}, E″ {:.4}) is not met within {}; kept {} terms",
+            "{}: WARNING: the term target (RMS log10 {storage} {:.4}, {loss} {:.4}) is not met within {}; kept {} terms",
             fit.compound,
             t[0],
             t[1],

@@ -213,9 +213,15 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         );
     }
     let s = &m.summary;
+    use crate::results::counted;
     eprintln!(
-        "total: {} files, {} isotherms, {} points ({} flagged), {} errors, {} warnings",
-        s.files, s.isotherms, s.points, s.flagged_points, s.errors, s.warnings
+        "total: {}, {}, {} ({} flagged), {}, {}",
+        counted(s.files, "file"),
+        counted(s.isotherms, "isotherm"),
+        counted(s.points, "point"),
+        s.flagged_points,
+        counted(s.errors, "error"),
+        counted(s.warnings, "warning")
     );
     if let Some(out) = &args.output {
         let json = serde_json::to_vec_pretty(&m)?;

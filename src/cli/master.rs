@@ -267,7 +267,10 @@ fn summary(m: &MasterCurve) {
         m.points.len(),
         m.t_ref_c
     );
-    eprintln!("  T (°C)   log10 aT   ±std     log10 bT  overlap RMS  E″ alone  vGP (°)  KK log10");
+    eprintln!(
+        "  T (°C)   log10 aT   ±std     log10 bT  overlap RMS  {} alone  vGP (°)  KK log10",
+        m.kind.symbols().1
+    );
     for s in &m.isotherms {
         let opt = |v: Option<f64>, p: usize| v.map_or("-".to_string(), |v| format!("{v:.p$}"));
         eprintln!(

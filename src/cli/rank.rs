@@ -3,15 +3,20 @@
 //! and a table per temperature; compounds not trusted (fit out of bounds, a failed temperature) are
 //! listed apart, never ranked.
 //!
-//! `--json` prints one object: `scene`, `ranking` [{`rank`, `compound`, `mean_friction`, `standing`,
-//! `friction`: [{`temp_c`, `friction`, `extrapolated`, …}]}], `apart` [{`compound`,
-//! `mean_friction`, `reasons`}], `failed` [{`compound`, `error`}]. Exit 1 when a fit failed, 3 when
-//! some compound is not trusted.
+//! Scenes as `run` takes them: `--scenes FILE`, else `./scenes.toml` if present, else the shipped
+//! scenes (said on stderr). The bands are those of `run` (from the ensemble the fit file carries;
+//! `--no-bands` skips them).
+//!
+//! `--json` prints one object: `scene`, `scenes_from`, `ranking` [{`rank`, `compound`,
+//! `mean_friction`, `band`, `standing`, `friction`: [{`temp_c`, `friction`, `band`, `extrapolated`,
+//! …}]}], `apart` [{`compound`, `mean_friction`, `reasons`}], `failed` [{`compound`, `error`}],
+//! `comparisons` [{`a`, `b`, `prob_a_lower`, `tied`}]. Exit 1 when a fit failed, 3 when some
+//! compound is not trusted.
 
 use super::Exit;
 use crate::pipeline::{CompoundFit, SceneSet};
 use anyhow::{bail, Context};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `viscoroll rank`.
 #[derive(Debug, clap::Args)]
@@ -23,9 +28,12 @@ pub struct Args {
     /// Scene name [default: the first scene].
     #[arg(long)]
     pub scene: Option<String>,
-    /// Scenes TOML [default: the shipped scenes].
+    /// Scenes TOML [default: ./scenes.toml if present, else the shipped scenes].
     #[arg(long)]
     pub scenes: Option<PathBuf>,
+    /// Skip the uncertainty bands (and so the ties).
+    #[arg(long)]
+    pub no_bands: bool,
     /// Average extrapolated temperatures too (marked *).
     #[arg(long)]
     pub allow_extrapolation: bool,
@@ -36,10 +44,12 @@ pub struct Args {
 
 /// Run `viscoroll rank`.
 pub fn run(args: Args) -> anyhow::Result<()> {
-    let set = match &args.scenes {
+    let file = crate::pipeline::run::scenes_file(args.scenes.as_deref(), Path::new("."));
+    let set = match &file {
         Some(p) => SceneSet::read(p)?,
         None => SceneSet::shipped(),
     };
+    let origin = crate::pipeline::run::scenes_origin(file.as_deref());
     let spec = match &args.scene {
         None => set.scene[0].clone(),
         Some(n) => match set.scene.iter().find(|s| &s.name == n) {
@@ -54,13 +64,15 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     for p in &args.fits {
         fits.push(CompoundFit::read(p).with_context(|| "reading fit files")?);
     }
-    let results = crate::pipeline::run::rank_fits(&fits, &spec, args.allow_extrapolation);
+    let bands = (!args.no_bands).then(crate::bands::BandSettings::default);
+    let (results, comparisons) =
+        crate::pipeline::run::rank_fits(&fits, &spec, args.allow_extrapolation, bands.as_ref());
     let (mut ranking, mut apart, mut failed) = (Vec::new(), Vec::new(), Vec::new());
     for r in &results {
         match r {
             Ok((c, pts, s)) if s.trusted() => ranking.push(serde_json::json!({
                 "rank": ranking.len() + 1, "compound": c, "mean_friction": s.mean_friction,
-                "verdict": s.verdict(), "standing": s, "friction": pts,
+                "verdict": s.verdict(), "band": s.band, "standing": s, "friction": pts,
             })),
             Ok((c, _, s)) => apart.push(serde_json::json!({
                 "compound": c, "mean_friction": s.mean_friction, "reasons": s.untrusted,
@@ -68,9 +80,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             Err((c, e)) => failed.push(serde_json::json!({"compound": c, "error": e})),
         }
     }
-    let obj =
-        serde_json::json!({"scene": spec, "ranking": ranking, "apart": apart, "failed": failed});
+    let obj = serde_json::json!({
+        "scene": spec, "scenes_from": origin, "ranking": ranking, "apart": apart,
+        "failed": failed, "comparisons": comparisons,
+    });
     if !args.json {
+        let others = set.scene.len() - 1;
+        if args.scene.is_none() && others > 0 {
+            eprintln!(
+                "{origin}; ranking its first scene ({} more: --scene NAME)",
+                others
+            );
+        } else {
+            eprintln!("{origin}");
+        }
         print_table(&spec, &results);
     }
     if failed.is_empty() && apart.is_empty() {
@@ -83,16 +106,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         (
             1,
             "compounds_failed",
-            format!("{} of {} compounds failed", failed.len(), results.len()),
+            format!(
+                "{} of {} failed",
+                failed.len(),
+                crate::results::counted(results.len(), "compound")
+            ),
         )
     } else {
         (
             3,
             "untrusted_results",
             format!(
-                "{} of {} compounds are not trusted and were listed apart",
+                "{} of {} not trusted and listed apart",
                 apart.len(),
-                results.len()
+                crate::results::counted(results.len(), "compound")
             ),
         )
     };
@@ -111,7 +138,10 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
         "scene {}: R = {} mm, {} N/m, {} m/s; lowest rolling friction first",
         spec.name, spec.roll_radius_mm, spec.load_n_per_m, spec.speed_m_s
     );
-    let mut head = format!("{:>4} {:<24} {:>11}", "rank", "compound", "mean F/N");
+    let mut head = format!(
+        "{:>4} {:<24} {:>11} {:>23}",
+        "rank", "compound", "mean F/N", "90 % band of the mean"
+    );
     for t in &spec.temps_c {
         head.push_str(&format!(" {:>10}", format!("{t} °C")));
     }
@@ -124,8 +154,11 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
         } else {
             "–".to_string()
         };
+        let band = s.band.map_or("–".to_string(), |b| {
+            format!("{:.3e} … {:.3e}", b.p05, b.p95)
+        });
         let mut line = format!(
-            "{label:>4} {:<24} {:>11.4e}",
+            "{label:>4} {:<24} {:>11.4e} {band:>23}",
             c,
             s.mean_friction.unwrap_or(f64::NAN)
         );
@@ -139,6 +172,16 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
         eprintln!("{line}");
     }
     eprintln!("* shift law extrapolated beyond the measured temperatures (averaged only with --allow-extrapolation)");
+    for (c, _, s) in results
+        .iter()
+        .filter_map(|r| r.as_ref().ok())
+        .filter(|(_, _, s)| s.trusted() && !s.tied_with.is_empty())
+    {
+        eprintln!(
+            "{c}: order against {} not significant (tied)",
+            s.tied_with.join(", ")
+        );
+    }
     for (c, _, s) in results
         .iter()
         .filter_map(|r| r.as_ref().ok())

@@ -36,6 +36,11 @@ pub struct Args {
     /// measured temperatures only].
     #[arg(long)]
     pub allow_extrapolation: bool,
+    /// Relative tolerance of the contact solves and friction maps for every scene without its own
+    /// `tol` (1e-10 … 1e-2) [default: 1e-6 on a half-space, 1e-3 on a cover]. friction.csv gives
+    /// each point's error estimate.
+    #[arg(long, value_name = "TOL")]
+    pub tol: Option<f64>,
     /// Skip the uncertainty bands (p05/p50/p95 of every friction, ties in the ranking): about
     /// 1–2 s less per compound.
     #[arg(long)]
@@ -76,6 +81,9 @@ fn run_with_bar(opts: &RunOptions) -> anyhow::Result<crate::pipeline::RunSummary
 pub fn run(args: Args) -> anyhow::Result<()> {
     let mut opts = RunOptions::for_folder(&args.dir, &args.out, args.scenes.as_deref(), args.tref)?;
     opts.force = args.force;
+    if let Some(t) = args.tol {
+        opts.set_tol(t)?;
+    }
     opts.allow_extrapolation = args.allow_extrapolation;
     if args.no_bands {
         opts.bands = None;
@@ -92,7 +100,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         summary.untrusted(),
     );
     eprintln!(
-        "{n} compounds ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
+        "{} ({failed} failed, {untrusted} not trusted) in {:.2} s; see {} and {}",
+        crate::results::counted(n, "compound"),
         start.elapsed().as_secs_f64(),
         summary.index_html.display(),
         summary.ranking_csv.display()
@@ -108,7 +117,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             1,
             "compounds_failed",
             format!(
-                "{failed} of {n} compounds failed (listed in {})",
+                "{failed} of {} failed (listed in {})",
+                crate::results::counted(n, "compound"),
                 summary.index_html.display()
             ),
         ),
@@ -116,7 +126,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             3,
             "untrusted_results",
             format!(
-                "finished, but {untrusted} of {n} compounds have results that are not trusted (listed apart, with reasons, in {})",
+                "finished, but {untrusted} of {} {} results that are not trusted (listed apart, with reasons, in {})",
+                crate::results::counted(n, "compound"),
+                if untrusted == 1 { "has" } else { "have" },
                 summary.index_html.display()
             ),
         ),

@@ -1,8 +1,11 @@
 //! Which compounds a folder holds ([`discover`]): an explicit `compounds.toml`, or one compound per
 //! sub-folder and per export file at the top level.
 //!
-//! Input: a folder; output: [`CompoundInput`]s (name, files, per-compound settings) and notes on
-//! what was skipped or renamed. Names become file names under the output folder, so they are
+//! Input: a folder and the paths the run itself owns there (its output folders, the scenes file);
+//! output: [`CompoundInput`]s (name, files, per-compound settings) and notes on what was skipped or
+//! renamed. Without a listing, the run's own paths, `compounds.toml`, `scenes.toml` and hidden
+//! entries (a lock, a temp file) are passed over without a note, so a second run in the same
+//! folder never reads the first one's `fits/` or `reports/`. Names become file names under the output folder, so they are
 //! sanitised ([`sanitise_name`]: no separators, no leading dot, no `..`) and made unique.
 //!
 //! `compounds.toml` (each `[[compound]]`; every key but `name` and `files` optional):
@@ -358,8 +361,28 @@ fn expand(dir: &Path, pattern: &str) -> Result<Vec<PathBuf>, PipelineError> {
         .collect())
 }
 
-/// The compounds under `dir` and notes on skipped entries (see the module docs).
-pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
+/// Whether a folder entry is the run's own (one of `own`, or a file the run reads as settings) or
+/// hidden: passed over without a note.
+fn is_own_or_hidden(p: &Path, own: &[PathBuf]) -> bool {
+    let name = p
+        .file_name()
+        .map(|n| n.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    if name.starts_with('.') || name == "scenes.toml" || name == "compounds.toml" {
+        return true;
+    }
+    let canon = |q: &Path| std::fs::canonicalize(q).unwrap_or_else(|_| q.to_path_buf());
+    let p = canon(p);
+    own.iter().any(|o| canon(o) == p)
+}
+
+/// The compounds under `dir` and notes on skipped entries (see the module docs); `own` are the
+/// paths the run writes or reads as settings (output folder, `fits/`, `reports/`, scenes file),
+/// never taken as compounds.
+pub fn discover(
+    dir: &Path,
+    own: &[PathBuf],
+) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
     let listing = dir.join("compounds.toml");
     let mut notes = Vec::new();
     if listing.exists() {
@@ -443,6 +466,9 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
     }
     let mut out = Vec::new();
     for p in sorted_entries(dir)? {
+        if is_own_or_hidden(&p, own) {
+            continue;
+        }
         let name = p
             .file_stem()
             .map(|n| n.to_string_lossy().into_owned())
@@ -501,7 +527,7 @@ mod tests {
     #[test]
     fn shipped_listing_names_three_compounds_with_files() {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
-        let (c, notes) = discover(&dir).unwrap();
+        let (c, notes) = discover(&dir, &[]).unwrap();
         assert!(notes.is_empty(), "{notes:?}");
         let names: Vec<&str> = c.iter().map(|c| c.name.as_str()).collect();
         assert_eq!(names, ["ems-ca", "dmasuite-tensile", "trios-aresg2-lims"]);
@@ -591,7 +617,7 @@ mod tests {
             "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\nmode = \"shear\"\npoisson = 0.45\ntref_c = 20\nprony = { terms_per_decade = 1.5 }\n",
         )
         .unwrap();
-        let (c, _) = discover(&dir).unwrap();
+        let (c, _) = discover(&dir, &[]).unwrap();
         let s = &c[0].settings;
         assert_eq!(s.tref_c, Some(20.0));
         let ingest = s.ingest.as_ref().unwrap();
@@ -613,7 +639,7 @@ mod tests {
                 format!("[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\n{bad}\n"),
             )
             .unwrap();
-            let e = discover(&dir).unwrap_err().to_string();
+            let e = discover(&dir, &[]).unwrap_err().to_string();
             let key = bad.split(' ').next().unwrap();
             assert!(e.contains(key), "{bad}: {e}");
         }

@@ -35,6 +35,8 @@ pub struct RunOptions {
     pub out_dir: PathBuf,
     /// The scenes.
     pub scenes: SceneSet,
+    /// The file the scenes were read from; `None`: the shipped scenes.
+    pub scenes_file: Option<PathBuf>,
     /// Replace fit files that differ.
     pub force: bool,
     /// Fit settings (a compound's own settings in `compounds.toml` override them).
@@ -55,10 +57,9 @@ impl RunOptions {
         scenes: Option<&Path>,
         tref_c: Option<f64>,
     ) -> Result<Self, PipelineError> {
-        let in_dir = input_dir.join("scenes.toml");
-        let scenes = match scenes {
+        let scenes_file = scenes_file(scenes, input_dir);
+        let scenes = match &scenes_file {
             Some(p) => SceneSet::read(p)?,
-            None if in_dir.is_file() => SceneSet::read(&in_dir)?,
             None => SceneSet::shipped(),
         };
         let mut fit = FitOptions::default();
@@ -75,11 +76,50 @@ impl RunOptions {
             input_dir: input_dir.to_path_buf(),
             out_dir: out_dir.to_path_buf(),
             scenes,
+            scenes_file,
             force: false,
             fit,
             allow_extrapolation: false,
             bands: Some(BandSettings::default()),
         })
+    }
+}
+
+impl RunOptions {
+    /// `run --tol`: the relative tolerance of the contact solves and friction maps of every scene
+    /// that sets none of its own, checked against the range of a scene's `tol`.
+    pub fn set_tol(&mut self, tol: f64) -> Result<(), PipelineError> {
+        let (lo, hi) = crate::results::scene::TOL_RANGE;
+        if !(lo..=hi).contains(&tol) {
+            return Err(PipelineError::Setting {
+                field: "--tol".into(),
+                message: format!("{tol} is not a relative tolerance in [{lo:e}, {hi:e}]"),
+            });
+        }
+        for s in self.scenes.scene.iter_mut().filter(|s| s.tol.is_none()) {
+            s.tol = Some(tol);
+        }
+        Ok(())
+    }
+}
+
+/// The scenes file of a job: `given` if any, else `DIR/scenes.toml` if it exists, else `None` (the
+/// shipped scenes). `run` and `rank` choose their scenes by this one rule.
+pub fn scenes_file(given: Option<&Path>, dir: &Path) -> Option<PathBuf> {
+    let in_dir = dir.join("scenes.toml");
+    match given {
+        Some(p) => Some(p.to_path_buf()),
+        None if in_dir.is_file() => Some(in_dir),
+        None => None,
+    }
+}
+
+/// Where the scenes came from, for the notes: the file, or the shipped scenes.
+pub fn scenes_origin(file: Option<&Path>) -> String {
+    match file {
+        Some(p) => format!("scenes from {}", p.display()),
+        None => "scenes: the shipped data/scenes.toml (no scenes.toml in the folder, no --scenes)"
+            .to_string(),
     }
 }
 
@@ -645,10 +685,14 @@ fn outcome(
 fn log_line(out: &CompoundOutcome) -> String {
     match &out.error {
         None => format!(
-            "{}: {} fit, {} scenes, {:.2} s{}",
+            "{}: {}, {}, {:.2} s{}",
             out.compound,
-            out.fit_action.as_deref().unwrap_or(""),
-            out.friction.len(),
+            match out.fit_action.as_deref() {
+                Some("reused") => "reused fit",
+                Some("replaced") => "fit replaced (--force)",
+                _ => "new fit",
+            },
+            crate::results::counted(out.friction.len(), "scene"),
             out.seconds,
             if out.is_untrusted() {
                 " (NOT TRUSTED: see the index)"
@@ -693,13 +737,24 @@ pub fn run_all_with_progress(
             path: opts.input_dir.clone(),
         });
     }
-    let (compounds, mut notes) = discover(&opts.input_dir)?;
+    // the run's own paths are never compounds: a second run in the same folder reads only the
+    // inputs again
+    let own = [
+        opts.out_dir.clone(),
+        opts.out_dir.join("fits"),
+        opts.out_dir.join("reports"),
+    ]
+    .into_iter()
+    .chain(opts.scenes_file.clone())
+    .collect::<Vec<_>>();
+    let (compounds, mut notes) = discover(&opts.input_dir, &own)?;
     if compounds.is_empty() {
         return Err(PipelineError::NoCompounds {
             path: opts.input_dir.clone(),
             notes: notes.iter().take(5).cloned().collect::<Vec<_>>().join("; "),
         });
     }
+    notes.insert(0, scenes_origin(opts.scenes_file.as_deref()));
     let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, LOCK_WAIT, &|pid| {
         log(&format!(
             "waiting for another viscoroll run (process {pid}) on {}",
@@ -807,12 +862,15 @@ fn compare_ranked(
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
-/// compounds first by mean friction, then the others, then the failures.
+/// compounds first by mean friction, then the others, then the failures. With `bands` (and a fit
+/// file that carries its ensemble, as `run` writes it) each point and each mean gets its band as in
+/// `run`, and the ranked compounds their comparisons (`tied_with`), which are returned too.
 pub fn rank_fits(
     fits: &[CompoundFit],
     spec: &crate::results::SceneSpec,
     allow_extrapolation: bool,
-) -> Vec<RankedFit> {
+    bands: Option<&BandSettings>,
+) -> (Vec<RankedFit>, Vec<crate::results::PairComparison>) {
     let settings = pipeline_contact_settings();
     let mut v: Vec<_> = fits
         .par_iter()
@@ -821,13 +879,22 @@ pub fn rank_fits(
                 for q in p.iter_mut() {
                     q.determine(f.measured_range_c());
                 }
-                let s = standing(
+                let ratios = match (bands, f.bands.as_ref()) {
+                    (Some(bs), Some(ensemble)) => {
+                        scene_bands(f, ensemble, spec, bs, &mut p, &mut vec![], &mut vec![])
+                    }
+                    _ => vec![],
+                };
+                let mut s = standing(
                     &spec.name,
                     &p,
                     &f.untrusted_reasons(),
                     &f.care_reasons(),
                     allow_extrapolation,
                 );
+                if !ratios.is_empty() {
+                    s.band = super::trust::standing_band(&p, &ratios, &s.temps_c);
+                }
                 Ok((f.compound.clone(), p, s))
             }
             Err(e) => Err((f.compound.clone(), cap_line(&e.to_string()))),
@@ -842,7 +909,21 @@ pub fn rank_fits(
         let (ka, kb) = (key(a), key(b));
         ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
     });
-    v
+    let ranked: Vec<(String, crate::results::FrictionBand)> = v
+        .iter()
+        .filter_map(|r| r.as_ref().ok())
+        .filter(|(_, _, s)| s.trusted())
+        .filter_map(|(c, _, s)| s.band.map(|b| (c.clone(), b)))
+        .collect();
+    let pairs = crate::bands::comparisons(&spec.name, &ranked);
+    for (c, _, s) in v.iter_mut().filter_map(|r| r.as_mut().ok()) {
+        s.tied_with = pairs
+            .iter()
+            .filter(|p| p.tied && (p.a == *c || p.b == *c))
+            .map(|p| if p.a == *c { p.b.clone() } else { p.a.clone() })
+            .collect();
+    }
+    (v, pairs)
 }
 
 /// The output folder's fit path of a compound.

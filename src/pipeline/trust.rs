@@ -149,6 +149,7 @@ mod tests {
             band: None,
             specimens: vec![],
             undetermined: None,
+            error_estimate: None,
         }
     }
 

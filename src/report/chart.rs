@@ -92,9 +92,14 @@ pub struct Curve {
     pub colour: Option<RGBColor>,
     /// The points (by index into `points`) drawn hollow whatever the mark: not determined.
     pub hollow: Vec<usize>,
-    /// Ends of the band cut at the plot's range (x, y of the cut): each marked with a cross.
-    pub cut: Vec<(f64, f64)>,
+    /// Where the band was cut to fit the plot: (x, the cut end's y, `true` when the high end was
+    /// cut). Each is drawn as a triangle pointing on beyond the cut, which the legend explains
+    /// ([`CUT_LEGEND`]).
+    pub band_cut: Vec<(f64, f64, bool)>,
 }
+
+/// The legend's line for the cut marks of [`Curve::band_cut`].
+pub const CUT_LEGEND: &str = "triangle: band cut, runs on beyond";
 
 impl Curve {
     /// A curve of `mark` with no band and the palette's colour.
@@ -106,7 +111,7 @@ impl Curve {
             mark,
             colour: None,
             hollow: vec![],
-            cut: vec![],
+            band_cut: vec![],
         }
     }
 
@@ -413,6 +418,13 @@ fn draw_curve<DB: DrawingBackend>(
             )
             .map_err(e)?;
     }
+    // the cut marks: a triangle at the cut end, pointing on beyond it
+    chart
+        .draw_series(cv.band_cut.iter().filter_map(|&(x, y, high)| {
+            let at = to_axes(c, (x, y))?;
+            Some(EmptyElement::at(at) + cut_triangle(high, col))
+        }))
+        .map_err(e)?;
     let pts: Vec<(f64, f64)> = cv.points.iter().filter_map(|&p| to_axes(c, p)).collect();
     if matches!(cv.mark, Mark::Line | Mark::LineDots | Mark::LineCircles) {
         chart
@@ -451,14 +463,6 @@ fn draw_curve<DB: DrawingBackend>(
                 .map(|&p| Circle::new(p, 4, col.stroke_width(2))),
         )
         .map_err(e)?;
-    chart
-        .draw_series(
-            cv.cut
-                .iter()
-                .filter_map(|&p| to_axes(c, p))
-                .map(|p| Cross::new(p, 5, col.stroke_width(2))),
-        )
-        .map_err(e)?;
     match cv.mark {
         Mark::LineDots | Mark::Dots | Mark::Stems => {
             chart
@@ -483,8 +487,14 @@ fn draw_curve<DB: DrawingBackend>(
     Ok(())
 }
 
+/// A cut mark in pixel offsets from its point: a filled triangle pointing up (`high`) or down.
+fn cut_triangle(high: bool, col: RGBColor) -> Polygon<(i32, i32)> {
+    let s = if high { -1 } else { 1 };
+    Polygon::new(vec![(-6, 0), (6, 0), (0, 9 * s)], col.filled())
+}
+
 /// The legend panel: one entry per named curve (a sample of its mark and its name, wrapped), as
-/// many as fit, then `… and N more`.
+/// many as fit, then `… and N more`; a line on the cut marks when a curve has one.
 fn draw_legend<DB: DrawingBackend>(
     panel: &DrawingArea<DB, Shift>,
     named: &[(usize, &Curve)],
@@ -558,6 +568,14 @@ fn draw_legend<DB: DrawingBackend>(
             y += line;
         }
         y += 6;
+    }
+    if named.iter().any(|(_, cv)| !cv.band_cut.is_empty()) && y + line <= h {
+        panel
+            .draw(&(EmptyElement::at((17, y + line / 2 - 6)) + cut_triangle(true, BLACK)))
+            .map_err(e)?;
+        panel
+            .draw(&Text::new(CUT_LEGEND, (36, y), font.clone()))
+            .map_err(e)?;
     }
     Ok(())
 }

@@ -400,7 +400,18 @@ fn per_temperature(
     h
 }
 
-/// The overlay of one scene: F/N against temperature of every compound that computed, with bands.
+/// A compound's colour on every chart of the run: the palette's entry by its place among the run's
+/// compounds (not by its rank, which differs between scenes).
+fn compound_colour(outcomes: &[CompoundOutcome], name: &str) -> plotters::style::RGBColor {
+    let i = outcomes
+        .iter()
+        .position(|o| o.compound == name)
+        .unwrap_or(0);
+    super::chart::PALETTE[i % super::chart::PALETTE.len()]
+}
+
+/// The overlay of one scene: F/N against temperature of every compound that computed, with bands,
+/// each compound in its own colour ([`compound_colour`]).
 fn overlay_chart(outcomes: &[CompoundOutcome], spec: &SceneSpec) -> Chart {
     let ranked_names: Vec<&str> = ranked(outcomes, &spec.name)
         .iter()
@@ -411,7 +422,10 @@ fn overlay_chart(outcomes: &[CompoundOutcome], spec: &SceneSpec) -> Chart {
     for n in &ranked_names {
         if let Some(o) = outcomes.iter().find(|o| o.compound == *n) {
             if let Some((_, pts)) = o.friction.iter().find(|(s, _)| *s == spec.name) {
-                curves.push(friction_curve(&o.compound, pts));
+                curves.push(
+                    friction_curve(&o.compound, pts)
+                        .coloured(compound_colour(outcomes, &o.compound)),
+                );
             }
         }
     }
@@ -420,7 +434,8 @@ fn overlay_chart(outcomes: &[CompoundOutcome], spec: &SceneSpec) -> Chart {
         .filter(|o| o.error.is_none() && !ranked_names.contains(&o.compound.as_str()))
     {
         if let Some((_, pts)) = o.friction.iter().find(|(s, _)| *s == spec.name) {
-            let mut c = friction_curve(&format!("{} (not ranked)", o.compound), pts);
+            let mut c = friction_curve(&format!("{} (not ranked)", o.compound), pts)
+                .coloured(compound_colour(outcomes, &o.compound));
             c.mark = Mark::Dashed;
             curves.push(c);
         }
@@ -456,7 +471,7 @@ pub fn index_html(
     for (k, spec) in scenes.scene.iter().enumerate() {
         let _ = write!(
             h,
-            "<h2>{}</h2><p>{} (R = {} mm, {} N/m, {} m/s{}, {} temperatures)</p><section class=\"first\"><div>{}</div><div>{}</div></section>",
+            "<h2>{}</h2><p>{} (R = {} mm, {} N/m, {} m/s{}, {})</p><section class=\"first\"><div>{}</div><div>{}</div></section>",
             esc(&spec.name),
             esc(&spec.description),
             spec.roll_radius_mm,
@@ -464,7 +479,7 @@ pub fn index_html(
             spec.speed_m_s,
             spec.cover_thickness_mm
                 .map_or(String::new(), |c| format!(", {c} mm cover")),
-            spec.temps_c.len(),
+            crate::results::counted(spec.temps_c.len(), "temperature"),
             scene_tables(summary, spec, proxies),
             overlays.get(k).map_or("", String::as_str)
         );
@@ -496,7 +511,7 @@ pub fn index_html(
             + notes.len();
         let _ = write!(
             h,
-            "<h2>Warnings and notes</h2><details><summary>{n} warnings and notes</summary><ul>"
+            "<h2>Warnings and notes</h2><details><summary>Warnings and notes ({n})</summary><ul>"
         );
         for o in warned {
             for w in o
@@ -533,9 +548,6 @@ pub fn write_index(
             let mut plot = plot_pair(dir, &format!("index_{}", spec.name), |p| {
                 plots::plot_chart(&chart, "overlay", p)
             })?;
-            if chart.curves.iter().any(|c| !c.cut.is_empty()) {
-                plot.push_str("<p>× marks a band cut at the edge of the plot (its full width is in the compound's friction.csv).</p>");
-            }
             if chart.curves.iter().any(|c| !c.hollow.is_empty()) {
                 plot.push_str("<p>Hollow markers: points not determined (never ranked or averaged; the reason is in friction.csv).</p>");
             }
@@ -654,5 +666,39 @@ mod tests {
         assert!((c.curves[0].band[1].2 - 2.2e-4).abs() < 1e-18);
         assert_eq!(c.curves[1].mark, Mark::Dashed);
         assert!(c.curves[1].name.contains("not ranked"));
+    }
+
+    #[test]
+    fn a_compound_keeps_its_colour_on_every_overlay() {
+        let scenes = SceneSet::shipped();
+        let (s0, s1) = (&scenes.scene[0], &scenes.scene[1]);
+        // a is lower than b in the first scene and higher in the second, so the rank order (the
+        // order of the curves) flips between the two overlays
+        let both = |n: &str, f0: f64, f1: f64| {
+            let mut o = outcome(n, &s0.name, &[(f0, false)], &[]);
+            let o1 = outcome(n, &s1.name, &[(f1, false)], &[]);
+            o.friction.extend(o1.friction);
+            o.standings.extend(o1.standings);
+            o
+        };
+        let outcomes = vec![both("a", 1e-4, 3e-4), both("b", 2e-4, 1e-4)];
+        let colours = |spec: &SceneSpec| -> Vec<(String, Option<plotters::style::RGBColor>)> {
+            overlay_chart(&outcomes, spec)
+                .curves
+                .iter()
+                .map(|c| (c.name.clone(), c.colour))
+                .collect()
+        };
+        let (c0, c1) = (colours(s0), colours(s1));
+        assert_eq!(c0[0].0, "a", "a ranks first in the first scene");
+        assert_eq!(c1[0].0, "b", "b ranks first in the second scene");
+        for name in ["a", "b"] {
+            let of = |c: &[(String, Option<plotters::style::RGBColor>)]| {
+                c.iter().find(|(n, _)| n == name).and_then(|(_, k)| *k)
+            };
+            assert!(of(&c0).is_some(), "{name} has a colour of its own");
+            assert_eq!(of(&c0), of(&c1), "{name} changed colour between scenes");
+        }
+        assert_ne!(c0[0].1, c0[1].1, "two compounds, two colours");
     }
 }

@@ -130,11 +130,8 @@ pub fn thinned<T: Copy>(v: &[T]) -> Vec<T> {
 
 /// The symbols of a measurement's moduli: (storage, loss).
 pub fn symbols(kind: crate::ModulusKind) -> (&'static str, &'static str) {
-    if kind == crate::ModulusKind::Shear {
-        ("G′", "G″")
-    } else {
-        ("E′", "E″")
-    }
+    let (storage, loss, _) = kind.symbols();
+    (storage, loss)
 }
 
 /// Raw isotherms: storage modulus (filled dots, lines) and loss modulus (open circles) against
@@ -337,16 +334,18 @@ pub fn plot_shift_factors(
     plot_chart(&c, "shift factors", path)
 }
 
-/// The relaxation spectrum: a stem Eᵢ at each τᵢ (log–log), E∞ stated in the title.
+/// The relaxation spectrum: a stem Eᵢ (Gᵢ for shear) at each τᵢ (log–log), E∞ (G∞) stated in the
+/// title.
 pub fn plot_spectrum(spectrum: &RelaxationSpectrum, path: &Path) -> Result<(), PlotError> {
     let c = Chart {
         title: format!(
-            "Relaxation spectrum: {} terms, E∞ = {:.3e} Pa",
+            "Relaxation spectrum: {} terms, {} = {:.3e} Pa",
             spectrum.terms.len(),
+            spectrum.kind.symbols().2,
             spectrum.modulus_inf_pa
         ),
         x: Axis::log("relaxation time τ [s]"),
-        y: Axis::log("strength E_i [Pa]"),
+        y: Axis::log(&format!("strength {}_i [Pa]", spectrum.kind.letter())),
         curves: vec![Curve::new(
             "",
             spectrum

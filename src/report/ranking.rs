@@ -254,6 +254,7 @@ pub(crate) mod tests {
                 model: String::new(),
                 model_reason: String::new(),
                 band: None,
+                error_estimate: None,
                 temp_c: 10.0 * i as f64,
                 log10_a_t: 0.0,
                 friction: f,

@@ -24,3 +24,22 @@ pub use scene::{
     factor_text, FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet,
     SceneSpec, EXTRAPOLATION_LIMIT_K, UNDETERMINED_BAND_RATIO,
 };
+
+/// `n` and the noun, plural unless `n` is 1: "1 scene", "3 scenes" (`noun` takes an `s`).
+pub fn counted(n: usize, noun: &str) -> String {
+    if n == 1 {
+        format!("1 {noun}")
+    } else {
+        format!("{n} {noun}s")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn counted_is_singular_for_one_only() {
+        assert_eq!(super::counted(1, "scene"), "1 scene");
+        assert_eq!(super::counted(0, "scene"), "0 scenes");
+        assert_eq!(super::counted(3, "compound"), "3 compounds");
+    }
+}

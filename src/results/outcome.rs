@@ -366,6 +366,7 @@ mod tests {
             model: String::new(),
             model_reason: String::new(),
             band: None,
+            error_estimate: None,
             temp_c,
             log10_a_t: 0.0,
             friction,

@@ -63,6 +63,11 @@ pub struct SceneSpec {
     /// Temperatures in °C of the friction maps (each solve costs; keep it short).
     #[serde(default)]
     pub map_temps_c: Vec<f64>,
+    /// Relative tolerance of the scene's contact solves and friction maps (1e−10 … 1e−2); absent:
+    /// the main job's defaults, 1e−6 on a half-space and 1e−3 on a cover (`run --tol` sets it for
+    /// every scene without one).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tol: Option<f64>,
     /// Speeds in m/s of the friction map against speed (at the scene's load, each map temperature).
     #[serde(default)]
     pub map_speeds_m_s: Vec<f64>,
@@ -86,6 +91,9 @@ impl SceneSpec {
 
 /// Longest list of temperatures, speeds or loads in a scene (each entry costs solves).
 pub const MAX_LIST: usize = 1000;
+/// The range of a scene's `tol` (and `run --tol`): the friction maps' (crate::contact::maps), the
+/// narrower of theirs and the contact solver's.
+pub const TOL_RANGE: (f64, f64) = (1e-10, 1e-2);
 /// Highest scene temperature, °C (no polymer is used above it).
 pub const TEMP_MAX_C: f64 = 1000.0;
 
@@ -188,6 +196,16 @@ impl SceneSet {
                     )));
                 }
             }
+            if let Some(t) = s.tol {
+                if !(TOL_RANGE.0..=TOL_RANGE.1).contains(&t) {
+                    return Err(cfg(format!(
+                        "{} must lie in [{:e}, {:e}], got {t}",
+                        at("tol"),
+                        TOL_RANGE.0,
+                        TOL_RANGE.1
+                    )));
+                }
+            }
             if let Some(h) = s.cover_thickness_mm {
                 if !(h.is_finite() && h > 0.0) {
                     return Err(cfg(format!(
@@ -256,6 +274,11 @@ pub struct FrictionPoint {
     /// reason, hollow, and never ranked or averaged.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub undetermined: Option<String>,
+    /// The contact solver's estimate of the relative error of `friction` (plus, where `auto` chose
+    /// a cheaper body than the bonded layer, its estimated difference from the layer); None when
+    /// the solve failed or gave none.
+    #[serde(default)]
+    pub error_estimate: Option<f64>,
 }
 
 /// Percentiles of F*/N* from the measurement's own scatter propagated through the pipeline.

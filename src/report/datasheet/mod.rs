@@ -124,8 +124,8 @@ fn specimen_curves(friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> Vec<Curve> {
 pub const BAND_CLIP_FACTOR: f64 = 10.0;
 
 /// One scene's F/N against temperature as a curve with its band (the p05…p95 of each point that
-/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range, each cut end marked with a
-/// cross); points not determined are drawn hollow.
+/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range; each clipped end in
+/// [`Curve::band_cut`], so the chart marks it); points not determined are drawn hollow.
 pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     let mut c = Curve::new(
         name,
@@ -146,18 +146,18 @@ pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
         .iter()
         .filter_map(|p| p.band.map(|b| (p.temp_c, b.p05.max(lo), b.p95.min(hi))))
         .collect();
-    // a band cut at the clip is marked where it is cut (issue 31)
-    for p in pts {
-        if let Some(b) = p.band {
-            if b.p05 < lo {
-                c.cut.push((p.temp_c, lo));
-            }
-            if b.p95 > hi {
-                c.cut.push((p.temp_c, hi));
-            }
-        }
-    }
-    // a point not determined is drawn hollow
+    c.band_cut = pts
+        .iter()
+        .filter_map(|p| p.band.map(|b| (p.temp_c, b)))
+        .flat_map(|(t, b)| {
+            [
+                (b.p95 > hi).then_some((t, hi, true)),
+                (b.p05 < lo).then_some((t, lo, false)),
+            ]
+        })
+        .flatten()
+        .collect();
+    // a point not determined is drawn hollow (issue 31)
     c.hollow = pts
         .iter()
         .enumerate()

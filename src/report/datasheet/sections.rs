@@ -305,9 +305,10 @@ pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str
 /// The relaxation spectrum's Prony terms.
 pub fn prony(fit: &CompoundFit) -> String {
     let r = &fit.relaxation;
+    let (storage, loss, inf) = r.kind.symbols();
     let mut h = format!(
-        "<h2>Spectra and FEA cards</h2><details><summary>Prony series (relaxation, {:?}, at T_ref): E∞ = {:.4e} Pa, {} terms; RMS log10 error E′ {:.4}, E″ {:.4}</summary><table><tr><th>i</th><th>τ<sub>i</sub> (s)</th><th>E<sub>i</sub> (Pa)</th></tr>",
-        r.kind, r.modulus_inf_pa, r.terms.len(), fit.prony_info.rms_log10_storage, fit.prony_info.rms_log10_loss
+        "<h2>Spectra and FEA cards</h2><details><summary>Prony series (relaxation, {:?}, at T_ref): {inf} = {:.4e} Pa, {} terms; RMS log10 error {storage} {:.4}, {loss} {:.4}</summary><table><tr><th>i</th><th>τ<sub>i</sub> (s)</th><th>{}<sub>i</sub> (Pa)</th></tr>",
+        r.kind, r.modulus_inf_pa, r.terms.len(), fit.prony_info.rms_log10_storage, fit.prony_info.rms_log10_loss, r.kind.letter()
     );
     for (i, t) in r.terms.iter().enumerate() {
         let _ = write!(

@@ -491,7 +491,36 @@ mod tests {
             band,
             specimens: vec![],
             undetermined: None,
+            error_estimate: None,
         }
+    }
+
+    /// A band beyond [`super::super::BAND_CLIP_FACTOR`] times the curve's range is clipped there and
+    /// each clipped end is listed as cut (so the chart marks it); a band inside is not.
+    #[test]
+    fn clipped_band_ends_are_marked_as_cut() {
+        let b = |p05: f64, p95: f64| {
+            Some(FrictionBand {
+                p05,
+                p50: 0.5 * (p05 + p95),
+                p95,
+            })
+        };
+        // curve range 1e-4 … 2e-4: the plot keeps 1e-5 … 2e-3
+        let pts = [
+            point(0.0, 1e-4, b(0.9e-4, 1.1e-4)),
+            point(10.0, 2e-4, b(1e-9, 1e2)),
+            point(20.0, 1.5e-4, b(1e-6, 1.6e-4)),
+        ];
+        let c = super::super::friction_curve("x", &pts);
+        let k = super::super::BAND_CLIP_FACTOR;
+        let (lo, hi) = (1e-4 / k, 2e-4 * k);
+        assert_eq!(
+            c.band_cut,
+            vec![(10.0, hi, true), (10.0, lo, false), (20.0, lo, false)]
+        );
+        assert_eq!(c.band[1], (10.0, lo, hi));
+        assert_eq!(c.band[0], (0.0, 0.9e-4, 1.1e-4));
     }
 
     #[test]
