@@ -547,7 +547,7 @@ mod tests {
             std::fs::write(dir.join(f), "").unwrap();
         }
         // no listing: folder a holds its exports in two sub-folders, b beside it one export
-        let (c, _) = discover(&dir).unwrap();
+        let (c, _) = discover(&dir, &[]).unwrap();
         assert_eq!(c.len(), 2);
         assert_eq!(c[0].specimens.len(), 2);
         assert_eq!(c[0].specimens[1].len(), 2);
@@ -559,7 +559,7 @@ mod tests {
             "[[compound]]\nname = \"p\"\nspecimens = [\"a/s2\", \"b/w.txt\"]\n",
         )
         .unwrap();
-        let (c, _) = discover(&dir).unwrap();
+        let (c, _) = discover(&dir, &[]).unwrap();
         assert_eq!(c[0].specimens.len(), 2);
         assert_eq!(c[0].specimens[0].len(), 2);
         assert_eq!(c[0].files.len(), 3);
@@ -573,7 +573,7 @@ mod tests {
                 format!("[[compound]]\nname = \"p\"\n{bad}\n"),
             )
             .unwrap();
-            assert!(discover(&dir).is_err(), "{bad}");
+            assert!(discover(&dir, &[]).is_err(), "{bad}");
         }
         let _ = std::fs::remove_dir_all(&dir);
     }
