@@ -59,7 +59,11 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
         col(&h, "friction_p50"),
         col(&h, "friction_p95"),
     );
-    assert_eq!(p95, h.len() - 1, "the band columns come last");
+    assert_eq!(
+        (p50, p95),
+        (p05 + 1, p05 + 2),
+        "the band columns sit together"
+    );
     for r in &rows {
         let v = |i: usize| r[i].parse::<f64>().unwrap();
         assert!(v(p05) < v(p50) && v(p50) < v(p95), "{r:?}");

@@ -303,7 +303,7 @@ pub fn check_pages(out: &Path, compound: &str) {
         &reports.join(compound).join("datasheet.html"),
         &out.join("datasheet-screenshot.png"),
         &[
-            "Quality: trusted",
+            "Verdict: ",
             "at 1 Hz, E″ peak",
             "tan δ at 60 °C, 10 Hz",
             "Rolling friction F/N",

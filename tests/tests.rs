@@ -45,6 +45,7 @@ mod prony_terms;
 mod pyvisco_interop;
 mod pyvisco_roundtrip;
 mod reference;
+mod replicates;
 mod report_browser;
 mod report_plots;
 mod run_shards;

@@ -57,6 +57,7 @@
 //! errors of the instrument (clamping, compliance, thermocouple calibration) that the data cannot
 //! show.
 
+pub mod between;
 pub mod compare;
 pub mod ensemble;
 pub mod error;
@@ -66,7 +67,8 @@ pub mod rng;
 pub mod scene;
 pub mod window;
 
-pub use compare::{comparisons, prob_lower, SIGNIFICANCE};
+pub use between::{between_sd_ln, specimens_note, widen, PRIOR_SD_LN};
+pub use compare::{comparisons, is_tie, prob_lower, prob_text, SIGNIFICANCE};
 pub use ensemble::{build_ensemble, ensemble_from_fit, FROM_FIT_FILE_NOTE};
 pub use error::BandError;
 pub use friction::{

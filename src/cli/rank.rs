@@ -83,7 +83,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         match r {
             Ok((c, pts, s)) if s.trusted() => ranking.push(serde_json::json!({
                 "rank": ranking.len() + 1, "compound": c, "mean_friction": s.mean_friction,
-                "band": s.band, "standing": s, "friction": pts,
+                "verdict": s.verdict(), "band": s.band, "standing": s, "friction": pts,
             })),
             Ok((c, _, s)) => apart.push(serde_json::json!({
                 "compound": c, "mean_friction": s.mean_friction, "reasons": s.untrusted,

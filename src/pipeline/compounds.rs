@@ -26,6 +26,18 @@
 //! prony = { terms_per_decade = 1.5 }   # keys of the Prony settings (fit file `settings.prony`)
 //! ```
 //!
+//! Replicate specimens of one compound (issue 31): `specimens` instead of `files`, one entry per
+//! specimen — a file, a `*` pattern (the files it matches) or a folder (the exports in it). The fit
+//! pools them (crate::pipeline::specimens) and the bands carry the spread between them
+//! (crate::bands::between):
+//! ```toml
+//! [[compound]]
+//! name = "ems-ca"
+//! specimens = ["pyvisco-ems-ca/freq_Eplexor_raw.xls", "pyvisco-ems-ca-specimen2/freq_Eplexor_raw.xls"]
+//! ```
+//! Without a listing, a compound folder whose exports sit in sub-folders (and none beside them) is
+//! one compound with a specimen per sub-folder.
+//!
 //! A master curve already shifted, in pyvisco's CSV layout, is one compound too: `files` is the
 //! master-curve CSV alone and `shift_factors` its shift-factor CSV (crate::dma::pyvisco):
 //! ```toml
@@ -47,8 +59,11 @@ use std::path::{Path, PathBuf};
 pub struct CompoundInput {
     /// Name (file stem or folder name, or as listed), sanitised.
     pub name: String,
-    /// The export files (or measurement JSON files written by `viscoroll ingest`).
+    /// The export files (or measurement JSON files written by `viscoroll ingest`); with replicate
+    /// specimens, every specimen's files.
     pub files: Vec<PathBuf>,
+    /// The files of each replicate specimen (empty: one specimen, `files`).
+    pub specimens: Vec<Vec<PathBuf>>,
     /// Per-compound settings from `compounds.toml`.
     pub settings: CompoundSettings,
     /// Why the compound cannot run (an unreadable folder, a setting out of range or beyond the work
@@ -79,7 +94,10 @@ struct Listing {
 #[serde(deny_unknown_fields)]
 struct ListedCompound {
     name: String,
+    #[serde(default)]
     files: Vec<String>,
+    #[serde(default)]
+    specimens: Vec<String>,
     #[serde(default)]
     format: Option<String>,
     #[serde(default)]
@@ -318,6 +336,14 @@ fn sorted_entries(dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
     Ok(v)
 }
 
+/// The export files directly in `dir`, sorted.
+fn exports_in(dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
+    Ok(sorted_entries(dir)?
+        .into_iter()
+        .filter(|f| f.is_file() && is_export(f))
+        .collect())
+}
+
 /// `*` within the last path component only.
 fn expand(dir: &Path, pattern: &str) -> Result<Vec<PathBuf>, PipelineError> {
     let full = dir.join(pattern);
@@ -376,6 +402,17 @@ pub fn discover(
         })?;
         let mut out = Vec::new();
         for c in l.compound {
+            let config = |message: String| PipelineError::Config {
+                path: listing.clone(),
+                message: format!("compound {:?}: {message}", c.name),
+            };
+            if c.files.is_empty() == c.specimens.is_empty() {
+                return Err(config(
+                    "give either `files` (one specimen) or `specimens` (one entry per replicate \
+                     specimen: a file, a pattern or a folder)"
+                        .into(),
+                ));
+            }
             let mut files = Vec::new();
             for f in &c.files {
                 let got = expand(dir, f)?;
@@ -383,6 +420,26 @@ pub fn discover(
                     notes.push(format!("{}: `{f}` matches no file", c.name));
                 }
                 files.extend(got);
+            }
+            let mut specimens = Vec::new();
+            for f in &c.specimens {
+                let full = dir.join(f);
+                let got: Vec<PathBuf> = if full.is_dir() {
+                    exports_in(&full)?
+                } else {
+                    expand(dir, f)?
+                        .into_iter()
+                        .filter(|p| p.is_file())
+                        .collect()
+                };
+                if got.is_empty() {
+                    return Err(config(format!("specimen `{f}` matches no export")));
+                }
+                files.extend(got.iter().cloned());
+                specimens.push(got);
+            }
+            if specimens.len() == 1 {
+                specimens.clear();
             }
             // A bad setting (or name) fails its compound only.
             let checked = crate::limits::name("name", &c.name)
@@ -413,9 +470,15 @@ pub fn discover(
                 }
                 settings.shift_factors = Some(dir.join(sf));
             }
+            if !specimens.is_empty() && settings.shift_factors.is_some() {
+                return Err(config(
+                    "a master curve read already shifted (shift_factors) has one specimen".into(),
+                ));
+            }
             out.push(CompoundInput {
                 name: c.name,
                 files,
+                specimens,
                 settings,
                 unreadable: None,
             });
@@ -433,11 +496,8 @@ pub fn discover(
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         if p.is_dir() {
-            let files: Vec<PathBuf> = match sorted_entries(&p) {
-                Ok(v) => v
-                    .into_iter()
-                    .filter(|f| f.is_file() && is_export(f))
-                    .collect(),
+            let mut files: Vec<PathBuf> = match exports_in(&p) {
+                Ok(v) => v,
                 Err(e) => {
                     // An unreadable folder fails its compound only.
                     out.push(CompoundInput {
@@ -450,6 +510,31 @@ pub fn discover(
                     continue;
                 }
             };
+            let mut specimens = Vec::new();
+            if files.is_empty() {
+                // replicate specimens: a sub-folder of exports each (an unreadable one is skipped
+                // with the others; the compound then fails or runs on what could be read)
+                for sub in sorted_entries(&p)
+                    .unwrap_or_default()
+                    .into_iter()
+                    .filter(|s| s.is_dir())
+                {
+                    let got = match exports_in(&sub) {
+                        Ok(v) => v,
+                        Err(e) => {
+                            notes.push(format!("{e}: specimen folder skipped"));
+                            continue;
+                        }
+                    };
+                    if !got.is_empty() {
+                        files.extend(got.iter().cloned());
+                        specimens.push(got);
+                    }
+                }
+                if specimens.len() == 1 {
+                    specimens.clear();
+                }
+            }
             if files.is_empty() {
                 notes.push(format!(
                     "{}: no DMA export in the folder, skipped",
@@ -463,6 +548,7 @@ pub fn discover(
                 out.push(CompoundInput {
                     name: dir_name,
                     files,
+                    specimens,
                     ..CompoundInput::default()
                 });
             }
@@ -494,6 +580,48 @@ mod tests {
         // data/dmasuite-tensile holds 22 isotherm files T0.txt … T105.txt (plus its LICENSE).
         assert_eq!(c[1].files.len(), 22);
         assert!(c.iter().all(|c| c.files.iter().all(|f| f.is_file())));
+    }
+
+    #[test]
+    fn specimens_come_from_the_listing_or_from_sub_folders() {
+        let dir = std::env::temp_dir().join(format!("viscoroll-specimens-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        for sub in ["a/s1", "a/s2", "b"] {
+            std::fs::create_dir_all(dir.join(sub)).unwrap();
+        }
+        for f in ["a/s1/x.txt", "a/s2/y.txt", "a/s2/z.txt", "b/w.txt"] {
+            std::fs::write(dir.join(f), "").unwrap();
+        }
+        // no listing: folder a holds its exports in two sub-folders, b beside it one export
+        let (c, _) = discover(&dir, &[]).unwrap();
+        assert_eq!(c.len(), 2);
+        assert_eq!(c[0].specimens.len(), 2);
+        assert_eq!(c[0].specimens[1].len(), 2);
+        assert_eq!(c[0].files.len(), 3);
+        assert!(c[1].specimens.is_empty());
+        // listed: a folder and a file, one specimen each
+        std::fs::write(
+            dir.join("compounds.toml"),
+            "[[compound]]\nname = \"p\"\nspecimens = [\"a/s2\", \"b/w.txt\"]\n",
+        )
+        .unwrap();
+        let (c, _) = discover(&dir, &[]).unwrap();
+        assert_eq!(c[0].specimens.len(), 2);
+        assert_eq!(c[0].specimens[0].len(), 2);
+        assert_eq!(c[0].files.len(), 3);
+        // both keys, or a specimen matching nothing, are refused
+        for bad in [
+            "files = [\"b/w.txt\"]\nspecimens = [\"b/w.txt\"]",
+            "specimens = [\"nothing/here.txt\", \"b/w.txt\"]",
+        ] {
+            std::fs::write(
+                dir.join("compounds.toml"),
+                format!("[[compound]]\nname = \"p\"\n{bad}\n"),
+            )
+            .unwrap();
+            assert!(discover(&dir, &[]).is_err(), "{bad}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

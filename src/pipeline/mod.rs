@@ -11,6 +11,8 @@ pub mod roll_fit;
 pub mod run;
 pub mod scenes;
 pub mod shard;
+pub mod specimens;
+pub mod trust;
 
 /// The fit file's types (crate::results::compound_fit), at their former path.
 pub use crate::results::compound_fit;

@@ -220,8 +220,15 @@ fn fit_options(c: &CompoundInput, opts: &RunOptions) -> FitOptions {
     fit
 }
 
-/// A compound's measurement, its fit, what was done to the fit file and why there are no bands.
-type Fitted = (Measurement, CompoundFit, FitAction, Option<String>);
+/// A compound's measurement, its fit, what was done to the fit file, why there are no bands, and
+/// with replicate specimens each one's own fit (or why it failed).
+struct Fitted {
+    measurement: Measurement,
+    fit: CompoundFit,
+    action: FitAction,
+    no_bands: Option<String>,
+    specimen_fits: Vec<Result<CompoundFit, String>>,
+}
 
 /// (scene, its temperatures, cover) → the friction ratios of each replicate.
 type SolvedRatios = (
@@ -231,7 +238,11 @@ type SolvedRatios = (
 
 /// Fit (or reuse the fit of) a compound measured in isotherms, with its bands when asked.
 fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError> {
-    let measurement = checked_measurement(c)?;
+    let (measurement, specimen_fits) = if c.specimens.len() >= 2 {
+        pooled_specimens(c, opts)?
+    } else {
+        (checked_measurement(c)?, Vec::new())
+    };
     let (fit, action, no_bands) = fit_or_reuse_with_bands(
         &c.name,
         &measurement,
@@ -240,7 +251,45 @@ fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, Pipeline
         opts.force,
         opts.bands.as_ref(),
     )?;
-    Ok((measurement, fit, action, no_bands))
+    Ok(Fitted {
+        measurement,
+        fit,
+        action,
+        no_bands,
+        specimen_fits,
+    })
+}
+
+/// Replicate specimens: each read alone and fitted alone (its friction gives the spread between
+/// specimens, crate::bands::between), and their measurements pooled for the compound's fit
+/// (super::specimens).
+#[allow(clippy::type_complexity)]
+fn pooled_specimens(
+    c: &CompoundInput,
+    opts: &RunOptions,
+) -> Result<(Measurement, Vec<Result<CompoundFit, String>>), PipelineError> {
+    let ms: Vec<Measurement> = c
+        .specimens
+        .iter()
+        .map(|files| {
+            checked_measurement(&CompoundInput {
+                files: files.clone(),
+                specimens: Vec::new(),
+                ..c.clone()
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    let (pooled, _notes) = super::specimens::pool(&c.name, &ms)?;
+    let options = fit_options(c, opts);
+    let fits = ms
+        .par_iter()
+        .enumerate()
+        .map(|(k, m)| {
+            crate::pipeline::fit_measurement(&format!("{} specimen {}", c.name, k + 1), m, &options)
+                .map_err(|e| cap_line(&format!("specimen {}: {e}", k + 1)))
+        })
+        .collect();
+    Ok((pooled, fits))
 }
 
 /// Fit (or reuse the fit of) a master curve read already shifted (pyvisco's CSV pair: the compound's
@@ -283,7 +332,13 @@ fn fit_shifted(
          isotherms to resample"
             .to_string()
     });
-    Ok((measurement, fit, action, no_bands))
+    Ok(Fitted {
+        measurement,
+        fit,
+        action,
+        no_bands,
+        specimen_fits: Vec::new(),
+    })
 }
 
 /// The friction ratios of each replicate in a scene, and each point's band from them. The ratios are
@@ -365,7 +420,13 @@ fn one_compound(
     opts: &RunOptions,
     step: &dyn Fn(&str),
 ) -> Result<CompoundResult, PipelineError> {
-    let (measurement, fit, action, no_bands) = match &c.settings.shift_factors {
+    let Fitted {
+        measurement,
+        fit,
+        action,
+        no_bands,
+        specimen_fits,
+    } = match &c.settings.shift_factors {
         None => fit_measured(c, opts)?,
         Some(sf) => fit_shifted(c, sf, opts)?,
     };
@@ -391,6 +452,17 @@ fn one_compound(
         } else {
             ratios.push(Vec::new());
         }
+        // each specimen's own friction, what is determined, the between-specimen term
+        let specimen_points: Vec<Vec<FrictionPoint>> = specimen_fits
+            .iter()
+            .map(|f| {
+                f.as_ref()
+                    .ok()
+                    .and_then(|f| friction_vs_temperature(f, spec, &settings).ok())
+                    .unwrap_or_default()
+            })
+            .collect();
+        super::trust::finish_points(&mut points, &specimen_points, fit.measured_range_c());
         friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         let m = super::scenes::friction_maps(&fit, spec, &super::scenes::pipeline_map_settings())?;
@@ -404,7 +476,22 @@ fn one_compound(
         maps.push(m);
         step(&format!("maps {}", spec.name));
     }
-    let fit_level = fit_warnings(&fit, no_bands.as_deref(), opts.bands.is_some());
+    let mut fit_level = fit_warnings(&fit, no_bands.as_deref(), opts.bands.is_some());
+    fit_level.extend(
+        specimen_fits
+            .iter()
+            .filter_map(|f| f.as_ref().err())
+            .map(|e| format!("replicate specimens: {e} (its friction left out of the spread)")),
+    );
+    if opts.bands.is_some() && fit.bands.is_some() {
+        // what every band of the compound covers (docs/MATH.md §16)
+        let sd = friction
+            .iter()
+            .flat_map(|(_, p)| p)
+            .map(|p| crate::bands::between_sd_ln(&p.specimens))
+            .fold(0.0, f64::max);
+        fit_level.push(crate::bands::specimens_note(c.specimens.len().max(1), sd));
+    }
     write_report(
         &fit,
         &measurement,
@@ -539,16 +626,19 @@ fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String>
     warnings.into_iter().map(|w| cap_line(&w)).collect()
 }
 
-/// The outcome record of one compound from its result.
+/// The outcome record of one compound from its result, and its bootstrap ratios per scene (for
+/// the bands of means over shared windows, super::trust).
 fn outcome(
     c: &CompoundInput,
     opts: &RunOptions,
     result: Result<CompoundResult, PipelineError>,
     seconds: f64,
-) -> CompoundOutcome {
+) -> (CompoundOutcome, Vec<Vec<Vec<f64>>>) {
+    let specimens = c.specimens.len().max(1);
     match result {
         Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
+            let care = fit.care_reasons();
             let mut warnings = compound_warnings(&fit, &friction);
             if action == FitAction::Repaired {
                 warnings.push(format!(
@@ -561,7 +651,7 @@ fn outcome(
                 no_bands.as_deref(),
                 opts.bands.is_some(),
             ));
-            CompoundOutcome {
+            let out = CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
                 fit_action: Some(action.word().to_string()),
@@ -569,9 +659,9 @@ fn outcome(
                     .iter()
                     .enumerate()
                     .map(|(k, (s, p))| {
-                        let mut st = standing(s, p, &untrusted, opts.allow_extrapolation);
+                        let mut st = standing(s, p, &untrusted, &care, opts.allow_extrapolation);
                         if let Some(r) = ratios.get(k).filter(|r| !r.is_empty()) {
-                            st.band = crate::bands::mean_band(p, r, &st.temps_c);
+                            st.band = super::trust::standing_band(p, r, &st.temps_c);
                         }
                         st
                     })
@@ -581,19 +671,25 @@ fn outcome(
                 friction,
                 error: None,
                 seconds,
-            }
+                specimens,
+            };
+            (out, ratios)
         }
-        Err(e) => CompoundOutcome {
-            compound: c.name.clone(),
-            fit_path: None,
-            fit_action: None,
-            standings: vec![],
-            friction: vec![],
-            untrusted: vec![],
-            warnings: vec![],
-            error: Some(cap_line(&e.to_string())),
-            seconds,
-        },
+        Err(e) => (
+            CompoundOutcome {
+                compound: c.name.clone(),
+                fit_path: None,
+                fit_action: None,
+                standings: vec![],
+                friction: vec![],
+                untrusted: vec![],
+                warnings: vec![],
+                error: Some(cap_line(&e.to_string())),
+                seconds,
+                specimens,
+            },
+            Vec::new(),
+        ),
     }
 }
 
@@ -703,7 +799,7 @@ pub fn run_all_with_progress(
     }
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
-    let (outcomes, proxies): (Vec<CompoundOutcome>, Vec<Option<TanDeltaProxy>>) = compounds
+    let done: Vec<(CompoundOutcome, Vec<Vec<Vec<f64>>>, Option<TanDeltaProxy>)> = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();
@@ -720,13 +816,20 @@ pub fn run_all_with_progress(
                 step("skipped");
             }
             let proxy = r.as_ref().ok().map(|(fit, ..)| TanDeltaProxy::of(fit));
-            let out = outcome(c, opts, r, start.elapsed().as_secs_f64());
+            let (out, ratios) = outcome(c, opts, r, start.elapsed().as_secs_f64());
             log(&log_line(&out));
-            (out, proxy)
+            (out, ratios, proxy)
         })
-        .unzip();
-    let proxies: Vec<TanDeltaProxy> = proxies.into_iter().flatten().collect();
-    let mut outcomes = outcomes;
+        .collect();
+    let mut outcomes = Vec::with_capacity(done.len());
+    let mut ratios = Vec::with_capacity(done.len());
+    let mut proxies: Vec<TanDeltaProxy> = Vec::new();
+    for (o, r, p) in done {
+        outcomes.push(o);
+        ratios.push(r);
+        proxies.extend(p);
+    }
+    super::trust::share_windows(&mut outcomes, &ratios, &opts.scenes);
     let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
     notes.extend(stale_reports(&reports, &all));
@@ -819,15 +922,24 @@ pub fn rank_fits(
         .par_iter()
         .map(|f| match friction_vs_temperature(f, spec, &settings) {
             Ok(mut p) => {
+                for q in p.iter_mut() {
+                    q.determine(f.measured_range_c());
+                }
                 let ratios = match (bands, f.bands.as_ref()) {
                     (Some(bs), Some(ensemble)) => {
                         scene_bands(f, ensemble, spec, bs, &mut p, &mut vec![], &mut vec![])
                     }
                     _ => vec![],
                 };
-                let mut s = standing(&spec.name, &p, &f.untrusted_reasons(), allow_extrapolation);
+                let mut s = standing(
+                    &spec.name,
+                    &p,
+                    &f.untrusted_reasons(),
+                    &f.care_reasons(),
+                    allow_extrapolation,
+                );
                 if !ratios.is_empty() {
-                    s.band = crate::bands::mean_band(&p, &ratios, &s.temps_c);
+                    s.band = super::trust::standing_band(&p, &ratios, &s.temps_c);
                 }
                 Ok((f.compound.clone(), p, s))
             }

@@ -83,6 +83,8 @@ pub fn friction_vs_temperature(
                 model_reason: String::new(),
                 band: None,
                 warnings: vec![],
+                specimens: vec![],
+                undetermined: None,
                 error_estimate: None,
             };
             // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
@@ -120,6 +122,8 @@ pub fn friction_vs_temperature(
                             .iter()
                             .map(|w| crate::results::cap_line(w))
                             .collect(),
+                        specimens: vec![],
+                        undetermined: None,
                     },
                     Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
                 };
@@ -143,6 +147,8 @@ pub fn friction_vs_temperature(
                         .iter()
                         .map(|w| crate::results::cap_line(w))
                         .collect(),
+                    specimens: vec![],
+                    undetermined: None,
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }

@@ -90,6 +90,8 @@ pub struct Curve {
     pub mark: Mark,
     /// Its colour (None: the palette by curve index).
     pub colour: Option<RGBColor>,
+    /// The points (by index into `points`) drawn hollow whatever the mark: not determined.
+    pub hollow: Vec<usize>,
     /// Where the band was cut to fit the plot: (x, the cut end's y, `true` when the high end was
     /// cut). Each is drawn as a triangle pointing on beyond the cut, which the legend explains
     /// ([`CUT_LEGEND`]).
@@ -109,6 +111,7 @@ impl Curve {
             band: vec![],
             mark,
             colour: None,
+            hollow: vec![],
             band_cut: vec![],
         }
     }
@@ -439,10 +442,32 @@ fn draw_curve<DB: DrawingBackend>(
             ))
             .map_err(e)?;
     }
+    let solid: Vec<(f64, f64)> = cv
+        .points
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !cv.hollow.contains(i))
+        .filter_map(|(_, &p)| to_axes(c, p))
+        .collect();
+    let hollow: Vec<(f64, f64)> = cv
+        .hollow
+        .iter()
+        .filter_map(|&i| cv.points.get(i).and_then(|&p| to_axes(c, p)))
+        .collect();
+    chart
+        .draw_series(hollow.iter().map(|&p| Circle::new(p, 4, WHITE.filled())))
+        .map_err(e)?;
+    chart
+        .draw_series(
+            hollow
+                .iter()
+                .map(|&p| Circle::new(p, 4, col.stroke_width(2))),
+        )
+        .map_err(e)?;
     match cv.mark {
         Mark::LineDots | Mark::Dots | Mark::Stems => {
             chart
-                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
+                .draw_series(solid.iter().map(|&p| Circle::new(p, 3, col.filled())))
                 .map_err(e)?;
         }
         Mark::Circles | Mark::LineCircles => {

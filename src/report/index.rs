@@ -164,13 +164,17 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
             apart_table(outcomes, &spec.name)
         );
     }
-    let mut h = String::from("<table><tr><th>rank</th><th class=\"l\">compound</th><th>mean F/N</th><th>vs next</th><th>tan δ 60 °C, 10 Hz</th><th>rank by tan δ</th><th class=\"l\">flags</th></tr>");
+    let mut h = window_words(&list);
+    h.push_str("<table><tr><th>rank</th><th class=\"l\">compound</th><th>mean F/N</th><th>vs next</th><th>tan δ 60 °C, 10 Hz</th><th>rank by tan δ</th><th class=\"l\">verdict</th><th class=\"l\">flags</th></tr>");
     for (i, (o, s)) in list.iter().enumerate() {
         let next = list.get(i + 1).map(|(n, _)| n.compound.as_str());
         let vs = match next.and_then(|n| compare(&summary.comparisons, &spec.name, &o.compound, n))
         {
-            Some((p, true)) => format!("<span class=\"tie\">tied (P = {p:.2})</span>"),
-            Some((p, false)) => format!("P(lower) = {p:.2}"),
+            Some((p, true)) => format!(
+                "<span class=\"tie\">tied (P = {})</span>",
+                crate::bands::prob_text(p)
+            ),
+            Some((p, false)) => format!("P(lower) = {}", crate::bands::prob_text(p)),
             None if next.is_some() && !banded => "–".into(),
             None => String::new(),
         };
@@ -188,7 +192,7 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
         let misranked = pr.is_some_and(|r| r != i + 1);
         let _ = write!(
             h,
-            "<tr><td>{}</td><td class=\"l\"><a href=\"{n}/datasheet.html\">{n}</a></td><td>{}</td><td class=\"l\">{vs}</td><td>{pv}</td><td{}>{}</td><td class=\"l warn\">{}</td></tr>",
+            "<tr><td>{}</td><td class=\"l\"><a href=\"{n}/datasheet.html\">{n}</a></td><td>{}</td><td class=\"l\">{vs}</td><td>{pv}</td><td{}>{}</td>{}<td class=\"l warn\">{}</td></tr>",
             i + 1,
             s.mean_friction.map_or("–".into(), |m| {
                 let (v, b) = num_band(m, s.band.map(|b| (b.p05, b.p95)));
@@ -200,11 +204,13 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
             }),
             if misranked { " class=\"warn\" title=\"the proxy ranks this compound elsewhere\"" } else { "" },
             pr.map_or("–".into(), |r| r.to_string()),
+            verdict_cell(s),
             flags(o, &spec.name, allow),
             n = esc(&o.compound)
         );
     }
     h.push_str("</table>");
+    h.push_str(&covers_words(&list));
     if !banded {
         h.push_str("<p>No pairwise comparisons in this run (bands not computed): ranks are not tested for ties.</p>");
     }
@@ -213,6 +219,81 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
     }
     h.push_str(&per_temperature(&list, spec));
     h.push_str(&apart_table(outcomes, &spec.name));
+    h
+}
+
+/// The verdict of a ranked standing as a cell: `trusted`, or `use with care` with its reasons.
+fn verdict_cell(s: &crate::results::SceneStanding) -> String {
+    use crate::results::TrustLevel;
+    let class = match s.level() {
+        TrustLevel::Trusted => "ok",
+        TrustLevel::UseWithCare => "warn",
+        TrustLevel::NotTrusted => "bad",
+    };
+    let reasons = s.reasons();
+    if reasons.is_empty() {
+        format!("<td class=\"l {class}\">{}</td>", s.level().words())
+    } else {
+        format!(
+            "<td class=\"l {class}\">{}<br><small>{}</small></td>",
+            s.level().words(),
+            reasons
+                .iter()
+                .map(|r| esc(r))
+                .collect::<Vec<_>>()
+                .join("<br>")
+        )
+    }
+}
+
+/// Words on the windows the means are over: the temperatures every ranked compound shares, and
+/// each compound whose own window was wider (empty when all windows are the same).
+fn window_words(list: &[(&CompoundOutcome, &crate::results::SceneStanding)]) -> String {
+    let narrowed: Vec<String> = list
+        .iter()
+        .filter(|(_, s)| !s.own_temps_c.is_empty())
+        .map(|(o, s)| {
+            format!(
+                "{} (own window {} °C)",
+                esc(&o.compound),
+                temps_text(&s.own_temps_c)
+            )
+        })
+        .collect();
+    match list.first() {
+        Some((_, s)) if !narrowed.is_empty() => format!(
+            "<p class=\"warn\">The compounds' windows differ: every mean below is over the temperatures all ranked compounds share, {} °C. Narrowed to it: {}.</p>",
+            temps_text(&s.temps_c),
+            narrowed.join(", ")
+        ),
+        _ => String::new(),
+    }
+}
+
+/// Words on what the bands cover: replicate specimens pooled, or one specimen's measurement plus
+/// the default between-specimen prior (crate::bands::between).
+fn covers_words(list: &[(&CompoundOutcome, &crate::results::SceneStanding)]) -> String {
+    let (one, many): (Vec<_>, Vec<_>) = list
+        .iter()
+        .filter(|(_, s)| s.band.is_some())
+        .partition(|(o, _)| o.specimens <= 1);
+    let mut h = String::new();
+    if !one.is_empty() {
+        let _ = write!(
+            h,
+            "<p>Bands of {}: one specimen measured; each band covers that specimen's measurement plus the default spread between specimens (s = {} in ln F/N, from the two shipped EMS-CA specimens, docs/MATH.md §16), and every P(lower) includes it.</p>",
+            one.iter().map(|(o, _)| esc(&o.compound)).collect::<Vec<_>>().join(", "),
+            crate::bands::PRIOR_SD_LN
+        );
+    }
+    for (o, _) in many {
+        let _ = write!(
+            h,
+            "<p>Bands of {}: {} specimens pooled; each band includes the spread between them.</p>",
+            esc(&o.compound),
+            o.specimens
+        );
+    }
     h
 }
 
@@ -261,10 +342,10 @@ fn per_temperature(
             .iter()
             .find(|(s, _)| *s == spec.name)
             .and_then(|(_, p)| p.iter().find(|p| p.temp_c == t))
-            .filter(|p| p.error.is_none() && p.friction.is_finite())
+            .filter(|p| p.counts())
             .map(|p| p.friction)
     };
-    let mut h = String::from("<details open><summary>Rank at each temperature (1 = lowest F/N)</summary><table><tr><th class=\"l\">compound</th>");
+    let mut h = String::from("<details open><summary>Rank at each temperature (1 = lowest F/N; n.d.: not determined, – : failed; neither is ranked)</summary><table><tr><th class=\"l\">compound</th>");
     for t in &spec.temps_c {
         let _ = write!(h, "<th>{t} °C</th>");
     }
@@ -289,7 +370,7 @@ fn per_temperature(
         .collect();
     for (i, (o, _)) in list.iter().enumerate() {
         let _ = write!(h, "<tr><td class=\"l\">{}</td>", esc(&o.compound));
-        for col in &ranks {
+        for (k, col) in ranks.iter().enumerate() {
             match col[i] {
                 Some((r, f)) => {
                     let _ = write!(
@@ -299,7 +380,18 @@ fn per_temperature(
                         num(f)
                     );
                 }
-                None => h.push_str("<td>–</td>"),
+                None => match o
+                    .friction
+                    .iter()
+                    .find(|(s, _)| *s == spec.name)
+                    .and_then(|(_, p)| p.iter().find(|p| p.temp_c == spec.temps_c[k]))
+                    .and_then(|p| p.undetermined.as_deref())
+                {
+                    Some(why) => {
+                        let _ = write!(h, "<td class=\"warn\" title=\"{}\">n.d.</td>", esc(why));
+                    }
+                    None => h.push_str("<td>–</td>"),
+                },
             }
         }
         h.push_str("</tr>");
@@ -371,8 +463,10 @@ pub fn index_html(
         "the measured temperatures only"
     };
     let mut h = format!(
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p class=\"sub\">viscoroll {}; F/N averaged per scene over {rule}, lowest first. Compounds whose fit is out of its quality bounds or whose friction failed at a temperature are listed apart, never ranked. The tan δ proxy (tan δ at {PROXY_TEMP_C} °C and {PROXY_FREQ_HZ} Hz, the same for every scene) is ranked among the ranked compounds, lower first; where its rank differs from the rank by predicted friction it is marked.</p>",
-        env!("CARGO_PKG_VERSION")
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p class=\"sub\">viscoroll {}; F/N averaged per scene over {rule}, lowest first. Each compound has one verdict per scene: <i>trusted</i> (every check passed), <i>use with care</i> (ranked; the reasons are listed: master-curve checks, contact validity, points not determined, extrapolation) or <i>not trusted</i> (fit out of its quality bounds, a failed temperature: listed apart, never ranked). Points not determined (band p95/p05 &gt; {ratio}, or more than {limit} K beyond the measured temperatures) are never ranked or averaged. The tan δ proxy (tan δ at {PROXY_TEMP_C} °C and {PROXY_FREQ_HZ} Hz, the same for every scene) is ranked among the ranked compounds, lower first; where its rank differs from the rank by predicted friction it is marked.</p>",
+        env!("CARGO_PKG_VERSION"),
+        ratio = crate::results::UNDETERMINED_BAND_RATIO,
+        limit = crate::results::EXTRAPOLATION_LIMIT_K,
     );
     for (k, spec) in scenes.scene.iter().enumerate() {
         let _ = write!(
@@ -451,9 +545,13 @@ pub fn write_index(
         overlays.push(if chart.curves.is_empty() {
             String::new()
         } else {
-            plot_pair(dir, &format!("index_{}", spec.name), |p| {
+            let mut plot = plot_pair(dir, &format!("index_{}", spec.name), |p| {
                 plots::plot_chart(&chart, "overlay", p)
-            })?
+            })?;
+            if chart.curves.iter().any(|c| !c.hollow.is_empty()) {
+                plot.push_str("<p>Hollow markers: points not determined (never ranked or averaged; the reason is in friction.csv).</p>");
+            }
+            plot
         });
     }
     write_file(

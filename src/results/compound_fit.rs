@@ -384,6 +384,19 @@ impl CompoundFit {
         Ok(())
     }
 
+    /// Why results of this fit are to be used with care (issue 31): the master-curve checks that
+    /// flagged something (isotherm overlap, Kramers–Kronig, van Gurp–Palmen), as one reason.
+    pub fn care_reasons(&self) -> Vec<String> {
+        match &self.tts {
+            Some(t) if !t.flags.is_empty() => vec![super::outcome::cap_line(&format!(
+                "master curve: {} check(s) flagged: {}",
+                t.flags.len(),
+                t.flags.join("; ")
+            ))],
+            _ => vec![],
+        }
+    }
+
     /// Read a fit file, checking its format version, its content hash ([`Self::content_hash`]) and
     /// its content ([`Self::validate`]). Only a regular file within the work budget's size is read.
     pub fn read(path: &Path) -> Result<Self, CompoundFitError> {

@@ -19,10 +19,12 @@ pub use compound_fit::{
     QualityFigure, TtsSummary, COMPOUND_FIT_FORMAT_VERSION,
 };
 pub use outcome::{
-    cap_line, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary, SceneStanding,
+    cap_line, is_band_note, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary,
+    SceneStanding, TrustLevel,
 };
 pub use scene::{
-    FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec,
+    factor_text, FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet,
+    SceneSpec, EXTRAPOLATION_LIMIT_K, UNDETERMINED_BAND_RATIO,
 };
 
 /// `n` and the noun, plural unless `n` is 1: "1 scene", "3 scenes" (`noun` takes an `s`).

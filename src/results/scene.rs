@@ -273,6 +273,14 @@ pub struct FrictionPoint {
     /// The uncertainty band of `friction` (None when bands were not computed, `--no-bands`).
     #[serde(default)]
     pub band: Option<FrictionBand>,
+    /// The friction of each replicate specimen's own fit (empty with one specimen; NaN where one
+    /// failed): the compound's fit pools them (crate::pipeline::specimens).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub specimens: Vec<f64>,
+    /// Why the point is not determined ([`FrictionPoint::determine`]): then it is shown with its
+    /// reason, hollow, and never ranked or averaged.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub undetermined: Option<String>,
     /// The contact solver's estimate of the relative error of `friction` (plus, where `auto` chose
     /// a cheaper body than the bonded layer, its estimated difference from the layer); None when
     /// the solve failed or gave none.
@@ -301,18 +309,79 @@ fn half_space_name() -> String {
     "half-space".into()
 }
 
+/// A point whose 90 % band spans more than this ratio p95/p05 is not determined: the data leave it
+/// open by more than an order of magnitude (issue 31).
+pub const UNDETERMINED_BAND_RATIO: f64 = 10.0;
+
+/// A point whose temperature lies more than this (K) beyond the measured isotherms is not
+/// determined: the shift law there continues its end segment over more than one to two isotherm
+/// steps (5–10 K in the shipped exports), where the data say nothing of its curvature, and the
+/// tail assumptions of docs/MATH.md eq. 15.8 part fast (issue 31).
+pub const EXTRAPOLATION_LIMIT_K: f64 = 10.0;
+
 impl FrictionPoint {
+    /// Decide whether the point is determined: not when its band (the measurement's and the
+    /// model's terms, before the between-specimen term: that one is the same for every point and
+    /// stated apart) spans more than [`UNDETERMINED_BAND_RATIO`], or its temperature lies more
+    /// than [`EXTRAPOLATION_LIMIT_K`] beyond `measured_c` (the measured temperatures). A failed
+    /// point is failed, not undetermined.
+    pub fn determine(&mut self, measured_c: Option<(f64, f64)>) {
+        if self.error.is_some() || !self.friction.is_finite() {
+            return;
+        }
+        let mut why = Vec::new();
+        if let Some(b) = self.band {
+            let r = b.p95 / b.p05;
+            if !(r <= UNDETERMINED_BAND_RATIO) {
+                why.push(format!(
+                    "its band spans a factor {} (p95/p05 > {UNDETERMINED_BAND_RATIO})",
+                    factor_text(r)
+                ));
+            }
+        }
+        if let Some((lo, hi)) = measured_c {
+            let beyond = (lo - self.temp_c).max(self.temp_c - hi);
+            if beyond > EXTRAPOLATION_LIMIT_K {
+                why.push(format!(
+                    "the shift law is extrapolated {beyond} K beyond the measured {lo}…{hi} °C \
+                     (limit {EXTRAPOLATION_LIMIT_K} K)"
+                ));
+            }
+        }
+        self.undetermined =
+            (!why.is_empty()).then(|| format!("not determined: {}", why.join("; ")));
+    }
+
+    /// Computed and determined: may be ranked and averaged.
+    pub fn counts(&self) -> bool {
+        self.error.is_none() && self.friction.is_finite() && self.undetermined.is_none()
+    }
+
     /// Every flag of the point in one line: failure, extrapolated shift law, contact warnings.
     pub fn note(&self) -> String {
         let mut v: Vec<String> = Vec::new();
         if let Some(e) = &self.error {
             v.push(format!("failed: {e}"));
         }
+        if let Some(u) = &self.undetermined {
+            v.push(u.clone());
+        }
         if self.extrapolated {
             v.push("extrapolated shift law (outside the measured temperatures)".into());
         }
         v.extend(self.warnings.iter().cloned());
         super::outcome::cap_line(&v.join("; ").replace(['\r', '\n'], " "))
+    }
+}
+
+/// A ratio as printed: "12.3", "330", "3.3e12" (no percentages beyond 1000 %: issue 31).
+pub fn factor_text(r: f64) -> String {
+    if r < 100.0 {
+        format!("{r:.1}")
+    } else if r < 1000.0 {
+        format!("{r:.0}")
+    } else {
+        format!("{r:.1e}")
     }
 }
 

@@ -88,12 +88,34 @@ fn friction_plot(
         curves: friction
             .iter()
             .map(|(s, p)| friction_curve(&s.name, p))
+            .chain(specimen_curves(friction))
             .collect(),
         colour_bar: None,
     };
     plot_pair(dir, "friction", |p| {
         plots::plot_chart(&chart, "friction", p)
     })
+}
+
+/// Each replicate specimen's own F/N against temperature per scene (dashed), when the compound
+/// pools several (crate::pipeline::specimens).
+fn specimen_curves(friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> Vec<Curve> {
+    let mut v = Vec::new();
+    for (s, pts) in friction {
+        let n = pts.iter().map(|p| p.specimens.len()).max().unwrap_or(0);
+        for k in 0..n {
+            let points = pts
+                .iter()
+                .filter_map(|p| p.specimens.get(k).map(|&f| (p.temp_c, f)))
+                .collect();
+            v.push(Curve::new(
+                format!("{}, specimen {}", s.name, k + 1),
+                points,
+                Mark::Dashed,
+            ));
+        }
+    }
+    v
 }
 
 /// Bands are drawn no further than this factor beyond the curve's own lowest and highest F/N: a
@@ -103,7 +125,7 @@ pub const BAND_CLIP_FACTOR: f64 = 10.0;
 
 /// One scene's F/N against temperature as a curve with its band (the p05…p95 of each point that
 /// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range; each clipped end in
-/// [`Curve::band_cut`], so the chart marks it).
+/// [`Curve::band_cut`], so the chart marks it); points not determined are drawn hollow.
 pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     let mut c = Curve::new(
         name,
@@ -134,6 +156,13 @@ pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
             ]
         })
         .flatten()
+        .collect();
+    // a point not determined is drawn hollow (issue 31)
+    c.hollow = pts
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.undetermined.is_some())
+        .map(|(i, _)| i)
         .collect();
     c
 }
@@ -287,6 +316,7 @@ pub fn write_report(
     );
     h.push_str(&sections::shift_factors(fit, ""));
     h.push_str(&sections::friction(friction, ""));
+    h.push_str(&sections::specimens(fit, friction));
     h.push_str(&sections::trust(fit, friction, allow_extrapolation));
     h.push_str(&maps_html);
     h.push_str(&sections::quality(fit));
