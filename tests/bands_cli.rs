@@ -188,7 +188,11 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
     let note = col(&h, "note");
     let without_band_notes = |n: &str| {
         n.split("; ")
-            .filter(|w| !w.starts_with("band widened") && !w.starts_with("uncertainty band"))
+            .filter(|w| {
+                !w.starts_with("band widened")
+                    && !w.starts_with("uncertainty band")
+                    && !w.starts_with("fit warning")
+            })
             .collect::<Vec<_>>()
             .join("; ")
     };
@@ -196,7 +200,8 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
         for i in (0..p05).filter(|&i| i != note) {
             assert_eq!(a[i], b[i], "{}", h[i]);
         }
-        assert_eq!(without_band_notes(&a[note]), b[note]);
+        // the fit-warnings pointer counts one more warning with bands (the single-specimen note)
+        assert_eq!(without_band_notes(&a[note]), without_band_notes(&b[note]));
         assert!(b[p05..].iter().all(String::is_empty));
     }
     assert!(rows

@@ -257,7 +257,10 @@ fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
     let friction = std::fs::read_to_string(out.join("reports/coarse/friction.csv")).unwrap();
     assert!(friction.contains("# not trusted: prony_rms_log10_storage"));
     let sheet = std::fs::read_to_string(out.join("reports/coarse/datasheet.html")).unwrap();
-    assert!(sheet.contains("Not trusted"));
+    assert!(
+        sheet.contains("Verdict: not trusted"),
+        "the datasheet states the verdict"
+    );
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&out);
 }

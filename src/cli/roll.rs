@@ -128,6 +128,10 @@ fn band_or_why(
     };
     let bands = crate::bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
     let (band, mut notes) = bands.point_band(0, friction);
+    // The between-specimen term as `run` adds it (docs/MATH.md §16): a fit file does not carry its
+    // specimens' own frictions, so the default spread of one specimen applies, and the note says so.
+    let band = band.map(|b| crate::bands::widen(b, crate::bands::between_sd_ln(&[]), 1));
+    notes.push(crate::bands::specimens_note(1, crate::bands::PRIOR_SD_LN));
     if fit.bands.is_none() {
         notes.push(crate::bands::FROM_FIT_FILE_NOTE.to_string());
     }
