@@ -3,7 +3,7 @@
 //! replicate on top of the data's scatter.
 //!
 //! Input: the [`MasterCurve`] the fit was made from and its [`Measurement`]; output:
-//! [`ModelChoices`] (per isotherm the shift each other shift criterion finds; per interval between
+//! `ModelChoices` (per isotherm the shift each other shift criterion finds; per interval between
 //! isotherms the shift table's interpolation error), read by super::ensemble for each replicate,
 //! which also draws the Prony fit's regularisation weight and term positions (eq. 15.12).
 //!

@@ -4,7 +4,7 @@
 //! refuses a symbolic link (or anything that is not a folder) on the way. Writes elsewhere (the
 //! single output file of `export`, `ingest`, …) open their parent folder as named by the user.
 //!
-//! Input: a path; output: an open handle on its parent folder ([`open_parent`]) that the atomic
+//! Input: a path; output: an open handle on its parent folder (`open_parent`) that the atomic
 //! writer creates its temporary file in and renames within, so no later path lookup can be
 //! redirected by a symlink planted meanwhile.
 
@@ -89,7 +89,7 @@ fn step_into(dir: &OwnedFd, name: &std::ffi::OsStr, root: &Path, at: &Path) -> i
 }
 
 /// Create folder `dir` and its parents (inside a jail without following symlinks, as
-/// [`open_parent`] does).
+/// `open_parent` does).
 pub fn create_dir_all(dir: &Path) -> io::Result<()> {
     open_parent(&dir.join("_")).map(drop)
 }

@@ -737,6 +737,10 @@ fn stale_reports(reports: &Path, compounds: &[CompoundInput]) -> Vec<String> {
     v
 }
 
+/// One compound's finished work: its outcome, its bootstrap ratios per scene and temperature, and
+/// its tan δ proxy for the index.
+type Finished = (CompoundOutcome, Vec<Vec<Vec<f64>>>, Option<TanDeltaProxy>);
+
 /// [`run_all`], reporting each finished work unit to `progress` (first [`ProgressEvent::Total`],
 /// then one [`ProgressEvent::Done`] per unit, from the worker threads).
 pub fn run_all_with_progress(
@@ -799,7 +803,7 @@ pub fn run_all_with_progress(
     }
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
-    let done: Vec<(CompoundOutcome, Vec<Vec<Vec<f64>>>, Option<TanDeltaProxy>)> = compounds
+    let done: Vec<Finished> = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();

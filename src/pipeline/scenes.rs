@@ -64,7 +64,7 @@ pub fn friction_vs_temperature(
     })?;
     let scene = spec.scene();
     let tol = scene_tol(spec, settings.auto.tol);
-    let mut settings = settings.clone();
+    let mut settings = *settings;
     settings.auto.tol = tol;
     let settings = &settings;
     Ok(spec
@@ -235,7 +235,7 @@ pub fn friction_maps(
         compound: fit.compound.clone(),
     })?;
     // the scene's own tolerance, if it sets one, over the maps' (and the covered maps' floor)
-    let mut settings = settings.clone();
+    let mut settings = *settings;
     settings.tol = spec.tol.unwrap_or(settings.tol);
     let settings = &settings;
     let jobs = map_jobs(spec);

@@ -99,7 +99,7 @@ pub struct Curve {
 }
 
 /// The legend's line for the cut marks of [`Curve::band_cut`] (one legend line: at most
-/// [`LEGEND_CHARS`] characters, so a page's text holds it whole).
+/// `LEGEND_CHARS` characters, so a page's text holds it whole).
 pub const CUT_LEGEND: &str = "band cut at edge";
 
 impl Curve {
@@ -271,7 +271,7 @@ const BAR_W: u32 = 120;
 /// Characters per legend line before wrapping.
 const LEGEND_CHARS: usize = 18;
 
-/// A legend entry broken into lines of at most [`LEGEND_CHARS`] characters, only at spaces or
+/// A legend entry broken into lines of at most `LEGEND_CHARS` characters, only at spaces or
 /// after a hyphen, underscore or slash (`conveyor-idler-` / `half-space`, never inside a word); a
 /// single piece longer than a line is shortened with `…`; at most three lines, the last cut with
 /// `…`.

@@ -332,7 +332,8 @@ impl FrictionPoint {
         let mut why = Vec::new();
         if let Some(b) = self.band {
             let r = b.p95 / b.p05;
-            if !(r <= UNDETERMINED_BAND_RATIO) {
+            // a NaN ratio (a broken band) is not determined either
+            if r.is_nan() || r > UNDETERMINED_BAND_RATIO {
                 why.push(format!(
                     "its band spans a factor {} (p95/p05 > {UNDETERMINED_BAND_RATIO})",
                     factor_text(r)
