@@ -207,7 +207,6 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
 
 /// `rank --out OUT`: merge the shards; output and exit code as `viscoroll run`'s.
 fn merge(out: &std::path::Path, json: bool) -> anyhow::Result<()> {
-    use crate::pipeline::RunStatus;
     let summary = crate::pipeline::shard::merge_shards(out)?;
     let (n, failed, untrusted) = (
         summary.compounds.len(),
@@ -219,32 +218,5 @@ fn merge(out: &std::path::Path, json: bool) -> anyhow::Result<()> {
         summary.index_html.display(),
         summary.ranking_csv.display()
     );
-    let (code, kind, message) = match summary.status() {
-        RunStatus::AllGood => {
-            if json {
-                outln!("{}", serde_json::to_string(&summary)?);
-            }
-            return Ok(());
-        }
-        RunStatus::Failures => (
-            1,
-            "compounds_failed",
-            format!("{failed} of {n} compounds failed (listed in {})", summary.index_html.display()),
-        ),
-        RunStatus::Untrusted => (
-            3,
-            "untrusted_results",
-            format!(
-                "{untrusted} of {n} compounds have results that are not trusted (listed apart, with reasons, in {})",
-                summary.index_html.display()
-            ),
-        ),
-    };
-    Err(Exit {
-        code,
-        kind,
-        message,
-        detail: Some(serde_json::to_value(&summary)?),
-    }
-    .into())
+    super::run::finish(&summary, json)
 }

@@ -131,10 +131,22 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             summary.ranking_csv.display()
         ),
     }
+    finish(&summary, args.json)
+}
+
+/// The main job's answer for a finished run (or merged shards, `rank --out`): the summary on stdout
+/// with `--json` and exit 0 when all is good; else the exit code of the table in `--help` (1 a
+/// compound failed, 3 some results not trusted) with the summary as the error's detail.
+pub(super) fn finish(summary: &crate::pipeline::RunSummary, json: bool) -> anyhow::Result<()> {
+    let (n, failed, untrusted) = (
+        summary.compounds.len(),
+        summary.failures(),
+        summary.untrusted(),
+    );
     let (code, kind, message) = match summary.status() {
         RunStatus::AllGood => {
-            if args.json {
-                outln!("{}", serde_json::to_string(&summary)?);
+            if json {
+                outln!("{}", serde_json::to_string(summary)?);
             }
             return Ok(());
         }
@@ -162,7 +174,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         code,
         kind,
         message,
-        detail: Some(serde_json::to_value(&summary)?),
+        detail: Some(serde_json::to_value(summary)?),
     }
     .into())
 }
