@@ -533,7 +533,7 @@ fn broken_tables(cases: usize, rng: &mut Rng) {
         texts.push((format!("{f:?}.{}", f.extension()), f.write(&rows)));
     }
     for (name, bytes) in texts {
-        let base = read_bytes(&[(name.clone().into(), bytes.clone())], &opts).unwrap();
+        let base = read_bytes(&[(name.clone(), bytes.clone())], &opts).unwrap();
         let n = points(&base);
         let data_lines: Vec<usize> = base
             .isotherms
@@ -564,7 +564,7 @@ fn broken_tables(cases: usize, rng: &mut Rng) {
         } else {
             v.join(eol).into_bytes()
         };
-        let m = read_bytes(&[(name.clone().into(), broken)], &opts)
+        let m = read_bytes(&[(name.clone(), broken)], &opts)
             .unwrap_or_else(|e| panic!("{name}: {stray:?} at line {at}: {e}"));
         assert_eq!(points(&m), n, "{name}: {stray:?} at line {at}");
         let named = format!("line {at}");
