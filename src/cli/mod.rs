@@ -21,6 +21,7 @@ mod roll_cover;
 mod roll_print;
 mod run;
 mod spectrum_input;
+mod tuning_args;
 
 use clap::{Parser, Subcommand};
 

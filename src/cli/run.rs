@@ -40,6 +40,12 @@ pub struct Args {
     /// 1–2 s less per compound.
     #[arg(long)]
     pub no_bands: bool,
+    /// The master-curve flags (the same as `master`'s; a compound's keys in compounds.toml win).
+    #[command(flatten)]
+    pub tts: super::tuning_args::TtsArgs,
+    /// The Prony flags (the same as `fit`'s).
+    #[command(flatten)]
+    pub prony: super::tuning_args::PronyArgs,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -75,6 +81,9 @@ fn run_with_bar(opts: &RunOptions) -> anyhow::Result<crate::pipeline::RunSummary
 /// Run `viscoroll run`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let mut opts = RunOptions::for_folder(&args.dir, &args.out, args.scenes.as_deref(), args.tref)?;
+    args.tts
+        .tuning(args.tref, Some(&args.prony))?
+        .apply(&mut opts.fit);
     opts.force = args.force;
     opts.allow_extrapolation = args.allow_extrapolation;
     if args.no_bands {

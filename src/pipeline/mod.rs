@@ -10,6 +10,7 @@ pub mod fit_compound;
 pub mod roll_fit;
 pub mod run;
 pub mod scenes;
+pub mod tuning;
 
 /// The fit file's types (crate::results::compound_fit), at their former path.
 pub use crate::results::compound_fit;
@@ -23,3 +24,4 @@ pub use run::{
     RunSummary,
 };
 pub use scenes::{SceneSet, SceneSpec};
+pub use tuning::FitTuning;

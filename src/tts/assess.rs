@@ -10,6 +10,9 @@ use super::quality::{kramers_kronig_local, van_gurp_palmen, QualityBounds};
 use super::settings::{MasterSettings, VerticalShift};
 use super::shift::{overlap_rms, Prepared};
 
+/// The flag of an isotherm whose shift the overlaps do not determine (docs/MATH.md §6.6).
+pub const SHIFT_NOT_DETERMINED: &str = "shift not determined by overlap (placed by a law)";
+
 /// The shift and quality figures of every isotherm, and their summary.
 pub(super) fn assess(
     iso: &[Clean],
@@ -40,7 +43,10 @@ pub(super) fn assess(
     let mut isotherms = Vec::with_capacity(n);
     for (i, c) in iso.iter().enumerate() {
         let kk = kramers_kronig_local(&ch.joint[i]);
-        let flags = isotherm_flags(&bounds, overlap[i], loss_overlap[i], vgp[i], kk);
+        let mut flags = isotherm_flags(&bounds, overlap[i], loss_overlap[i], vgp[i], kk);
+        if !h.determined[i] {
+            flags.push(SHIFT_NOT_DETERMINED.to_string());
+        }
         for f in &flags {
             flags_all.push(format!("{:.2} °C: {f}", c.temp));
         }
@@ -59,6 +65,7 @@ pub(super) fn assess(
             kk_median_log10_ratio: kk,
             flags,
             shift_channel: ch.carried.get(i).cloned().flatten(),
+            shift_determined: h.determined[i],
         });
     }
     let max_of = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, f64::max);
@@ -84,6 +91,10 @@ pub(super) fn assess(
         point_temperature_correction_max_log10: 0.0,
         point_temperature_passes: 0,
         flags: flags_all,
+        shift_not_determined_c: (0..n)
+            .filter(|&i| !h.determined[i])
+            .map(|i| iso[i].temp)
+            .collect(),
     };
     (isotherms, quality)
 }

@@ -74,6 +74,15 @@ pub struct IsothermShift {
     /// The channel that carried the shift (`E′` or `E″`), with the slope-weighted criterion.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shift_channel: Option<String>,
+    /// Whether the overlaps with its neighbours determine its shift (docs/MATH.md §6.6); if not, it
+    /// was placed by a law fitted to the determined shifts (see `MasterCurve::warnings`), and
+    /// `log10_a_t_std` is that law's uncertainty there.
+    #[serde(default = "yes")]
+    pub shift_determined: bool,
+}
+
+fn yes() -> bool {
+    true
 }
 
 /// Summary of the quality figures.
@@ -107,6 +116,10 @@ pub struct MasterQuality {
     pub point_temperature_passes: usize,
     /// Every flag, prefixed with its isotherm's temperature.
     pub flags: Vec<String>,
+    /// Temperatures (°C) of the isotherms whose shift the overlaps do not determine (placed by a
+    /// law, docs/MATH.md §6.6): later stages mark results that rest on them.
+    #[serde(default)]
+    pub shift_not_determined_c: Vec<f64>,
 }
 
 /// A master curve with its shift law and quality figures.
@@ -258,6 +271,17 @@ fn build_once(
             settings.pair_reach,
             settings.min_overlap_points,
         );
+    }
+    if let Some(how) = &h.placed_by {
+        let t: Vec<String> = (0..n)
+            .filter(|&i| !h.determined[i])
+            .map(|i| format!("{:.1}", temps[i]))
+            .collect();
+        warnings.push(format!(
+            "shift not determined by overlap at {} °C (neighbouring isotherms too far apart, or a \
+             flat modulus): {how}",
+            t.join(", ")
+        ));
     }
     let laws = fit_and_choose(
         &temps,
