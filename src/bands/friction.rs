@@ -237,11 +237,11 @@ const TAIL_LAW_RMS_MAX: f64 = 0.3;
 
 /// The tail assumptions at `temp_c` beyond the measured end `t_end` (eq. 15.8), as log10 a_T, each
 /// agreeing with the fit's law `law` at the end isotherm: L(T_e) + q(T) − q(T_e) for
-/// - q the least-squares parabola through the [`TAIL_POINTS`] shifts nearest the end (the
+/// - q the least-squares parabola through the `TAIL_POINTS` shifts nearest the end (the
 ///   curvature the data show there, continued; held at its vertex where its slope would change
 ///   sign against the law's);
 /// - q the WLF or Arrhenius law the shift stage fitted, when it follows the shifts to
-///   [`TAIL_LAW_RMS_MAX`].
+///   `TAIL_LAW_RMS_MAX`.
 pub fn tail_alternatives(fit: &CompoundFit, temp_c: f64, t_end: f64) -> Vec<f64> {
     let law = &fit.shift_law;
     let anchor = law.log10_a_t(t_end);

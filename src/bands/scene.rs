@@ -464,7 +464,7 @@ const CARRY_SPREAD_FRACTION: f64 = 0.1;
 
 /// The temperatures (indices into `temps_c`) at which a covered scene's replicates are solved on
 /// the cover first (eq. 15.6c): in order of temperature, the first, every other one and the last;
-/// all of them with fewer than [`CARRY_MIN_TEMPS`] or when a temperature is not finite.
+/// all of them with fewer than `CARRY_MIN_TEMPS` or when a temperature is not finite.
 pub fn cover_solved_temps(temps_c: &[f64]) -> Vec<usize> {
     let n = temps_c.len();
     if n < CARRY_MIN_TEMPS || temps_c.iter().any(|t| !t.is_finite()) {

@@ -119,16 +119,16 @@ pub fn ramp_weight(decades: f64) -> f64 {
 
 /// The fit's spectrum continued beyond the window's edge (eq. 15.9): relaxation terms over
 /// D = max(Δ, 0) + [`CONTACT_SPREAD_DECADES`] decades of τ past the edge time τ_e = 1/(2π f_edge),
-/// at [`TERMS_PER_DECADE`] on a grid fixed by the edge, the last one weighted by the fraction of
+/// at `TERMS_PER_DECADE` on a grid fixed by the edge, the last one weighted by the fraction of
 /// its step that D covers (eq. 15.9b: so the spectrum, and the term, are continuous in Δ), with
 /// the spectrum the data show at the edge continued: its density H_e = (2/π)·Ê″(ω_e) (the first
 /// approximation H(τ) ≈ (2/π)E″(1/τ), Ferry 1980 ch. 4) and its trend, H(τ) = H_e·(τ_e/τ)^m with
-/// m = d ln Ê″/d ln ω over the last [`SLOPE_DECADES`] inside the window (|m| ≤ [`MAX_SLOPE`]),
-/// each term of strength H(τ_k)·ln 10/[`TERMS_PER_DECADE`]. Above the window (shorter times) they
+/// m = d ln Ê″/d ln ω over the last `SLOPE_DECADES` inside the window (|m| ≤ `MAX_SLOPE`),
+/// each term of strength H(τ_k)·ln 10/`TERMS_PER_DECADE`. Above the window (shorter times) they
 /// add to the glassy modulus and leave E′, E″ inside the window almost unchanged (a term with
 /// ωτ ≪ 1 adds E_i(ωτ)² to E′). Below it (longer times) E∞ gives up their sum ΔE so that E′ inside
 /// the window is kept (a term with ωτ ≫ 1 adds E_i to it), ΔE capped at
-/// (1 − [`MIN_RELAXED_FRACTION`])·E∞. `None` when the edge's loss modulus is not finite and
+/// (1 − `MIN_RELAXED_FRACTION`)·E∞. `None` when the edge's loss modulus is not finite and
 /// positive.
 pub fn continued_spectrum(
     relax: &RelaxationSpectrum,

@@ -12,12 +12,12 @@
 //! interpolation, secant and bisection; Brent 1973, ch. 4) on u = log λ with the residual
 //! F(u) = log(N′(eᵘ)/N′₀) (nearly linear: N′ ∝ λ² at both speed limits) keeps the root bracketed.
 //!
-//! **One loop for every scheme.** The root iteration itself is [`iterate`] (crate-internal): the
+//! **One loop for every scheme.** The root iteration itself is `iterate` (crate-internal): the
 //! thesis and layer solvers ([`solve_at_load`]), the exact one-term solution
 //! (`body::half_space::exact::one_term_at_load`: its own bracket, Brent to 4 ulp of ln λ) and the
-//! auto scheme (`body::half_space::auto::load`: a guess with a model slope, [`SafeSecant`], the
+//! auto scheme (`body::half_space::auto::load`: a guess with a model slope, `SafeSecant`, the
 //! lumping correction as a shift of the target) all run through it. Each passes its solve and
-//! residual, its start, a step rule ([`Brent`], [`SafeSecant`], the thesis' secant), which solution
+//! residual, its start, a step rule (`Brent`, `SafeSecant`, the thesis' secant), which solution
 //! to keep and its stopping rule; the loop counts the solves, keeps the solution and asks the rule
 //! and the stopping rule at each turn.
 //!

@@ -63,7 +63,7 @@ pub struct TermControl {
     /// of the dense fit.
     pub log_residuals: bool,
     /// Stop once a count within the cap has met the target and a smaller one misses it by
-    /// [`STOP_FACTOR`] (false: the whole trade down to one term).
+    /// `STOP_FACTOR` (false: the whole trade down to one term).
     pub stop_early: bool,
 }
 

@@ -9,7 +9,7 @@
 const MAX_TICKS: usize = 9;
 
 /// Ticks on a linear axis over [lo, hi]: multiples of the smallest step in {1, 2, 5}·10ᵏ that
-/// gives at most [`MAX_TICKS`] ticks (empty for an empty or non-finite range).
+/// gives at most `MAX_TICKS` ticks (empty for an empty or non-finite range).
 pub fn linear_ticks(lo: f64, hi: f64) -> Vec<f64> {
     ticks_of_step(lo, hi, |_| true)
 }

@@ -80,7 +80,7 @@ impl Integrator {
         s * h
     }
 
-    /// ∫ f over [edges[0], edges[last]], with the given edges as initial panels; relative tolerance `tol`
+    /// ∫ f over [edges\[0\], edges\[last\]], with the given edges as initial panels; relative tolerance `tol`
     /// against the magnitude of the whole integral (integrands here are of one sign or nearly so).
     pub fn integrate(&mut self, mut f: impl FnMut(f64) -> f64, edges: &[f64], tol: f64) -> f64 {
         self.panels = 0;

@@ -150,7 +150,7 @@ impl Default for MasterSettings {
 }
 
 impl MasterSettings {
-    /// Check every field; called by [`build_master_curve`] before any work.
+    /// Check every field; called by `build_master_curve` before any work.
     pub fn validate(&self) -> Result<(), TtsError> {
         if let Some(t) = self.tref_c {
             if !t.is_finite() || t <= -ZERO_CELSIUS_K {

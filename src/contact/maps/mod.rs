@@ -1,7 +1,7 @@
 //! Friction maps from one reduced variable: a compound's rolling friction over many speeds, loads and
 //! temperatures from a 1-D interpolant of the dimensionless contact solution.
 //!
-//! Input: a [`CreepSpectrum`] at its reference temperature (+ the shift law's log10 a_T per
+//! Input: a `CreepSpectrum` at its reference temperature (+ the shift law's log10 a_T per
 //! temperature) and map points (radius, load, speed, a_T); output: [`ReducedCurve`] (the interpolant,
 //! with its error estimate and solve count) and, per point, friction F*/N* and contact length.
 //!
@@ -47,6 +47,7 @@
 //! estimate, still inside the tolerance thanks to the half-tolerance budget; the factor 2 covers it.
 
 mod covered;
+mod covered_problem;
 #[cfg(test)]
 mod covered_tests;
 mod curve;
@@ -54,7 +55,8 @@ mod nodes;
 mod reduced;
 mod surface;
 
-pub use covered::{covered_map, CoveredNode, CoveredProblem};
+pub use covered::covered_map;
+pub use covered_problem::{CoveredNode, CoveredProblem};
 pub use curve::ReducedCurve;
 pub use reduced::{node_tol, Node, ReducedProblem, ReducedSolution};
 pub use surface::CoveredSurface;
@@ -119,7 +121,7 @@ pub struct MapSettings {
     pub start_degree: usize,
     /// Largest degree before a panel is halved (default 32); degrees double, reusing the nodes.
     pub max_degree: usize,
-    /// Covered maps: initial panel width in y = ln η (default [`surface::ETA_PANEL_WIDTH`]).
+    /// Covered maps: initial panel width in y = ln η (default `surface::ETA_PANEL_WIDTH`).
     pub eta_panel_width: f64,
     /// Covered maps: starting degree in y; 0 (the default) chooses it per panel from the panel's
     /// width and the tolerance ([`CoveredSurface`]).

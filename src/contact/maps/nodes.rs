@@ -16,7 +16,7 @@
 //! ln η, each from the previous answer of its chain (λ changes by a few per cent between
 //! neighbouring nodes). Chains are solved in parallel (rayon).
 
-use super::covered::{CoveredNode, CoveredProblem};
+use super::covered_problem::{CoveredNode, CoveredProblem};
 use super::FrictionMapError;
 use rayon::prelude::*;
 use std::collections::HashMap;

@@ -53,7 +53,7 @@
 //! factor 25. A scene's maps span a factor of 2–4 in load (η ∝ 1/√N*), so most maps need a low
 //! degree in η. A start too low costs one doubling (its nodes kept), one too high a few nodes.
 
-use super::covered::CoveredProblem;
+use super::covered_problem::CoveredProblem;
 use super::nodes::NodeTable;
 use super::{FrictionMapError, MapSettings, MAX_PANELS};
 use crate::special::chebyshev::{clenshaw, lobatto_coefficients};

@@ -1,5 +1,5 @@
 //! The bonded viscoelastic layer solved by the thesis' collocation scheme (thesis §3.2, eq. 3.25,
-//! Fig. 3; the same discretisation as [`crate::contact::thesis`]) with the layer kernel of
+//! Fig. 3; the same discretisation as `thesis`) with the layer kernel of
 //! [`super::kernel`], at given contact length and at given load (the bracketed load loop of
 //! [`crate::contact::load`]).
 //!

@@ -1,5 +1,5 @@
 //! The steady-rolling kernel of a viscoelastic layer bonded to a rigid base: the half-space kernel of
-//! thesis eq. 3.19 ([`crate::contact::Kernel`]) plus a smooth correction computed in Fourier space.
+//! thesis eq. 3.19 (`Kernel`) plus a smooth correction computed in Fourier space.
 //!
 //! Input: creep terms (fᵢ, bᵢ), the dimensionless thickness h′ = h/(VT) and ν; output: the hat-function
 //! averages A(j) = ∫φ(s)K_L(jΔ − s)ds that are the matrix entries of the collocation scheme
@@ -25,7 +25,7 @@
 //! # The correction
 //! K_L = K_HS − D with D̂(k) = −π·R(|k|h′)·Φ(k)/|k|, R = 1 − F ≥ 0. R decays like e^{−2|k|h′}, so D is
 //! a C^∞ function (its transform decays exponentially) and the log singularity of K_L is exactly the
-//! half-space's, which [`crate::contact::Kernel`] integrates in closed form. The hat average of
+//! half-space's, which `Kernel` integrates in closed form. The hat average of
 //! e^{ikx} is Δ·sinc²(kΔ/2)·e^{ikx}, so (constants do not matter: the scheme uses differences of A)
 //!
 //! ```text

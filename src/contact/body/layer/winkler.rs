@@ -9,7 +9,7 @@
 //! passed under the load earlier, at ξ + ζ) ρv(ξ) = c_W[Q′(ξ) + Σᵢfᵢ∫₀^∞e^{−bᵢζ}Q′(ξ+ζ)dζ], i.e. the
 //! multiplier c_W·Φ(k) with Φ = 1 + Σfᵢ/(bᵢ − ik) of [`super::kernel`]. Its inverse (the relaxation
 //! form) is 1/Φ = 1 + Σⱼ rⱼ/(κⱼ − ik) with κⱼ the zeros of Φ (the roots of 1 + Σfᵢ/(bᵢ − κ) = 0,
-//! [`crate::contact::modes`]) and the residues rⱼ = −1/Σᵢfᵢ/(bᵢ − κⱼ)² < 0, so
+//! `modes`) and the residues rⱼ = −1/Σᵢfᵢ/(bᵢ − κⱼ)² < 0, so
 //!
 //! ```text
 //!   c_W·Q′(ξ) = w(ξ) + Σⱼ rⱼ ∫₀^∞ e^{−κⱼζ} w(ξ+ζ) dζ.

@@ -33,7 +33,7 @@ pub struct AutoDiagnostics {
     /// Smallest gap outside the contact (behind the rear edge, ahead of the front edge, and around
     /// the roll's lowest point when β < 0) over the depth scale λ²/8; < 0 means the roll penetrates
     /// the surface there (accurate to ~1e−10 of λ²/8 plus the solution's own error, see
-    /// [`super::rear_gap`]; NaN when the check is switched off).
+    /// `rear_gap`; NaN when the check is switched off).
     #[serde(default)]
     pub min_gap_ratio: f64,
     /// Where the smallest gap lies (ξ, < 0 behind the rear edge, > λ ahead of the front edge).

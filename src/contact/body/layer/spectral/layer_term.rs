@@ -24,7 +24,7 @@
 //! κ = −ic_i lie π/2 off the real axis in ln κ: ellipse parameter ≈ 3.4, error ≲ 3.4^{−28} ≈ 1e−15
 //! of a panel's part; R's singularities at κ ~ L/h′ are nearer, measured in the test). Below the poles the integrand is bounded by (π/2)(Σrᵢκ/cᵢ + sκ) (|R| ≤ 1,
 //! J_{k+1}(κ) ≤ (κ/2)^{k+1}/(k+1)!, Im Φ(κ/L) ≤ Σrᵢκ/cᵢ, rᵢ = f̂ᵢ/bᵢ, s = 1 + Σrᵢ), so cutting at
-//! κ_lo = √(4e−15/(π(Σrᵢ/cᵢ + s))) leaves out ≤ 1e−15 ([`LogRule::production`]; a test compares
+//! κ_lo = √(4e−15/(π(Σrᵢ/cᵢ + s))) leaves out ≤ 1e−15 (`LogRule::production`; a test compares
 //! the rule with one of half the panel width, 16 points and κ_lo a thousand times smaller).
 //! κ ∈ [1, κ_hi], κ_hi = 20L/h′
 //! (R < 2e−15 beyond, T_MAX): 16-point panels of width ≤ 4 (at most eight radians of e^{iκ(t±1)},
@@ -415,7 +415,7 @@ impl LayerTerm {
         p: usize,
         rule: LogRule,
     ) -> LayerTerm {
-        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`at_load::degree_for` with
+        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`degree::degree_for` with
         // tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated: such a solve only
         // steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact lengths of
         // metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.
@@ -577,7 +577,7 @@ impl LayerTerm {
         p: usize,
         rule: LogRule,
     ) -> LayerTerm {
-        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`at_load::degree_for` with
+        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`degree::degree_for` with
         // tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated: such a solve only
         // steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact lengths of
         // metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.

@@ -30,14 +30,14 @@
 //!   V⁻¹g = g − Σⱼ wⱼ∫_t^1e^{−μⱼ(u−t)}g(u)du,     wⱼ = 1/Σᵢ dᵢ/(cᵢ−μⱼ)²
 //! ```
 //!
-//! (one term: w = d, and V⁻¹V[1] = 1 checks by hand). So with r̃ = (L(1+t) − β + G)/π of degree p,
-//! r̃ = Σx_mT_m, every solution on the contact is H̃ = Σₘ x_m V⁻¹[T_m] + Σⱼ Aⱼe^{μⱼ(t−1)}
+//! (one term: w = d, and V⁻¹V\[1\] = 1 checks by hand). So with r̃ = (L(1+t) − β + G)/π of degree p,
+//! r̃ = Σx_mT_m, every solution on the contact is H̃ = Σₘ x_m V⁻¹\[T_m\] + Σⱼ Aⱼe^{μⱼ(t−1)}
 //! (V e^{μⱼ(t−1)} = −Σᵢdᵢe^{−cᵢ(1−t)}/(cᵢ−μⱼ)), and the equation holds iff the coefficients of
-//! every dᵢe^{−cᵢ(1−t)} cancel: N conditions Ĝᵢ[H̃] − ΣⱼAⱼ/(cᵢ−μⱼ) + (the same from V⁻¹[T_m]'s
+//! every dᵢe^{−cᵢ(1−t)} cancel: N conditions Ĝᵢ[H̃] − ΣⱼAⱼ/(cᵢ−μⱼ) + (the same from V⁻¹\[T_m\]'s
 //! exponential parts) = 0. Unknowns Aⱼ, x₀…x_p, β; equations: those N, F₀ = 0 (bounded at both
 //! ends) and x_m = (L(δ_{m0} + δ_{m1}) − βδ_{m0} + g_m[H̃])/π for m = 0…p, g_m the Chebyshev
 //! coefficients of G. For G = 0 this is exactly the `auto` reduction (p₀ + p₁t + ΣAⱼe^{μⱼ(t−1)}).
-//! V⁻¹[T_m] is computed in Chebyshev coefficients by [`volterra`]: exactly (a tridiagonal solve)
+//! V⁻¹\[T_m\] is computed in Chebyshev coefficients by [`volterra`]: exactly (a tridiagonal solve)
 //! for μⱼ < max(p²/4, 30), as a short polynomial plus a multiple of e^{μⱼ(t−1)} above. Fast modes
 //! are lumped and slow ones dropped by the `auto` scheme's [`reduction`](crate::contact::body::half_space::auto::reduction),
 //! with its measured first-order lumping correction (the lumped modes' layers are far thinner than h′).
@@ -48,7 +48,7 @@
 //! Viscoelastic: p = 16 and 32 agree to 1e−15; the hat scheme's Richardson value (n = 1024) lies
 //! within 2e−5 (its own accuracy); at h = 1e4·λ the half-space `auto` answer is met to ~1e−9 (the
 //! physical (λ/h)² approach). The error falls like 10^{−2.5·p·h′/L}, so the degree starts at
-//! p = 0.5·log₁₀(1/tol)·L/h′ ([`at_load::degree_for`]; measured against degree 80 the rate is
+//! p = 0.5·log₁₀(1/tol)·L/h′ ([`degree::degree_for`]; measured against degree 80 the rate is
 //! 1.2/(1 + 0.3·L/h′) decades per degree, which sets the next degree when the check fails) and
 //! the estimate compares p with p/2 at the λ found (the p/2 error bounds the p error: geometric
 //! convergence; at the degree cap, where p/2 alone may not meet tol, 3·r·e(p/2) with r the ratio
@@ -95,6 +95,7 @@
 
 pub mod at_lambda;
 pub mod at_load;
+pub mod degree;
 pub mod layer_term;
 pub mod secant;
 pub mod volterra;

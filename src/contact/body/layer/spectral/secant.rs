@@ -1,5 +1,5 @@
 //! The spectral layer's load loops: a safeguarded secant on g(u) = ln(N′(eᵘ)/N′₀), u = ln λ, run by
-//! the crate's one load loop ([`crate::contact::load::iterate`] with the rule [`SafeSecant`]), and
+//! the crate's one load loop (`crate::contact::load::iterate` with the rule `SafeSecant`), and
 //! the start it needs (a guess of λ and of the slope d ln N′/d ln λ without any solve).
 //!
 //! Input: N′₀, a solve at λ (a closure), where to start (a guess with its model slope, or a solution
@@ -12,7 +12,7 @@
 //! with a slope known to ~10 % the secant (superlinear, order 1.618) meets 1e−10 in three or four
 //! solves; the bracketed Brent loop ([`crate::contact::load::solve_at_load`]) spends two solves on its
 //! bracket alone and a few more on bisection-safe steps. The bracket is kept as a safeguard only
-//! ([`SafeSecant`] bisects a step that leaves it), between the glassy layer's width (a guess, divided
+//! (`SafeSecant` bisects a step that leaves it), between the glassy layer's width (a guess, divided
 //! by 4) and the relaxed half-space width (a bound: the bonded layer is stiffer than the half-space).
 //!
 //! # The start (docs/MATH.md §3 for the half-space form)

@@ -2,11 +2,11 @@
 //! the half-space part of the layer equation, module doc of [`super`]).
 //!
 //! Input: a mode's exponent μ > 0 and the Chebyshev coefficients of f on the contact t ∈ [−1, 1];
-//! output: the Chebyshev coefficients of Y[f](t) = ∫_t^1 e^{−μ(u−t)}f(u)du, either exact
+//! output: the Chebyshev coefficients of Y\[f\](t) = ∫_t^1 e^{−μ(u−t)}f(u)du, either exact
 //! ([`memory_exact`]) or up to a multiple of e^{μ(t−1)} ([`memory_polynomial`]).
 //!
 //! # Exact form (slow and moderate μ)
-//! y = Y[f] solves y′ = μy − f, y(1) = 0, i.e. y = 𝒥[f − μy] with 𝒥g = ∫_t^1 g. With the Chebyshev
+//! y = Y\[f\] solves y′ = μy − f, y(1) = 0, i.e. y = 𝒥[f − μy] with 𝒥g = ∫_t^1 g. With the Chebyshev
 //! antiderivative (∫T₀ = T₁, ∫T₁ = T₂/4, ∫Tₙ = Tₙ₊₁/(2(n+1)) − Tₙ₋₁/(2(n−1)); Mason & Handscomb,
 //! *Chebyshev Polynomials*, CRC 2003, §2.4.4) the coefficients n ≥ 1 satisfy, for n ≥ 2,
 //!
@@ -28,8 +28,8 @@
 //!
 //! # Polynomial form (fast μ)
 //! For μ large against deg(f)² the polynomial solution P = (μ − d/dt)⁻¹f = Σₖ f⁽ᵏ⁾/μᵏ⁺¹ is short and
-//! Y[f] = P − P(1)e^{μ(t−1)}. Its terms grow like e^{m²/(2μ)} for f = Tₘ (the Laplace transform of
-//! Tₘ(1+s)), so it is used only where that stays below e² ([`POLY_MIN_MU`]).
+//! Y\[f\] = P − P(1)e^{μ(t−1)}. Its terms grow like e^{m²/(2μ)} for f = Tₘ (the Laplace transform of
+//! Tₘ(1+s)), so it is used only where that stays below e² (`POLY_MIN_MU`).
 
 /// μ from which the polynomial form is used for degree m: μ ≥ max(m²/4, 30) (growth ≤ e²).
 pub fn poly_min_mu(m: usize) -> f64 {
@@ -160,7 +160,7 @@ fn antiderivative(f: &[f64], n: usize) -> f64 {
     }
 }
 
-/// Exact Y[f] = ∫_t^1 e^{−μ(u−t)}f(u)du for each f of `fs` (Chebyshev coefficients), μ > 0, with
+/// Exact Y\[f\] = ∫_t^1 e^{−μ(u−t)}f(u)du for each f of `fs` (Chebyshev coefficients), μ > 0, with
 /// `m` coefficients (module doc: m ≥ deg f + √(83μ) + 12 truncates below rounding).
 pub fn memory_exact(mu: f64, fs: &[&[f64]], m: usize) -> Vec<Vec<f64>> {
     let mut out = vec![Vec::new(); fs.len()];
@@ -170,7 +170,7 @@ pub fn memory_exact(mu: f64, fs: &[&[f64]], m: usize) -> Vec<Vec<f64>> {
 
 /// `out[c] += s·Y[fs[c]]` ([`memory_exact`]; `out[c]` grown to m.max(4) coefficients, s·Y
 /// computed as in `add_scaled` of the caller: each coefficient once, then added). All right-hand
-/// sides share the factorisation and are eliminated together ([`Tridiagonal::solve_rows`]).
+/// sides share the factorisation and are eliminated together (`Tridiagonal::solve_rows`).
 pub fn memory_exact_add(mu: f64, fs: &[&[f64]], m: usize, s: f64, out: &mut [Vec<f64>]) {
     let m = m.max(4);
     let n = m - 1; // unknowns y₁ … y_{m−1}
@@ -230,7 +230,7 @@ fn tridiagonal(mu: f64, n: usize) -> Tridiagonal {
     Tridiagonal::factor(dl, d, du)
 }
 
-/// The polynomial P = (μ − d/dt)⁻¹f (same length as f) and P(1): Y[f] = P − P(1)e^{μ(t−1)}.
+/// The polynomial P = (μ − d/dt)⁻¹f (same length as f) and P(1): Y\[f\] = P − P(1)e^{μ(t−1)}.
 pub fn memory_polynomial(mu: f64, f: &[f64]) -> (Vec<f64>, f64) {
     let m = f.len();
     let mut y = vec![0.0; m];

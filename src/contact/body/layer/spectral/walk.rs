@@ -33,7 +33,7 @@
 //! counts it again at the carry actually made (after the measured gains moved the root).
 
 use super::at_lambda::{solve_at_lambda_triple, LaplaceRule};
-use super::at_load::{
+use super::degree::{
     corrected, degree_budget, degree_error, degree_for, next_degree, unscale, w_lambda, Triple,
 };
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
