@@ -10,9 +10,10 @@
 //! 2. **Isotherms that do not overlap.** Two rubbers with a narrow glass transition and a steep WLF
 //!    law (`non_overlapping_compounds`), stepped every 5 K from T_g − 30 K: near and below T_g
 //!    neighbours lie 2–6 decades apart and E′ is flat. Acceptance: every shift the master curve calls
-//!    determined by overlap is within 0.05 decade of the truth (so the isotherms it places otherwise
-//!    are flagged), those from T_g + 20 K up within 0.03; the shifts fall strictly with temperature
-//!    (no misplaced isotherm handed to the Prony fit), and the flags reach the warnings.
+//!    determined by overlap is within 0.05 decade of the truth (the others are flagged and left
+//!    where their overlaps put them, not moved by a law: docs/MATH.md §6.6), those from T_g + 20 K
+//!    up within 0.03; the determined shifts fall strictly with temperature, and the flags reach the
+//!    warnings.
 //!
 //! The per-temperature tables print with `cargo test --test tests master_plateau -- --nocapture`.
 
@@ -119,7 +120,7 @@ fn default_shifts_hold_on_the_rubbery_plateau() {
 }
 
 #[test]
-fn isotherms_that_do_not_overlap_are_placed_by_the_law_and_flagged() {
+fn isotherms_that_do_not_overlap_are_flagged_and_left_in_place() {
     for c in non_overlapping_compounds() {
         let tg = t_g(&c);
         let protocol = DmaProtocol {
@@ -184,8 +185,10 @@ fn isotherms_that_do_not_overlap_are_placed_by_the_law_and_flagged() {
             "{}: worst from T_g + 20 K {worst:.4} > {BOUND_DECADES}",
             c.name
         );
-        // Never a misplaced isotherm: the shifts fall strictly with temperature.
-        for w in mc.isotherms.windows(2) {
+        // The determined shifts fall strictly with temperature (the flagged ones stay where their
+        // overlaps put them, docs/MATH.md §6.6, and are not asserted on).
+        let determined: Vec<_> = mc.isotherms.iter().filter(|i| i.shift_determined).collect();
+        for w in determined.windows(2) {
             assert!(
                 w[1].log10_a_t < w[0].log10_a_t,
                 "{}: shifts not monotonic at {:.1}/{:.1} °C",

@@ -11,7 +11,7 @@ use super::settings::{MasterSettings, VerticalShift};
 use super::shift::{overlap_rms, Prepared};
 
 /// The flag of an isotherm whose shift the overlaps do not determine (docs/MATH.md §6.6).
-pub const SHIFT_NOT_DETERMINED: &str = "shift not determined by overlap (placed by a law)";
+pub const SHIFT_NOT_DETERMINED: &str = "shift not determined by overlap";
 
 /// The shift and quality figures of every isotherm, and their summary.
 pub(super) fn assess(

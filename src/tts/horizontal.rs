@@ -2,16 +2,16 @@
 //! T_ref, either automatic (pairwise chain, then global refinement: [`super::shift`]) or from a
 //! given law, with the overlap mismatch of each isotherm.
 //!
-//! Automatic shifts are kept only where the data determine them (docs/MATH.md §6.6): the run of
+//! Automatic shifts are trusted only where the data determine them (docs/MATH.md §6.6): the run of
 //! neighbours around the reference isotherm whose overlaps each determine their relative shift
 //! ([`pair_determined`]). Isotherms beyond a pair that does not (neighbours decades apart in a steep
-//! glass transition, or E′ flat below T_g) are placed by a law (WLF, else Arrhenius) fitted to the
-//! shifts of that run, and marked as not determined by overlap.
+//! glass transition, or E′ flat below T_g) keep the shifts the overlaps gave them and are only
+//! marked as not determined by overlap (a law fitted to the run and extrapolated over tens of
+//! kelvin placed the glassy isotherms of the shipped EMS-CA set decades off).
 
 use super::channels::Channels;
 use super::error::TtsError;
-use super::fit_laws::{fit_arrhenius, fit_wlf};
-use super::settings::{MasterSettings, ShiftSource};
+use super::settings::{MasterSettings, ShiftCriterion, ShiftSource};
 use super::shift::{overlap_rms, pair_determined, pair_shift, refine_global, Prepared};
 use crate::material::ShiftLaw;
 
@@ -35,8 +35,6 @@ pub(super) struct Horizontal {
     pub given: Option<ShiftLaw>,
     /// Whether each shift is determined by the overlaps (always true for a given law).
     pub determined: Vec<bool>,
-    /// How the shifts not determined by overlap were placed, in words (`None`: all determined).
-    pub placed_by: Option<String>,
 }
 
 /// Shift the isotherms at temperatures `temps` (°C, increasing); `k0` is the reference isotherm.
@@ -69,33 +67,28 @@ pub(super) fn horizontal_shifts(
             }
             let g = refine_global(shifting, &chain, k0, reach, min_pts);
             let (lo, hi) = determined_run(shifting, &g.shifts, k0, min_pts);
-            let mut h = Horizontal {
+            // Overlap figures in log10 units (not weighted); with the slope-weighted criterion on
+            // E′ alone, the figure the 0.05 bound was set for (E″ has its own, loss_overlap).
+            let overlap = if ch.weighted.is_empty() {
+                overlap_rms(shifting, &g.shifts, reach, min_pts)
+            } else if settings.criterion == ShiftCriterion::SlopeWeighted {
+                let storage: Vec<Prepared> = ch
+                    .joint
+                    .iter()
+                    .map(|p| Prepared::new(p.x.clone(), vec![p.channels[0].0.clone()]))
+                    .collect();
+                overlap_rms(&storage, &g.shifts, reach, min_pts)
+            } else {
+                overlap_rms(&ch.joint, &g.shifts, reach, min_pts)
+            };
+            Ok(Horizontal {
                 shifts: g.shifts,
                 std_err: g.std_err,
-                overlap: Vec::new(),
+                overlap,
                 iterations: g.iterations,
                 given: None,
                 determined: (0..n).map(|i| lo <= i && i <= hi).collect(),
-                placed_by: None,
-            };
-            if (lo, hi) != (0, n - 1) {
-                h.placed_by = Some(place_by_law(
-                    &mut h,
-                    shifting,
-                    &chain,
-                    temps,
-                    k0,
-                    (lo, hi),
-                    settings,
-                ));
-            }
-            // Overlap figures in log10 units (not weighted).
-            h.overlap = if ch.weighted.is_empty() {
-                overlap_rms(shifting, &h.shifts, reach, min_pts)
-            } else {
-                overlap_rms(&ch.joint, &h.shifts, reach, min_pts)
-            };
-            Ok(h)
+            })
         }
         ShiftSource::Given { law } => {
             let at_ref = law.log10_a_t(t_ref);
@@ -118,7 +111,6 @@ pub(super) fn horizontal_shifts(
                 iterations: 0,
                 given: Some(law.clone()),
                 determined: vec![true; n],
-                placed_by: None,
             })
         }
     }
@@ -145,70 +137,4 @@ fn determined_run(iso: &[Prepared], s: &[f64], k0: usize, min_pts: usize) -> (us
         hi += 1;
     }
     (lo, hi)
-}
-
-/// Shift the determined run `run` again on its own (the others no longer pull on it) and place the
-/// other isotherms by the law fitted to its shifts: WLF, or Arrhenius where WLF fails or does not
-/// reach (its asymptote lies above the temperature). Their standard error is the spread of the two
-/// laws there, at least the fit's RMS. With fewer than three isotherms in the run no law can be
-/// fitted, and the shifts stay as the overlaps left them. Returns how they were placed.
-fn place_by_law(
-    h: &mut Horizontal,
-    shifting: &[Prepared],
-    chain: &[f64],
-    temps: &[f64],
-    k0: usize,
-    (lo, hi): (usize, usize),
-    settings: &MasterSettings,
-) -> String {
-    if hi - lo + 1 < 3 {
-        return "left where the overlaps put them (fewer than three isotherms are determined, too few for a law)".to_string();
-    }
-    let g = refine_global(
-        &shifting[lo..=hi],
-        &chain[lo..=hi],
-        k0 - lo,
-        settings.pair_reach,
-        settings.min_overlap_points,
-    );
-    h.shifts[lo..=hi].copy_from_slice(&g.shifts);
-    h.std_err[lo..=hi].copy_from_slice(&g.std_err);
-    let t0 = temps[k0];
-    let pts: Vec<(f64, f64)> = temps[lo..=hi]
-        .iter()
-        .copied()
-        .zip(g.shifts.iter().copied())
-        .collect();
-    let wlf = fit_wlf(&pts, t0).ok();
-    let arr = fit_arrhenius(&pts, t0).ok();
-    let table = ShiftLaw::Table {
-        t_ref_c: t0,
-        points: pts.clone(),
-    };
-    let mut used = Vec::new();
-    for i in (0..temps.len()).filter(|i| *i < lo || *i > hi) {
-        let t = temps[i];
-        let w = wlf.as_ref().map(|w| (w.law().log10_a_t(t), w.rms_log10));
-        let a = arr.as_ref().map(|a| (a.law().log10_a_t(t), a.rms_log10));
-        let (value, rms, name) = match (w, a) {
-            (Some((v, r)), _) if v.is_finite() => (v, r, "the WLF law"),
-            (_, Some((v, r))) if v.is_finite() => (v, r, "the Arrhenius law"),
-            _ => (table.log10_a_t(t), 0.0, "the table of their shifts"),
-        };
-        let spread = match (w, a) {
-            (Some((x, _)), Some((y, _))) if x.is_finite() && y.is_finite() => (x - y).abs(),
-            _ => 0.0,
-        };
-        h.shifts[i] = value;
-        h.std_err[i] = spread.max(rms);
-        if !used.contains(&name) {
-            used.push(name);
-        }
-    }
-    format!(
-        "placed by {} fitted to the shifts of the isotherms at {:.1}…{:.1} °C, which the overlaps determine",
-        used.join(" and "),
-        temps[lo],
-        temps[hi]
-    )
 }

@@ -74,9 +74,8 @@ pub struct IsothermShift {
     /// The channel that carried the shift (`E′` or `E″`), with the slope-weighted criterion.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shift_channel: Option<String>,
-    /// Whether the overlaps with its neighbours determine its shift (docs/MATH.md §6.6); if not, it
-    /// was placed by a law fitted to the determined shifts (see `MasterCurve::warnings`), and
-    /// `log10_a_t_std` is that law's uncertainty there.
+    /// Whether the overlaps with its neighbours determine its shift (docs/MATH.md §6.6); if not, the
+    /// shift is still where the overlaps put it, flagged (see `MasterCurve::warnings`).
     #[serde(default = "yes")]
     pub shift_determined: bool,
 }
@@ -116,8 +115,8 @@ pub struct MasterQuality {
     pub point_temperature_passes: usize,
     /// Every flag, prefixed with its isotherm's temperature.
     pub flags: Vec<String>,
-    /// Temperatures (°C) of the isotherms whose shift the overlaps do not determine (placed by a
-    /// law, docs/MATH.md §6.6): later stages mark results that rest on them.
+    /// Temperatures (°C) of the isotherms whose shift the overlaps do not determine (flagged, not
+    /// moved, docs/MATH.md §6.6): later stages mark results that rest on them.
     #[serde(default)]
     pub shift_not_determined_c: Vec<f64>,
 }
@@ -272,15 +271,15 @@ fn build_once(
             settings.min_overlap_points,
         );
     }
-    if let Some(how) = &h.placed_by {
-        let t: Vec<String> = (0..n)
-            .filter(|&i| !h.determined[i])
-            .map(|i| format!("{:.1}", temps[i]))
-            .collect();
+    let undetermined: Vec<String> = (0..n)
+        .filter(|&i| !h.determined[i])
+        .map(|i| format!("{:.1}", temps[i]))
+        .collect();
+    if !undetermined.is_empty() {
         warnings.push(format!(
             "shift not determined by overlap at {} °C (neighbouring isotherms too far apart, or a \
-             flat modulus): {how}",
-            t.join(", ")
+             flat modulus): left where the overlaps put them; check these isotherms",
+            undetermined.join(", ")
         ));
     }
     let laws = fit_and_choose(
