@@ -108,9 +108,14 @@ fn default_shifts_hold_on_the_rubbery_plateau() {
         if wd > BOUND_DECADES {
             bad.push(format!("{}: worst {wd:.4} > {BOUND_DECADES}", c.name));
         }
-        // These isotherms overlap by 1.3–2.6 decades: every shift is determined.
+        // These isotherms overlap by 1.3–2.6 decades: every shift from T_g up is determined. Deep in
+        // the glass E′ is flat and may leave a shift undetermined, flagged (high-tg-tread at
+        // −59.3 °C, 63 K below its T_g, measured 2026-11-28 with the law placement removed).
         assert!(
-            by_default.isotherms.iter().all(|i| i.shift_determined),
+            by_default
+                .isotherms
+                .iter()
+                .all(|i| i.shift_determined || i.temp_c < tg),
             "{}: {:?}",
             c.name,
             by_default.warnings
