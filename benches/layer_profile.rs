@@ -9,7 +9,7 @@
 use viscoroll::contact::body::half_space::auto::reduction::select;
 use viscoroll::contact::body::layer::collocation::contact_checks;
 use viscoroll::contact::body::layer::spectral::at_lambda::solve_at_lambda;
-use viscoroll::contact::body::layer::spectral::at_load::degree_for;
+use viscoroll::contact::body::layer::spectral::degree::degree_for;
 use viscoroll::contact::body::layer::spectral::layer_term::LayerTerm;
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
 use viscoroll::contact::body::layer::LayerKernel;

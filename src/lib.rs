@@ -53,6 +53,7 @@
 //! ```
 
 pub mod fsutil;
+pub mod limits;
 pub mod material;
 pub mod special;
 

@@ -14,7 +14,7 @@
 //! exact one-term solution (docs/MATH.md §3.6) of the main mode with the fast one's compliance
 //! added to the glassy one (the exact rescaling of §8.2).
 //!
-//! Mutation gaps closed (issue 19, README "Mutation testing"): `auto/mod.rs` `fr = ρF/N/λ + g·W/λ`
+//! Mutation gaps closed (issue 19, docs/DEVLOG.md "Mutation testing"): `auto/mod.rs` `fr = ρF/N/λ + g·W/λ`
 //! with `/λ` → `·λ` (budget no longer T-invariant) and with `+` → `*` (budget collapsed: the fast
 //! mode solved for).
 

@@ -1,7 +1,7 @@
 //! The multi-term `auto` contact solver against an independent reference across the speed range
 //! (issue 19, item 3): the thesis' piecewise-linear collocation (a different discretisation, kernel
 //! and load loop) with Richardson's extrapolation R = 2X(1280) − X(640), both through the CLI
-//! (`viscoroll contact`). 10 and 30 terms over 12 and 24 decades (J∞/J_g = 1e3, the README's bench
+//! (`viscoroll contact`). 10 and 30 terms over 12 and 24 decades (J∞/J_g = 1e3, docs/DEVLOG.md's bench
 //! spectra) at dimensionless speeds 1e−6…1e6 (all rates ×s), and the lumped regime (10 terms over 4
 //! decades and 30 over 8 at s where 5/10 resp. 23–24/30 modes are lumped into the glassy compliance).
 //!
@@ -130,7 +130,7 @@ fn check(cases: &[Case]) {
     assert!(bad.is_empty(), "{bad:#?}");
 }
 
-/// 10 and 30 terms (the README's bench spectra) over the speed range.
+/// 10 and 30 terms (docs/DEVLOG.md's bench spectra) over the speed range.
 #[test]
 fn auto_matches_thesis_richardson_over_the_speed_range() {
     let case = |terms, decades, speed, friction, load| Case {

@@ -46,7 +46,7 @@ fn table_1_exact_values_and_goodier_loutzenheiser() {
 fn thesis_scheme_against_exact_over_seven_decades_of_speed() {
     // One term, relaxed/glassy compliance 1 + f/b = 11, at N′ = 1/4 (the scene's scaling: λ = 1 glassy,
     // √11 relaxed); speed ∝ 1/b over b = 1e-3 … 1e3. Errors of the thesis scheme relative to the exact
-    // solution for n = 10 … 320 (n = 1280 in the README table, `cargo bench --bench contact`).
+    // solution for n = 10 … 320 (n = 1280 in the docs/DEVLOG.md table, `cargo bench --bench contact`).
     let ns = [10usize, 20, 40, 80, 160, 320];
     for e in -3..=3 {
         let b = 10f64.powi(e);

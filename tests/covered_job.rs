@@ -1,4 +1,4 @@
-//! The main job's covered scene against direct solves (issue 19, README "Bugs they catch": F/N doubled
+//! The main job's covered scene against direct solves (issue 19, docs/DEVLOG.md "Bugs they catch": F/N doubled
 //! in the covered map was caught by one unit test only). A standard linear solid (the compound's
 //! fit with its creep spectrum replaced by the exact SLS, as in `physical_units`) as a 2 mm cover
 //! bonded to a rigid carcass; `viscoroll run` writes friction.csv (each point solved by

@@ -1,4 +1,4 @@
-//! Gaps in the fit and shift stages found by mutation testing (issue 19, item 6; README "Mutation
+//! Gaps in the fit and shift stages found by mutation testing (issue 19, item 6; docs/DEVLOG.md "Mutation
 //! testing"): what the Prony fit reports about its λ search, and the per-channel scatter the joint
 //! shift criterion weighs by. Data from formulas written here (Cole–Cole, the WLF 1955 universal
 //! constants), not from the fitter's own model; the references are recomputed from the answer.

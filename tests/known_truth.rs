@@ -465,7 +465,7 @@ fn failures(summary: &[Figures]) -> Vec<String> {
 /// the independent path at [`CHECK_TEMPS_C`]).
 ///
 /// The contact bounds lie below the solver's tolerance 1e−4: its answers are measured 2–66× better
-/// than its estimate (README), here 3.6e−6…7.7e−6 in F/N and 4.9e−6…2.5e−5 in N′, part of which is
+/// than its estimate (docs/DEVLOG.md), here 3.6e−6…7.7e−6 in F/N and 4.9e−6…2.5e−5 in N′, part of which is
 /// the reference's own error (≈ 3e−6, tests/auto_vs_richardson.rs). A lumping-correction gain 20 %
 /// off or a 0.1 % error in the coupling of the auto scheme's modes moves them past the bounds
 /// (issue 19). A solver change that moves them within its tolerance needs the bound re-measured.

@@ -10,7 +10,7 @@
 //! and a load loop of its own (secant on ln λ to |ΔN′/N′| < 1e−13): none of the solver's degree
 //! choice, reduction or load loops.
 //!
-//! Mutation gap closed (issue 19, README "Mutation testing"): `degree_for` with `p / 4` → `p % 4`
+//! Mutation gap closed (issue 19, docs/DEVLOG.md "Mutation testing"): `degree_for` with `p / 4` → `p % 4`
 //! (the start degree capped at 16: the p/2 check then cannot double past the cap and covers the rule
 //! handles are answered above tol).
 

@@ -1,4 +1,4 @@
-//! Tests that close gaps found by mutation testing (issue 19, item 6; README "Mutation testing"):
+//! Tests that close gaps found by mutation testing (issue 19, item 6; docs/DEVLOG.md "Mutation testing"):
 //! each pins a behaviour that a surviving cargo-mutants mutant changed without any test failing,
 //! against a reference computed here by a different route (geometry, limits, exact solutions).
 

@@ -188,10 +188,11 @@ fn roll_reaches_hertz_at_both_speed_limits() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// The README's `roll` example (F/N = 4.74e-3, a 14.21 mm contact, 14.23 mm with `--scheme thesis`,
-/// 9.48 N/m resistance, 0.177 MPa peak pressure), run as the README writes it, to the digits it
-/// prints. Before this test the README gave 14.23 mm for the default scheme: that is the thesis
-/// scheme's contact length at n = 200 (first order, 1.6e-3 long; the default was `thesis` then).
+/// The `roll` example of docs/USER_GUIDE.md (F/N = 4.74e-3, a 14.21 mm contact, 14.23 mm with
+/// `--scheme thesis`, 9.48 N/m resistance, 0.177 MPa peak pressure), run as the guide writes it, to
+/// the digits it prints. Before this test the README gave 14.23 mm for the default scheme: that is
+/// the thesis scheme's contact length at n = 200 (first order, 1.6e-3 long; the default was
+/// `thesis` then).
 #[test]
 fn readme_roll_example_numbers() {
     let spectrum = concat!(
@@ -213,7 +214,7 @@ fn readme_roll_example_numbers() {
             "--json",
         ]
     };
-    // Rounded as the README prints them: |x − printed| ≤ half a unit of the last digit.
+    // Rounded as the guide prints them: |x − printed| ≤ half a unit of the last digit.
     let printed = |v: &serde_json::Value, key: &str, want: f64, unit: f64| {
         let x = num(v, key);
         assert!(

@@ -339,6 +339,8 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
         "\"terms_per_decade\": 1.5",
         1,
     );
+    // sealed again: a fit the tool made with other settings (an unsealed edit is refitted)
+    let text = super::support::sealed_fit_json(serde_json::from_str(&text).unwrap());
     std::fs::write(&p, &text).unwrap();
     let o = run_main(&data_dir(), &out, &[]);
     assert!(!o.status.success());

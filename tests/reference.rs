@@ -81,7 +81,7 @@ impl Sls {
         }
     }
 
-    /// The creep-spectrum JSON that `viscoroll roll` reads (README, "Creep spectrum JSON").
+    /// The creep-spectrum JSON that `viscoroll roll` reads (docs/USER_GUIDE.md, "Creep spectrum JSON").
     pub fn creep_json(&self) -> String {
         format!(
             r#"{{"kind": "{}", "poisson": {:e}, "compliance_glassy_per_pa": {:e},
@@ -318,7 +318,7 @@ pub fn job_on_sls(
         "kind": "tensile", "poisson": 0.5, "modulus_inf_pa": sls.relaxed_pa,
         "terms": [{"modulus_pa": sls.glassy_pa - sls.relaxed_pa, "tau_s": sls.tau_relax_s}]
     });
-    std::fs::write(&fit_path, serde_json::to_vec_pretty(&fit).unwrap()).unwrap();
+    std::fs::write(&fit_path, super::support::sealed_fit_json(fit)).unwrap();
     job("reused");
     let report = out.join("reports").join("sls");
     (dir, report)

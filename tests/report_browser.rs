@@ -3,10 +3,22 @@
 //! the shipped data (no second run): for a datasheet and the index it takes a 1400 × 900 screenshot
 //! (the first screen; kept in the output folder to look at), checks the page logged no console
 //! message (no JavaScript and no resource error: every plot is inline SVG), and reads the DOM
-//! Chromium built to check the first screen's content came through the parser.
+//! Chromium built to check the first screen's content came through the parser. Then, driven by the
+//! run's own tables (issue 31), on the DOM of every datasheet and of the index:
+//! - no band without its cut mark: where friction.csv holds a band that the plots clip (beyond
+//!   [`BAND_CLIP_FACTOR`] times the curve's range), the page's legend explains the cut marks
+//!   ([`CUT_LEGEND`]); where none is clipped, it does not;
+//! - no ranked undetermined point: a point friction.csv marks as not determined (a `determined`
+//!   column that is false, or a note saying "not determined") has no rank in the index's "Rank at
+//!   each temperature" table;
+//! - shear stays shear: the datasheet of a compound whose fit is shear names G′, G″, G∞ and never
+//!   E′, E″, E∞.
 
+use crate::support::table;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
+use viscoroll::report::chart::CUT_LEGEND;
+use viscoroll::report::datasheet::BAND_CLIP_FACTOR;
 
 /// The Chromium executable, if any.
 fn chromium() -> Option<PathBuf> {
@@ -76,8 +88,8 @@ fn page_messages(stderr: &str) -> Vec<&str> {
 }
 
 /// Screenshot `page` at 1400 × 900 into `png`, check its console is silent and its DOM holds
-/// every one of `needles`.
-fn check_page(exe: &Path, page: &Path, png: &Path, needles: &[&str]) {
+/// every one of `needles`; the DOM.
+fn check_page(exe: &Path, page: &Path, png: &Path, needles: &[&str]) -> String {
     let profile = png.with_extension("profile");
     let (_, err) = headless(
         exe,
@@ -104,6 +116,178 @@ fn check_page(exe: &Path, page: &Path, png: &Path, needles: &[&str]) {
         assert!(dom.contains(n), "{page:?}: the DOM lacks {n:?}");
     }
     eprintln!("screenshot of {}: {}", page.display(), png.display());
+    dom
+}
+
+/// A friction.csv row of one compound, as the checks read it.
+struct Row {
+    scene: String,
+    temp_c: String,
+    friction: f64,
+    band: Option<(f64, f64)>,
+    undetermined: bool,
+}
+
+/// The rows of `reports/COMPOUND/friction.csv`.
+fn rows(out: &Path, compound: &str) -> Vec<Row> {
+    let (h, r) = table(&out.join("reports").join(compound).join("friction.csv"));
+    let at = |name: &str| h.iter().position(|c| c == name);
+    let (scene, temp, f) = (
+        at("scene").unwrap(),
+        at("temp_c").unwrap(),
+        at("friction").unwrap(),
+    );
+    let (p05, p95, note) = (at("friction_p05"), at("friction_p95"), at("note"));
+    let determined = at("determined");
+    let num = |row: &[String], k: Option<usize>| k.and_then(|k| row[k].parse::<f64>().ok());
+    r.iter()
+        .map(|row| Row {
+            scene: row[scene].clone(),
+            temp_c: row[temp].clone(),
+            friction: row[f].parse().unwrap_or(f64::NAN),
+            band: num(row, p05).zip(num(row, p95)),
+            undetermined: determined.is_some_and(|k| row[k] == "false")
+                || note.is_some_and(|k| row[k].contains("not determined")),
+        })
+        .collect()
+}
+
+/// Whether the plots clip a band of `rows` in `scene`: the curve's range is that of its finite
+/// positive frictions, widened by [`BAND_CLIP_FACTOR`] (crate::report::datasheet::friction_curve).
+fn clipped(rows: &[Row], scene: &str) -> usize {
+    let pts: Vec<&Row> = rows.iter().filter(|r| r.scene == scene).collect();
+    let f = pts
+        .iter()
+        .map(|r| r.friction)
+        .filter(|f| f.is_finite() && *f > 0.0);
+    let (lo, hi) = f.fold((f64::INFINITY, 0.0f64), |(a, b), f| (a.min(f), b.max(f)));
+    if lo > hi {
+        return 0;
+    }
+    let (lo, hi) = (lo / BAND_CLIP_FACTOR, hi * BAND_CLIP_FACTOR);
+    pts.iter()
+        .filter_map(|r| r.band)
+        .filter(|&(p05, p95)| p05 < lo || p95 > hi)
+        .count()
+}
+
+/// The DOM of `page` (no screenshot), its console checked silent.
+fn dom_of(exe: &Path, page: &Path, profile: &Path) -> String {
+    let (dom, err) = headless(exe, page, profile, &["--dump-dom".into()]);
+    let messages = page_messages(&err);
+    assert!(messages.is_empty(), "{page:?} logged: {messages:?}");
+    dom
+}
+
+/// The cells of the "Rank at each temperature" table of `scene` in the index's DOM: (header
+/// temperatures, rows of (compound, cells)).
+fn rank_table(index: &str, scene: &str) -> (Vec<String>, Vec<(String, Vec<String>)>) {
+    let start = index
+        .find(&format!("<h2>{scene}</h2>"))
+        .unwrap_or_else(|| panic!("the index has no section for {scene}"));
+    let section = &index[start..];
+    let section = &section[..section[4..].find("<h2>").map_or(section.len(), |k| k + 4)];
+    let Some(t) = section.find("Rank at each temperature") else {
+        return (vec![], vec![]);
+    };
+    let tab = &section[t..];
+    let tab = &tab[..tab.find("</table>").unwrap_or(tab.len())];
+    let cells = |row: &str, tag: &str| -> Vec<String> {
+        row.split(&format!("<{tag}"))
+            .skip(1)
+            .map(|c| {
+                let c = &c[c.find('>').map_or(0, |k| k + 1)..];
+                c[..c.find(&format!("</{tag}>")).unwrap_or(c.len())].to_string()
+            })
+            .collect()
+    };
+    let mut trs = tab.split("<tr>").skip(1);
+    let head = trs.next().map(|r| cells(r, "th")).unwrap_or_default();
+    let body = trs
+        .map(|r| {
+            let c = cells(r, "td");
+            (
+                c.first().cloned().unwrap_or_default(),
+                c[1.min(c.len())..].to_vec(),
+            )
+        })
+        .collect();
+    (head.into_iter().skip(1).collect(), body)
+}
+
+/// The issue-31 checks of every page (see the module docs): cut marks, unranked undetermined
+/// points, shear labels. Prints what it checked.
+fn check_marks(exe: &Path, out: &Path, index_dom: &str) {
+    let reports = out.join("reports");
+    let fits = out.join("fits");
+    let mut compounds: Vec<String> = std::fs::read_dir(&fits)
+        .unwrap()
+        .flatten()
+        .filter_map(|e| {
+            let n = e.file_name().to_string_lossy().into_owned();
+            n.strip_suffix(".json").map(str::to_string)
+        })
+        .filter(|c| reports.join(c).join("friction.csv").is_file())
+        .collect();
+    compounds.sort();
+    let (mut cut_pages, mut undetermined, mut shear) = (0, 0, 0);
+    let mut index_cut = false;
+    for c in &compounds {
+        let rows = rows(out, c);
+        let mut scenes: Vec<&str> = rows.iter().map(|r| r.scene.as_str()).collect();
+        scenes.dedup();
+        let cut: usize = scenes.iter().map(|s| clipped(&rows, s)).sum();
+        index_cut |= cut > 0;
+        let page = reports.join(c).join("datasheet.html");
+        let dom = dom_of(exe, &page, &out.join(format!("dom-{c}.profile")));
+        assert_eq!(
+            dom.contains(CUT_LEGEND),
+            cut > 0,
+            "{c}: {cut} band end(s) clipped in the plots, the legend's cut line {}",
+            if cut > 0 { "is missing" } else { "is there" }
+        );
+        cut_pages += usize::from(cut > 0);
+        // undetermined points are never ranked at their temperature
+        for r in rows.iter().filter(|r| r.undetermined) {
+            undetermined += 1;
+            let (temps, body) = rank_table(index_dom, &r.scene);
+            let Some(k) = temps.iter().position(|t| *t == format!("{} °C", r.temp_c)) else {
+                continue;
+            };
+            if let Some((_, cells)) = body.iter().find(|(n, _)| n == c) {
+                let cell = cells.get(k).map_or("", String::as_str);
+                assert!(
+                    cell.trim().parse::<usize>().is_err(),
+                    "{c} at {} °C in {} is not determined but ranked {cell}",
+                    r.temp_c,
+                    r.scene
+                );
+            }
+        }
+        // a shear compound's datasheet names shear moduli only
+        let fit: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(fits.join(format!("{c}.json"))).unwrap())
+                .unwrap();
+        if fit["relaxation"]["kind"] == "shear" {
+            shear += 1;
+            for g in ["G′", "G″", "G∞"] {
+                assert!(dom.contains(g), "{c} (shear): the datasheet lacks {g}");
+            }
+            for e in ["E′", "E″", "E∞"] {
+                assert!(!dom.contains(e), "{c} (shear): the datasheet says {e}");
+            }
+        }
+    }
+    assert_eq!(
+        index_dom.contains(CUT_LEGEND),
+        index_cut,
+        "the index's cut marks against the bands its overlays clip"
+    );
+    eprintln!(
+        "browser marks: {} datasheets ({cut_pages} with clipped bands, all marked), {undetermined} \
+         undetermined point(s) none ranked, {shear} shear datasheet(s) labelled G",
+        compounds.len()
+    );
 }
 
 /// The browser checks of the main job's pages in `out` (see the module docs); `compound` names a
@@ -119,14 +303,14 @@ pub fn check_pages(out: &Path, compound: &str) {
         &reports.join(compound).join("datasheet.html"),
         &out.join("datasheet-screenshot.png"),
         &[
-            "Quality: trusted",
+            "Verdict: ",
             "at 1 Hz, E″ peak",
             "tan δ at 60 °C, 10 Hz",
             "Rolling friction F/N",
             "<svg",
         ],
     );
-    check_page(
+    let index = check_page(
         &exe,
         &reports.join("index.html"),
         &out.join("index-screenshot.png"),
@@ -137,6 +321,7 @@ pub fn check_pages(out: &Path, compound: &str) {
             "<svg",
         ],
     );
+    check_marks(&exe, out, &index);
 }
 
 #[test]

@@ -39,7 +39,7 @@ fn abaqus_card_text() {
     let expected = "\
 ** viscoroll: instantaneous_modulus_pa=8.0000000000000000e+06 kind=tensile poisson=0.5
 ** Units: Pa, s, degC. Prony ratios g_i = E_i/E0 relative to the instantaneous modulus.
-** Combine with *ELASTIC, MODULI=INSTANTANEOUS: E0 = 8.0000000000000000e+06 Pa (tensile), nu = 0.5
+** Combine with *ELASTIC, MODULI=INSTANTANEOUS (Young's modulus): E0 = 8.0000000000000000e+06 Pa (Young's modulus), nu = 0.5
 *VISCOELASTIC, TIME=PRONY
 3.7500000000000000e-01, 0.0000000000000000e+00, 5.0000000000000000e-01
 5.0000000000000000e-01, 0.0000000000000000e+00, 1.0000000000000000e-03
@@ -65,13 +65,50 @@ fn ansys_card_text() {
     let expected = "\
 ! viscoroll: instantaneous_modulus_pa=8.0000000000000000e+06 kind=tensile poisson=0.5
 ! Units: Pa, s, degC. Relative moduli a_i = G_i/G0 (instantaneous), relaxation times tau_i.
-! Combine with the instantaneous elastic constants: E0 = 8.0000000000000000e+06 Pa (tensile), nu = 0.5
+! Combine with the instantaneous elastic constants (MP,EX takes Young's modulus): E0 = 8.0000000000000000e+06 Pa (Young's modulus), nu = 0.5
 TB,PRONY,1,1,2,SHEAR
 TBDATA,1,3.7500000000000000e-01,5.0000000000000000e-01,5.0000000000000000e-01,1.0000000000000000e-03
 TB,SHIFT,1,1,3,WLF
 TBDATA,1,2.5000000000000000e+01,1.3500000000000000e+01,1.4125000000000000e+02
 ";
     assert_eq!(text, expected);
+}
+
+/// A shear spectrum's cards name G0 as the shear modulus and give the Young's modulus the elastic
+/// slot takes, E0 = 2(1 + ν)G0 (isotropic elasticity), not G0 in its place.
+#[test]
+fn shear_cards_state_the_modulus_and_give_youngs_modulus() {
+    let spectrum = RelaxationSpectrum {
+        kind: ModulusKind::Shear,
+        poisson: 0.45,
+        ..two_terms()
+    };
+    let young = |line: &str| -> f64 {
+        let after = line.split("E0 = 2(1+nu)G0 = ").nth(1).expect(line);
+        after.split(' ').next().unwrap().parse().unwrap()
+    };
+    for text in [
+        cards::abaqus(&spectrum, None, &CardOptions::default()).unwrap(),
+        cards::ansys(&spectrum, None, &CardOptions::default()).unwrap(),
+    ] {
+        let line = text
+            .lines()
+            .find(|l| l.contains("Combine with"))
+            .expect("the elastic constants' comment");
+        assert!(
+            line.contains("G0 = 8.0000000000000000e+06 Pa (shear modulus)"),
+            "{line}"
+        );
+        assert!(line.contains("nu = 0.45"), "{line}");
+        // G0 = 8 MPa, ν = 0.45: E0 = 2 · 1.45 · 8 MPa = 23.2 MPa
+        assert!((young(line) - 23.2e6).abs() <= 1e-15 * 23.2e6, "{line}");
+        assert!(
+            !line.contains("(tensile)") && !line.contains("(shear)"),
+            "{line}"
+        );
+    }
+    let abaqus = cards::abaqus(&spectrum, None, &CardOptions::default()).unwrap();
+    assert!(abaqus.contains("g_i = G_i/G0"));
 }
 
 #[test]

@@ -108,3 +108,11 @@ pub fn fit_warning_lines_and_notes(path: &Path) -> (Vec<String>, Vec<String>) {
     }
     (lines, column(path, "note"))
 }
+
+/// A fit file's JSON, edited on purpose by a test, sealed again with its content hash (as
+/// `CompoundFit::write` does), so the edit is read as a fit the tool made.
+pub fn sealed_fit_json(v: serde_json::Value) -> String {
+    let mut f: viscoroll::results::CompoundFit = serde_json::from_value(v).unwrap();
+    f.content_sha256 = Some(f.content_hash().unwrap());
+    serde_json::to_string_pretty(&f).unwrap()
+}

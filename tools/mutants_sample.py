@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Sampled mutation testing (issue 19, item 6; README "Mutation testing"). Not part of CI.
+"""Sampled mutation testing (issue 19, item 6; docs/DEVLOG.md "Mutation testing"). Not part of CI.
 
 cargo-mutants generates the mutants (`cargo mutants --list --json`); this script draws a seeded
 random sample from the files given, then applies each mutant in place, builds the library and the

@@ -48,6 +48,25 @@ pub fn prob_lower(a: &FrictionBand, b: &FrictionBand) -> f64 {
     }
 }
 
+/// Whether a probability P(A < B) makes the pair tied: strictly between 1 − [`SIGNIFICANCE`] and
+/// [`SIGNIFICANCE`].
+pub fn is_tie(p: f64) -> bool {
+    p < SIGNIFICANCE && p > 1.0 - SIGNIFICANCE
+}
+
+/// A probability as printed: two decimals, or as many more (up to six) as it takes for the printed
+/// number to fall on the same side of the tie rule as the probability itself (issue 31: no "tied
+/// (P = 0.95)" for 0.946).
+pub fn prob_text(p: f64) -> String {
+    for d in 2..=6 {
+        let t = format!("{p:.d$}");
+        if t.parse::<f64>().is_ok_and(|q| is_tie(q) == is_tie(p)) {
+            return t;
+        }
+    }
+    format!("{p:.6}")
+}
+
 /// Every pair (in the order given: the ranking's) of `ranked` compounds with a band.
 pub fn comparisons(scene: &str, ranked: &[(String, FrictionBand)]) -> Vec<PairComparison> {
     let mut v = Vec::new();
@@ -59,7 +78,7 @@ pub fn comparisons(scene: &str, ranked: &[(String, FrictionBand)]) -> Vec<PairCo
                 a: ranked[i].0.clone(),
                 b: ranked[j].0.clone(),
                 prob_a_lower: p,
-                tied: p < SIGNIFICANCE && p > 1.0 - SIGNIFICANCE,
+                tied: is_tie(p),
             });
         }
     }
@@ -78,6 +97,22 @@ mod tests {
         assert!((normal_cdf(1.644_853_6) - 0.95).abs() < 1e-7);
         assert!((normal_cdf(1.959_964) - 0.975).abs() < 1e-7);
         assert!((normal_cdf(-3.0) - 0.001_349_898_0).abs() < 1e-7);
+    }
+
+    #[test]
+    fn printed_probabilities_fall_on_the_side_of_the_tie_rule_they_are_on() {
+        assert_eq!(prob_text(0.946), "0.946");
+        assert_eq!(prob_text(0.9499), "0.9499");
+        assert_eq!(prob_text(0.951), "0.95");
+        assert_eq!(prob_text(0.0504), "0.0504");
+        assert_eq!(prob_text(0.5), "0.50");
+        assert_eq!(prob_text(0.99996), "1.00");
+        // every printed value reads back with its probability's verdict
+        for k in 0..=10_000 {
+            let p = k as f64 / 10_000.0;
+            let q: f64 = prob_text(p).parse().unwrap();
+            assert_eq!(is_tie(q), is_tie(p), "{p} printed {}", prob_text(p));
+        }
     }
 
     #[test]

@@ -1,15 +1,21 @@
 //! The bootstrap ensemble of one compound's fit (docs/MATH.md §15, steps 1–3): the scatter of the
 //! measurement estimated from the master curve, then `replicates` resampled master curves, each
-//! refitted (Prony QP at the fit's own λ, exact creep conversion).
+//! refitted (Prony QP, exact creep conversion). Each replicate also draws the fit's own choices
+//! (super::model, eqs. 15.10–15.12): the shift criterion, the shift table's interpolation, the
+//! regularisation weight λ and the relaxation-time grid's positions.
 //!
-//! Input: the [`MasterCurve`] the fit was made from, the [`Measurement`] (point temperatures) and
-//! the [`CompoundFit`]; output: a [`BandEnsemble`] (saved in the fit file).
+//! Input: the [`MasterCurve`] the fit was made from, the [`Measurement`] (point temperatures, the
+//! other criteria's shiftings) and the [`CompoundFit`]; output: a [`BandEnsemble`] (saved in the
+//! fit file).
 
 use super::error::BandError;
+use super::model::{model_choices, ModelChoices, LAMBDA_SPREAD_DECADES};
 use super::rng::Rng;
 use super::BandSettings;
 use crate::prony::{fit_prony, MasterPoint, PronySettings, WeightRule};
-use crate::results::{BandEnsemble, BandReplicate, CompoundFit, ScatterEstimate};
+use crate::results::{
+    offset_at, BandEnsemble, BandReplicate, CompoundFit, ModelErrorSummary, ScatterEstimate,
+};
 use crate::tts::MasterCurve;
 use crate::Measurement;
 use rayon::prelude::*;
@@ -171,25 +177,53 @@ fn increments_of(sigma: &[f64], reference: usize) -> Vec<f64> {
     inc
 }
 
-/// One replicate (eqs. 15.2–15.4): shifts by a random walk out from the reference isotherm,
-/// moduli the fitted ones times a wild-bootstrap residual, refitted.
+/// One replicate (eqs. 15.2–15.4, 15.10–15.12): shifts by a random walk out from the reference
+/// isotherm plus one other criterion's difference, the law's interpolation error at the middle of
+/// each interval, moduli the fitted ones times a wild-bootstrap residual, refitted at a λ and on a
+/// relaxation-time grid of its own.
 fn replicate(
     master: &MasterCurve,
     fit: &CompoundFit,
     sc: &Scatter,
+    choices: &ModelChoices,
     prony: &PronySettings,
+    jitter: bool,
     rng: &mut Rng,
 ) -> Result<BandReplicate, String> {
     let n = sc.chain.len();
     // Shift error of each isotherm (indexed like MasterCurve::isotherms) and law offset at its T.
     let mut delta = vec![0.0; master.isotherms.len()];
-    let mut offsets = Vec::with_capacity(n);
+    let mut offsets = Vec::with_capacity(2 * n);
     let increments: Vec<f64> = sc.chain.iter().map(|c| c.2).collect();
     let walk = shift_walk(&increments, sc.reference, rng);
+    // Eq. 15.10: one other criterion, weighted by a standard normal.
+    let criterion = match choices.criteria.len() {
+        0 => None,
+        k => {
+            let c = ((rng.uniform() * k as f64) as usize).min(k - 1);
+            Some((&choices.criteria[c].1, rng.normal()))
+        }
+    };
     for (k, &(i, t, _, t_std, slope)) in sc.chain.iter().enumerate() {
-        delta[i] = walk[k];
-        offsets.push((t, walk[k] + slope * t_std * rng.normal()));
+        let model = criterion.map_or(0.0, |(d, w)| w * d.get(i).copied().unwrap_or(0.0));
+        delta[i] = walk[k] + model;
+        offsets.push((t, delta[i] + slope * t_std * rng.normal()));
     }
+    // Eq. 15.11: the interpolation error at each interval's middle, one draw per replicate.
+    offsets.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // (No draw without intervals, so the ensemble without model error is the one before issue 32.)
+    let v = if choices.interpolation.is_empty() {
+        0.0
+    } else {
+        rng.normal()
+    };
+    let mids: Vec<(f64, f64)> = choices
+        .interpolation
+        .iter()
+        .map(|&(t, amp)| (t, offset_at(&offsets, t) + v * amp))
+        .collect();
+    offsets.extend(mids);
+    offsets.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut points: Vec<MasterPoint> = master
         .points
         .iter()
@@ -202,8 +236,42 @@ fn replicate(
         })
         .collect();
     points.sort_by(|a, b| a.reduced_freq_hz.total_cmp(&b.reduced_freq_hz));
-    let refit = fit_prony(&points, fit.relaxation.kind, fit.relaxation.poisson, prony)
-        .map_err(|e| e.to_string())?;
+    // Eq. 15.12: λ within the search's step either way, the τ grid moved within its own step.
+    let step = 1.0 / prony.terms_per_decade;
+    let (u, u_lambda) = if jitter {
+        (rng.uniform(), 2.0 * rng.uniform() - 1.0)
+    } else {
+        (0.0, 0.0)
+    };
+    let moved = prony.margin_decades + u * step;
+    let drawn = PronySettings {
+        weight_rule: WeightRule::Fixed {
+            lambda: fit.prony_info.lambda * 10f64.powf(LAMBDA_SPREAD_DECADES * u_lambda),
+        },
+        margin_decades: if moved <= 3.0 {
+            moved
+        } else {
+            (moved - step).max(0.0)
+        },
+        ..prony.clone()
+    };
+    let (kind, poisson) = (fit.relaxation.kind, fit.relaxation.poisson);
+    // Where the QP at the drawn λ and grid does not converge (the solver's limit at small λ, met
+    // on held-out compounds whose fit chose the grid's smallest λ), the replicate is refitted on
+    // the fit's own grid at ten times the larger of the drawn and the fit's λ (better conditioned).
+    let refit = fit_prony(&points, kind, poisson, &drawn).or_else(|_| {
+        let lambda = 10.0
+            * fit.prony_info.lambda.max(match drawn.weight_rule {
+                WeightRule::Fixed { lambda } => lambda,
+                _ => 0.0,
+            });
+        let again = PronySettings {
+            weight_rule: WeightRule::Fixed { lambda },
+            ..prony.clone()
+        };
+        fit_prony(&points, kind, poisson, &again)
+    });
+    let refit = refit.map_err(|e| e.to_string())?;
     let (creep, _) =
         crate::creep::relaxation_to_creep(&refit.spectrum).map_err(|e| e.to_string())?;
     Ok(BandReplicate {
@@ -247,7 +315,12 @@ pub fn build_ensemble(
 ) -> Result<BandEnsemble, BandError> {
     settings.validate()?;
     let sc = scatter(master, measurement, fit)?;
-    // The fit's own λ (no λ search): one QP per replicate instead of `lambda_count`.
+    let choices = if settings.model_error {
+        model_choices(master, measurement)
+    } else {
+        ModelChoices::default()
+    };
+    // Around the fit's own λ (no λ search): one QP per replicate instead of `lambda_count`.
     let prony = PronySettings {
         weight_rule: WeightRule::Fixed {
             lambda: fit.prony_info.lambda,
@@ -258,7 +331,15 @@ pub fn build_ensemble(
         .into_par_iter()
         .map(|b| {
             let mut rng = Rng::new(settings.seed, b as u64);
-            replicate(master, fit, &sc, &prony, &mut rng)
+            replicate(
+                master,
+                fit,
+                &sc,
+                &choices,
+                &prony,
+                settings.model_error,
+                &mut rng,
+            )
         })
         .collect();
     let failed: Vec<&String> = results.iter().filter_map(|r| r.as_ref().err()).collect();
@@ -266,15 +347,74 @@ pub fn build_ensemble(
     let notes = refit_verdict(&failed, settings.replicates)?;
     Ok(BandEnsemble {
         method: format!(
-            "residual bootstrap of the master curve (wild, Gaussian weights) with isotherm shifts drawn as a random walk from the shift stage's standard errors and isotherm temperatures from their drift; Prony refit at λ = {:e}, exact creep conversion",
+            "residual bootstrap of the master curve (wild, Gaussian weights) with isotherm shifts drawn as a random walk from the shift stage's standard errors and isotherm temperatures from their drift; the fit's choices drawn too: another shift criterion's shifts, the shift table's interpolation error, λ within a decade of {:e} and the relaxation-time grid moved within its step; Prony refit, exact creep conversion",
             fit.prony_info.lambda
         ),
+        model_error: settings.model_error.then(|| ModelErrorSummary {
+            criteria: choices.criteria.iter().map(|c| c.0.to_string()).collect(),
+            criterion_max_log10: choices.criterion_max_log10(),
+            interpolation_max_log10: choices.interpolation_max_log10(),
+            lambda_spread_decades: LAMBDA_SPREAD_DECADES,
+        }),
         replicates_requested: settings.replicates,
         seed: settings.seed,
         scatter: sc.summary,
         replicates,
         notes,
     })
+}
+
+/// Note of an ensemble made from a fit file alone ([`ensemble_from_fit`]).
+pub const FROM_FIT_FILE_NOTE: &str = "made from the fit file alone (it carried no ensemble): the \
+     scatter of the master curve about the fit and the fit's regularisation and term positions are \
+     in the band; the shifts' own scatter and the other shift criteria are not (they need the \
+     isotherms: `viscoroll fit` on the measurement adds them)";
+
+/// An ensemble for a fit file that carries none (`fit --no-bands`, a fit file from before fits
+/// carried one, a master curve read already shifted): the fit's own master-curve points as one
+/// isotherm at T_ref (crate::tts::master_curve_from_reduced) bootstrapped as in [`build_ensemble`].
+/// The shifts cannot be resampled without the isotherms, so the band lacks their scatter; its notes
+/// say so ([`FROM_FIT_FILE_NOTE`]).
+pub fn ensemble_from_fit(
+    fit: &CompoundFit,
+    settings: &BandSettings,
+) -> Result<BandEnsemble, BandError> {
+    let t_ref = fit.shift_law.t_ref_c();
+    let points = fit
+        .master_curve
+        .iter()
+        .enumerate()
+        .map(|(k, p)| crate::dma::DataPoint {
+            freq_hz: p.reduced_freq_hz,
+            storage_pa: p.storage_pa,
+            loss_pa: p.loss_pa,
+            temp_c: None,
+            line: k + 1,
+            flags: Vec::new(),
+        })
+        .collect();
+    let measurement = Measurement {
+        sources: Vec::new(),
+        kind: fit.relaxation.kind,
+        poisson: fit.relaxation.poisson,
+        isotherms: vec![crate::dma::Isotherm {
+            temp_nominal_c: t_ref,
+            temp_mean_c: t_ref,
+            source: 0,
+            points,
+            nominal_source: "fit file".into(),
+            sheet: None,
+            label: None,
+        }],
+        warnings: Vec::new(),
+        issues: Vec::new(),
+        summary: Default::default(),
+    };
+    let master = crate::tts::master_curve_from_reduced(&measurement, &fit.shift_law)
+        .map_err(|e| BandError::Scatter(format!("the fit file's master curve: {e}")))?;
+    let mut e = build_ensemble(&master, &measurement, fit, settings)?;
+    e.notes.push(FROM_FIT_FILE_NOTE.to_string());
+    Ok(e)
 }
 
 #[cfg(test)]

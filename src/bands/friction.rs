@@ -368,9 +368,9 @@ pub(super) fn tail_term(
 pub fn tail_note(s_tail: f64) -> String {
     format!(
         "{} in temperature: shift-law tail assumptions that agree at the end isotherm \
-         differ here by up to {:.0} % in F/N (taken as one standard deviation, docs/MATH.md eq. 15.8)",
+         differ here by up to {} in F/N (taken as one standard deviation, docs/MATH.md eq. 15.8)",
         super::window::WIDENED_NOTE_START,
-        100.0 * s_tail.exp_m1()
+        super::window::change_text(s_tail)
     )
 }
 
@@ -493,6 +493,12 @@ mod tests {
         // two distinct temperatures cannot define one
         assert!(parabola(&[(0.0, 1.0), (0.0, 1.0), (5.0, 2.0)], 0.0).is_none());
         assert!(tail_note(0.3).starts_with("band widened for extrapolation"));
+        // issue 31: a huge spread is a factor, never "334869476303865 %"
+        let n = tail_note(3.3e12f64.ln());
+        assert!(
+            n.contains("by up to a factor 3.3e12 in F/N") && !n.contains('%'),
+            "{n}"
+        );
     }
 
     #[test]

@@ -229,8 +229,9 @@ pub fn window_note(s_window: f64, ex: &WindowExcess) -> String {
     )
 }
 
-/// A change of ln F by `s` in words: "27 %" up to doubling, then "a factor 3.4" or "a factor 6.5e5".
-fn change_text(s: f64) -> String {
+/// A change of ln F by `s` in words: "27 %" up to doubling, then "a factor 3.4" or "a factor 6.5e5"
+/// (never a percentage beyond 1000 %: issue 31).
+pub fn change_text(s: f64) -> String {
     let f = s.exp();
     if f < 2.0 {
         format!("{:.0} %", 100.0 * s.exp_m1())

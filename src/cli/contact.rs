@@ -137,28 +137,30 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         }
         print_json(obj, args.rho, friction);
     } else {
-        eprintln!(
+        errln!(
             "scheme {}  n = {}  load iterations = {}",
-            sol.scheme, sol.n, sol.iterations
+            sol.scheme,
+            sol.n,
+            sol.iterations
         );
-        eprintln!("creep terms (f, b): {}", args.creep);
-        eprintln!("lambda           = {:.9}", sol.lambda);
-        eprintln!("beta             = {:.9}", sol.beta);
-        eprintln!("beta/lambda      = {:.9}", sol.beta / sol.lambda);
-        eprintln!("load N'          = {:.9}", sol.load);
-        eprintln!("rho*F/N          = {:.9}", sol.friction_rho);
+        errln!("creep terms (f, b): {}", args.creep);
+        errln!("lambda           = {:.9}", sol.lambda);
+        errln!("beta             = {:.9}", sol.beta);
+        errln!("beta/lambda      = {:.9}", sol.beta / sol.lambda);
+        errln!("load N'          = {:.9}", sol.load);
+        errln!("rho*F/N          = {:.9}", sol.friction_rho);
         if let Some(fr) = friction {
-            eprintln!("F/N              = {fr:.9e}");
+            errln!("F/N              = {fr:.9e}");
         }
         if terms == [CreepTerm { f: 10.0, b: 1.0 }] && args.lambda == Some(1.0) {
-            eprintln!(
+            errln!(
                 "thesis Table 1 (n = 40): beta/lambda = 0.1959, rho*F/N = 0.43093; \
                  Goodier & Loutzenheiser: 0.1952, 0.4308"
             );
         }
-        eprintln!("{:>14} {:>14}", "xi", "Q'");
+        errln!("{:>14} {:>14}", "xi", "Q'");
         for (x, q) in sol.xi.iter().zip(&sol.pressure) {
-            eprintln!("{x:>14.6e} {q:>14.6e}");
+            errln!("{x:>14.6e} {q:>14.6e}");
         }
     }
     Ok(())
@@ -183,7 +185,7 @@ fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> any
         obj["beta_over_lambda"] = serde_json::json!(d.beta / d.lambda);
         print_json(obj, args.rho, friction);
     } else {
-        eprintln!(
+        errln!(
             "scheme auto  tol = {:e}  modes used {}/{} (lumped {}, dropped {})  load solves = {}",
             args.tol,
             diag.modes_used,
@@ -192,21 +194,21 @@ fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> any
             diag.modes_dropped,
             d.iterations
         );
-        eprintln!("lambda           = {:.12}", d.lambda);
-        eprintln!("beta             = {:.12}", d.beta);
-        eprintln!("beta/lambda      = {:.12}", d.beta / d.lambda);
-        eprintln!("load N'          = {:.12}", d.load);
-        eprintln!("rho*F/N          = {:.12}", d.friction_rho);
+        errln!("lambda           = {:.12}", d.lambda);
+        errln!("beta             = {:.12}", d.beta);
+        errln!("beta/lambda      = {:.12}", d.beta / d.lambda);
+        errln!("load N'          = {:.12}", d.load);
+        errln!("rho*F/N          = {:.12}", d.friction_rho);
         if let Some(fr) = friction {
-            eprintln!("F/N              = {fr:.12e}");
+            errln!("F/N              = {fr:.12e}");
         }
-        eprintln!(
+        errln!(
             "error estimate   = {:.3e}",
             d.error_estimate.unwrap_or(f64::NAN)
         );
-        eprintln!("min Q'/max Q'    = {:.3e}", diag.min_pressure_ratio);
+        errln!("min Q'/max Q'    = {:.3e}", diag.min_pressure_ratio);
         for w in &d.warnings {
-            eprintln!("warning: {w}");
+            errln!("warning: {w}");
         }
     }
     Ok(())
@@ -284,19 +286,19 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
         }
         print_json(obj, args.rho, friction);
     } else {
-        eprintln!(
+        errln!(
             "cover h' = {h}  nu = {nu}  creep terms (f, b): {}",
             args.creep
         );
-        eprintln!("body             = {} ({})", a.model.name(), c.reason);
-        eprintln!("lambda           = {:.9}", d.lambda);
-        eprintln!("beta             = {:.9}", d.beta);
-        eprintln!("load N'          = {:.9}", d.load);
-        eprintln!("rho*F/N          = {:.9}", d.friction_rho);
+        errln!("body             = {} ({})", a.model.name(), c.reason);
+        errln!("lambda           = {:.9}", d.lambda);
+        errln!("beta             = {:.9}", d.beta);
+        errln!("load N'          = {:.9}", d.load);
+        errln!("rho*F/N          = {:.9}", d.friction_rho);
         if let Some(fr) = friction {
-            eprintln!("F/N              = {fr:.9e}");
+            errln!("F/N              = {fr:.9e}");
         }
-        eprintln!(
+        errln!(
             "error estimate   = {:.3e}{}",
             a.error_estimate,
             c.model_error_estimate
@@ -304,7 +306,7 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
                 .unwrap_or_default()
         );
         for w in &warnings {
-            eprintln!("warning: {w}");
+            errln!("warning: {w}");
         }
     }
     Ok(())
@@ -428,5 +430,5 @@ fn print_json(mut obj: serde_json::Value, rho: Option<f64>, friction: Option<f64
         obj["rho"] = serde_json::json!(rho);
         obj["friction"] = serde_json::json!(fr);
     }
-    println!("{obj}");
+    outln!("{obj}");
 }

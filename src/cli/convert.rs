@@ -130,12 +130,12 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             },
             "info": info,
         });
-        println!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", serde_json::to_string(&obj)?);
     } else {
         if args.output.is_none() {
-            println!("{}", serde_json::to_string_pretty(&creep)?);
+            outln!("{}", serde_json::to_string_pretty(&creep)?);
         }
-        eprintln!(
+        errln!(
             "viscoroll convert: {method}{}: {} retardation terms; max |E*J* − 1| = {product:.2e} over ω = {wmin:.1e}…{wmax:.1e} rad/s; J(0)·E₀ = {glassy:.15}; J∞·E∞ = {relaxed:.15}{}",
             variant.map(|v| format!(" ({v})")).unwrap_or_default(),
             creep.terms.len(),

@@ -15,7 +15,12 @@
 //! otherwise the card gets no shift and says why.
 //!
 //! `--to pyvisco` writes a fit file's master curve and shift factors in pyvisco's CSV layouts
-//! ([`crate::dma::pyvisco`]): `-o NAME.csv` and `NAME__shift_factors.csv` beside it.
+//! ([`crate::dma::pyvisco`]): `-o NAME.csv` and `NAME__shift_factors.csv` beside it, the shift
+//! factors at pyvisco's set temperatures (whole degrees, the value pyvisco's raw-data path looks
+//! them up by; [`pyvisco_set_shifts`]), and the Prony terms in pyvisco's layout
+//! (`NAME__prony_terms.csv`, crate::prony::pyvisco_csv). From a bare spectrum (JSON, or pyvisco's
+//! Prony-term CSV, which every command that reads a relaxation spectrum accepts) it writes the
+//! Prony-term CSV alone to `-o`.
 //!
 //! `--json` prints one object `{ "format", "input", "output", "card" }`. Without `--json` and without
 //! `-o` the card text goes to stdout.
@@ -38,8 +43,10 @@ pub enum Target {
     Ansys,
     /// LS-DYNA `*MAT_GENERAL_VISCOELASTIC`.
     Lsdyna,
-    /// pyvisco's master-curve CSV (`-o NAME.csv`) and shift-factor CSV (`NAME__shift_factors.csv`)
-    /// of a fit file, the layout pyvisco's `load.user_master` and `load.user_shift` read.
+    /// pyvisco's master-curve CSV (`-o NAME.csv`), shift-factor CSV (`NAME__shift_factors.csv`) and
+    /// Prony-term CSV (`NAME__prony_terms.csv`) of a fit file, the layouts pyvisco's
+    /// `load.user_master` and `load.user_shift` read and its Prony fit writes; of a bare spectrum,
+    /// the Prony-term CSV alone.
     Pyvisco,
 }
 
@@ -120,17 +127,76 @@ pub fn pyvisco_shift_path(master: &std::path::Path) -> PathBuf {
     master.with_file_name(format!("{stem}__shift_factors.csv"))
 }
 
-/// `export --to pyvisco`: the fit file's master curve and shifts in pyvisco's two CSV layouts.
+/// The Prony-term file written beside pyvisco's master-curve file `NAME.csv`:
+/// `NAME__prony_terms.csv`.
+pub fn pyvisco_terms_path(master: &std::path::Path) -> PathBuf {
+    let stem = master
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "master".into());
+    master.with_file_name(format!("{stem}__prony_terms.csv"))
+}
+
+/// The shifts at pyvisco's set temperatures: each isotherm's temperature rounded to a whole degree,
+/// ties to even, as pyvisco's raw-data loaders (`load.Eplexor_raw`, `load.user_raw`) round each
+/// set's mean temperature and then look its shift factor up by that value (a mean of 99.985 °C is
+/// the 100 °C set; a set measured at −42.45 °C is pyvisco's −42 °C set). When two isotherms round to
+/// one degree, the shifts as they are, with a note why.
+pub fn pyvisco_set_shifts(shifts: &[(f64, f64)]) -> (Vec<(f64, f64)>, Option<String>) {
+    let mut out: Vec<(f64, f64)> = Vec::new();
+    for &(t, a) in shifts {
+        let r = t.round_ties_even();
+        if out.iter().any(|&(m, _)| m == r) {
+            return (
+                shifts.to_vec(),
+                Some(format!(
+                    "shift factors written at the measured temperatures: two isotherms round to \
+                     {r} °C, pyvisco's set temperature (it would match both to one row)"
+                )),
+            );
+        }
+        out.push((r, a));
+    }
+    (out, None)
+}
+
+/// `export --to pyvisco` of a bare spectrum: its Prony terms in pyvisco's layout at `-o`.
+fn export_pyvisco_terms(args: &Args, spectrum: &RelaxationSpectrum) -> anyhow::Result<()> {
+    let out = args
+        .output
+        .as_ref()
+        .ok_or_else(|| anyhow::anyhow!("--to pyvisco writes a file: give it with -o NAME.csv"))?;
+    write_atomic(
+        out,
+        crate::prony::pyvisco_csv::pyvisco_terms_csv(spectrum).as_bytes(),
+        args.force,
+    )?;
+    if args.json {
+        let obj = serde_json::json!({
+            "format": "pyvisco",
+            "input": args.file.display().to_string(),
+            "output": out.display().to_string(),
+            "terms": spectrum.terms.len(),
+        });
+        outln!("{obj}");
+    } else {
+        errln!(
+            "viscoroll export: pyvisco Prony terms ({} terms) → {}",
+            spectrum.terms.len(),
+            out.display()
+        );
+    }
+    Ok(())
+}
+
+/// `export --to pyvisco`: the fit file's master curve, shifts and Prony terms in pyvisco's CSV
+/// layouts (a bare spectrum: its Prony terms).
 fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> anyhow::Result<()> {
-    let fit = input.fit.as_ref().ok_or_else(|| {
-        anyhow::anyhow!(
-            "{}: --to pyvisco writes a master curve and its shift factors, which only a fit file \
-             holds (a bare spectrum has neither)",
-            args.file.display()
-        )
-    })?;
+    let Some(fit) = input.fit.as_ref() else {
+        return export_pyvisco_terms(args, &input.spectrum);
+    };
     let out = args.output.as_ref().ok_or_else(|| {
-        anyhow::anyhow!("--to pyvisco writes two files: give the master curve's with -o NAME.csv")
+        anyhow::anyhow!("--to pyvisco writes three files: give the master curve's with -o NAME.csv")
     })?;
     let shifts: Vec<(f64, f64)> = match (&fit.tts, &fit.shift_law) {
         (Some(t), _) if !t.shifts.is_empty() => t.shifts.clone(),
@@ -144,6 +210,10 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
     // pyvisco reads log a_T relative to the master curve's temperature: refer the table to it.
     let at_ref = fit.shift_law.log10_a_t(t_ref);
     let shifts: Vec<(f64, f64)> = shifts.iter().map(|&(t, a)| (t, a - at_ref)).collect();
+    let (shifts, note) = pyvisco_set_shifts(&shifts);
+    if let Some(n) = &note {
+        errln!("viscoroll export: {n}");
+    }
     let points: Vec<(f64, f64, f64)> = fit
         .master_curve
         .iter()
@@ -152,8 +222,9 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
     let master_text = crate::dma::pyvisco::master_csv(fit.relaxation.kind, &points);
     let shift_text = crate::dma::pyvisco::shift_csv(&shifts);
     let shift_out = pyvisco_shift_path(out);
+    let terms_out = pyvisco_terms_path(out);
     if !args.force {
-        for p in [out, &shift_out] {
+        for p in [out, &shift_out, &terms_out] {
             if p.exists() {
                 anyhow::bail!(
                     "{} exists; not overwritten (use --force to replace it)",
@@ -164,19 +235,26 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
     }
     write_atomic(out, master_text.as_bytes(), args.force)?;
     write_atomic(&shift_out, shift_text.as_bytes(), args.force)?;
+    write_atomic(
+        &terms_out,
+        crate::prony::pyvisco_csv::pyvisco_terms_csv(&fit.relaxation).as_bytes(),
+        args.force,
+    )?;
     if args.json {
         let obj = serde_json::json!({
             "format": "pyvisco",
             "input": args.file.display().to_string(),
             "output": out.display().to_string(),
             "shift_factors": shift_out.display().to_string(),
+            "prony_terms": terms_out.display().to_string(),
+            "note": note,
             "points": points.len(),
             "temperatures": shifts.len(),
             "t_ref_c": t_ref,
         });
-        println!("{obj}");
+        outln!("{obj}");
     } else {
-        eprintln!(
+        errln!(
             "viscoroll export: pyvisco master curve ({} points at T_ref = {t_ref} °C) → {}; shift \
              factors ({} temperatures) → {}",
             points.len(),
@@ -276,7 +354,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         .chain(std::iter::once(card))
         .collect();
     for n in &notes {
-        eprintln!("viscoroll export: {n}");
+        errln!("viscoroll export: {n}");
     }
     if let Some(out) = &args.output {
         write_atomic(out, card.as_bytes(), args.force)?;
@@ -289,16 +367,34 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "card": card,
             "notes": notes,
         });
-        println!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", serde_json::to_string(&obj)?);
     } else {
         if args.output.is_none() {
-            print!("{card}");
+            out!("{card}");
         }
-        eprintln!(
+        errln!(
             "viscoroll export: {name} card, {} terms{}",
             spectrum.terms.len(),
             shift_label
         );
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Means round to pyvisco's set temperatures (ties to even, as numpy's round); two isotherms
+    /// on one degree keep the measured temperatures, with a note.
+    #[test]
+    fn shifts_move_to_pyvisco_set_temperatures() {
+        let (s, note) = pyvisco_set_shifts(&[(99.985, -11.7), (-42.451, 8.0), (2.5, 1.0)]);
+        assert_eq!(s, [(100.0, -11.7), (-42.0, 8.0), (2.0, 1.0)]);
+        assert!(note.is_none());
+        let both = [(20.4, 1.0), (19.6, 2.0)];
+        let (s, note) = pyvisco_set_shifts(&both);
+        assert_eq!(s, both);
+        assert!(note.is_some_and(|n| n.contains("20 °C")));
+    }
 }

@@ -7,12 +7,21 @@
 //! are `master`'s and `run`'s (crate::cli::tuning_args). An existing fit made from the same inputs
 //! with the same settings is reused; a different one is kept unless `--force` is given.
 //!
+//! The fit file carries the bootstrap ensemble of the uncertainty bands (crate::bands, docs/MATH.md
+//! §15) by default, so that `roll` and `run` give bands from it; `--no-bands` skips it (a fit
+//! reused without one gets it added, the fit itself unchanged). A master curve read already shifted
+//! has no isotherms to resample: its ensemble is made from its points alone
+//! (crate::bands::ensemble_from_fit, whose note says what that leaves out).
+//!
 //! Instead of a measurement, a master curve already shifted can be fitted: pyvisco's master-curve CSV
 //! with its shift-factor CSV (`--master-curve M.csv --shift-factors S.csv`, read by
 //! [`crate::dma::pyvisco`]); its shift table is the fit's shift law, and the WLF and Arrhenius fits
 //! of that table go into the fit file for the cards.
 
-use crate::pipeline::fit_compound::{fit_or_reuse, fit_or_reuse_master, FitAction, FitOptions};
+use crate::bands::BandSettings;
+use crate::pipeline::fit_compound::{
+    fit_or_reuse_master, fit_or_reuse_with_bands, FitAction, FitOptions,
+};
 use anyhow::Context;
 use std::path::PathBuf;
 
@@ -46,7 +55,7 @@ pub struct Args {
     pub name: Option<String>,
     /// Reference temperature of the master curve in °C (default: a measured temperature near the
     /// middle of the range).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::temp_c)]
     pub tref: Option<f64>,
     /// The master-curve flags (the same as `master`'s).
     #[command(flatten)]
@@ -60,6 +69,10 @@ pub struct Args {
     /// Replace an existing, different fit file.
     #[arg(long)]
     pub force: bool,
+    /// Skip the bootstrap ensemble of the uncertainty bands (32 refits; `roll` then makes one from
+    /// the fit file alone, without the shifts' scatter).
+    #[arg(long)]
+    pub no_bands: bool,
     /// Print one JSON object (a summary of the fit) on stdout.
     #[arg(long)]
     pub json: bool,
@@ -87,13 +100,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
     }
-    let (fit, action) = match &source {
-        Source::Measurement(measurement) => {
-            fit_or_reuse(&name, measurement, &args.output, &options, args.force)
-        }
+    let bands = (!args.no_bands).then(BandSettings::default);
+    let (fit, action, no_bands) = match &source {
+        Source::Measurement(measurement) => fit_or_reuse_with_bands(
+            &name,
+            measurement,
+            &args.output,
+            &options,
+            args.force,
+            bands.as_ref(),
+        )
+        .with_context(|| input.clone())?,
         Source::Master(measurement, master) => {
             options.master = master.settings.clone();
-            fit_or_reuse_master(
+            let (mut fit, action) = fit_or_reuse_master(
                 &name,
                 measurement,
                 master,
@@ -101,10 +121,23 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 &options,
                 args.force,
             )
+            .with_context(|| input.clone())?;
+            let why = match bands.as_ref().filter(|_| fit.bands.is_none()) {
+                None => None,
+                Some(s) => match crate::bands::ensemble_from_fit(&fit, s) {
+                    Ok(e) => {
+                        fit.bands = Some(e);
+                        fit.write(&args.output, true)
+                            .with_context(|| args.output.display().to_string())?;
+                        None
+                    }
+                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+                },
+            };
+            (fit, action, why)
         }
-    }
-    .with_context(|| input.clone())?;
-    print_fit(&args, &fit, action);
+    };
+    print_fit(&args, &fit, action, no_bands.as_deref());
     Ok(())
 }
 
@@ -135,14 +168,15 @@ fn fit_options(args: &Args) -> anyhow::Result<FitOptions> {
     Ok(options)
 }
 
-/// Print the fit: one JSON object (`--json`) or a line on stderr, the trade table (`--trade`) and a
-/// warning when the term target is missed.
-fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction) {
-    let action = match action {
-        FitAction::Reused => "reused",
-        FitAction::Fitted => "fitted",
-        FitAction::Replaced => "replaced",
-    };
+/// Print the fit: one JSON object (`--json`) or a line on stderr, the trade table (`--trade`), a
+/// warning when the term target is missed and one when the bands could not be made (`no_bands`).
+fn print_fit(
+    args: &Args,
+    fit: &crate::pipeline::CompoundFit,
+    action: FitAction,
+    no_bands: Option<&str>,
+) {
+    let action = action.word();
     let info = &fit.prony_info;
     let creep_terms = fit.creep.as_ref().map_or(0, |c| c.terms.len());
     if args.json {
@@ -162,11 +196,15 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
             "term_target_met": info.term_target_met,
             "term_trade": info.term_trade,
             "quality": fit.quality,
+            "bands_replicates": fit.bands.as_ref().map(|b| b.replicates.len()),
+            "bands_note": bands_note(args, fit, no_bands),
+            "bands_notes": fit.bands.as_ref().map_or(&[][..], |b| &b.notes[..]),
         });
-        println!("{obj}");
+        outln!("{obj}");
     } else {
-        eprintln!(
-            "{}: {action} {} (T_ref {:.2} °C; {} relaxation terms, RMS log10 E′ {:.4}, E″ {:.4}; {} creep terms)",
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
+        errln!(
+            "{}: {action} {} (T_ref {:.2} °C; {} relaxation terms, RMS log10 {storage} {:.4}, {loss} {:.4}; {} creep terms)",
             fit.compound,
             args.output.display(),
             fit.shift_law.t_ref_c(),
@@ -177,9 +215,12 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
         );
     }
     if args.trade && !args.json {
-        eprintln!("terms  RMS log10 E′  RMS log10 E″  max |log10 E′|  max |log10 E″|");
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
+        errln!(
+            "terms  RMS log10 {storage}  RMS log10 {loss}  max |log10 {storage}|  max |log10 {loss}|"
+        );
         for t in &info.term_trade {
-            eprintln!(
+            errln!(
                 "{:5}  {:12.4}  {:12.4}  {:14.3}  {:14.3}{}",
                 t.n_terms,
                 t.rms_log10_storage,
@@ -194,16 +235,34 @@ fn print_fit(args: &Args, fit: &crate::pipeline::CompoundFit, action: FitAction)
             );
         }
     }
+    if let (Some(why), false) = (no_bands, args.json) {
+        errln!("{}: WARNING: {why}", fit.compound);
+    }
     if info.term_target_met == Some(false) {
         let t = info.term_target_rms_log10.unwrap_or_default();
-        eprintln!(
-            "{}: WARNING: the term target (RMS log10 E′ {:.4}, E″ {:.4}) is not met within {}; kept {} terms",
+        let (storage, loss, _) = fit.relaxation.kind.symbols();
+        errln!(
+            "{}: WARNING: the term target (RMS log10 {storage} {:.4}, {loss} {:.4}) is not met within {}; kept {} terms",
             fit.compound,
             t[0],
             t[1],
             args.prony.max_terms.map_or("the dense fit".to_string(), |n| format!("{n} terms")),
             fit.relaxation.terms.len()
         );
+    }
+}
+
+/// Why the fit file carries no ensemble (null when it carries one).
+fn bands_note(
+    args: &Args,
+    fit: &crate::pipeline::CompoundFit,
+    no_bands: Option<&str>,
+) -> Option<String> {
+    match (&fit.bands, no_bands) {
+        (Some(_), _) => None,
+        (None, Some(why)) => Some(why.to_string()),
+        (None, None) if args.no_bands => Some("skipped (--no-bands)".to_string()),
+        (None, None) => Some("not computed".to_string()),
     }
 }
 
@@ -215,7 +274,7 @@ enum Source {
 
 /// A measurement JSON: the bare serde of Measurement, or an object holding it under "measurement".
 fn read_measurement(path: &std::path::Path) -> anyhow::Result<crate::Measurement> {
-    let text = std::fs::read_to_string(path)
+    let text = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
         .with_context(|| format!("{}: cannot read", path.display()))?;
     // The bare serde of Measurement, or an object holding it under "measurement"; checked like any
     // export (crate::dma::plausible).

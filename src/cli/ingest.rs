@@ -129,7 +129,7 @@ fn file_report(m: &Measurement, si: usize) -> serde_json::Value {
 /// One file's lines on stderr: format, encoding and hash, its identifying metadata, mode and
 /// columns, isotherms and ranges (from its report `r`, [`file_report`]).
 fn print_file(src: &dma::SourceFile, r: &serde_json::Value) {
-    eprintln!(
+    errln!(
         "{}: {} ({}), sha256 {}",
         src.path,
         src.format,
@@ -153,7 +153,7 @@ fn print_file(src: &dma::SourceFile, r: &serde_json::Value) {
     ];
     for k in keys {
         if let Some(v) = src.metadata.get(k) {
-            eprintln!("  {k}: {v}");
+            errln!("  {k}: {v}");
         }
     }
     let cols: Vec<String> = src
@@ -161,7 +161,7 @@ fn print_file(src: &dma::SourceFile, r: &serde_json::Value) {
         .iter()
         .map(|c| format!("{} = `{}` [{}]", c.quantity, c.name, c.unit))
         .collect();
-    eprintln!(
+    errln!(
         "  mode: {} (evidence: {}); columns: {}",
         r["mode"].as_str().unwrap_or(""),
         src.metadata
@@ -183,7 +183,7 @@ fn print_file(src: &dma::SourceFile, r: &serde_json::Value) {
             a[1].as_f64().unwrap_or(f64::NAN)
         )
     });
-    eprintln!(
+    errln!(
         "  isotherms: {}, mean temperature {}, frequency {}, points: {}",
         r["isotherms"],
         tr.unwrap_or_else(|| "—".into()),
@@ -204,23 +204,29 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let shown = 20;
     for w in m.warnings.iter().take(shown) {
-        eprintln!("  warning: {w}");
+        errln!("  warning: {w}");
     }
     if m.warnings.len() > shown {
-        eprintln!(
+        errln!(
             "  … and {} more (see --json or the output file)",
             m.warnings.len() - shown
         );
     }
     let s = &m.summary;
-    eprintln!(
-        "total: {} files, {} isotherms, {} points ({} flagged), {} errors, {} warnings",
-        s.files, s.isotherms, s.points, s.flagged_points, s.errors, s.warnings
+    use crate::results::counted;
+    errln!(
+        "total: {}, {}, {} ({} flagged), {}, {}",
+        counted(s.files, "file"),
+        counted(s.isotherms, "isotherm"),
+        counted(s.points, "point"),
+        s.flagged_points,
+        counted(s.errors, "error"),
+        counted(s.warnings, "warning")
     );
     if let Some(out) = &args.output {
         let json = serde_json::to_vec_pretty(&m)?;
         super::output::write_atomic(out, &json, args.force)?;
-        eprintln!("wrote {}", out.display());
+        errln!("wrote {}", out.display());
     }
     if args.json {
         let obj = serde_json::json!({
@@ -232,7 +238,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "warnings": m.warnings,
             "output": args.output.as_ref().map(|p| p.display().to_string()),
         });
-        println!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", serde_json::to_string(&obj)?);
     }
     Ok(())
 }

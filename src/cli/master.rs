@@ -30,7 +30,7 @@ pub struct Args {
     #[arg(long, value_name = "CSV", requires = "master_curve")]
     pub shift_factors: Option<PathBuf>,
     /// Reference temperature in °C [default: the middle isotherm's temperature].
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::temp_c)]
     pub tref: Option<f64>,
     /// The master-curve flags (the same in `fit` and `run`).
     #[command(flatten)]
@@ -56,7 +56,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     let master = match (&args.measurement, &args.master_curve, &args.shift_factors) {
         (Some(path), _, _) => {
-            let text = std::fs::read_to_string(path)
+            let text = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
                 .with_context(|| format!("cannot read {}", path.display()))?;
             // Parsed and checked like any export (impossible temperatures refused, naming file and line).
             let measurement =
@@ -75,7 +75,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
         // --force was checked before the work started.
         super::output::write_atomic(out, json.as_bytes(), true)?;
-        eprintln!("wrote {}", out.display());
+        errln!("wrote {}", out.display());
     }
     summary(&master);
     if args.json {
@@ -98,16 +98,19 @@ fn settings_from(args: &Args) -> anyhow::Result<MasterSettings> {
 }
 
 fn summary(m: &MasterCurve) {
-    eprintln!(
+    errln!(
         "master curve: {} isotherms, {} points, T_ref = {} °C",
         m.isotherms.len(),
         m.points.len(),
         m.t_ref_c
     );
-    eprintln!("  T (°C)   log10 aT   ±std     log10 bT  overlap RMS  E″ alone  vGP (°)  KK log10");
+    errln!(
+        "  T (°C)   log10 aT   ±std     log10 bT  overlap RMS  {} alone  vGP (°)  KK log10",
+        m.kind.symbols().1
+    );
     for s in &m.isotherms {
         let opt = |v: Option<f64>, p: usize| v.map_or("-".to_string(), |v| format!("{v:.p$}"));
-        eprintln!(
+        errln!(
             "  {:>7.2}  {:>8.3}  {:>7.4}  {:>8.4}  {:>11}  {:>8}  {:>7}  {:>8}{}",
             s.temp_c,
             s.log10_a_t,
@@ -120,17 +123,20 @@ fn summary(m: &MasterCurve) {
             if s.flags.is_empty() { "" } else { "  !" }
         );
         if let Some(c) = &s.shift_channel {
-            eprintln!("           shift carried by {c}");
+            errln!("           shift carried by {c}");
         }
     }
     if let Some(w) = &m.wlf {
-        eprintln!(
+        errln!(
             "WLF:       C1 = {:.4}, C2 = {:.3} K at {} °C, RMS {:.4}",
-            w.c1, w.c2_k, w.t_ref_c, w.rms_log10
+            w.c1,
+            w.c2_k,
+            w.t_ref_c,
+            w.rms_log10
         );
     }
     if let Some(a) = &m.arrhenius {
-        eprintln!(
+        errln!(
             "Arrhenius: Ea = {:.1} kJ/mol at {} °C, RMS {:.4}",
             a.activation_energy_j_per_mol / 1e3,
             a.t_ref_c,
@@ -142,11 +148,11 @@ fn summary(m: &MasterCurve) {
         ShiftLaw::Arrhenius { .. } => "Arrhenius",
         ShiftLaw::Table { .. } => "table",
     };
-    eprintln!("shift law used: {law}");
+    errln!("shift law used: {law}");
     for w in &m.warnings {
-        eprintln!("warning: {w}");
+        errln!("warning: {w}");
     }
     for f in &m.quality.flags {
-        eprintln!("flag: {f}");
+        errln!("flag: {f}");
     }
 }

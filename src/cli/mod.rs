@@ -7,6 +7,23 @@
 //! (clap's full message, with its "a similar argument exists" tips), 3 `run` finished but some
 //! results are not trusted.
 
+/// `println!` for the CLI: through [`output::write_stream`] (escaped; a failed write sets the exit
+/// code instead of panicking).
+macro_rules! outln {
+    () => { $crate::cli::output::write_stream(false, format_args!("\n")) };
+    ($($t:tt)*) => { $crate::cli::output::write_stream(false, format_args!("{}\n", format_args!($($t)*))) };
+}
+/// `print!` for the CLI, as [`outln`].
+#[allow(unused_macros)]
+macro_rules! out {
+    ($($t:tt)*) => { $crate::cli::output::write_stream(false, format_args!($($t)*)) };
+}
+/// `eprintln!` for the CLI, as [`outln`].
+macro_rules! errln {
+    () => { $crate::cli::output::write_stream(true, format_args!("\n")) };
+    ($($t:tt)*) => { $crate::cli::output::write_stream(true, format_args!("{}\n", format_args!($($t)*))) };
+}
+
 mod completions;
 mod contact;
 mod convert;
@@ -24,6 +41,18 @@ mod spectrum_input;
 mod tuning_args;
 
 use clap::{Parser, Subcommand};
+
+/// clap's parser of every temperature argument: a number in °C within the work budget's range
+/// (crate::limits::temperature_c: not below absolute zero, not above 1000 °C).
+fn temp_c(s: &str) -> Result<f64, String> {
+    let t: f64 = s
+        .trim()
+        .parse()
+        .map_err(|e| format!("{s:?} is not a number: {e}"))?;
+    crate::limits::temperature_c("temperature", t)
+        .map(|()| t)
+        .map_err(|e| e.reason)
+}
 
 /// The exit codes, as printed by `--help`.
 pub const EXIT_CODES: &str = "Exit codes: 0 success; 1 bad input or a failed computation (for `run`: \
@@ -142,13 +171,13 @@ fn fail(
     message: &str,
     detail: Option<&serde_json::Value>,
 ) -> i32 {
-    eprintln!("viscoroll: {message}");
+    errln!("viscoroll: {message}");
     if json {
         let mut obj = serde_json::json!({"error": message, "kind": kind, "exit_code": code});
         if let Some(d) = detail {
             obj["detail"] = d.clone();
         }
-        println!("{obj}");
+        outln!("{obj}");
     }
     code
 }
@@ -191,7 +220,7 @@ pub fn run_with(args: Vec<std::ffi::OsString>) -> i32 {
         Command::Completions(args) => completions::completions(args),
         Command::Man(args) => completions::man(args),
     };
-    match result {
+    let code = match result {
         Ok(()) => 0,
         Err(e) => match e.downcast_ref::<Exit>() {
             Some(x) => fail(
@@ -203,11 +232,13 @@ pub fn run_with(args: Vec<std::ffi::OsString>) -> i32 {
             ),
             None => fail(json, 1, "error", &error_text(&e), None),
         },
-    }
+    };
+    output::stream_exit_code(code)
 }
 
-/// A closed stdout (`viscoroll … --json | head`) is not an error: exit quietly with code 0 instead
-/// of the standard library's "failed printing to stdout: Broken pipe" panic.
+/// A backstop for any print that does not go through [`output::write_stream`] (a library's): a
+/// closed stdout (`viscoroll … --json | head`) exits quietly with code 0, any other failed print
+/// (a full device) with code 1, instead of the standard library's panic and backtrace.
 fn quiet_broken_pipe() {
     let default_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
@@ -219,6 +250,9 @@ fn quiet_broken_pipe() {
             .unwrap_or("");
         if msg.contains("Broken pipe") {
             std::process::exit(0);
+        }
+        if msg.starts_with("failed printing to std") {
+            std::process::exit(1);
         }
         default_hook(info);
     }));

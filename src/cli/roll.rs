@@ -8,7 +8,10 @@
 //! `max_pressure_mpa`, `x_mm`, `pressure_mpa`, the dimensionless problem (`lambda`, `beta`, `load`,
 //! `rho`, `time_scale_s`, `creep`), the numerics (`scheme`, `n`, `iterations`) and the 90 %
 //! uncertainty band `friction_p05`, `friction_p50`, `friction_p95` (crate::bands: a fit file made by
-//! `viscoroll run` carries the bootstrap ensemble; otherwise null, with the reason in `bands_note`), and the band's notes in `bands_notes`.
+//! `viscoroll fit` or `run` carries the bootstrap ensemble; one without it, e.g. from `fit
+//! --no-bands` or an older build, gets an ensemble made from the fit file alone,
+//! crate::bands::ensemble_from_fit, which its notes name; a bare creep spectrum has none: null, with
+//! the reason in `bands_note`), and the band's notes in `bands_notes`.
 //! With a cover (`--cover-mm`) the band is solved on the covered body as in the main job
 //! (crate::bands::scene_ratios_on, docs/MATH.md eq. 15.6); `--model winkler` (the conveyor tools'
 //! model, not the one the bands solve) has none.
@@ -27,7 +30,7 @@ pub struct Args {
     #[arg(value_name = "SPECTRUM.json|FIT.json")]
     pub spectrum: PathBuf,
     /// Temperature in °C (fit files only: the spectrum is shifted there by the fit's shift law).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::temp_c)]
     pub temp_c: Option<f64>,
     /// Roll radius in mm (> 0).
     #[arg(long, allow_negative_numbers = true)]
@@ -58,8 +61,8 @@ pub struct Args {
     /// `layer` (bonded to a rigid carcass) or `winkler` (uniaxial columns, as conveyor design tools).
     #[arg(long)]
     pub model: Option<String>,
-    /// Skip the uncertainty band (a fit file made by `viscoroll run` carries the bootstrap ensemble
-    /// it needs; see crate::bands).
+    /// Skip the uncertainty band (a fit file made by `viscoroll fit` or `run` carries the bootstrap
+    /// ensemble it needs; for one without, an ensemble is made from the fit file; see crate::bands).
     #[arg(long)]
     pub no_bands: bool,
     /// Print one JSON object on stdout.
@@ -109,14 +112,29 @@ fn band_or_why(
         return Err("skipped (--no-bands)".into());
     }
     let (CreepSource::Fit(fit), Some(t)) = (source, args.temp_c) else {
-        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file made by `viscoroll run`".into());
-    };
-    let Some(ensemble) = fit.bands.as_ref() else {
-        return Err("this fit file carries no bootstrap ensemble (made by `viscoroll fit` or `run --no-bands`): `viscoroll run` on its measurement adds one".into());
+        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file (`viscoroll fit` or `run`)".into());
     };
     let settings = crate::bands::BandSettings::default();
+    // A fit file without an ensemble gets one made from the fit file alone (its note says what
+    // that leaves out).
+    let made;
+    let ensemble = match fit.bands.as_ref() {
+        Some(e) => e,
+        None => {
+            made = crate::bands::ensemble_from_fit(fit, &settings)
+                .map_err(|e| format!("no ensemble could be made from the fit file: {e}"))?;
+            &made
+        }
+    };
     let bands = crate::bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
-    let (band, notes) = bands.point_band(0, friction);
+    let (band, mut notes) = bands.point_band(0, friction);
+    // The between-specimen term as `run` adds it (docs/MATH.md §16): a fit file does not carry its
+    // specimens' own frictions, so the default spread of one specimen applies, and the note says so.
+    let band = band.map(|b| crate::bands::widen(b, crate::bands::between_sd_ln(&[]), 1));
+    notes.push(crate::bands::specimens_note(1, crate::bands::PRIOR_SD_LN));
+    if fit.bands.is_none() {
+        notes.push(crate::bands::FROM_FIT_FILE_NOTE.to_string());
+    }
     Ok(match band {
         Some(b) => RollBand { band: Ok(b), notes },
         None if notes.is_empty() => {
@@ -136,6 +154,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         if !(v.is_finite() && v > 0.0) {
             bail!("{name} must be finite and > 0, got {v}");
         }
+    }
+    if let Some(h) = args.cover_mm.filter(|h| h.is_finite() && *h > 0.0) {
+        crate::limits::cover("--cover-mm", h, args.radius_mm)?;
     }
     super::spectrum_input::refuse_fluid_or_relaxation(&args.spectrum)?;
     let source = CreepSource::read(&args.spectrum)

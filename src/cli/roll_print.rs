@@ -44,12 +44,12 @@ impl Answer<'_> {
     /// on stderr.
     pub fn print(&self) {
         if self.args.json {
-            println!("{}", self.json());
+            outln!("{}", self.json());
         } else {
             self.text();
         }
         for w in self.warnings {
-            eprintln!("warning: {w}");
+            errln!("warning: {w}");
         }
     }
 
@@ -97,7 +97,7 @@ impl Answer<'_> {
     fn text(&self) {
         let (args, sol) = (self.args, self.sol);
         if let Some(a) = &self.shift {
-            eprintln!(
+            errln!(
                 "at {} °C: log10 a_T = {:.4}{}",
                 a.temp_c,
                 a.log10_a_t,
@@ -108,7 +108,7 @@ impl Answer<'_> {
                 }
             );
         }
-        eprintln!(
+        errln!(
             "roll R = {} mm, N = {} N/m, V = {} m/s on {} ({} terms, nu = {}){}",
             args.radius_mm,
             args.load_n_per_m,
@@ -119,21 +119,21 @@ impl Answer<'_> {
             self.header_suffix
         );
         for l in &self.lines_after_header {
-            eprintln!("{l}");
+            errln!("{l}");
         }
-        eprintln!("friction F/N        = {:.6e}", sol.friction);
-        eprintln!("resistance          = {:.6e} N/m", sol.resistance_n_per_m);
-        eprintln!("contact length      = {:.6} mm", sol.contact_length_m * 1e3);
-        eprintln!(
+        errln!("friction F/N        = {:.6e}", sol.friction);
+        errln!("resistance          = {:.6e} N/m", sol.resistance_n_per_m);
+        errln!("contact length      = {:.6} mm", sol.contact_length_m * 1e3);
+        errln!(
             "offset (centre ahead of lowest point) = {:.6} mm",
             sol.offset_m * 1e3
         );
-        eprintln!(
+        errln!(
             "max pressure        = {:.6} MPa",
             sol.max_pressure_pa * 1e-6
         );
         for l in &self.lines_after {
-            eprintln!("{l}");
+            errln!("{l}");
         }
     }
 }

@@ -1,6 +1,7 @@
-//! The input of `export` and `convert`: a relaxation spectrum JSON ([`RelaxationSpectrum`]) or a fit
+//! The input of `export` and `convert`: a relaxation spectrum JSON ([`RelaxationSpectrum`]), a fit
 //! file ([`CompoundFit`], as `fit` and `run` write it), told apart by the fit file's
-//! `format_version` + `relaxation` fields. A fit file also gives the master curve (for a refit with
+//! `format_version` + `relaxation` fields, or pyvisco's Prony-term CSV (a first row naming `tau_i`:
+//! crate::prony::pyvisco_csv, ν = 0.5). A fit file also gives the master curve (for a refit with
 //! fewer terms) and the shifts and fitted laws of its master curve (for a shift card).
 
 use crate::pipeline::CompoundFit;
@@ -18,8 +19,21 @@ pub struct SpectrumInput {
 
 /// Read a relaxation spectrum JSON or a fit file.
 pub fn read_spectrum_input(path: &Path) -> anyhow::Result<SpectrumInput> {
+    let bytes = crate::fsutil::read_regular(path, crate::limits::INPUT_BYTES_MAX)
+        .with_context(|| format!("cannot read {}", path.display()))?;
+    if crate::prony::pyvisco_csv::looks_like_pyvisco_terms(&bytes) {
+        let spectrum = crate::prony::pyvisco_csv::read_pyvisco_terms(
+            &path.display().to_string(),
+            &bytes,
+            crate::material::default_poisson(),
+        )?;
+        return Ok(SpectrumInput {
+            spectrum,
+            fit: None,
+        });
+    }
     let text =
-        std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+        String::from_utf8(bytes).with_context(|| format!("{}: not UTF-8", path.display()))?;
     let value: serde_json::Value =
         serde_json::from_str(&text).with_context(|| format!("{}: not JSON", path.display()))?;
     if value.get("format_version").is_some() && value.get("relaxation").is_some() {
@@ -46,7 +60,8 @@ pub fn read_spectrum_input(path: &Path) -> anyhow::Result<SpectrumInput> {
 /// relaxation has none) with the reason: under a load moving steadily over it a fluid flows without
 /// bound (J(t) ~ t/η₀, docs/MATH.md §4), so the rolling contact has no steady state to solve for.
 pub fn refuse_fluid_or_relaxation(path: &Path) -> anyhow::Result<()> {
-    let Ok(text) = std::fs::read_to_string(path) else {
+    let Ok(text) = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
+    else {
         return Ok(()); // the reader that follows reports it
     };
     let Ok(value) = serde_json::from_str::<serde_json::Value>(&text) else {

@@ -60,7 +60,7 @@ pub struct ContactSettings {
     /// Discretisation (default `auto`).
     pub scheme: Scheme,
     /// Number of intervals of the thesis scheme (and n + 1 pressure samples of the exact one).
-    /// Default 200: the README's speed/accuracy table gives friction errors well below 1 % for one
+    /// Default 200: docs/DEVLOG.md's speed/accuracy table gives friction errors well below 1 % for one
     /// term at this n, at a few ms per solve.
     pub n: usize,
     /// Load loop of the thesis scheme.

@@ -613,6 +613,21 @@ fn missing_column(ctx: &Ctx, block: &Block, q: &'static str, looked: &'static st
     }
 }
 
+/// Two columns `a` and `b` both mean the `key` modulus.
+fn duplicate_column(ctx: &Ctx, a: usize, b: usize, key: &str) -> DmaError {
+    DmaError::Structure {
+        file: ctx.file.into(),
+        location: ctx.loc.clone(),
+        message: format!(
+            "two columns mean the {key} modulus: `{}` (column {}) and `{}` (column {}); pick one with --columns {key}=NAME (or `columns` in compounds.toml)",
+            ctx.names[a],
+            a + 1,
+            ctx.names[b],
+            b + 1
+        ),
+    }
+}
+
 /// Find the columns of each quantity (those the user mapped first, by the given name), and which
 /// pair gives M′ and M″.
 fn find_columns(ctx: &Ctx, block: &Block, map: &ColumnMap) -> Result<Found, DmaError> {
@@ -659,6 +674,18 @@ fn find_columns(ctx: &Ctx, block: &Block, map: &ColumnMap) -> Result<Found, DmaE
         }
         if complex.is_none() {
             complex = take(Quantity::Complex(k), &mut used);
+        }
+    }
+    // A second column with the meaning of a modulus taken by name is an error, not a silent choice.
+    for (col, key, given) in [
+        (&storage, "storage", &map.storage),
+        (&loss, "loss", &map.loss),
+        (&complex, "complex", &map.complex),
+    ] {
+        if let (Some(c), None) = (col, given) {
+            if let Some(j) = ctx.find(c.q, &used) {
+                return Err(duplicate_column(ctx, c.idx, j, key));
+            }
         }
     }
     let tan =

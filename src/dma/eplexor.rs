@@ -239,10 +239,13 @@ pub fn read_eplexor_shiftlist(
     path: &std::path::Path,
 ) -> Result<(ShiftLaw, Option<ShiftLaw>), DmaError> {
     let file = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| DmaError::Io {
-        file: file.clone(),
-        source,
-    })?;
+    let bytes =
+        crate::fsutil::read_regular(path, crate::limits::INPUT_BYTES_MAX).map_err(|source| {
+            DmaError::Io {
+                file: file.clone(),
+                source,
+            }
+        })?;
     shiftlist_from_bytes(&file, &bytes)
 }
 

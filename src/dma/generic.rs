@@ -46,6 +46,23 @@ pub fn is_unit_row(fields: &[String], dec: Decimal) -> bool {
     unitish * 2 > non_empty.len()
 }
 
+/// Whether the non-data line `k` is a stray line inside a table rather than the start of the next
+/// one: the next non-blank line is a data row as wide as the table, and line `k` is not (a header
+/// of a next table of that width would be as wide as its data).
+fn stray_line(
+    fields: &[Vec<String>],
+    k: usize,
+    data: &dyn Fn(usize) -> bool,
+    blank: &dyn Fn(usize) -> bool,
+    width: usize,
+) -> bool {
+    let Some(next) = (k + 1..fields.len()).find(|&j| !blank(j)) else {
+        return false;
+    };
+    let filled = |j: usize| fields[j].iter().filter(|f| !f.trim().is_empty()).count();
+    data(next) && fields[next].len() == width && filled(k) != width
+}
+
 /// Parse lines already known to be delimited by `delim` with decimal mark `dec`.
 pub fn read_with(
     file: &str,
@@ -106,6 +123,19 @@ pub fn read_with(
                 continue;
             }
             if !data(k) {
+                if stray_line(&fields, k, &data, &blank, block.names.len()) {
+                    let shown: String = lines[k]
+                        .chars()
+                        .take(40)
+                        .flat_map(char::escape_debug)
+                        .collect();
+                    raw.notes.push(format!(
+                        "line {}: not a data row (\"{shown}\"), skipped; the table goes on below it",
+                        k + 1
+                    ));
+                    k += 1;
+                    continue;
+                }
                 break;
             }
             block.rows.push(Row {

@@ -230,6 +230,7 @@ mod tests {
                 })
                 .collect(),
             mode_hint: None,
+            ..RawFile::default()
         }
     }
 

@@ -42,9 +42,11 @@ pub fn read_master_pair(
     t_ref_c: Option<f64>,
 ) -> Result<PyviscoMaster, DmaError> {
     let read = |p: &std::path::Path| {
-        std::fs::read(p).map_err(|source| DmaError::Io {
-            file: p.display().to_string(),
-            source,
+        crate::fsutil::read_regular(p, crate::limits::INPUT_BYTES_MAX).map_err(|source| {
+            DmaError::Io {
+                file: p.display().to_string(),
+                source,
+            }
         })
     };
     master_pair_from_bytes(

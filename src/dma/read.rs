@@ -91,10 +91,11 @@ pub fn read_files<P: AsRef<std::path::Path>>(
     let mut inputs = Vec::with_capacity(paths.len());
     for p in paths {
         let name = p.as_ref().display().to_string();
-        let bytes = std::fs::read(p.as_ref()).map_err(|source| DmaError::Io {
-            file: name.clone(),
-            source,
-        })?;
+        let bytes = crate::fsutil::read_regular(p.as_ref(), crate::limits::INPUT_BYTES_MAX)
+            .map_err(|source| DmaError::Io {
+                file: name.clone(),
+                source,
+            })?;
         inputs.push((name, bytes));
     }
     read_bytes(&inputs, opts)
@@ -122,7 +123,7 @@ pub fn read_bytes(
     for (si, (name, bytes)) in inputs.iter().enumerate() {
         let (format, raw, encoding) = parse_one(name, bytes, opts)?;
         let mapped = columns::map_file(name, &raw, opts)?;
-        for n in &mapped.notes {
+        for n in raw.notes.iter().chain(&mapped.notes) {
             m.warnings.push(format!("{name}: {n}"));
         }
         one_mode(&mut kind, name, mapped.kind)?;

@@ -22,10 +22,13 @@ pub fn read_shift_table(
     t_ref_c: Option<f64>,
 ) -> Result<ShiftLaw, DmaError> {
     let file = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| DmaError::Io {
-        file: file.clone(),
-        source,
-    })?;
+    let bytes =
+        crate::fsutil::read_regular(path, crate::limits::INPUT_BYTES_MAX).map_err(|source| {
+            DmaError::Io {
+                file: file.clone(),
+                source,
+            }
+        })?;
     shift_table_from_bytes(&file, &bytes, t_ref_c)
 }
 

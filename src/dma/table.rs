@@ -86,6 +86,8 @@ pub struct RawFile {
     pub blocks: Vec<Block>,
     /// Tensile or shear when the format (not a column name) says so: e.g. a rotational rheometer.
     pub mode_hint: Option<(crate::material::ModulusKind, String)>,
+    /// What the reader skipped or repaired, each naming its line (they reach the warnings).
+    pub notes: Vec<String>,
 }
 
 /// Turn a text field into a cell.

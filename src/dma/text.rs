@@ -14,8 +14,17 @@ pub struct Decoded {
 }
 
 /// Decode a text export. Never fails: bytes that are valid in no Unicode encoding are read as
-/// windows-1252 (a superset of the printable Latin-1 range), which maps every byte.
+/// windows-1252 (a superset of the printable Latin-1 range), which maps every byte. Line ends come
+/// out as `\n`: CRLF and lone CR (old Mac exports, whose lines would otherwise run together) alike.
 pub fn decode(bytes: &[u8]) -> Decoded {
+    let mut d = decode_text(bytes);
+    if d.text.contains('\r') {
+        d.text = d.text.replace("\r\n", "\n").replace('\r', "\n");
+    }
+    d
+}
+
+fn decode_text(bytes: &[u8]) -> Decoded {
     let utf16 = |enc: &'static Encoding, body: &[u8], name: &'static str| Decoded {
         text: enc.decode_without_bom_handling(body).0.into_owned(),
         encoding: name,
@@ -42,10 +51,10 @@ pub fn decode(bytes: &[u8]) -> Decoded {
             .filter(|&&b| b == 0)
             .count();
         let zeros_even = bytes[..n].iter().step_by(2).filter(|&&b| b == 0).count();
-        if zeros_odd * 10 > n / 2 * 8 && zeros_even == 0 {
+        if zeros_odd * 10 > n / 2 * 8 && zeros_even * 10 < zeros_odd {
             return utf16(UTF_16LE, bytes, "UTF-16LE");
         }
-        if zeros_even * 10 > n / 2 * 8 && zeros_odd == 0 {
+        if zeros_even * 10 > n / 2 * 8 && zeros_odd * 10 < zeros_even {
             return utf16(UTF_16BE, bytes, "UTF-16BE");
         }
     }

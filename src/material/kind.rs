@@ -24,6 +24,23 @@ impl ModulusKind {
             ModulusKind::Shear => 2.0 * (1.0 + poisson),
         }
     }
+
+    /// The letter of the modulus: `E` (tensile) or `G` (shear), for labels.
+    pub fn letter(self) -> &'static str {
+        match self {
+            ModulusKind::Tensile => "E",
+            ModulusKind::Shear => "G",
+        }
+    }
+
+    /// The symbols of the storage and loss moduli and of the equilibrium modulus: (E′, E″, E∞) or
+    /// (G′, G″, G∞), for labels.
+    pub fn symbols(self) -> (&'static str, &'static str, &'static str) {
+        match self {
+            ModulusKind::Tensile => ("E′", "E″", "E∞"),
+            ModulusKind::Shear => ("G′", "G″", "G∞"),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -35,5 +52,15 @@ mod tests {
         assert_eq!(ModulusKind::Shear.to_tensile_factor(0.5), 3.0);
         assert_eq!(ModulusKind::Shear.to_tensile_factor(0.0), 2.0);
         assert_eq!(ModulusKind::Tensile.to_tensile_factor(0.3), 1.0);
+    }
+
+    #[test]
+    fn shear_labels_are_g_and_tensile_labels_e() {
+        assert_eq!(ModulusKind::Shear.symbols(), ("G′", "G″", "G∞"));
+        assert_eq!(ModulusKind::Tensile.symbols(), ("E′", "E″", "E∞"));
+        assert_eq!(
+            (ModulusKind::Shear.letter(), ModulusKind::Tensile.letter()),
+            ("G", "E")
+        );
     }
 }

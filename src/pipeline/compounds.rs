@@ -1,8 +1,11 @@
 //! Which compounds a folder holds ([`discover`]): an explicit `compounds.toml`, or one compound per
 //! sub-folder and per export file at the top level.
 //!
-//! Input: a folder; output: [`CompoundInput`]s (name, files, per-compound settings) and notes on
-//! what was skipped or renamed. Names become file names under the output folder, so they are
+//! Input: a folder and the paths the run itself owns there (its output folders, the scenes file);
+//! output: [`CompoundInput`]s (name, files, per-compound settings) and notes on what was skipped or
+//! renamed. Without a listing, the run's own paths, `compounds.toml`, `scenes.toml` and hidden
+//! entries (a lock, a temp file) are passed over without a note, so a second run in the same
+//! folder never reads the first one's `fits/` or `reports/`. Names become file names under the output folder, so they are
 //! sanitised ([`sanitise_name`]: no separators, no leading dot, no `..`) and made unique.
 //!
 //! `compounds.toml` (each `[[compound]]`; every key but `name` and `files` optional):
@@ -33,6 +36,18 @@
 //! reduce = false                  # the fewest terms no less accurate than the dense fit
 //! ```
 //!
+//! Replicate specimens of one compound (issue 31): `specimens` instead of `files`, one entry per
+//! specimen — a file, a `*` pattern (the files it matches) or a folder (the exports in it). The fit
+//! pools them (crate::pipeline::specimens) and the bands carry the spread between them
+//! (crate::bands::between):
+//! ```toml
+//! [[compound]]
+//! name = "ems-ca"
+//! specimens = ["pyvisco-ems-ca/freq_Eplexor_raw.xls", "pyvisco-ems-ca-specimen2/freq_Eplexor_raw.xls"]
+//! ```
+//! Without a listing, a compound folder whose exports sit in sub-folders (and none beside them) is
+//! one compound with a specimen per sub-folder.
+//!
 //! A master curve already shifted, in pyvisco's CSV layout, is one compound too: `files` is the
 //! master-curve CSV alone and `shift_factors` its shift-factor CSV (crate::dma::pyvisco):
 //! ```toml
@@ -55,10 +70,16 @@ use std::path::{Path, PathBuf};
 pub struct CompoundInput {
     /// Name (file stem or folder name, or as listed), sanitised.
     pub name: String,
-    /// The export files (or measurement JSON files written by `viscoroll ingest`).
+    /// The export files (or measurement JSON files written by `viscoroll ingest`); with replicate
+    /// specimens, every specimen's files.
     pub files: Vec<PathBuf>,
+    /// The files of each replicate specimen (empty: one specimen, `files`).
+    pub specimens: Vec<Vec<PathBuf>>,
     /// Per-compound settings from `compounds.toml`.
     pub settings: CompoundSettings,
+    /// Why the compound cannot run (an unreadable folder, a setting out of range or beyond the work
+    /// budget), if it cannot: it then fails alone.
+    pub unreadable: Option<String>,
 }
 
 /// Per-compound settings of `compounds.toml`, resolved.
@@ -86,7 +107,10 @@ struct Listing {
 #[serde(deny_unknown_fields)]
 struct ListedCompound {
     name: String,
+    #[serde(default)]
     files: Vec<String>,
+    #[serde(default)]
+    specimens: Vec<String>,
     #[serde(default)]
     format: Option<String>,
     #[serde(default)]
@@ -240,6 +264,10 @@ impl ListedCompound {
             }
         }
         let prony = self.prony.as_ref().map(prony_settings).transpose()?;
+        if let Some(p) = &prony {
+            // within range and the work budget (crate::limits) before any work
+            p.validate().map_err(|e| format!("prony: {e}"))?;
+        }
         Ok(CompoundSettings {
             ingest: any.then_some(o),
             tref_c: self.tref_c,
@@ -381,6 +409,14 @@ fn sorted_entries(dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
     Ok(v)
 }
 
+/// The export files directly in `dir`, sorted.
+fn exports_in(dir: &Path) -> Result<Vec<PathBuf>, PipelineError> {
+    Ok(sorted_entries(dir)?
+        .into_iter()
+        .filter(|f| f.is_file() && is_export(f))
+        .collect())
+}
+
 /// `*` within the last path component only.
 fn expand(dir: &Path, pattern: &str) -> Result<Vec<PathBuf>, PipelineError> {
     let full = dir.join(pattern);
@@ -405,18 +441,51 @@ fn expand(dir: &Path, pattern: &str) -> Result<Vec<PathBuf>, PipelineError> {
         .collect())
 }
 
-/// The compounds under `dir` and notes on skipped entries (see the module docs).
-pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
+/// Whether a folder entry is the run's own (one of `own`, or a file the run reads as settings) or
+/// hidden: passed over without a note.
+fn is_own_or_hidden(p: &Path, own: &[PathBuf]) -> bool {
+    let name = p
+        .file_name()
+        .map(|n| n.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    if name.starts_with('.') || name == "scenes.toml" || name == "compounds.toml" {
+        return true;
+    }
+    let canon = |q: &Path| std::fs::canonicalize(q).unwrap_or_else(|_| q.to_path_buf());
+    let p = canon(p);
+    own.iter().any(|o| canon(o) == p)
+}
+
+/// The compounds under `dir` and notes on skipped entries (see the module docs); `own` are the
+/// paths the run writes or reads as settings (output folder, `fits/`, `reports/`, scenes file),
+/// never taken as compounds.
+pub fn discover(
+    dir: &Path,
+    own: &[PathBuf],
+) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
     let listing = dir.join("compounds.toml");
     let mut notes = Vec::new();
     if listing.exists() {
-        let text = std::fs::read_to_string(&listing).map_err(io(&listing))?;
+        let text =
+            crate::fsutil::read_regular_to_string(&listing, crate::limits::SETTINGS_BYTES_MAX)
+                .map_err(io(&listing))?;
         let l: Listing = toml::from_str(&text).map_err(|e| PipelineError::Config {
             path: listing.clone(),
             message: e.to_string(),
         })?;
         let mut out = Vec::new();
         for c in l.compound {
+            let config = |message: String| PipelineError::Config {
+                path: listing.clone(),
+                message: format!("compound {:?}: {message}", c.name),
+            };
+            if c.files.is_empty() == c.specimens.is_empty() {
+                return Err(config(
+                    "give either `files` (one specimen) or `specimens` (one entry per replicate \
+                     specimen: a file, a pattern or a folder)"
+                        .into(),
+                ));
+            }
             let mut files = Vec::new();
             for f in &c.files {
                 let got = expand(dir, f)?;
@@ -425,10 +494,42 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 }
                 files.extend(got);
             }
-            let mut settings = c.settings(dir).map_err(|message| PipelineError::Config {
-                path: listing.clone(),
-                message: format!("compound {:?}: {message}", c.name),
-            })?;
+            let mut specimens = Vec::new();
+            for f in &c.specimens {
+                let full = dir.join(f);
+                let got: Vec<PathBuf> = if full.is_dir() {
+                    exports_in(&full)?
+                } else {
+                    expand(dir, f)?
+                        .into_iter()
+                        .filter(|p| p.is_file())
+                        .collect()
+                };
+                if got.is_empty() {
+                    return Err(config(format!("specimen `{f}` matches no export")));
+                }
+                files.extend(got.iter().cloned());
+                specimens.push(got);
+            }
+            if specimens.len() == 1 {
+                specimens.clear();
+            }
+            // A bad setting (or name) fails its compound only.
+            let checked = crate::limits::name("name", &c.name)
+                .map_err(|e| e.to_string())
+                .and_then(|()| c.settings(dir));
+            let mut settings = match checked {
+                Ok(s) => s,
+                Err(message) => {
+                    out.push(CompoundInput {
+                        name: c.name,
+                        files,
+                        unreadable: Some(format!("{}: {message}", listing.display())),
+                        ..CompoundInput::default()
+                    });
+                    continue;
+                }
+            };
             if let Some(sf) = &c.shift_factors {
                 if files.len() != 1 {
                     return Err(PipelineError::Config {
@@ -442,10 +543,17 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 }
                 settings.shift_factors = Some(dir.join(sf));
             }
+            if !specimens.is_empty() && settings.shift_factors.is_some() {
+                return Err(config(
+                    "a master curve read already shifted (shift_factors) has one specimen".into(),
+                ));
+            }
             out.push(CompoundInput {
                 name: c.name,
                 files,
+                specimens,
                 settings,
+                unreadable: None,
             });
         }
         settle_names(&mut out, &mut notes);
@@ -453,15 +561,53 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
     }
     let mut out = Vec::new();
     for p in sorted_entries(dir)? {
+        if is_own_or_hidden(&p, own) {
+            continue;
+        }
         let name = p
             .file_stem()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         if p.is_dir() {
-            let files: Vec<PathBuf> = sorted_entries(&p)?
-                .into_iter()
-                .filter(|f| f.is_file() && is_export(f))
-                .collect();
+            let mut files: Vec<PathBuf> = match exports_in(&p) {
+                Ok(v) => v,
+                Err(e) => {
+                    // An unreadable folder fails its compound only.
+                    out.push(CompoundInput {
+                        name: p
+                            .file_name()
+                            .map_or(name, |n| n.to_string_lossy().into_owned()),
+                        unreadable: Some(e.to_string()),
+                        ..CompoundInput::default()
+                    });
+                    continue;
+                }
+            };
+            let mut specimens = Vec::new();
+            if files.is_empty() {
+                // replicate specimens: a sub-folder of exports each (an unreadable one is skipped
+                // with the others; the compound then fails or runs on what could be read)
+                for sub in sorted_entries(&p)
+                    .unwrap_or_default()
+                    .into_iter()
+                    .filter(|s| s.is_dir())
+                {
+                    let got = match exports_in(&sub) {
+                        Ok(v) => v,
+                        Err(e) => {
+                            notes.push(format!("{e}: specimen folder skipped"));
+                            continue;
+                        }
+                    };
+                    if !got.is_empty() {
+                        files.extend(got.iter().cloned());
+                        specimens.push(got);
+                    }
+                }
+                if specimens.len() == 1 {
+                    specimens.clear();
+                }
+            }
             if files.is_empty() {
                 notes.push(format!(
                     "{}: no DMA export in the folder, skipped",
@@ -475,6 +621,7 @@ pub fn discover(dir: &Path) -> Result<(Vec<CompoundInput>, Vec<String>), Pipelin
                 out.push(CompoundInput {
                     name: dir_name,
                     files,
+                    specimens,
                     ..CompoundInput::default()
                 });
             }
@@ -499,13 +646,55 @@ mod tests {
     #[test]
     fn shipped_listing_names_three_compounds_with_files() {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
-        let (c, notes) = discover(&dir).unwrap();
+        let (c, notes) = discover(&dir, &[]).unwrap();
         assert!(notes.is_empty(), "{notes:?}");
         let names: Vec<&str> = c.iter().map(|c| c.name.as_str()).collect();
         assert_eq!(names, ["ems-ca", "dmasuite-tensile", "trios-aresg2-lims"]);
         // data/dmasuite-tensile holds 22 isotherm files T0.txt … T105.txt (plus its LICENSE).
         assert_eq!(c[1].files.len(), 22);
         assert!(c.iter().all(|c| c.files.iter().all(|f| f.is_file())));
+    }
+
+    #[test]
+    fn specimens_come_from_the_listing_or_from_sub_folders() {
+        let dir = std::env::temp_dir().join(format!("viscoroll-specimens-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        for sub in ["a/s1", "a/s2", "b"] {
+            std::fs::create_dir_all(dir.join(sub)).unwrap();
+        }
+        for f in ["a/s1/x.txt", "a/s2/y.txt", "a/s2/z.txt", "b/w.txt"] {
+            std::fs::write(dir.join(f), "").unwrap();
+        }
+        // no listing: folder a holds its exports in two sub-folders, b beside it one export
+        let (c, _) = discover(&dir, &[]).unwrap();
+        assert_eq!(c.len(), 2);
+        assert_eq!(c[0].specimens.len(), 2);
+        assert_eq!(c[0].specimens[1].len(), 2);
+        assert_eq!(c[0].files.len(), 3);
+        assert!(c[1].specimens.is_empty());
+        // listed: a folder and a file, one specimen each
+        std::fs::write(
+            dir.join("compounds.toml"),
+            "[[compound]]\nname = \"p\"\nspecimens = [\"a/s2\", \"b/w.txt\"]\n",
+        )
+        .unwrap();
+        let (c, _) = discover(&dir, &[]).unwrap();
+        assert_eq!(c[0].specimens.len(), 2);
+        assert_eq!(c[0].specimens[0].len(), 2);
+        assert_eq!(c[0].files.len(), 3);
+        // both keys, or a specimen matching nothing, are refused
+        for bad in [
+            "files = [\"b/w.txt\"]\nspecimens = [\"b/w.txt\"]",
+            "specimens = [\"nothing/here.txt\", \"b/w.txt\"]",
+        ] {
+            std::fs::write(
+                dir.join("compounds.toml"),
+                format!("[[compound]]\nname = \"p\"\n{bad}\n"),
+            )
+            .unwrap();
+            assert!(discover(&dir, &[]).is_err(), "{bad}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]
@@ -547,7 +736,7 @@ mod tests {
             "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\nmode = \"shear\"\npoisson = 0.45\ntref_c = 20\nprony = { terms_per_decade = 1.5 }\n",
         )
         .unwrap();
-        let (c, _) = discover(&dir).unwrap();
+        let (c, _) = discover(&dir, &[]).unwrap();
         let s = &c[0].settings;
         assert_eq!(s.tref_c, Some(20.0));
         let ingest = s.ingest.as_ref().unwrap();
@@ -563,7 +752,7 @@ mod tests {
             "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\ncriterion = \"storage\"\nlaw = \"wlf\"\nfit_range = \"-30:60\"\nvertical = \"fitted\"\nmax_terms = 18\n",
         )
         .unwrap();
-        let (c2, _) = discover(&dir).unwrap();
+        let (c2, _) = discover(&dir, &[]).unwrap();
         let t = &c2[0].settings.tuning;
         assert_eq!(t.criterion, Some(crate::tts::ShiftCriterion::Storage));
         assert_eq!(t.law, Some(crate::tts::LawChoice::Wlf));
@@ -587,7 +776,9 @@ mod tests {
                 format!("[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\n{bad}\n"),
             )
             .unwrap();
-            let e = discover(&dir).unwrap_err().to_string();
+            // a bad setting fails its compound only (issue 28), naming the key
+            let (found, _) = discover(&dir, &[]).unwrap();
+            let e = found[0].unreadable.clone().unwrap_or_default();
             let key = bad.split(' ').next().unwrap();
             assert!(e.contains(key), "{bad}: {e}");
         }

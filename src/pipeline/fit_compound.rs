@@ -66,7 +66,8 @@ impl FitOptions {
 pub fn input_hashes(files: &[PathBuf]) -> Result<Vec<String>, PipelineError> {
     let mut v = Vec::with_capacity(files.len());
     for f in files {
-        let bytes = std::fs::read(f).map_err(io(f))?;
+        let bytes =
+            crate::fsutil::read_regular(f, crate::limits::INPUT_BYTES_MAX).map_err(io(f))?;
         v.push(sha256_hex(&bytes));
     }
     v.sort();
@@ -287,6 +288,21 @@ pub enum FitAction {
     Fitted,
     /// A different fit was replaced (`force`).
     Replaced,
+    /// The fit file failed its content hash or validation (edited, damaged or older than content
+    /// hashes), so it was fitted again and replaced.
+    Repaired,
+}
+
+impl FitAction {
+    /// The action in one word, as the CLI and the run summary show it.
+    pub fn word(self) -> &'static str {
+        match self {
+            FitAction::Reused => "reused",
+            FitAction::Fitted => "fitted",
+            FitAction::Replaced => "replaced",
+            FitAction::Repaired => "refitted",
+        }
+    }
 }
 
 /// Reuse `fit_path` if it matches the measurement's inputs and `options`; otherwise fit and write it
@@ -318,7 +334,7 @@ pub fn fit_or_reuse_master(
         Existing::Matches(old) => Ok((*old, FitAction::Reused)),
         Existing::Make(action) => {
             let fit = fit_master_curve(compound, measurement, master, options)?;
-            fit.write(fit_path, force)?;
+            fit.write(fit_path, force || action == FitAction::Repaired)?;
             Ok((fit, action))
         }
     }
@@ -345,11 +361,18 @@ fn existing(
         .map(|s| s.sha256.clone())
         .collect();
     hashes.sort();
-    if !fit_path.exists() {
+    if std::fs::symlink_metadata(fit_path).is_err() {
         return Ok(Existing::Make(FitAction::Fitted));
     }
     match CompoundFit::read(fit_path) {
         Ok(old) if fit_matches(&old, &hashes, options) => Ok(Existing::Matches(Box::new(old))),
+        // The tool's own file, unusable as it is: fit again (the run notes it).
+        // (or not a regular file at all: a symlink planted there is replaced, never followed)
+        Err(
+            crate::results::CompoundFitError::Invalid { .. }
+            | crate::results::CompoundFitError::Parse { .. }
+            | crate::results::CompoundFitError::Io { .. },
+        ) => Ok(Existing::Make(FitAction::Repaired)),
         _ if !force => Err(PipelineError::FitDiffers {
             path: fit_path.to_path_buf(),
         }),
@@ -357,11 +380,14 @@ fn existing(
     }
 }
 
-/// Whether `fit` carries an ensemble made with `settings`.
+/// Whether `fit` carries an ensemble made with `settings` (with or without the fit's own
+/// choices, docs/MATH.md eqs. 15.10–15.12, as `settings.model_error` asks).
 fn has_ensemble(fit: &CompoundFit, settings: &BandSettings) -> bool {
-    fit.bands
-        .as_ref()
-        .is_some_and(|b| b.replicates_requested == settings.replicates && b.seed == settings.seed)
+    fit.bands.as_ref().is_some_and(|b| {
+        b.replicates_requested == settings.replicates
+            && b.seed == settings.seed
+            && b.model_error.is_some() == settings.model_error
+    })
 }
 
 /// [`fit_or_reuse`], and with `bands` the fit's bootstrap ensemble (crate::bands): made with a new
@@ -407,7 +433,7 @@ pub fn fit_or_reuse_with_bands(
         Existing::Make(action) => {
             let (mut fit, master) = fit_measurement_master(compound, measurement, options)?;
             let why = bands.and_then(|s| add(&mut fit, &master, s));
-            fit.write(fit_path, force)?;
+            fit.write(fit_path, force || action == FitAction::Repaired)?;
             Ok((fit, action, why))
         }
     }

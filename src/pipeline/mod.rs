@@ -10,6 +10,9 @@ pub mod fit_compound;
 pub mod roll_fit;
 pub mod run;
 pub mod scenes;
+pub mod shard;
+pub mod specimens;
+pub mod trust;
 pub mod tuning;
 
 /// The fit file's types (crate::results::compound_fit), at their former path.

@@ -24,9 +24,22 @@ pub enum CreepSource {
 }
 
 impl CreepSource {
-    /// Read a fit file (it has a `format_version`) or a bare creep spectrum (JSON).
+    /// Read a fit file (it has a `format_version`), a bare creep spectrum (JSON), or pyvisco's
+    /// Prony-term CSV (crate::prony::pyvisco_csv, ν = 0.5), converted exactly to creep (§4; a fluid,
+    /// E∞ = 0, is refused there: no steady rolling state).
     pub fn read(path: &Path) -> Result<Self, PipelineError> {
-        let text = std::fs::read_to_string(path).map_err(io(path))?;
+        let bytes =
+            crate::fsutil::read_regular(path, crate::limits::INPUT_BYTES_MAX).map_err(io(path))?;
+        if crate::prony::pyvisco_csv::looks_like_pyvisco_terms(&bytes) {
+            let relax = crate::prony::pyvisco_csv::read_pyvisco_terms(
+                &path.display().to_string(),
+                &bytes,
+                crate::material::default_poisson(),
+            )?;
+            let (creep, _) = crate::creep::relaxation_to_creep(&relax)?;
+            return Ok(CreepSource::Spectrum(creep));
+        }
+        let text = String::from_utf8_lossy(&bytes).into_owned();
         let config = |message: String| PipelineError::Config {
             path: path.to_path_buf(),
             message,

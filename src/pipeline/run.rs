@@ -35,6 +35,8 @@ pub struct RunOptions {
     pub out_dir: PathBuf,
     /// The scenes.
     pub scenes: SceneSet,
+    /// The file the scenes were read from; `None`: the shipped scenes.
+    pub scenes_file: Option<PathBuf>,
     /// Replace fit files that differ.
     pub force: bool,
     /// Fit settings (a compound's own settings in `compounds.toml` override them).
@@ -43,6 +45,10 @@ pub struct RunOptions {
     pub allow_extrapolation: bool,
     /// Uncertainty bands (crate::bands) with these settings; `None` skips them (`--no-bands`).
     pub bands: Option<BandSettings>,
+    /// Longest wait for another run that holds the output folder (`--wait`; default [`LOCK_WAIT`]).
+    pub lock_wait: std::time::Duration,
+    /// Run only this shard's compounds (`--shard K/N`, crate::pipeline::shard); `None`: all.
+    pub shard: Option<super::shard::Shard>,
 }
 
 impl RunOptions {
@@ -55,10 +61,9 @@ impl RunOptions {
         scenes: Option<&Path>,
         tref_c: Option<f64>,
     ) -> Result<Self, PipelineError> {
-        let in_dir = input_dir.join("scenes.toml");
-        let scenes = match scenes {
+        let scenes_file = scenes_file(scenes, input_dir);
+        let scenes = match &scenes_file {
             Some(p) => SceneSet::read(p)?,
-            None if in_dir.is_file() => SceneSet::read(&in_dir)?,
             None => SceneSet::shipped(),
         };
         let mut fit = FitOptions::default();
@@ -75,11 +80,52 @@ impl RunOptions {
             input_dir: input_dir.to_path_buf(),
             out_dir: out_dir.to_path_buf(),
             scenes,
+            scenes_file,
             force: false,
             fit,
             allow_extrapolation: false,
             bands: Some(BandSettings::default()),
+            lock_wait: LOCK_WAIT,
+            shard: None,
         })
+    }
+}
+
+impl RunOptions {
+    /// `run --tol`: the relative tolerance of the contact solves and friction maps of every scene
+    /// that sets none of its own, checked against the range of a scene's `tol`.
+    pub fn set_tol(&mut self, tol: f64) -> Result<(), PipelineError> {
+        let (lo, hi) = crate::results::scene::TOL_RANGE;
+        if !(lo..=hi).contains(&tol) {
+            return Err(PipelineError::Setting {
+                field: "--tol".into(),
+                message: format!("{tol} is not a relative tolerance in [{lo:e}, {hi:e}]"),
+            });
+        }
+        for s in self.scenes.scene.iter_mut().filter(|s| s.tol.is_none()) {
+            s.tol = Some(tol);
+        }
+        Ok(())
+    }
+}
+
+/// The scenes file of a job: `given` if any, else `DIR/scenes.toml` if it exists, else `None` (the
+/// shipped scenes). `run` and `rank` choose their scenes by this one rule.
+pub fn scenes_file(given: Option<&Path>, dir: &Path) -> Option<PathBuf> {
+    let in_dir = dir.join("scenes.toml");
+    match given {
+        Some(p) => Some(p.to_path_buf()),
+        None if in_dir.is_file() => Some(in_dir),
+        None => None,
+    }
+}
+
+/// Where the scenes came from, for the notes: the file, or the shipped scenes.
+pub fn scenes_origin(file: Option<&Path>) -> String {
+    match file {
+        Some(p) => format!("scenes from {}", p.display()),
+        None => "scenes: the shipped data/scenes.toml (no scenes.toml in the folder, no --scenes)"
+            .to_string(),
     }
 }
 
@@ -124,6 +170,12 @@ fn units_per_compound(scenes: &SceneSet) -> u64 {
 /// The measurement of a compound: its exports read together with its ingest options, or one
 /// measurement JSON written by `viscoroll ingest`.
 fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
+    if let Some(why) = &c.unreadable {
+        return Err(PipelineError::Setting {
+            field: "folder".into(),
+            message: format!("compound {}: {why}", c.name),
+        });
+    }
     let is_json = |p: &PathBuf| {
         p.extension()
             .is_some_and(|e| e.to_string_lossy().eq_ignore_ascii_case("json"))
@@ -139,7 +191,8 @@ fn measurement_of(c: &CompoundInput) -> Result<Measurement, PipelineError> {
             });
         }
         let p = &c.files[0];
-        let text = std::fs::read_to_string(p).map_err(io(p))?;
+        let text = crate::fsutil::read_regular_to_string(p, crate::limits::INPUT_BYTES_MAX)
+            .map_err(io(p))?;
         return Ok(crate::dma::plausible::measurement_from_json(
             &p.display().to_string(),
             &text,
@@ -168,8 +221,15 @@ fn fit_options(c: &CompoundInput, opts: &RunOptions) -> FitOptions {
     fit
 }
 
-/// A compound's measurement, its fit, what was done to the fit file and why there are no bands.
-type Fitted = (Measurement, CompoundFit, FitAction, Option<String>);
+/// A compound's measurement, its fit, what was done to the fit file, why there are no bands, and
+/// with replicate specimens each one's own fit (or why it failed).
+struct Fitted {
+    measurement: Measurement,
+    fit: CompoundFit,
+    action: FitAction,
+    no_bands: Option<String>,
+    specimen_fits: Vec<Result<CompoundFit, String>>,
+}
 
 /// (scene, its temperatures, cover) → the friction ratios of each replicate.
 type SolvedRatios = (
@@ -179,7 +239,11 @@ type SolvedRatios = (
 
 /// Fit (or reuse the fit of) a compound measured in isotherms, with its bands when asked.
 fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError> {
-    let measurement = checked_measurement(c)?;
+    let (measurement, specimen_fits) = if c.specimens.len() >= 2 {
+        pooled_specimens(c, opts)?
+    } else {
+        (checked_measurement(c)?, Vec::new())
+    };
     let (fit, action, no_bands) = fit_or_reuse_with_bands(
         &c.name,
         &measurement,
@@ -188,7 +252,45 @@ fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, Pipeline
         opts.force,
         opts.bands.as_ref(),
     )?;
-    Ok((measurement, fit, action, no_bands))
+    Ok(Fitted {
+        measurement,
+        fit,
+        action,
+        no_bands,
+        specimen_fits,
+    })
+}
+
+/// Replicate specimens: each read alone and fitted alone (its friction gives the spread between
+/// specimens, crate::bands::between), and their measurements pooled for the compound's fit
+/// (super::specimens).
+#[allow(clippy::type_complexity)]
+fn pooled_specimens(
+    c: &CompoundInput,
+    opts: &RunOptions,
+) -> Result<(Measurement, Vec<Result<CompoundFit, String>>), PipelineError> {
+    let ms: Vec<Measurement> = c
+        .specimens
+        .iter()
+        .map(|files| {
+            checked_measurement(&CompoundInput {
+                files: files.clone(),
+                specimens: Vec::new(),
+                ..c.clone()
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    let (pooled, _notes) = super::specimens::pool(&c.name, &ms)?;
+    let options = fit_options(c, opts);
+    let fits = ms
+        .par_iter()
+        .enumerate()
+        .map(|(k, m)| {
+            crate::pipeline::fit_measurement(&format!("{} specimen {}", c.name, k + 1), m, &options)
+                .map_err(|e| cap_line(&format!("specimen {}: {e}", k + 1)))
+        })
+        .collect();
+    Ok((pooled, fits))
 }
 
 /// Fit (or reuse the fit of) a master curve read already shifted (pyvisco's CSV pair: the compound's
@@ -231,7 +333,13 @@ fn fit_shifted(
          isotherms to resample"
             .to_string()
     });
-    Ok((measurement, fit, action, no_bands))
+    Ok(Fitted {
+        measurement,
+        fit,
+        action,
+        no_bands,
+        specimen_fits: Vec::new(),
+    })
 }
 
 /// The friction ratios of each replicate in a scene, and each point's band from them. The ratios are
@@ -313,7 +421,13 @@ fn one_compound(
     opts: &RunOptions,
     step: &dyn Fn(&str),
 ) -> Result<CompoundResult, PipelineError> {
-    let (measurement, fit, action, no_bands) = match &c.settings.shift_factors {
+    let Fitted {
+        measurement,
+        fit,
+        action,
+        no_bands,
+        specimen_fits,
+    } = match &c.settings.shift_factors {
         None => fit_measured(c, opts)?,
         Some(sf) => fit_shifted(c, sf, opts)?,
     };
@@ -339,6 +453,17 @@ fn one_compound(
         } else {
             ratios.push(Vec::new());
         }
+        // each specimen's own friction, what is determined, the between-specimen term
+        let specimen_points: Vec<Vec<FrictionPoint>> = specimen_fits
+            .iter()
+            .map(|f| {
+                f.as_ref()
+                    .ok()
+                    .and_then(|f| friction_vs_temperature(f, spec, &settings).ok())
+                    .unwrap_or_default()
+            })
+            .collect();
+        super::trust::finish_points(&mut points, &specimen_points, fit.measured_range_c());
         friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         let m = super::scenes::friction_maps(&fit, spec, &super::scenes::pipeline_map_settings())?;
@@ -352,7 +477,22 @@ fn one_compound(
         maps.push(m);
         step(&format!("maps {}", spec.name));
     }
-    let fit_level = fit_warnings(&fit, no_bands.as_deref(), opts.bands.is_some());
+    let mut fit_level = fit_warnings(&fit, no_bands.as_deref(), opts.bands.is_some());
+    fit_level.extend(
+        specimen_fits
+            .iter()
+            .filter_map(|f| f.as_ref().err())
+            .map(|e| format!("replicate specimens: {e} (its friction left out of the spread)")),
+    );
+    if opts.bands.is_some() && fit.bands.is_some() {
+        // what every band of the compound covers (docs/MATH.md §16)
+        let sd = friction
+            .iter()
+            .flat_map(|(_, p)| p)
+            .map(|p| crate::bands::between_sd_ln(&p.specimens))
+            .fold(0.0, f64::max);
+        fit_level.push(crate::bands::specimens_note(c.specimens.len().max(1), sd));
+    }
     write_report(
         &fit,
         &measurement,
@@ -487,40 +627,42 @@ fn compound_warnings(fit: &CompoundFit, friction: &SceneFriction) -> Vec<String>
     warnings.into_iter().map(|w| cap_line(&w)).collect()
 }
 
-/// The outcome record of one compound from its result.
+/// The outcome record of one compound from its result, and its bootstrap ratios per scene (for
+/// the bands of means over shared windows, super::trust).
 fn outcome(
     c: &CompoundInput,
     opts: &RunOptions,
     result: Result<CompoundResult, PipelineError>,
     seconds: f64,
-) -> CompoundOutcome {
+) -> (CompoundOutcome, Vec<Vec<Vec<f64>>>) {
+    let specimens = c.specimens.len().max(1);
     match result {
         Ok((fit, action, friction, ratios, no_bands)) => {
             let untrusted = fit.untrusted_reasons();
+            let care = fit.care_reasons();
             let mut warnings = compound_warnings(&fit, &friction);
+            if action == FitAction::Repaired {
+                warnings.push(format!(
+                    "fits/{}.json failed its content hash or validation (edited or damaged): fitted again and replaced",
+                    c.name
+                ));
+            }
             warnings.extend(band_warnings(
                 &fit,
                 no_bands.as_deref(),
                 opts.bands.is_some(),
             ));
-            CompoundOutcome {
+            let out = CompoundOutcome {
                 compound: c.name.clone(),
                 fit_path: Some(fit_path(&opts.out_dir, &c.name)),
-                fit_action: Some(
-                    match action {
-                        FitAction::Reused => "reused",
-                        FitAction::Fitted => "fitted",
-                        FitAction::Replaced => "replaced",
-                    }
-                    .to_string(),
-                ),
+                fit_action: Some(action.word().to_string()),
                 standings: friction
                     .iter()
                     .enumerate()
                     .map(|(k, (s, p))| {
-                        let mut st = standing(s, p, &untrusted, opts.allow_extrapolation);
+                        let mut st = standing(s, p, &untrusted, &care, opts.allow_extrapolation);
                         if let Some(r) = ratios.get(k).filter(|r| !r.is_empty()) {
-                            st.band = crate::bands::mean_band(p, r, &st.temps_c);
+                            st.band = super::trust::standing_band(p, r, &st.temps_c);
                         }
                         st
                     })
@@ -530,19 +672,25 @@ fn outcome(
                 friction,
                 error: None,
                 seconds,
-            }
+                specimens,
+            };
+            (out, ratios)
         }
-        Err(e) => CompoundOutcome {
-            compound: c.name.clone(),
-            fit_path: None,
-            fit_action: None,
-            standings: vec![],
-            friction: vec![],
-            untrusted: vec![],
-            warnings: vec![],
-            error: Some(cap_line(&e.to_string())),
-            seconds,
-        },
+        Err(e) => (
+            CompoundOutcome {
+                compound: c.name.clone(),
+                fit_path: None,
+                fit_action: None,
+                standings: vec![],
+                friction: vec![],
+                untrusted: vec![],
+                warnings: vec![],
+                error: Some(cap_line(&e.to_string())),
+                seconds,
+                specimens,
+            },
+            Vec::new(),
+        ),
     }
 }
 
@@ -550,10 +698,14 @@ fn outcome(
 fn log_line(out: &CompoundOutcome) -> String {
     match &out.error {
         None => format!(
-            "{}: {} fit, {} scenes, {:.2} s{}",
+            "{}: {}, {}, {:.2} s{}",
             out.compound,
-            out.fit_action.as_deref().unwrap_or(""),
-            out.friction.len(),
+            match out.fit_action.as_deref() {
+                Some("reused") => "reused fit",
+                Some("replaced") => "fit replaced (--force)",
+                _ => "new fit",
+            },
+            crate::results::counted(out.friction.len(), "scene"),
             out.seconds,
             if out.is_untrusted() {
                 " (NOT TRUSTED: see the index)"
@@ -586,6 +738,10 @@ fn stale_reports(reports: &Path, compounds: &[CompoundInput]) -> Vec<String> {
     v
 }
 
+/// One compound's finished work: its outcome, its bootstrap ratios per scene and temperature, and
+/// its tan δ proxy for the index.
+type Finished = (CompoundOutcome, Vec<Vec<Vec<f64>>>, Option<TanDeltaProxy>);
+
 /// [`run_all`], reporting each finished work unit to `progress` (first [`ProgressEvent::Total`],
 /// then one [`ProgressEvent::Done`] per unit, from the worker threads).
 pub fn run_all_with_progress(
@@ -598,21 +754,46 @@ pub fn run_all_with_progress(
             path: opts.input_dir.clone(),
         });
     }
-    let (compounds, mut notes) = discover(&opts.input_dir)?;
-    if compounds.is_empty() {
+    // the run's own paths are never compounds: a second run in the same folder reads only the
+    // inputs again
+    let own = [
+        opts.out_dir.clone(),
+        opts.out_dir.join("fits"),
+        opts.out_dir.join("reports"),
+    ]
+    .into_iter()
+    .chain(opts.scenes_file.clone())
+    .collect::<Vec<_>>();
+    let (all, mut notes) = discover(&opts.input_dir, &own)?;
+    if all.is_empty() {
         return Err(PipelineError::NoCompounds {
             path: opts.input_dir.clone(),
             notes: notes.iter().take(5).cloned().collect::<Vec<_>>().join("; "),
         });
     }
-    let _lock = crate::fsutil::DirLock::acquire(&opts.out_dir, LOCK_WAIT, &|pid| {
+    notes.insert(0, scenes_origin(opts.scenes_file.as_deref()));
+    // a shard locks its own folder and leaves temporary files alone (crate::pipeline::shard)
+    let lock_dir = opts
+        .shard
+        .map_or(opts.out_dir.clone(), |s| s.dir(&opts.out_dir));
+    let _lock = crate::fsutil::DirLock::acquire(&lock_dir, opts.lock_wait, &|holder| {
         log(&format!(
-            "waiting for another viscoroll run (process {pid}) on {}",
-            opts.out_dir.display()
+            "waiting up to {} s (--wait) for another viscoroll run on {}: {holder}",
+            opts.lock_wait.as_secs(),
+            lock_dir.display()
         ))
     })
-    .map_err(io(&opts.out_dir))?;
-    let removed = crate::fsutil::remove_stale_temps(&opts.out_dir, 3);
+    .map_err(io(&lock_dir))?;
+    let (positions, compounds): (Vec<usize>, Vec<CompoundInput>) = all
+        .iter()
+        .cloned()
+        .enumerate()
+        .filter(|(i, _)| opts.shard.map_or(true, |s| s.takes(*i)))
+        .unzip();
+    let removed = match opts.shard {
+        None => crate::fsutil::remove_stale_temps(&opts.out_dir, 3),
+        Some(_) => 0,
+    };
     if removed > 0 {
         notes.push(format!(
             "removed {removed} temporary file(s) left by an interrupted run"
@@ -623,7 +804,7 @@ pub fn run_all_with_progress(
     }
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
-    let (outcomes, proxies): (Vec<CompoundOutcome>, Vec<Option<TanDeltaProxy>>) = compounds
+    let done: Vec<Finished> = compounds
         .par_iter()
         .map(|c| {
             let start = std::time::Instant::now();
@@ -640,18 +821,45 @@ pub fn run_all_with_progress(
                 step("skipped");
             }
             let proxy = r.as_ref().ok().map(|(fit, ..)| TanDeltaProxy::of(fit));
-            let out = outcome(c, opts, r, start.elapsed().as_secs_f64());
+            let (out, ratios) = outcome(c, opts, r, start.elapsed().as_secs_f64());
             log(&log_line(&out));
-            (out, proxy)
+            (out, ratios, proxy)
         })
-        .unzip();
-    let proxies: Vec<TanDeltaProxy> = proxies.into_iter().flatten().collect();
-    let mut outcomes = outcomes;
+        .collect();
+    let mut outcomes = Vec::with_capacity(done.len());
+    let mut ratios = Vec::with_capacity(done.len());
+    let mut proxies: Vec<TanDeltaProxy> = Vec::new();
+    for (o, r, p) in done {
+        outcomes.push(o);
+        ratios.push(r);
+        proxies.extend(p);
+    }
+    super::trust::share_windows(&mut outcomes, &ratios, &opts.scenes);
     let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
     let reports = opts.out_dir.join("reports");
-    notes.extend(stale_reports(&reports, &compounds));
+    notes.extend(stale_reports(&reports, &all));
     let ranking_path = reports.join("ranking.csv");
     let index_path = reports.join("index.html");
+    if let Some(shard) = opts.shard {
+        let summary = RunSummary {
+            compounds: outcomes,
+            notes,
+            allow_extrapolation: opts.allow_extrapolation,
+            ranking_csv: ranking_path,
+            index_html: index_path,
+            comparisons,
+        };
+        let file = super::shard::ShardFile {
+            shard_index: shard.index,
+            shard_count: shard.count,
+            compounds_total: all.len(),
+            positions,
+            scenes: opts.scenes.clone(),
+            summary,
+        };
+        super::shard::write_shard_file(&opts.out_dir, &file)?;
+        return Ok(file.summary);
+    }
     write_file(
         &ranking_path,
         ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
@@ -671,7 +879,7 @@ pub fn run_all_with_progress(
 
 /// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,
 /// in ranking order), and each standing's `tied_with` filled from the ties.
-fn compare_ranked(
+pub(super) fn compare_ranked(
     outcomes: &mut [CompoundOutcome],
     scenes: &SceneSet,
 ) -> Vec<crate::results::PairComparison> {
@@ -705,18 +913,39 @@ fn compare_ranked(
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
-/// compounds first by mean friction, then the others, then the failures.
+/// compounds first by mean friction, then the others, then the failures. With `bands` (and a fit
+/// file that carries its ensemble, as `run` writes it) each point and each mean gets its band as in
+/// `run`, and the ranked compounds their comparisons (`tied_with`), which are returned too.
 pub fn rank_fits(
     fits: &[CompoundFit],
     spec: &crate::results::SceneSpec,
     allow_extrapolation: bool,
-) -> Vec<RankedFit> {
+    bands: Option<&BandSettings>,
+) -> (Vec<RankedFit>, Vec<crate::results::PairComparison>) {
     let settings = pipeline_contact_settings();
     let mut v: Vec<_> = fits
         .par_iter()
         .map(|f| match friction_vs_temperature(f, spec, &settings) {
-            Ok(p) => {
-                let s = standing(&spec.name, &p, &f.untrusted_reasons(), allow_extrapolation);
+            Ok(mut p) => {
+                for q in p.iter_mut() {
+                    q.determine(f.measured_range_c());
+                }
+                let ratios = match (bands, f.bands.as_ref()) {
+                    (Some(bs), Some(ensemble)) => {
+                        scene_bands(f, ensemble, spec, bs, &mut p, &mut vec![], &mut vec![])
+                    }
+                    _ => vec![],
+                };
+                let mut s = standing(
+                    &spec.name,
+                    &p,
+                    &f.untrusted_reasons(),
+                    &f.care_reasons(),
+                    allow_extrapolation,
+                );
+                if !ratios.is_empty() {
+                    s.band = super::trust::standing_band(&p, &ratios, &s.temps_c);
+                }
                 Ok((f.compound.clone(), p, s))
             }
             Err(e) => Err((f.compound.clone(), cap_line(&e.to_string()))),
@@ -731,7 +960,21 @@ pub fn rank_fits(
         let (ka, kb) = (key(a), key(b));
         ka.0.cmp(&kb.0).then(ka.1.total_cmp(&kb.1))
     });
-    v
+    let ranked: Vec<(String, crate::results::FrictionBand)> = v
+        .iter()
+        .filter_map(|r| r.as_ref().ok())
+        .filter(|(_, _, s)| s.trusted())
+        .filter_map(|(c, _, s)| s.band.map(|b| (c.clone(), b)))
+        .collect();
+    let pairs = crate::bands::comparisons(&spec.name, &ranked);
+    for (c, _, s) in v.iter_mut().filter_map(|r| r.as_mut().ok()) {
+        s.tied_with = pairs
+            .iter()
+            .filter(|p| p.tied && (p.a == *c || p.b == *c))
+            .map(|p| if p.a == *c { p.b.clone() } else { p.a.clone() })
+            .collect();
+    }
+    (v, pairs)
 }
 
 /// The output folder's fit path of a compound.

@@ -41,8 +41,19 @@ pub fn pipeline_contact_settings() -> ContactSettings {
 /// 1e−4 (`cargo bench --bench contact_layer`); its measured errors at 1e−3 are 3e−6…3e−4 in ρF/N.
 pub const COVER_TOL: f64 = 1e-3;
 
-/// Friction of `fit` at every temperature of `spec` (parallel over temperatures). A failed solve
-/// gives a point with `error` set, not an error: the other temperatures still count.
+/// The tolerance of a scene's direct contact solves: its own `tol` if set, else `default` on a
+/// half-space and at least [`COVER_TOL`] on a cover.
+pub fn scene_tol(spec: &SceneSpec, default: f64) -> f64 {
+    spec.tol.unwrap_or(match spec.cover_thickness_mm {
+        Some(_) => default.max(COVER_TOL),
+        None => default,
+    })
+}
+
+/// Friction of `fit` at every temperature of `spec` (parallel over temperatures), each point with
+/// the solver's error estimate; the tolerance is the scene's ([`scene_tol`], `settings`' as the
+/// default). A failed solve gives a point with `error` set, not an error: the other temperatures
+/// still count.
 pub fn friction_vs_temperature(
     fit: &CompoundFit,
     spec: &SceneSpec,
@@ -52,6 +63,10 @@ pub fn friction_vs_temperature(
         compound: fit.compound.clone(),
     })?;
     let scene = spec.scene();
+    let tol = scene_tol(spec, settings.auto.tol);
+    let mut settings = *settings;
+    settings.auto.tol = tol;
+    let settings = &settings;
     Ok(spec
         .temps_c
         .par_iter()
@@ -68,6 +83,9 @@ pub fn friction_vs_temperature(
                 model_reason: String::new(),
                 band: None,
                 warnings: vec![],
+                specimens: vec![],
+                undetermined: None,
+                error_estimate: None,
             };
             // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
             let at = match fit_spectrum_at(fit, t) {
@@ -83,7 +101,7 @@ pub fn friction_vs_temperature(
                     &at.spectrum,
                     Some(h_mm * 1e-3),
                     ModelChoice::Auto,
-                    settings.auto.tol.max(COVER_TOL),
+                    tol,
                 ) {
                     Ok(r) => FrictionPoint {
                         temp_c: t,
@@ -96,11 +114,16 @@ pub fn friction_vs_temperature(
                         model: r.model.name().to_string(),
                         model_reason: r.reason,
                         band: None,
+                        error_estimate: Some(
+                            r.error_estimate + r.model_error_estimate.unwrap_or(0.0),
+                        ),
                         warnings: r
                             .warnings
                             .iter()
                             .map(|w| crate::results::cap_line(w))
                             .collect(),
+                        specimens: vec![],
+                        undetermined: None,
                     },
                     Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
                 };
@@ -117,12 +140,15 @@ pub fn friction_vs_temperature(
                     model: "half-space".into(),
                     model_reason: String::new(),
                     band: None,
+                    error_estimate: r.dimensionless.error_estimate,
                     warnings: r
                         .dimensionless
                         .warnings
                         .iter()
                         .map(|w| crate::results::cap_line(w))
                         .collect(),
+                    specimens: vec![],
+                    undetermined: None,
                 },
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }
@@ -208,6 +234,10 @@ pub fn friction_maps(
     let creep = fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
     })?;
+    // the scene's own tolerance, if it sets one, over the maps' (and the covered maps' floor)
+    let mut settings = *settings;
+    settings.tol = spec.tol.unwrap_or(settings.tol);
+    let settings = &settings;
     let jobs = map_jobs(spec);
     let a_t = |t: f64| {
         creep
@@ -246,7 +276,13 @@ pub fn friction_maps(
     };
     if !queries.is_empty() {
         solved = match spec.cover_thickness_mm {
-            Some(h_mm) => covered_values(creep, spec.poisson, h_mm, &queries, settings),
+            Some(h_mm) => covered_values(
+                creep,
+                spec.poisson,
+                h_mm,
+                &queries,
+                scene_tol(spec, settings.tol),
+            ),
             None => {
                 let problem = ReducedProblem::new(creep, spec.poisson)?;
                 let (v, curve) = friction_map(&problem, &queries, settings)?;
@@ -296,18 +332,17 @@ struct MapSolve {
     warnings: Vec<String>,
 }
 
-/// A covered scene's map values from the 2-D interpolant on the bonded layer (cover `h_mm`), at a
-/// tolerance of at least [`COVER_TOL`], with the covered maps' own panels and degrees
-/// ([`MapSettings::covered`]; only `settings.tol` is taken from `settings`). A surface that cannot be built gives no values and the
-/// reason in the warnings; one short of its tolerance says so.
+/// A covered scene's map values from the 2-D interpolant on the bonded layer (cover `h_mm`), at
+/// `tol` (the scene's, [`scene_tol`]), with the covered maps' own panels and degrees
+/// ([`MapSettings::covered`]). A surface that cannot be built gives no values and the reason in
+/// the warnings; one short of its tolerance says so.
 fn covered_values(
     creep: &crate::CreepSpectrum,
     poisson: Option<f64>,
     h_mm: f64,
     queries: &[MapQuery],
-    settings: &MapSettings,
+    tol: f64,
 ) -> MapSolve {
-    let tol = settings.tol.max(COVER_TOL);
     let cs = MapSettings::covered(tol);
     let mut out = MapSolve {
         values: None,

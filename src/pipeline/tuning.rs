@@ -195,7 +195,7 @@ pub fn parse_shift(spec: &str, tref: Option<f64>, base: &Path) -> Result<ShiftSo
             "shift {spec:?}: expected auto, wlf:C1,C2, arrhenius:EA or an existing file"
         ));
     }
-    let text = std::fs::read_to_string(&path)
+    let text = crate::fsutil::read_regular_to_string(&path, crate::limits::INPUT_BYTES_MAX)
         .map_err(|e| format!("cannot read shift file {}: {e}", path.display()))?;
     if text.trim_start().starts_with('{') {
         let law = serde_json::from_str::<ShiftLaw>(&text)

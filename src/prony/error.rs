@@ -31,6 +31,9 @@ pub enum PronyError {
         /// The single frequency in Hz.
         freq_hz: f64,
     },
+    /// A setting or the fit it implies is beyond the work budget (crate::limits).
+    #[error("Prony setting {0}")]
+    Budget(#[from] crate::limits::LimitError),
     /// A setting is out of its range.
     #[error("Prony setting `{field}` = {value} is invalid: {reason}")]
     BadSetting {
@@ -44,4 +47,14 @@ pub enum PronyError {
     /// The QP solver could not be set up or returned no usable solution.
     #[error("the Prony QP solver failed: {0}")]
     Solver(String),
+    /// A Prony-term file (pyvisco's CSV, crate::prony::pyvisco_csv) cannot be read.
+    #[error("{file}, line {line}: {message}")]
+    TermsFile {
+        /// The file.
+        file: String,
+        /// 1-based line.
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
 }

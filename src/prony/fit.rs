@@ -119,6 +119,11 @@ pub fn fit_prony(
     };
     let (f_min, f_max) = freq_window_hz(points)?;
     let taus = relaxation_times_s(f_min, f_max, settings);
+    crate::limits::at_most(
+        "terms_per_decade × decades of the master curve (terms)",
+        taus.len(),
+        crate::limits::PRONY_TERMS_MAX,
+    )?;
     let scale = points.iter().map(|p| p.storage_pa).fold(0.0, f64::max);
     let problem = Problem::new(points, &taus, scale, settings.loss_weight);
     let (lambda, solution, search, total_iterations) = solve_weights(&problem, settings)?;

@@ -151,6 +151,14 @@ impl PronySettings {
                 "expected at least 3 (a corner needs 3 points)",
             );
         }
+        crate::limits::at_most(
+            "lambda_count",
+            self.lambda_count,
+            crate::limits::PRONY_LAMBDA_COUNT_MAX,
+        )?;
+        if let Some(m) = self.max_terms {
+            crate::limits::at_most("max_terms", m, crate::limits::PRONY_TERMS_MAX)?;
+        }
         if !(self.drop_threshold.is_finite() && (0.0..1.0).contains(&self.drop_threshold)) {
             return bad(
                 "drop_threshold",

@@ -40,7 +40,10 @@ pub fn refit_for_cards(
         None => (
             own_moduli(spectrum),
             PronySettings::default(),
-            "the spectrum's own E′, E″",
+            match spectrum.kind {
+                crate::ModulusKind::Shear => "the spectrum's own G′, G″",
+                crate::ModulusKind::Tensile => "the spectrum's own E′, E″",
+            },
         ),
     };
     let cards_for_inf = usize::from(spectrum.modulus_inf_pa > 0.0);

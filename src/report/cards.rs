@@ -251,6 +251,22 @@ fn kind_name(kind: ModulusKind) -> &'static str {
     }
 }
 
+/// The instantaneous elastic constants a card's elastic definition takes, saying which modulus
+/// each number is: Young's modulus E₀ of a tensile spectrum as it is; for a shear spectrum G₀ and
+/// the Young's modulus E₀ = 2(1 + ν)G₀ that the elastic slot (Abaqus `*ELASTIC`, ANSYS `MP,EX`)
+/// takes.
+fn elastic_constants(spectrum: &RelaxationSpectrum, e0: f64) -> String {
+    let nu = spectrum.poisson;
+    match spectrum.kind {
+        ModulusKind::Tensile => format!("E0 = {} Pa (Young's modulus), nu = {nu}", sci(e0)),
+        ModulusKind::Shear => format!(
+            "G0 = {} Pa (shear modulus): Young's modulus E0 = 2(1+nu)G0 = {} Pa, nu = {nu}",
+            sci(e0),
+            sci(2.0 * (1.0 + nu) * e0)
+        ),
+    }
+}
+
 /// The viscoroll comment line that lets our readers recover E₀, the kind and ν.
 fn provenance(prefix: &str, spectrum: &RelaxationSpectrum, e0: f64) -> String {
     format!(
@@ -271,14 +287,17 @@ pub fn abaqus(
     let law = shift_of(shift, "Abaqus")?;
     let mut s = String::new();
     s.push_str(&provenance("**", spectrum, e0));
-    s.push_str(
-        "** Units: Pa, s, degC. Prony ratios g_i = E_i/E0 relative to the instantaneous modulus.\n",
-    );
+    let m = if spectrum.kind == ModulusKind::Shear {
+        "G"
+    } else {
+        "E"
+    };
     s.push_str(&format!(
-        "** Combine with *ELASTIC, MODULI=INSTANTANEOUS: E0 = {} Pa ({}), nu = {}\n",
-        sci(e0),
-        kind_name(spectrum.kind),
-        spectrum.poisson
+        "** Units: Pa, s, degC. Prony ratios g_i = {m}_i/{m}0 relative to the instantaneous modulus.\n"
+    ));
+    s.push_str(&format!(
+        "** Combine with *ELASTIC, MODULI=INSTANTANEOUS (Young's modulus): {}\n",
+        elastic_constants(spectrum, e0)
     ));
     s.push_str("*VISCOELASTIC, TIME=PRONY\n");
     for t in &spectrum.terms {
@@ -322,10 +341,8 @@ pub fn ansys(
     s.push_str(&provenance("!", spectrum, e0));
     s.push_str("! Units: Pa, s, degC. Relative moduli a_i = G_i/G0 (instantaneous), relaxation times tau_i.\n");
     s.push_str(&format!(
-        "! Combine with the instantaneous elastic constants: E0 = {} Pa ({}), nu = {}\n",
-        sci(e0),
-        kind_name(spectrum.kind),
-        spectrum.poisson
+        "! Combine with the instantaneous elastic constants (MP,EX takes Young's modulus): {}\n",
+        elastic_constants(spectrum, e0)
     ));
     s.push_str(&format!("TB,PRONY,{m},1,{},SHEAR\n", spectrum.terms.len()));
     let values: Vec<f64> = spectrum

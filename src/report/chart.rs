@@ -90,7 +90,17 @@ pub struct Curve {
     pub mark: Mark,
     /// Its colour (None: the palette by curve index).
     pub colour: Option<RGBColor>,
+    /// The points (by index into `points`) drawn hollow whatever the mark: not determined.
+    pub hollow: Vec<usize>,
+    /// Where the band was cut to fit the plot: (x, the cut end's y, `true` when the high end was
+    /// cut). Each is drawn as a triangle pointing on beyond the cut, which the legend explains
+    /// ([`CUT_LEGEND`]).
+    pub band_cut: Vec<(f64, f64, bool)>,
 }
+
+/// The legend's line for the cut marks of [`Curve::band_cut`] (one legend line: at most
+/// `LEGEND_CHARS` characters, so a page's text holds it whole).
+pub const CUT_LEGEND: &str = "band cut at edge";
 
 impl Curve {
     /// A curve of `mark` with no band and the palette's colour.
@@ -101,6 +111,8 @@ impl Curve {
             band: vec![],
             mark,
             colour: None,
+            hollow: vec![],
+            band_cut: vec![],
         }
     }
 
@@ -259,7 +271,7 @@ const BAR_W: u32 = 120;
 /// Characters per legend line before wrapping.
 const LEGEND_CHARS: usize = 18;
 
-/// A legend entry broken into lines of at most [`LEGEND_CHARS`] characters, only at spaces or
+/// A legend entry broken into lines of at most `LEGEND_CHARS` characters, only at spaces or
 /// after a hyphen, underscore or slash (`conveyor-idler-` / `half-space`, never inside a word); a
 /// single piece longer than a line is shortened with `…`; at most three lines, the last cut with
 /// `…`.
@@ -407,6 +419,13 @@ fn draw_curve<DB: DrawingBackend>(
             )
             .map_err(e)?;
     }
+    // the cut marks: a triangle at the cut end, pointing on beyond it
+    chart
+        .draw_series(cv.band_cut.iter().filter_map(|&(x, y, high)| {
+            let at = to_axes(c, (x, y))?;
+            Some(EmptyElement::at(at) + cut_triangle(high, col))
+        }))
+        .map_err(e)?;
     let pts: Vec<(f64, f64)> = cv.points.iter().filter_map(|&p| to_axes(c, p)).collect();
     if matches!(cv.mark, Mark::Line | Mark::LineDots | Mark::LineCircles) {
         chart
@@ -423,10 +442,32 @@ fn draw_curve<DB: DrawingBackend>(
             ))
             .map_err(e)?;
     }
+    let solid: Vec<(f64, f64)> = cv
+        .points
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !cv.hollow.contains(i))
+        .filter_map(|(_, &p)| to_axes(c, p))
+        .collect();
+    let hollow: Vec<(f64, f64)> = cv
+        .hollow
+        .iter()
+        .filter_map(|&i| cv.points.get(i).and_then(|&p| to_axes(c, p)))
+        .collect();
+    chart
+        .draw_series(hollow.iter().map(|&p| Circle::new(p, 4, WHITE.filled())))
+        .map_err(e)?;
+    chart
+        .draw_series(
+            hollow
+                .iter()
+                .map(|&p| Circle::new(p, 4, col.stroke_width(2))),
+        )
+        .map_err(e)?;
     match cv.mark {
         Mark::LineDots | Mark::Dots | Mark::Stems => {
             chart
-                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
+                .draw_series(solid.iter().map(|&p| Circle::new(p, 3, col.filled())))
                 .map_err(e)?;
         }
         Mark::Circles | Mark::LineCircles => {
@@ -447,8 +488,14 @@ fn draw_curve<DB: DrawingBackend>(
     Ok(())
 }
 
+/// A cut mark in pixel offsets from its point: a filled triangle pointing up (`high`) or down.
+fn cut_triangle(high: bool, col: RGBColor) -> Polygon<(i32, i32)> {
+    let s = if high { -1 } else { 1 };
+    Polygon::new(vec![(-6, 0), (6, 0), (0, 9 * s)], col.filled())
+}
+
 /// The legend panel: one entry per named curve (a sample of its mark and its name, wrapped), as
-/// many as fit, then `… and N more`.
+/// many as fit, then `… and N more`; a line on the cut marks when a curve has one.
 fn draw_legend<DB: DrawingBackend>(
     panel: &DrawingArea<DB, Shift>,
     named: &[(usize, &Curve)],
@@ -522,6 +569,18 @@ fn draw_legend<DB: DrawingBackend>(
             y += line;
         }
         y += 6;
+    }
+    let cut = wrap(CUT_LEGEND);
+    if named.iter().any(|(_, cv)| !cv.band_cut.is_empty()) && y + line * cut.len() as i32 <= h {
+        panel
+            .draw(&(EmptyElement::at((17, y + line / 2 + 2)) + cut_triangle(true, BLACK)))
+            .map_err(e)?;
+        for l in cut {
+            panel
+                .draw(&Text::new(l, (36, y), font.clone()))
+                .map_err(e)?;
+            y += line;
+        }
     }
     Ok(())
 }

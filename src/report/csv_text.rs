@@ -1,7 +1,43 @@
 //! CSV text for the report tables, written with the `csv` crate so that a field holding a comma,
 //! a quote or a line break (a compound name, an error message) is quoted and never breaks a row.
 //!
+//! Every field and comment passes through [`cell`]: a text that a spreadsheet would run as a formula
+//! (starting with `=`, `+`, `-`, `@`, tab or CR; OWASP's CSV-injection guidance) gets a leading `'`,
+//! while numbers (`-1.5e3`, `+2`, `NaN`, and lists of them: `-40 -30`) stay numbers; control characters other than a line break
+//! are shown escaped (`\u{1b}`), so no escape sequence reaches a terminal or a viewer.
+//!
 //! Input: `#` comment lines, a header and rows of already formatted fields; output: the file's text.
+
+use std::borrow::Cow;
+
+/// A field made safe for spreadsheets and terminals (see the module doc).
+pub fn cell(field: &str) -> Cow<'_, str> {
+    // A number, or a list of numbers (`-40 -30 -20`), calls nothing: it stays as it is.
+    let numbers = !field.trim().is_empty()
+        && !field.starts_with(char::is_whitespace)
+        && field.split_whitespace().all(|w| w.parse::<f64>().is_ok());
+    let formula = field.starts_with(['=', '+', '-', '@', '\t', '\r']) && !numbers;
+    match (formula, escape_controls(field)) {
+        (false, f) => f,
+        (true, f) => format!("'{f}").into(),
+    }
+}
+
+/// Control characters other than a line break shown escaped (`\u{1b}`).
+fn escape_controls(text: &str) -> Cow<'_, str> {
+    if !text.chars().any(|c| c.is_control() && c != '\n') {
+        return text.into();
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        if c.is_control() && c != '\n' {
+            out.extend(c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    out.into()
+}
 
 /// Build a CSV text: each comment as a `# ` line (line breaks inside a comment become spaces, so a
 /// comment never spills into the table), then the header and the rows.
@@ -13,15 +49,22 @@ where
     let mut out = String::new();
     for c in comments {
         out.push_str("# ");
-        out.push_str(&c.replace(['\r', '\n'], " "));
+        // the line starts with `#`, so only control characters need care
+        out.push_str(&escape_controls(&c.replace(['\r', '\n'], " ")));
         out.push('\n');
     }
     let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
     // Writing to a Vec cannot fail (no I/O); a record of another length than the header is a bug
     // of the caller, caught by the tests of every table.
-    let _ = w.write_record(header);
+    let _ = w.write_record(
+        header
+            .iter()
+            .map(|h| cell(h).into_owned())
+            .collect::<Vec<_>>(),
+    );
     for r in rows {
-        let _ = w.write_record(r.into_iter().collect::<Vec<String>>());
+        let r: Vec<String> = r.into_iter().map(|f| cell(&f).into_owned()).collect();
+        let _ = w.write_record(&r);
     }
     let bytes = w.into_inner().unwrap_or_default();
     out.push_str(&String::from_utf8_lossy(&bytes));
@@ -51,5 +94,39 @@ mod tests {
             .collect();
         assert_eq!(rows[0], ["a, b", "1"]);
         assert_eq!(rows[1], ["say \"hi\"\nthere", "2"]);
+    }
+
+    #[test]
+    fn formulas_are_neutralised_numbers_stay_numbers_controls_are_escaped() {
+        for f in [
+            "=1+2",
+            "+SUM(A1)",
+            "-2+3",
+            "@cmd",
+            "\tx",
+            "\t1",
+            "\rx",
+            "-",
+            "-1 =A1",
+            "=HYPERLINK(\"x\")",
+        ] {
+            let c = cell(f);
+            assert!(c.starts_with('\''), "{f:?} -> {c:?}");
+        }
+        for n in [
+            "-1.5e3",
+            "+2",
+            "-0",
+            "NaN",
+            "inf",
+            "-inf",
+            "12",
+            "0.5",
+            "-40 -30 -20",
+        ] {
+            assert_eq!(cell(n), n);
+        }
+        assert_eq!(cell("a\u{1b}[31mb"), "a\\u{1b}[31mb");
+        assert_eq!(cell("plain text"), "plain text");
     }
 }

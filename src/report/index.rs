@@ -164,13 +164,17 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
             apart_table(outcomes, &spec.name)
         );
     }
-    let mut h = String::from("<table><tr><th>rank</th><th class=\"l\">compound</th><th>mean F/N</th><th>vs next</th><th>tan δ 60 °C, 10 Hz</th><th>rank by tan δ</th><th class=\"l\">flags</th></tr>");
+    let mut h = window_words(&list);
+    h.push_str("<table><tr><th>rank</th><th class=\"l\">compound</th><th>mean F/N</th><th>vs next</th><th>tan δ 60 °C, 10 Hz</th><th>rank by tan δ</th><th class=\"l\">verdict</th><th class=\"l\">flags</th></tr>");
     for (i, (o, s)) in list.iter().enumerate() {
         let next = list.get(i + 1).map(|(n, _)| n.compound.as_str());
         let vs = match next.and_then(|n| compare(&summary.comparisons, &spec.name, &o.compound, n))
         {
-            Some((p, true)) => format!("<span class=\"tie\">tied (P = {p:.2})</span>"),
-            Some((p, false)) => format!("P(lower) = {p:.2}"),
+            Some((p, true)) => format!(
+                "<span class=\"tie\">tied (P = {})</span>",
+                crate::bands::prob_text(p)
+            ),
+            Some((p, false)) => format!("P(lower) = {}", crate::bands::prob_text(p)),
             None if next.is_some() && !banded => "–".into(),
             None => String::new(),
         };
@@ -188,7 +192,7 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
         let misranked = pr.is_some_and(|r| r != i + 1);
         let _ = write!(
             h,
-            "<tr><td>{}</td><td class=\"l\"><a href=\"{n}/datasheet.html\">{n}</a></td><td>{}</td><td class=\"l\">{vs}</td><td>{pv}</td><td{}>{}</td><td class=\"l warn\">{}</td></tr>",
+            "<tr><td>{}</td><td class=\"l\"><a href=\"{n}/datasheet.html\">{n}</a></td><td>{}</td><td class=\"l\">{vs}</td><td>{pv}</td><td{}>{}</td>{}<td class=\"l warn\">{}</td></tr>",
             i + 1,
             s.mean_friction.map_or("–".into(), |m| {
                 let (v, b) = num_band(m, s.band.map(|b| (b.p05, b.p95)));
@@ -200,11 +204,13 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
             }),
             if misranked { " class=\"warn\" title=\"the proxy ranks this compound elsewhere\"" } else { "" },
             pr.map_or("–".into(), |r| r.to_string()),
+            verdict_cell(s),
             flags(o, &spec.name, allow),
             n = esc(&o.compound)
         );
     }
     h.push_str("</table>");
+    h.push_str(&covers_words(&list));
     if !banded {
         h.push_str("<p>No pairwise comparisons in this run (bands not computed): ranks are not tested for ties.</p>");
     }
@@ -213,6 +219,81 @@ fn scene_tables(summary: &RunSummary, spec: &SceneSpec, proxies: &[TanDeltaProxy
     }
     h.push_str(&per_temperature(&list, spec));
     h.push_str(&apart_table(outcomes, &spec.name));
+    h
+}
+
+/// The verdict of a ranked standing as a cell: `trusted`, or `use with care` with its reasons.
+fn verdict_cell(s: &crate::results::SceneStanding) -> String {
+    use crate::results::TrustLevel;
+    let class = match s.level() {
+        TrustLevel::Trusted => "ok",
+        TrustLevel::UseWithCare => "warn",
+        TrustLevel::NotTrusted => "bad",
+    };
+    let reasons = s.reasons();
+    if reasons.is_empty() {
+        format!("<td class=\"l {class}\">{}</td>", s.level().words())
+    } else {
+        format!(
+            "<td class=\"l {class}\">{}<br><small>{}</small></td>",
+            s.level().words(),
+            reasons
+                .iter()
+                .map(|r| esc(r))
+                .collect::<Vec<_>>()
+                .join("<br>")
+        )
+    }
+}
+
+/// Words on the windows the means are over: the temperatures every ranked compound shares, and
+/// each compound whose own window was wider (empty when all windows are the same).
+fn window_words(list: &[(&CompoundOutcome, &crate::results::SceneStanding)]) -> String {
+    let narrowed: Vec<String> = list
+        .iter()
+        .filter(|(_, s)| !s.own_temps_c.is_empty())
+        .map(|(o, s)| {
+            format!(
+                "{} (own window {} °C)",
+                esc(&o.compound),
+                temps_text(&s.own_temps_c)
+            )
+        })
+        .collect();
+    match list.first() {
+        Some((_, s)) if !narrowed.is_empty() => format!(
+            "<p class=\"warn\">The compounds' windows differ: every mean below is over the temperatures all ranked compounds share, {} °C. Narrowed to it: {}.</p>",
+            temps_text(&s.temps_c),
+            narrowed.join(", ")
+        ),
+        _ => String::new(),
+    }
+}
+
+/// Words on what the bands cover: replicate specimens pooled, or one specimen's measurement plus
+/// the default between-specimen prior (crate::bands::between).
+fn covers_words(list: &[(&CompoundOutcome, &crate::results::SceneStanding)]) -> String {
+    let (one, many): (Vec<_>, Vec<_>) = list
+        .iter()
+        .filter(|(_, s)| s.band.is_some())
+        .partition(|(o, _)| o.specimens <= 1);
+    let mut h = String::new();
+    if !one.is_empty() {
+        let _ = write!(
+            h,
+            "<p>Bands of {}: one specimen measured; each band covers that specimen's measurement plus the default spread between specimens (s = {} in ln F/N, from the two shipped EMS-CA specimens, docs/MATH.md §16), and every P(lower) includes it.</p>",
+            one.iter().map(|(o, _)| esc(&o.compound)).collect::<Vec<_>>().join(", "),
+            crate::bands::PRIOR_SD_LN
+        );
+    }
+    for (o, _) in many {
+        let _ = write!(
+            h,
+            "<p>Bands of {}: {} specimens pooled; each band includes the spread between them.</p>",
+            esc(&o.compound),
+            o.specimens
+        );
+    }
     h
 }
 
@@ -261,10 +342,10 @@ fn per_temperature(
             .iter()
             .find(|(s, _)| *s == spec.name)
             .and_then(|(_, p)| p.iter().find(|p| p.temp_c == t))
-            .filter(|p| p.error.is_none() && p.friction.is_finite())
+            .filter(|p| p.counts())
             .map(|p| p.friction)
     };
-    let mut h = String::from("<details open><summary>Rank at each temperature (1 = lowest F/N)</summary><table><tr><th class=\"l\">compound</th>");
+    let mut h = String::from("<details open><summary>Rank at each temperature (1 = lowest F/N; n.d.: not determined, – : failed; neither is ranked)</summary><table><tr><th class=\"l\">compound</th>");
     for t in &spec.temps_c {
         let _ = write!(h, "<th>{t} °C</th>");
     }
@@ -289,7 +370,7 @@ fn per_temperature(
         .collect();
     for (i, (o, _)) in list.iter().enumerate() {
         let _ = write!(h, "<tr><td class=\"l\">{}</td>", esc(&o.compound));
-        for col in &ranks {
+        for (k, col) in ranks.iter().enumerate() {
             match col[i] {
                 Some((r, f)) => {
                     let _ = write!(
@@ -299,7 +380,18 @@ fn per_temperature(
                         num(f)
                     );
                 }
-                None => h.push_str("<td>–</td>"),
+                None => match o
+                    .friction
+                    .iter()
+                    .find(|(s, _)| *s == spec.name)
+                    .and_then(|(_, p)| p.iter().find(|p| p.temp_c == spec.temps_c[k]))
+                    .and_then(|p| p.undetermined.as_deref())
+                {
+                    Some(why) => {
+                        let _ = write!(h, "<td class=\"warn\" title=\"{}\">n.d.</td>", esc(why));
+                    }
+                    None => h.push_str("<td>–</td>"),
+                },
             }
         }
         h.push_str("</tr>");
@@ -308,7 +400,18 @@ fn per_temperature(
     h
 }
 
-/// The overlay of one scene: F/N against temperature of every compound that computed, with bands.
+/// A compound's colour on every chart of the run: the palette's entry by its place among the run's
+/// compounds (not by its rank, which differs between scenes).
+fn compound_colour(outcomes: &[CompoundOutcome], name: &str) -> plotters::style::RGBColor {
+    let i = outcomes
+        .iter()
+        .position(|o| o.compound == name)
+        .unwrap_or(0);
+    super::chart::PALETTE[i % super::chart::PALETTE.len()]
+}
+
+/// The overlay of one scene: F/N against temperature of every compound that computed, with bands,
+/// each compound in its own colour ([`compound_colour`]).
 fn overlay_chart(outcomes: &[CompoundOutcome], spec: &SceneSpec) -> Chart {
     let ranked_names: Vec<&str> = ranked(outcomes, &spec.name)
         .iter()
@@ -319,7 +422,10 @@ fn overlay_chart(outcomes: &[CompoundOutcome], spec: &SceneSpec) -> Chart {
     for n in &ranked_names {
         if let Some(o) = outcomes.iter().find(|o| o.compound == *n) {
             if let Some((_, pts)) = o.friction.iter().find(|(s, _)| *s == spec.name) {
-                curves.push(friction_curve(&o.compound, pts));
+                curves.push(
+                    friction_curve(&o.compound, pts)
+                        .coloured(compound_colour(outcomes, &o.compound)),
+                );
             }
         }
     }
@@ -328,7 +434,8 @@ fn overlay_chart(outcomes: &[CompoundOutcome], spec: &SceneSpec) -> Chart {
         .filter(|o| o.error.is_none() && !ranked_names.contains(&o.compound.as_str()))
     {
         if let Some((_, pts)) = o.friction.iter().find(|(s, _)| *s == spec.name) {
-            let mut c = friction_curve(&format!("{} (not ranked)", o.compound), pts);
+            let mut c = friction_curve(&format!("{} (not ranked)", o.compound), pts)
+                .coloured(compound_colour(outcomes, &o.compound));
             c.mark = Mark::Dashed;
             curves.push(c);
         }
@@ -356,13 +463,15 @@ pub fn index_html(
         "the measured temperatures only"
     };
     let mut h = format!(
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p class=\"sub\">viscoroll {}; F/N averaged per scene over {rule}, lowest first. Compounds whose fit is out of its quality bounds or whose friction failed at a temperature are listed apart, never ranked. The tan δ proxy (tan δ at {PROXY_TEMP_C} °C and {PROXY_FREQ_HZ} Hz, the same for every scene) is ranked among the ranked compounds, lower first; where its rank differs from the rank by predicted friction it is marked.</p>",
-        env!("CARGO_PKG_VERSION")
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>viscoroll: compounds</title><style>{STYLE}</style></head><body><h1>Compounds and rolling friction</h1><p class=\"sub\">viscoroll {}; F/N averaged per scene over {rule}, lowest first. Each compound has one verdict per scene: <i>trusted</i> (every check passed), <i>use with care</i> (ranked; the reasons are listed: master-curve checks, contact validity, points not determined, extrapolation) or <i>not trusted</i> (fit out of its quality bounds, a failed temperature: listed apart, never ranked). Points not determined (band p95/p05 &gt; {ratio}, or more than {limit} K beyond the measured temperatures) are never ranked or averaged. The tan δ proxy (tan δ at {PROXY_TEMP_C} °C and {PROXY_FREQ_HZ} Hz, the same for every scene) is ranked among the ranked compounds, lower first; where its rank differs from the rank by predicted friction it is marked.</p>",
+        env!("CARGO_PKG_VERSION"),
+        ratio = crate::results::UNDETERMINED_BAND_RATIO,
+        limit = crate::results::EXTRAPOLATION_LIMIT_K,
     );
     for (k, spec) in scenes.scene.iter().enumerate() {
         let _ = write!(
             h,
-            "<h2>{}</h2><p>{} (R = {} mm, {} N/m, {} m/s{}, {} temperatures)</p><section class=\"first\"><div>{}</div><div>{}</div></section>",
+            "<h2>{}</h2><p>{} (R = {} mm, {} N/m, {} m/s{}, {})</p><section class=\"first\"><div>{}</div><div>{}</div></section>",
             esc(&spec.name),
             esc(&spec.description),
             spec.roll_radius_mm,
@@ -370,7 +479,7 @@ pub fn index_html(
             spec.speed_m_s,
             spec.cover_thickness_mm
                 .map_or(String::new(), |c| format!(", {c} mm cover")),
-            spec.temps_c.len(),
+            crate::results::counted(spec.temps_c.len(), "temperature"),
             scene_tables(summary, spec, proxies),
             overlays.get(k).map_or("", String::as_str)
         );
@@ -402,7 +511,7 @@ pub fn index_html(
             + notes.len();
         let _ = write!(
             h,
-            "<h2>Warnings and notes</h2><details><summary>{n} warnings and notes</summary><ul>"
+            "<h2>Warnings and notes</h2><details><summary>Warnings and notes ({n})</summary><ul>"
         );
         for o in warned {
             for w in o
@@ -436,9 +545,13 @@ pub fn write_index(
         overlays.push(if chart.curves.is_empty() {
             String::new()
         } else {
-            plot_pair(dir, &format!("index_{}", spec.name), |p| {
+            let mut plot = plot_pair(dir, &format!("index_{}", spec.name), |p| {
                 plots::plot_chart(&chart, "overlay", p)
-            })?
+            })?;
+            if chart.curves.iter().any(|c| !c.hollow.is_empty()) {
+                plot.push_str("<p>Hollow markers: points not determined (never ranked or averaged; the reason is in friction.csv).</p>");
+            }
+            plot
         });
     }
     write_file(
@@ -553,5 +666,39 @@ mod tests {
         assert!((c.curves[0].band[1].2 - 2.2e-4).abs() < 1e-18);
         assert_eq!(c.curves[1].mark, Mark::Dashed);
         assert!(c.curves[1].name.contains("not ranked"));
+    }
+
+    #[test]
+    fn a_compound_keeps_its_colour_on_every_overlay() {
+        let scenes = SceneSet::shipped();
+        let (s0, s1) = (&scenes.scene[0], &scenes.scene[1]);
+        // a is lower than b in the first scene and higher in the second, so the rank order (the
+        // order of the curves) flips between the two overlays
+        let both = |n: &str, f0: f64, f1: f64| {
+            let mut o = outcome(n, &s0.name, &[(f0, false)], &[]);
+            let o1 = outcome(n, &s1.name, &[(f1, false)], &[]);
+            o.friction.extend(o1.friction);
+            o.standings.extend(o1.standings);
+            o
+        };
+        let outcomes = vec![both("a", 1e-4, 3e-4), both("b", 2e-4, 1e-4)];
+        let colours = |spec: &SceneSpec| -> Vec<(String, Option<plotters::style::RGBColor>)> {
+            overlay_chart(&outcomes, spec)
+                .curves
+                .iter()
+                .map(|c| (c.name.clone(), c.colour))
+                .collect()
+        };
+        let (c0, c1) = (colours(s0), colours(s1));
+        assert_eq!(c0[0].0, "a", "a ranks first in the first scene");
+        assert_eq!(c1[0].0, "b", "b ranks first in the second scene");
+        for name in ["a", "b"] {
+            let of = |c: &[(String, Option<plotters::style::RGBColor>)]| {
+                c.iter().find(|(n, _)| n == name).and_then(|(_, k)| *k)
+            };
+            assert!(of(&c0).is_some(), "{name} has a colour of its own");
+            assert_eq!(of(&c0), of(&c1), "{name} changed colour between scenes");
+        }
+        assert_ne!(c0[0].1, c0[1].1, "two compounds, two colours");
     }
 }

@@ -74,8 +74,8 @@ fn ensure_font() {
 }
 
 /// Render with the backend that matches `path`'s extension (SVG or PNG) into a temp file beside it
-/// ([`crate::fsutil::temp_path`], keeping the extension, which the bitmap encoder reads), then move
-/// it into place ([`crate::fsutil::commit`]).
+/// ([`crate::fsutil::TempFile`]: created exclusively, keeping the extension, which the bitmap encoder
+/// reads), then move it into place.
 macro_rules! render_to {
     ($path:expr, $draw:ident ( $($arg:expr),* )) => {{
         let path: &Path = $path;
@@ -85,7 +85,9 @@ macro_rules! render_to {
         if !matches!(ext.as_deref(), Some("svg" | "png")) {
             return Err(PlotError::UnknownFormat { path: path.to_path_buf() });
         }
-        let tmp = crate::fsutil::temp_path(path);
+        let io_err = |source| PlotError::Io { path: path.to_path_buf(), source };
+        let temp = crate::fsutil::TempFile::beside(path).map_err(io_err)?;
+        let tmp = temp.path().to_path_buf();
         let result: Result<(), PlotError> = if ext.as_deref() == Some("svg") {
             let root = SVGBackend::new(&tmp, PLOT_SIZE).into_drawing_area();
             $draw(&root, $($arg),*).map_err(draw_err)
@@ -95,14 +97,8 @@ macro_rules! render_to {
             $draw(&root, $($arg),*).map_err(draw_err)
                 .and_then(|_| root.present().map_err(|e| draw_err(e.to_string())))
         };
-        match result {
-            Ok(()) => crate::fsutil::commit(&tmp, path, true)
-                .map_err(|source| PlotError::Io { path: path.to_path_buf(), source }),
-            Err(e) => {
-                let _ = std::fs::remove_file(&tmp);
-                Err(e)
-            }
-        }
+        // on an error the temp file is removed when dropped
+        result.and_then(|()| temp.commit(true, false).map_err(io_err))
     }};
 }
 
@@ -130,11 +126,8 @@ pub fn thinned<T: Copy>(v: &[T]) -> Vec<T> {
 
 /// The symbols of a measurement's moduli: (storage, loss).
 pub fn symbols(kind: crate::ModulusKind) -> (&'static str, &'static str) {
-    if kind == crate::ModulusKind::Shear {
-        ("G′", "G″")
-    } else {
-        ("E′", "E″")
-    }
+    let (storage, loss, _) = kind.symbols();
+    (storage, loss)
 }
 
 /// Raw isotherms: storage modulus (filled dots, lines) and loss modulus (open circles) against
@@ -337,16 +330,18 @@ pub fn plot_shift_factors(
     plot_chart(&c, "shift factors", path)
 }
 
-/// The relaxation spectrum: a stem Eᵢ at each τᵢ (log–log), E∞ stated in the title.
+/// The relaxation spectrum: a stem Eᵢ (Gᵢ for shear) at each τᵢ (log–log), E∞ (G∞) stated in the
+/// title.
 pub fn plot_spectrum(spectrum: &RelaxationSpectrum, path: &Path) -> Result<(), PlotError> {
     let c = Chart {
         title: format!(
-            "Relaxation spectrum: {} terms, E∞ = {:.3e} Pa",
+            "Relaxation spectrum: {} terms, {} = {:.3e} Pa",
             spectrum.terms.len(),
+            spectrum.kind.symbols().2,
             spectrum.modulus_inf_pa
         ),
         x: Axis::log("relaxation time τ [s]"),
-        y: Axis::log("strength E_i [Pa]"),
+        y: Axis::log(&format!("strength {}_i [Pa]", spectrum.kind.letter())),
         curves: vec![Curve::new(
             "",
             spectrum

@@ -79,7 +79,7 @@ pub fn ranking_csv(
                rank: String,
                o: &CompoundOutcome,
                s: Option<&SceneStanding>,
-               trusted: bool,
+               verdict: &str,
                note: String| {
         let (models, warnings) = bodies_and_warnings(o, scene);
         vec![
@@ -89,7 +89,7 @@ pub fn ranking_csv(
             s.and_then(|s| s.mean_friction)
                 .map_or(String::new(), |f| format!("{f:e}")),
             s.map_or(String::new(), |s| temps_text(&s.temps_c)),
-            trusted.to_string(),
+            verdict.to_string(),
             s.map_or(String::new(), |s| temps_text(&s.extrapolated_temps_c)),
             s.map_or(String::new(), |s| temps_text(&s.failed_temps_c)),
             note,
@@ -99,16 +99,34 @@ pub fn ranking_csv(
             band(s, |b| b.p50),
             band(s, |b| b.p95),
             s.map_or(String::new(), |s| s.tied_with.join(" ")),
+            s.map_or(String::new(), |s| temps_text(&s.own_temps_c)),
+            s.map_or(String::new(), |s| temps_text(&s.undetermined_temps_c)),
+            o.specimens.to_string(),
+            s.filter(|s| s.band.is_some())
+                .map_or(String::new(), |s| band_covers(o, s)),
         ]
     };
     for spec in &scenes.scene {
         for (i, (o, s)) in ranked(outcomes, &spec.name).into_iter().enumerate() {
-            let note = if allow_extrapolation && !s.extrapolated_temps_c.is_empty() {
-                "mean includes extrapolated temperatures (their bands widened by the shift-law tail term, docs/MATH.md eq. 15.8)".to_string()
-            } else {
-                String::new()
-            };
-            rows.push(row(&spec.name, (i + 1).to_string(), o, Some(s), true, note));
+            let mut note: Vec<String> = s.reasons().to_vec();
+            if allow_extrapolation && !s.extrapolated_temps_c.is_empty() {
+                note.push("mean includes extrapolated temperatures (their bands widened by the shift-law tail term, docs/MATH.md eq. 15.8)".to_string());
+            }
+            if !s.own_temps_c.is_empty() {
+                note.push(format!(
+                    "mean over the temperatures every ranked compound shares ({} °C), not its own window ({} °C)",
+                    temps_text(&s.temps_c),
+                    temps_text(&s.own_temps_c)
+                ));
+            }
+            rows.push(row(
+                &spec.name,
+                (i + 1).to_string(),
+                o,
+                Some(s),
+                s.level().words(),
+                note.join("; "),
+            ));
         }
         for (o, s, reasons) in apart(outcomes, &spec.name) {
             rows.push(row(
@@ -116,7 +134,11 @@ pub fn ranking_csv(
                 String::new(),
                 o,
                 s,
-                false,
+                if o.error.is_some() {
+                    "failed"
+                } else {
+                    crate::results::TrustLevel::NotTrusted.words()
+                },
                 reasons.join("; "),
             ));
         }
@@ -132,7 +154,7 @@ pub fn ranking_csv(
                 "viscoroll {}: compounds ranked by temperature-averaged rolling friction F/N per scene (lowest first), {rule}",
                 env!("CARGO_PKG_VERSION")
             ),
-            "rows with an empty rank are listed apart, not ranked: the reasons are in `note`".to_string(),
+            "verdict: trusted, use with care (ranked; reasons in `note`) or not trusted (listed apart with an empty rank; reasons in `note`); means over the temperatures the ranked compounds share (`own_temps_c`: a compound's own window where it is wider)".to_string(),
         ],
         &[
             "scene",
@@ -140,7 +162,7 @@ pub fn ranking_csv(
             "compound",
             "mean_friction",
             "temps_c",
-            "trusted",
+            "verdict",
             "extrapolated_temps_c",
             "failed_temps_c",
             "note",
@@ -150,9 +172,31 @@ pub fn ranking_csv(
             "mean_friction_p50",
             "mean_friction_p95",
             "tied_with",
+            "own_temps_c",
+            "undetermined_temps_c",
+            "specimens",
+            "band_covers",
         ],
         rows,
     )
+}
+
+/// What a compound's band of `s`'s mean covers (crate::bands::between): one specimen's
+/// measurement plus the default between-specimen prior, or the spread between its pooled
+/// specimens' own means over the same temperatures.
+fn band_covers(o: &CompoundOutcome, s: &SceneStanding) -> String {
+    let pts: Vec<&crate::results::FrictionPoint> = o
+        .friction
+        .iter()
+        .filter(|(n, _)| *n == s.scene)
+        .flat_map(|(_, p)| p)
+        .filter(|p| s.temps_c.contains(&p.temp_c))
+        .collect();
+    let n = pts.first().map_or(0, |p| p.specimens.len());
+    let means: Vec<f64> = (0..n)
+        .map(|k| pts.iter().map(|p| p.specimens[k]).sum::<f64>() / pts.len() as f64)
+        .collect();
+    crate::bands::specimens_note(o.specimens, crate::bands::between_sd_ln(&means))
 }
 
 /// A percentile of the band of a standing's mean friction, as printed (empty without one).
@@ -210,6 +254,7 @@ pub(crate) mod tests {
                 model: String::new(),
                 model_reason: String::new(),
                 band: None,
+                error_estimate: None,
                 temp_c: 10.0 * i as f64,
                 log10_a_t: 0.0,
                 friction: f,
@@ -218,6 +263,8 @@ pub(crate) mod tests {
                 extrapolated: ext,
                 error: (!f.is_finite()).then(|| "solver stopped".to_string()),
                 warnings: vec![],
+                specimens: vec![],
+                undetermined: None,
             })
             .collect();
         let untrusted: Vec<String> = untrusted.iter().map(|s| s.to_string()).collect();
@@ -225,12 +272,19 @@ pub(crate) mod tests {
             compound: name.to_string(),
             fit_path: None,
             fit_action: None,
-            standings: vec![crate::results::standing(scene, &pts, &untrusted, false)],
+            standings: vec![crate::results::standing(
+                scene,
+                &pts,
+                &untrusted,
+                &[],
+                false,
+            )],
             friction: vec![(scene.to_string(), pts)],
             untrusted,
             warnings: vec![],
             error: None,
             seconds: 0.0,
+            specimens: 1,
         }
     }
 
@@ -295,14 +349,27 @@ pub(crate) mod tests {
         ] {
             assert_eq!(&scene_rows[row][2], name);
             assert_eq!(&scene_rows[row][1], "");
-            assert_eq!(&scene_rows[row][5], "false");
+            assert_eq!(
+                &scene_rows[row][5],
+                if name == "broken" {
+                    "failed"
+                } else {
+                    "not trusted"
+                }
+            );
             assert!(scene_rows[row][8].contains(reason), "{:?}", scene_rows[row]);
         }
         // the NaN point is never averaged: the mean is the finite point's
         assert_eq!(scene_rows[2][3].parse::<f64>().unwrap(), 1e-5);
         // with extrapolation allowed, the extrapolated temperature enters the mean, marked
         let mut good = outcomes[2].clone();
-        good.standings = vec![crate::results::standing(s, &good.friction[0].1, &[], true)];
+        good.standings = vec![crate::results::standing(
+            s,
+            &good.friction[0].1,
+            &[],
+            &[],
+            true,
+        )];
         let r = rows(&ranking_csv(&[good], &scenes, true));
         assert_eq!(r[0][3].parse::<f64>().unwrap(), 3e-3);
         assert!(r[0][8].contains("extrapolated"));

@@ -45,7 +45,7 @@ impl BandReplicate {
 }
 
 /// Linear interpolation in `rows` (sorted by T), constant beyond the ends; 0 without rows.
-fn offset_at(rows: &[(f64, f64)], t: f64) -> f64 {
+pub fn offset_at(rows: &[(f64, f64)], t: f64) -> f64 {
     match rows {
         [] => 0.0,
         [only] => only.1,
@@ -64,6 +64,21 @@ fn offset_at(rows: &[(f64, f64)], t: f64) -> f64 {
     }
 }
 
+/// What the replicates drew of the fit's own choices (crate::bands::model; docs/MATH.md §15,
+/// eqs. 15.10–15.12).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ModelErrorSummary {
+    /// The other shift criteria whose shifts were drawn (eq. 15.10); empty for a master curve
+    /// read already shifted or shifted by a given law.
+    pub criteria: Vec<String>,
+    /// Largest difference of their shifts from the fit's, decades.
+    pub criterion_max_log10: f64,
+    /// Largest interpolation error of the shift table at an interval's middle (eq. 15.11), decades.
+    pub interpolation_max_log10: f64,
+    /// Decades either side of the fit's λ the replicates' λ were drawn from (eq. 15.12).
+    pub lambda_spread_decades: f64,
+}
+
 /// The bootstrap ensemble of a fit (crate::bands; docs/MATH.md §15).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BandEnsemble {
@@ -80,6 +95,9 @@ pub struct BandEnsemble {
     /// Notes (failed refits, what the bands leave out).
     #[serde(default)]
     pub notes: Vec<String>,
+    /// The fit's own choices the replicates drew (`None` in files made before they did).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model_error: Option<ModelErrorSummary>,
 }
 
 #[cfg(test)]

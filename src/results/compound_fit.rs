@@ -64,6 +64,11 @@ pub struct CompoundFit {
     pub bands: Option<super::band_ensemble::BandEnsemble>,
     /// Tool, version and input hashes.
     pub provenance: Provenance,
+    /// SHA-256 (hex) of the fit's own content: the compact JSON of the fit with this field absent.
+    /// Set by [`CompoundFit::write`], checked and cleared by [`CompoundFit::read`], so an edited or
+    /// damaged fit file is refused (`None` in memory).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub content_sha256: Option<String>,
 }
 
 /// What the master-curve stage found besides the law used: shifts per isotherm and both laws.
@@ -272,6 +277,7 @@ impl CompoundFit {
             },
             provenance: Provenance::for_inputs(inputs),
             bands: None,
+            content_sha256: None,
         }
     }
 
@@ -282,10 +288,12 @@ impl CompoundFit {
             path: path.to_path_buf(),
             source: e,
         };
-        let mut json =
-            serde_json::to_string_pretty(self).map_err(|e| CompoundFitError::Serialize {
-                message: e.to_string(),
-            })?;
+        let ser = |e: serde_json::Error| CompoundFitError::Serialize {
+            message: e.to_string(),
+        };
+        let mut sealed = self.clone();
+        sealed.content_sha256 = Some(self.content_hash().map_err(ser)?);
+        let mut json = serde_json::to_string_pretty(&sealed).map_err(ser)?;
         json.push('\n');
         crate::fsutil::write_atomic_durable(path, json.as_bytes(), force).map_err(|e| {
             if e.kind() == std::io::ErrorKind::AlreadyExists {
@@ -322,12 +330,81 @@ impl CompoundFit {
             .collect()
     }
 
-    /// Read a fit file, checking its format version.
+    /// The SHA-256 (hex) of the fit's content: its compact JSON without `content_sha256`. Numbers
+    /// round-trip exactly through serde_json, so a read fit hashes as the written one did.
+    pub fn content_hash(&self) -> Result<String, serde_json::Error> {
+        let mut bare = self.clone();
+        bare.content_sha256 = None;
+        Ok(crate::dma::sha256_hex(&serde_json::to_vec(&bare)?))
+    }
+
+    /// Check everything later stages rely on: a valid shift law (a table of at least two finite,
+    /// increasing rows), finite shifts, a valid relaxation spectrum (positive moduli and times) and
+    /// creep spectrum within the work budget's term count, master-curve points finite and > 0, and
+    /// one modulus kind throughout. Returns what is wrong, in words.
+    pub fn validate(&self) -> Result<(), String> {
+        self.shift_law
+            .validate()
+            .map_err(|e| format!("shift_law: {e}"))?;
+        if let Some(t) = &self.tts {
+            if let Some(i) = t
+                .shifts
+                .iter()
+                .position(|(a, b)| !(a.is_finite() && b.is_finite()))
+            {
+                return Err(format!("tts.shifts[{i}] is not finite"));
+            }
+        }
+        let budget = |key: &str, n: usize| {
+            crate::limits::at_most(key, n, crate::limits::PRONY_TERMS_MAX)
+                .map_err(|e| e.to_string())
+        };
+        budget("relaxation.terms", self.relaxation.terms.len())?;
+        self.relaxation
+            .validate()
+            .map_err(|e| format!("relaxation: {e}"))?;
+        if self.relaxation.kind != self.measurement.kind {
+            return Err("relaxation.kind differs from measurement.kind".into());
+        }
+        if let Some(c) = &self.creep {
+            budget("creep.terms", c.terms.len())?;
+            c.validate().map_err(|e| format!("creep: {e}"))?;
+            if c.kind != self.relaxation.kind {
+                return Err("creep.kind differs from relaxation.kind".into());
+            }
+        }
+        let bad_point = self.master_curve.iter().position(|p| {
+            ![p.reduced_freq_hz, p.storage_pa, p.loss_pa]
+                .iter()
+                .all(|v| v.is_finite() && *v > 0.0)
+        });
+        if let Some(i) = bad_point {
+            return Err(format!("master_curve[{i}] is not finite and > 0"));
+        }
+        Ok(())
+    }
+
+    /// Why results of this fit are to be used with care (issue 31): the master-curve checks that
+    /// flagged something (isotherm overlap, Kramers–Kronig, van Gurp–Palmen), as one reason.
+    pub fn care_reasons(&self) -> Vec<String> {
+        match &self.tts {
+            Some(t) if !t.flags.is_empty() => vec![super::outcome::cap_line(&format!(
+                "master curve: {} check(s) flagged: {}",
+                t.flags.len(),
+                t.flags.join("; ")
+            ))],
+            _ => vec![],
+        }
+    }
+
+    /// Read a fit file, checking its format version, its content hash ([`Self::content_hash`]) and
+    /// its content ([`Self::validate`]). Only a regular file within the work budget's size is read.
     pub fn read(path: &Path) -> Result<Self, CompoundFitError> {
-        let text = std::fs::read_to_string(path).map_err(|e| CompoundFitError::Io {
-            path: path.to_path_buf(),
-            source: e,
-        })?;
+        let text = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
+            .map_err(|e| CompoundFitError::Io {
+                path: path.to_path_buf(),
+                source: e,
+            })?;
         // Check the version first, so an old or future file gets that message, not a field error.
         let version = serde_json::from_str::<VersionOnly>(&text)
             .ok()
@@ -343,12 +420,34 @@ impl CompoundFit {
             }
             None => {}
         }
-        serde_json::from_str(&text).map_err(|e| CompoundFitError::Parse {
+        let mut fit: CompoundFit =
+            serde_json::from_str(&text).map_err(|e| CompoundFitError::Parse {
+                path: path.to_path_buf(),
+                line: e.line(),
+                column: e.column(),
+                message: e.to_string(),
+            })?;
+        let invalid = |reason: String| CompoundFitError::Invalid {
             path: path.to_path_buf(),
-            line: e.line(),
-            column: e.column(),
-            message: e.to_string(),
-        })
+            reason,
+        };
+        let stored = fit.content_sha256.take();
+        let actual = fit.content_hash().map_err(|e| invalid(e.to_string()))?;
+        match stored {
+            None => {
+                return Err(invalid(
+                    "it carries no content hash (written by an older viscoroll, or edited)".into(),
+                ))
+            }
+            Some(h) if h != actual => {
+                return Err(invalid(
+                    "its content does not match its content hash (edited or damaged)".into(),
+                ))
+            }
+            Some(_) => {}
+        }
+        fit.validate().map_err(invalid)?;
+        Ok(fit)
     }
 }
 
@@ -396,6 +495,14 @@ pub enum CompoundFitError {
         found: u32,
         /// Version this build reads.
         supported: u32,
+    },
+    /// The file fails its content hash or its validation ([`CompoundFit::validate`]).
+    #[error("{path}: not a trustworthy fit file: {reason}; fit again (`viscoroll run` refits it, or `viscoroll fit --force`)")]
+    Invalid {
+        /// The path.
+        path: PathBuf,
+        /// What is wrong.
+        reason: String,
     },
     /// Serialising failed (non-finite numbers are written as null by serde_json, so this is rare).
     #[error("could not serialise the fit: {message}")]

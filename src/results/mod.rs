@@ -11,14 +11,37 @@ pub mod compound_fit;
 pub mod outcome;
 pub mod scene;
 
-pub use band_ensemble::{BandEnsemble, BandReplicate, ScatterEstimate};
+pub use band_ensemble::{
+    offset_at, BandEnsemble, BandReplicate, ModelErrorSummary, ScatterEstimate,
+};
 pub use compound_fit::{
     CompoundFit, CompoundFitError, FitSettings, InputHash, MeasurementSummary, Provenance,
     QualityFigure, TtsSummary, COMPOUND_FIT_FORMAT_VERSION,
 };
 pub use outcome::{
-    cap_line, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary, SceneStanding,
+    cap_line, is_band_note, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary,
+    SceneStanding, TrustLevel,
 };
 pub use scene::{
-    FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec,
+    factor_text, FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet,
+    SceneSpec, EXTRAPOLATION_LIMIT_K, UNDETERMINED_BAND_RATIO,
 };
+
+/// `n` and the noun, plural unless `n` is 1: "1 scene", "3 scenes" (`noun` takes an `s`).
+pub fn counted(n: usize, noun: &str) -> String {
+    if n == 1 {
+        format!("1 {noun}")
+    } else {
+        format!("{n} {noun}s")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn counted_is_singular_for_one_only() {
+        assert_eq!(super::counted(1, "scene"), "1 scene");
+        assert_eq!(super::counted(0, "scene"), "0 scenes");
+        assert_eq!(super::counted(3, "compound"), "3 compounds");
+    }
+}

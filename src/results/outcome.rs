@@ -5,10 +5,15 @@
 //! index page and the CLI.
 //!
 //! Ranking rule ([`standing`]): a compound's figure in a scene is the mean F/N over the scene's
-//! temperatures that computed and lie inside its measured temperatures (with `allow_extrapolation`,
-//! the extrapolated ones too, listed). It is ranked among trusted compounds only if its fit has no
-//! quality figure out of bounds and no temperature of the scene failed; otherwise it is listed apart
-//! with its reasons. A failed point never enters a mean.
+//! temperatures that computed, are determined (`FrictionPoint::determine`) and lie inside its
+//! measured temperatures (with `allow_extrapolation`, the extrapolated ones too, listed); with
+//! other compounds ranked, over the temperatures they all share (crate::pipeline::trust). Its
+//! verdict has three levels ([`TrustLevel`]): *not trusted* (listed apart with its reasons) when a
+//! quality figure of its fit is out of bounds, a temperature of the scene failed or nothing is
+//! left to average; else *use with care* (ranked, with its reasons) when a master-curve check
+//! flagged something (overlap, Kramers–Kronig, van Gurp–Palmen), a contact solve it averages
+//! warned of its validity, a point is not determined, or extrapolated temperatures are averaged
+//! in; else *trusted*. A failed or undetermined point never enters a mean.
 
 use super::scene::FrictionPoint;
 use serde::{Deserialize, Serialize};
@@ -30,21 +35,60 @@ pub fn cap_line(s: &str) -> String {
     format!("{}… ({} more bytes cut)", &s[..end], s.len() - end)
 }
 
-/// A compound in one scene: its mean friction and whether it may be ranked among trusted ones.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// The trust levels of a compound's result in a scene, worst last (issue 31).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TrustLevel {
+    /// Every check passed.
+    Trusted,
+    /// Ranked, but some check flagged something: the reasons say what.
+    UseWithCare,
+    /// Not ranked: a quality figure out of its bound, a failed temperature, nothing to average.
+    NotTrusted,
+}
+
+impl TrustLevel {
+    /// The level in words, as every output writes it.
+    pub fn words(self) -> &'static str {
+        match self {
+            TrustLevel::Trusted => "trusted",
+            TrustLevel::UseWithCare => "use with care",
+            TrustLevel::NotTrusted => "not trusted",
+        }
+    }
+}
+
+/// Whether a point's warning is one of the bands' own notes (crate::bands: widened by eq. 15.8 or
+/// 15.9, replicates failed, refused) rather than a validity warning of the contact solve.
+pub fn is_band_note(w: &str) -> bool {
+    w.starts_with("band widened") || w.starts_with("uncertainty band")
+}
+
+/// A compound in one scene: its mean friction and its trust verdict.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SceneStanding {
     /// Scene name.
     pub scene: String,
     /// Mean F/N over `temps_c`; `None` when no temperature counts.
     pub mean_friction: Option<f64>,
-    /// The temperatures averaged (°C).
+    /// The temperatures averaged (°C): with other compounds ranked in the scene, those they all
+    /// share (crate::pipeline::trust).
     pub temps_c: Vec<f64>,
+    /// The compound's own window (°C) when `temps_c` was narrowed to the temperatures the ranked
+    /// compounds share; empty when they are the same.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub own_temps_c: Vec<f64>,
     /// Temperatures outside the measured ones (°C): averaged with `allow_extrapolation`, else left out.
     pub extrapolated_temps_c: Vec<f64>,
     /// Temperatures whose friction could not be computed (°C), never averaged.
     pub failed_temps_c: Vec<f64>,
-    /// Why the compound is not ranked among trusted ones in this scene (empty: it is).
+    /// Temperatures whose friction is not determined (°C, `FrictionPoint::undetermined`), never
+    /// averaged or ranked.
+    pub undetermined_temps_c: Vec<f64>,
+    /// Why the compound is not trusted in this scene (empty: it is ranked).
     pub untrusted: Vec<String>,
+    /// Why it is ranked but to be used with care (empty with `untrusted`: trusted).
+    pub care: Vec<String>,
     /// Uncertainty band of `mean_friction` (crate::bands; `None` with `--no-bands` or without a
     /// mean).
     pub band: Option<super::scene::FrictionBand>,
@@ -54,27 +98,64 @@ pub struct SceneStanding {
 }
 
 impl SceneStanding {
-    /// Ranked among the trusted compounds.
+    /// Ranked (trusted or to be used with care).
     pub fn trusted(&self) -> bool {
-        self.untrusted.is_empty() && self.mean_friction.is_some()
+        self.level() != TrustLevel::NotTrusted
+    }
+
+    /// The verdict's level.
+    pub fn level(&self) -> TrustLevel {
+        if !self.untrusted.is_empty() || self.mean_friction.is_none() {
+            TrustLevel::NotTrusted
+        } else if !self.care.is_empty() {
+            TrustLevel::UseWithCare
+        } else {
+            TrustLevel::Trusted
+        }
+    }
+
+    /// The reasons behind the level (none for trusted).
+    pub fn reasons(&self) -> &[String] {
+        match self.level() {
+            TrustLevel::Trusted => &[],
+            TrustLevel::UseWithCare => &self.care,
+            TrustLevel::NotTrusted => &self.untrusted,
+        }
+    }
+
+    /// The verdict in one line: `trusted`, `use with care (…)`, `not trusted (…)`.
+    pub fn verdict(&self) -> String {
+        let r = self.reasons();
+        if r.is_empty() {
+            self.level().words().to_string()
+        } else {
+            format!("{} ({})", self.level().words(), r.join("; "))
+        }
     }
 }
 
 /// The standing of a compound in `scene` (see the module docs); `fit_untrusted` holds the reasons
-/// its fit is not trusted (quality figures out of bounds).
+/// its fit is not trusted (quality figures out of bounds), `fit_care` those it is to be used with
+/// care (master-curve checks flagged: crate::results::CompoundFit::care_reasons).
 pub fn standing(
     scene: &str,
     points: &[FrictionPoint],
     fit_untrusted: &[String],
+    fit_care: &[String],
     allow_extrapolation: bool,
 ) -> SceneStanding {
     let failed: Vec<&FrictionPoint> = points
         .iter()
         .filter(|p| p.error.is_some() || !p.friction.is_finite())
         .collect();
+    let undetermined: Vec<f64> = points
+        .iter()
+        .filter(|p| p.error.is_none() && p.friction.is_finite() && p.undetermined.is_some())
+        .map(|p| p.temp_c)
+        .collect();
     let used: Vec<&FrictionPoint> = points
         .iter()
-        .filter(|p| p.error.is_none() && p.friction.is_finite())
+        .filter(|p| p.counts())
         .filter(|p| allow_extrapolation || !p.extrapolated)
         .collect();
     let mean = (!used.is_empty())
@@ -89,7 +170,7 @@ pub fn standing(
     }
     if mean.is_none() && failed.len() < points.len() {
         untrusted.push(
-            "no temperature of the scene lies inside the measured ones (pass --allow-extrapolation to rank on extrapolated ones)"
+            "no temperature of the scene is both determined and inside the measured ones (pass --allow-extrapolation to rank on extrapolated ones)"
                 .to_string(),
         );
     }
@@ -97,20 +178,80 @@ pub fn standing(
         scene: scene.to_string(),
         mean_friction: mean,
         temps_c: used.iter().map(|p| p.temp_c).collect(),
+        own_temps_c: Vec::new(),
         extrapolated_temps_c: points
             .iter()
             .filter(|p| p.extrapolated && p.error.is_none())
             .map(|p| p.temp_c)
             .collect(),
         failed_temps_c: failed.iter().map(|p| p.temp_c).collect(),
+        care: care_reasons(&used, &undetermined, fit_care),
+        undetermined_temps_c: undetermined,
         untrusted,
         band: None,
         tied_with: Vec::new(),
     }
 }
 
+/// Why a scene's result is to be used with care: the fit's (master-curve checks), validity
+/// warnings of the contact solves at the temperatures averaged (not the bands' notes, not the
+/// solver's `information:` lines), points not determined (left out), extrapolated temperatures
+/// averaged in.
+fn care_reasons(used: &[&FrictionPoint], undetermined: &[f64], fit_care: &[String]) -> Vec<String> {
+    let mut care: Vec<String> = fit_care.to_vec();
+    let temps = |v: &[f64]| {
+        v.iter()
+            .map(|t| t.to_string())
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let mut warned: Vec<&str> = Vec::new();
+    let mut at: Vec<f64> = Vec::new();
+    for p in used {
+        let mut any = false;
+        for w in p
+            .warnings
+            .iter()
+            .filter(|w| !is_band_note(w) && !w.starts_with("information:"))
+        {
+            any = true;
+            if !warned.contains(&w.as_str()) {
+                warned.push(w);
+            }
+        }
+        if any {
+            at.push(p.temp_c);
+        }
+    }
+    if !warned.is_empty() {
+        care.push(cap_line(&format!(
+            "contact validity at {} °C: {}",
+            temps(&at),
+            warned.join("; ")
+        )));
+    }
+    if !undetermined.is_empty() {
+        care.push(format!(
+            "not determined at {} °C (left out of the mean and the ranks)",
+            temps(undetermined)
+        ));
+    }
+    let ext: Vec<f64> = used
+        .iter()
+        .filter(|p| p.extrapolated)
+        .map(|p| p.temp_c)
+        .collect();
+    if !ext.is_empty() {
+        care.push(format!(
+            "extrapolated temperatures {} °C averaged in",
+            temps(&ext)
+        ));
+    }
+    care
+}
+
 /// The outcome of one compound.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct CompoundOutcome {
     /// Compound name (sanitised: safe as a file name).
     pub compound: String,
@@ -130,6 +271,9 @@ pub struct CompoundOutcome {
     pub error: Option<String>,
     /// Wall time for this compound in seconds.
     pub seconds: f64,
+    /// Replicate specimens its fit pools (1: one specimen; its bands then carry the default
+    /// between-specimen prior, crate::bands::between).
+    pub specimens: usize,
 }
 
 impl CompoundOutcome {
@@ -158,7 +302,7 @@ pub enum RunStatus {
 }
 
 /// The outcome of the main job.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct RunSummary {
     /// One per compound, in discovery order.
     pub compounds: Vec<CompoundOutcome>,
@@ -222,6 +366,7 @@ mod tests {
             model: String::new(),
             model_reason: String::new(),
             band: None,
+            error_estimate: None,
             temp_c,
             log10_a_t: 0.0,
             friction,
@@ -230,6 +375,8 @@ mod tests {
             extrapolated,
             error: error.map(str::to_string),
             warnings: vec![],
+            specimens: vec![],
+            undetermined: None,
         }
     }
 
@@ -240,12 +387,12 @@ mod tests {
             point(0.0, 2.0, false, None),
             point(20.0, 4.0, false, None),
         ];
-        let s = standing("a", &pts, &[], false);
+        let s = standing("a", &pts, &[], &[], false);
         assert_eq!(s.mean_friction, Some(3.0));
         assert_eq!(s.temps_c, [0.0, 20.0]);
         assert_eq!(s.extrapolated_temps_c, [-40.0]);
         assert!(s.trusted());
-        let s = standing("a", &pts, &[], true);
+        let s = standing("a", &pts, &[], &[], true);
         assert_eq!(s.mean_friction, Some(7.0 / 3.0));
         assert!(s.trusted());
     }
@@ -256,13 +403,13 @@ mod tests {
             point(0.0, 2.0, false, None),
             point(10.0, f64::NAN, false, Some("no convergence")),
         ];
-        let s = standing("a", &pts, &[], false);
+        let s = standing("a", &pts, &[], &[], false);
         assert_eq!(s.mean_friction, Some(2.0));
         assert_eq!(s.failed_temps_c, [10.0]);
         assert!(!s.trusted());
         assert!(s.untrusted[0].contains("10 °C") && s.untrusted[0].contains("no convergence"));
         // A NaN without an error is a failure too.
-        let s = standing("a", &[point(0.0, f64::NAN, false, None)], &[], false);
+        let s = standing("a", &[point(0.0, f64::NAN, false, None)], &[], &[], false);
         assert_eq!(s.mean_friction, None);
         assert!(!s.trusted());
     }
@@ -274,11 +421,12 @@ mod tests {
             "a",
             &pts,
             &["prony_rms_log10_storage out of bound".into()],
+            &[],
             false,
         );
         assert_eq!(s.mean_friction, Some(2.0));
         assert!(!s.trusted());
-        let s = standing("a", &[point(-40.0, 1.0, true, None)], &[], false);
+        let s = standing("a", &[point(-40.0, 1.0, true, None)], &[], &[], false);
         assert_eq!(s.mean_friction, None);
         assert!(s.untrusted[0].contains("--allow-extrapolation"));
     }

@@ -63,6 +63,11 @@ pub struct SceneSpec {
     /// Temperatures in °C of the friction maps (each solve costs; keep it short).
     #[serde(default)]
     pub map_temps_c: Vec<f64>,
+    /// Relative tolerance of the scene's contact solves and friction maps (1e−10 … 1e−2); absent:
+    /// the main job's defaults, 1e−6 on a half-space and 1e−3 on a cover (`run --tol` sets it for
+    /// every scene without one).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tol: Option<f64>,
     /// Speeds in m/s of the friction map against speed (at the scene's load, each map temperature).
     #[serde(default)]
     pub map_speeds_m_s: Vec<f64>,
@@ -84,10 +89,11 @@ impl SceneSpec {
     }
 }
 
-/// Longest list of temperatures, speeds or loads in a scene (each entry costs solves).
-pub const MAX_LIST: usize = 1000;
-/// Highest scene temperature, °C (no polymer is used above it).
-pub const TEMP_MAX_C: f64 = 1000.0;
+/// The range of a scene's `tol` (and `run --tol`): the friction maps' (crate::contact::maps), the
+/// narrower of theirs and the contact solver's.
+pub const TOL_RANGE: (f64, f64) = (1e-10, 1e-2);
+/// Highest scene temperature, °C (no polymer is used above it): [`crate::limits::TEMP_MAX_C`].
+pub const TEMP_MAX_C: f64 = crate::limits::TEMP_MAX_C;
 
 /// The physical range (exclusive lower, inclusive upper bound) of a scene's number, by key: radius
 /// up to 100 m, loads up to 1e8 N/m (100 MN per metre of width: far beyond any rubber contact), speeds
@@ -120,7 +126,11 @@ impl SceneSet {
         if set.scene.is_empty() {
             return Err(cfg("no [[scene]] table".into()));
         }
+        use crate::limits as lim;
+        let budget = |e: lim::LimitError| cfg(e.to_string());
+        lim::at_most("[[scene]] tables", set.scene.len(), lim::SCENES_MAX).map_err(budget)?;
         for (i, s) in set.scene.iter().enumerate() {
+            lim::name(&format!("scene[{i}]: name"), &s.name).map_err(budget)?;
             let at = |key: &str| format!("scene[{i}] ({}): {key}", s.name);
             if s.name.is_empty()
                 || !s
@@ -149,16 +159,13 @@ impl SceneSet {
                     )));
                 }
             }
-            for (key, list) in [("temps_c", &s.temps_c), ("map_temps_c", &s.map_temps_c)] {
-                if list.len() > MAX_LIST
-                    || list
-                        .iter()
-                        .any(|t| !(t.is_finite() && (-273.15..=TEMP_MAX_C).contains(t)))
-                {
-                    return Err(cfg(format!(
-                        "{} must list at most {MAX_LIST} temperatures in °C in [−273.15, {TEMP_MAX_C}]",
-                        at(key)
-                    )));
+            for (key, list, max) in [
+                ("temps_c", &s.temps_c, lim::SCENE_TEMPS_MAX),
+                ("map_temps_c", &s.map_temps_c, lim::MAP_LIST_MAX),
+            ] {
+                lim::at_most(&at(key), list.len(), max).map_err(budget)?;
+                for t in list.iter() {
+                    lim::temperature_c(&at(key), *t).map_err(budget)?;
                 }
             }
             if s.temps_c.is_empty() {
@@ -171,12 +178,7 @@ impl SceneSet {
                 if !list.is_empty() && s.map_temps_c.is_empty() {
                     return Err(cfg(format!("{} needs map_temps_c", at(key))));
                 }
-                if list.len() > MAX_LIST {
-                    return Err(cfg(format!(
-                        "{} lists more than {MAX_LIST} values",
-                        at(key)
-                    )));
-                }
+                lim::at_most(&at(key), list.len(), lim::MAP_LIST_MAX).map_err(budget)?;
                 let (lo, hi) = range_of(key);
                 if let Some(v) = list
                     .iter()
@@ -188,6 +190,23 @@ impl SceneSet {
                     )));
                 }
             }
+            if let Some(t) = s.tol {
+                if !(TOL_RANGE.0..=TOL_RANGE.1).contains(&t) {
+                    return Err(cfg(format!(
+                        "{} must lie in [{:e}, {:e}], got {t}",
+                        at("tol"),
+                        TOL_RANGE.0,
+                        TOL_RANGE.1
+                    )));
+                }
+            }
+            lim::map_cells(
+                &at("map_temps_c × (map_speeds_m_s + map_loads_n_per_m)"),
+                s.map_temps_c.len(),
+                s.map_speeds_m_s.len(),
+                s.map_loads_n_per_m.len(),
+            )
+            .map_err(budget)?;
             if let Some(h) = s.cover_thickness_mm {
                 if !(h.is_finite() && h > 0.0) {
                     return Err(cfg(format!(
@@ -195,6 +214,7 @@ impl SceneSet {
                         at("cover_thickness_mm")
                     )));
                 }
+                lim::cover(&at("cover_thickness_mm"), h, s.roll_radius_mm).map_err(budget)?;
             }
             s.scene().validate().map_err(|e| cfg(at(&e.to_string())))?;
         }
@@ -203,7 +223,8 @@ impl SceneSet {
 
     /// Read a TOML file.
     pub fn read(path: &Path) -> Result<Self, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+        let text = crate::fsutil::read_regular_to_string(path, crate::limits::SETTINGS_BYTES_MAX)
+            .map_err(|source| SceneError::Io {
             path: path.to_path_buf(),
             source,
         })?;
@@ -223,12 +244,16 @@ pub struct FrictionPoint {
     /// Temperature in °C.
     pub temp_c: f64,
     /// log10 a_T used.
+    #[serde(deserialize_with = "nan_if_null")]
     pub log10_a_t: f64,
     /// Rolling-friction coefficient F*/N* (NaN when the solve failed).
+    #[serde(deserialize_with = "nan_if_null")]
     pub friction: f64,
     /// Rolling resistance per unit width in N/m.
+    #[serde(deserialize_with = "nan_if_null")]
     pub resistance_n_per_m: f64,
     /// Contact length in mm.
+    #[serde(deserialize_with = "nan_if_null")]
     pub contact_length_mm: f64,
     /// The temperature lies outside the measured ones (the shift law is extrapolated).
     pub extrapolated: bool,
@@ -248,6 +273,19 @@ pub struct FrictionPoint {
     /// The uncertainty band of `friction` (None when bands were not computed, `--no-bands`).
     #[serde(default)]
     pub band: Option<FrictionBand>,
+    /// The friction of each replicate specimen's own fit (empty with one specimen; NaN where one
+    /// failed): the compound's fit pools them (crate::pipeline::specimens).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub specimens: Vec<f64>,
+    /// Why the point is not determined ([`FrictionPoint::determine`]): then it is shown with its
+    /// reason, hollow, and never ranked or averaged.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub undetermined: Option<String>,
+    /// The contact solver's estimate of the relative error of `friction` (plus, where `auto` chose
+    /// a cheaper body than the bonded layer, its estimated difference from the layer); None when
+    /// the solve failed or gave none.
+    #[serde(default)]
+    pub error_estimate: Option<f64>,
 }
 
 /// Percentiles of F*/N* from the measurement's own scatter propagated through the pipeline.
@@ -261,22 +299,90 @@ pub struct FrictionBand {
     pub p95: f64,
 }
 
+/// An f64 that JSON wrote as `null` (serde_json writes NaN so: a failed point's friction) read
+/// back as NaN.
+fn nan_if_null<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+}
+
 fn half_space_name() -> String {
     "half-space".into()
 }
 
+/// A point whose 90 % band spans more than this ratio p95/p05 is not determined: the data leave it
+/// open by more than an order of magnitude (issue 31).
+pub const UNDETERMINED_BAND_RATIO: f64 = 10.0;
+
+/// A point whose temperature lies more than this (K) beyond the measured isotherms is not
+/// determined: the shift law there continues its end segment over more than one to two isotherm
+/// steps (5–10 K in the shipped exports), where the data say nothing of its curvature, and the
+/// tail assumptions of docs/MATH.md eq. 15.8 part fast (issue 31).
+pub const EXTRAPOLATION_LIMIT_K: f64 = 10.0;
+
 impl FrictionPoint {
+    /// Decide whether the point is determined: not when its band (the measurement's and the
+    /// model's terms, before the between-specimen term: that one is the same for every point and
+    /// stated apart) spans more than [`UNDETERMINED_BAND_RATIO`], or its temperature lies more
+    /// than [`EXTRAPOLATION_LIMIT_K`] beyond `measured_c` (the measured temperatures). A failed
+    /// point is failed, not undetermined.
+    pub fn determine(&mut self, measured_c: Option<(f64, f64)>) {
+        if self.error.is_some() || !self.friction.is_finite() {
+            return;
+        }
+        let mut why = Vec::new();
+        if let Some(b) = self.band {
+            let r = b.p95 / b.p05;
+            // a NaN ratio (a broken band) is not determined either
+            if r.is_nan() || r > UNDETERMINED_BAND_RATIO {
+                why.push(format!(
+                    "its band spans a factor {} (p95/p05 > {UNDETERMINED_BAND_RATIO})",
+                    factor_text(r)
+                ));
+            }
+        }
+        if let Some((lo, hi)) = measured_c {
+            let beyond = (lo - self.temp_c).max(self.temp_c - hi);
+            if beyond > EXTRAPOLATION_LIMIT_K {
+                why.push(format!(
+                    "the shift law is extrapolated {beyond} K beyond the measured {lo}…{hi} °C \
+                     (limit {EXTRAPOLATION_LIMIT_K} K)"
+                ));
+            }
+        }
+        self.undetermined =
+            (!why.is_empty()).then(|| format!("not determined: {}", why.join("; ")));
+    }
+
+    /// Computed and determined: may be ranked and averaged.
+    pub fn counts(&self) -> bool {
+        self.error.is_none() && self.friction.is_finite() && self.undetermined.is_none()
+    }
+
     /// Every flag of the point in one line: failure, extrapolated shift law, contact warnings.
     pub fn note(&self) -> String {
         let mut v: Vec<String> = Vec::new();
         if let Some(e) = &self.error {
             v.push(format!("failed: {e}"));
         }
+        if let Some(u) = &self.undetermined {
+            v.push(u.clone());
+        }
         if self.extrapolated {
             v.push("extrapolated shift law (outside the measured temperatures)".into());
         }
         v.extend(self.warnings.iter().cloned());
         super::outcome::cap_line(&v.join("; ").replace(['\r', '\n'], " "))
+    }
+}
+
+/// A ratio as printed: "12.3", "330", "3.3e12" (no percentages beyond 1000 %: issue 31).
+pub fn factor_text(r: f64) -> String {
+    if r < 100.0 {
+        format!("{r:.1}")
+    } else if r < 1000.0 {
+        format!("{r:.0}")
+    } else {
+        format!("{r:.1e}")
     }
 }
 

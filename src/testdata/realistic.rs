@@ -262,6 +262,188 @@ pub fn non_overlapping_compounds() -> Vec<RealisticCompound> {
     ]
 }
 
+/// The τ range (log10 s) a spectrum must span for `law` so that every isotherm of −60 … +100 °C
+/// at 0.1–100 Hz lies within it, one decade to spare at each end: (fastest, slowest).
+fn tau_range_for(law: &ShiftLaw) -> (f64, f64) {
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let fast = -(two_pi * 100.0).log10() - law.log10_a_t(-60.0);
+    let slow = -(two_pi * 0.1).log10() - law.log10_a_t(100.0);
+    (fast - 1.0, slow + 1.0)
+}
+
+/// A compound of the held-out set: `shape` with its τ grid laid over [`tau_range_for`] at 1.5
+/// terms per decade, its main bell's peak where the loss peaks at 1 Hz at `tg_c` under `law`
+/// (log10 τ_peak = −log10 2π − log10 a_T(T_g)) and its slow bell `slow_after_decades` slower (the
+/// shape's own `n_terms`, `log10_tau_min_s`, `decades` and bell positions are replaced).
+fn held_out(
+    name: &str,
+    description: &str,
+    tg_c: f64,
+    slow_after_decades: f64,
+    shape: RubberShape,
+    law: ShiftLaw,
+) -> RealisticCompound {
+    let (lo, hi) = tau_range_for(&law);
+    let peak = -(2.0 * std::f64::consts::PI).log10() - law.log10_a_t(tg_c);
+    let shape = RubberShape {
+        n_terms: ((hi - lo) * 1.5).ceil() as usize + 1,
+        log10_tau_min_s: lo,
+        decades: hi - lo,
+        log10_tau_peak_s: peak,
+        log10_tau_slow_s: peak + slow_after_decades,
+        ..shape
+    };
+    RealisticCompound {
+        name: name.into(),
+        description: description.into(),
+        spectrum: shape.spectrum(),
+        law,
+    }
+}
+
+fn wlf(t_ref_c: f64, c1: f64, c2_k: f64) -> ShiftLaw {
+    ShiftLaw::Wlf { t_ref_c, c1, c2_k }
+}
+
+/// Eight known-truth compounds kept apart from [`realistic_compounds`] (which the bands and the
+/// fit were tuned on): the calibration set of the uncertainty bands (issue 32; docs/MATH.md §15).
+/// Narrow and broad transitions, a long rubbery plateau, a high T_g, two transitions (a blend), a
+/// filled rubber's low-frequency tail, a steep glass side and a T_g at the coldest isotherm, with
+/// WLF constants over the usual range (C1 8–14, C2 75–150 K) and neighbouring isotherms 5 K apart
+/// at most 2 decades apart at −60 °C (so a 3-decade sweep overlaps its neighbour). The τ grid of
+/// each covers the window of −60 … +100 °C at 0.1–100 Hz under its own law, a decade to spare at
+/// each end (no isotherm past the spectrum).
+pub fn held_out_compounds() -> Vec<RealisticCompound> {
+    let base = RubberShape {
+        n_terms: 0,
+        log10_tau_min_s: 0.0,
+        decades: 0.0,
+        modulus_inf_pa: 4.0e6,
+        glassy_over_rubbery: 500.0,
+        log10_tau_peak_s: 0.0,
+        width_short_decades: 1.5,
+        width_long_decades: 2.2,
+        slow_fraction: 0.01,
+        log10_tau_slow_s: 0.0,
+        width_slow_decades: 2.0,
+    };
+    vec![
+        held_out(
+            "narrow-transition",
+            "unfilled, narrow glass transition (bell 0.9/1.2 decades), T_g ≈ −45 °C",
+            -45.0,
+            7.0,
+            RubberShape {
+                width_short_decades: 0.9,
+                width_long_decades: 1.2,
+                slow_fraction: 0.002,
+                glassy_over_rubbery: 1200.0,
+                modulus_inf_pa: 1.5e6,
+                ..base.clone()
+            },
+            wlf(-10.0, 10.0, 130.0),
+        ),
+        held_out(
+            "broad-transition",
+            "broad transition (bell 3.5/4.5 decades), as a heterogeneous blend, T_g ≈ −30 °C",
+            -30.0,
+            7.0,
+            RubberShape {
+                width_short_decades: 3.5,
+                width_long_decades: 4.5,
+                glassy_over_rubbery: 200.0,
+                modulus_inf_pa: 1.0e7,
+                ..base.clone()
+            },
+            wlf(10.0, 8.5, 140.0),
+        ),
+        held_out(
+            "long-plateau",
+            "lightly crosslinked, long rubbery plateau (no slow relaxation, E₀/E∞ = 2000), \
+             T_g ≈ −55 °C",
+            -55.0,
+            7.0,
+            RubberShape {
+                width_short_decades: 1.2,
+                width_long_decades: 1.6,
+                slow_fraction: 0.0,
+                glassy_over_rubbery: 2000.0,
+                modulus_inf_pa: 1.0e6,
+                ..base.clone()
+            },
+            wlf(-30.0, 14.0, 100.0),
+        ),
+        held_out(
+            "high-tg",
+            "high T_g (loss peak at 1 Hz near +20 °C)",
+            20.0,
+            6.0,
+            RubberShape {
+                width_short_decades: 2.0,
+                width_long_decades: 2.8,
+                slow_fraction: 0.02,
+                ..base.clone()
+            },
+            wlf(30.0, 8.0, 150.0),
+        ),
+        held_out(
+            "two-transitions",
+            "immiscible blend: T_g ≈ −50 °C and a second transition 5 decades slower holding 30 %",
+            -50.0,
+            5.0,
+            RubberShape {
+                width_short_decades: 1.2,
+                width_long_decades: 1.5,
+                slow_fraction: 0.3,
+                width_slow_decades: 1.0,
+                ..base.clone()
+            },
+            wlf(0.0, 9.0, 130.0),
+        ),
+        held_out(
+            "filled-tail",
+            "highly filled: a broad low-frequency tail (filler network) holding 12 %, T_g ≈ −35 °C",
+            -35.0,
+            9.0,
+            RubberShape {
+                slow_fraction: 0.12,
+                width_slow_decades: 3.0,
+                glassy_over_rubbery: 120.0,
+                modulus_inf_pa: 1.5e7,
+                ..base.clone()
+            },
+            wlf(-10.0, 10.0, 120.0),
+        ),
+        held_out(
+            "steep-glass-side",
+            "skewed bell: steep towards the glass (0.6 decade), a long tail (3.5) towards the \
+             rubber, T_g ≈ −40 °C",
+            -40.0,
+            7.0,
+            RubberShape {
+                width_short_decades: 0.6,
+                width_long_decades: 3.5,
+                ..base.clone()
+            },
+            wlf(-20.0, 14.0, 130.0),
+        ),
+        held_out(
+            "tg-at-cold-end",
+            "T_g at the coldest isotherm (≈ −58 °C, BR-like): most isotherms on the rubbery side",
+            -58.0,
+            7.0,
+            RubberShape {
+                width_short_decades: 1.4,
+                width_long_decades: 2.0,
+                glassy_over_rubbery: 700.0,
+                modulus_inf_pa: 2.0e6,
+                ..base
+            },
+            wlf(-40.0, 13.0, 75.0),
+        ),
+    ]
+}
+
 /// How the synthetic DMA run is made (isotherms, sweep, noise, temperature control).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DmaProtocol {
@@ -362,6 +544,110 @@ pub fn dma_csv(rows: &[DmaRow]) -> String {
         );
     }
     s
+}
+
+/// The export formats the synthetic runs can be written in (each read by crate::dma's own reader).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ExportFormat {
+    /// [`dma_csv`]: plain CSV, Hz and MPa, a segment column.
+    PlainCsv,
+    /// [`dma_trios_text`]: TA TRIOS plain text of a shear run (G = E/3), rad/s and Pa, one
+    /// `[step]` per isotherm.
+    TriosText,
+    /// [`dma_proteus`]: Netzsch Proteus ASCII, decimal comma, `;`-separated, MPa, cp1252.
+    Proteus,
+}
+
+impl ExportFormat {
+    /// Every format.
+    pub const ALL: [ExportFormat; 3] = [
+        ExportFormat::PlainCsv,
+        ExportFormat::TriosText,
+        ExportFormat::Proteus,
+    ];
+
+    /// A file name extension for it.
+    pub fn extension(self) -> &'static str {
+        match self {
+            ExportFormat::PlainCsv => "csv",
+            ExportFormat::TriosText | ExportFormat::Proteus => "txt",
+        }
+    }
+
+    /// The rows written in this format (bytes as the instrument's software writes them).
+    pub fn write(self, rows: &[DmaRow]) -> Vec<u8> {
+        match self {
+            ExportFormat::PlainCsv => dma_csv(rows).into_bytes(),
+            ExportFormat::TriosText => dma_trios_text(rows).into_bytes(),
+            ExportFormat::Proteus => dma_proteus(rows),
+        }
+    }
+}
+
+/// The rows as TA TRIOS plain text of a shear run: G′ = E′/3, G″ = E″/3 (ν = 0.5), angular
+/// frequency, one `[step]` per segment named by its nominal temperature (the mean of its points,
+/// rounded to 0.5 K, as the instrument names it), 10 significant digits.
+pub fn dma_trios_text(rows: &[DmaRow]) -> String {
+    let mut s = String::from(
+        "Filename\tsynthetic.tri\nInstrument type\tAresG2\nTrios version\t5.1.1.46572\n",
+    );
+    let segments = rows.iter().map(|r| r.segment).max().map_or(0, |m| m + 1);
+    for seg in 0..segments {
+        let pts: Vec<&DmaRow> = rows.iter().filter(|r| r.segment == seg).collect();
+        if pts.is_empty() {
+            continue;
+        }
+        let mean = pts.iter().map(|r| r.temp_c).sum::<f64>() / pts.len() as f64;
+        let _ = write!(
+            s,
+            "\n[step]\nFrequency sweep ({:.1} °C)\nAngular frequency\tStorage modulus\tLoss modulus\tTemperature\tOscillation torque\nrad/s\tPa\tPa\t°C\tµN.m\n",
+            (mean * 2.0).round() / 2.0
+        );
+        for r in pts {
+            let _ = writeln!(
+                s,
+                "{:.9e}\t{:.9e}\t{:.9e}\t{:.4}\t100",
+                2.0 * std::f64::consts::PI * r.freq_hz,
+                r.storage_pa / 3.0,
+                r.loss_pa / 3.0,
+                r.temp_c
+            );
+        }
+    }
+    s
+}
+
+/// `v` in fixed notation to 8 significant digits (Proteus writes no exponents).
+fn fixed8(v: f64) -> String {
+    let digits = 7 - v.abs().log10().floor() as i32;
+    format!("{:.*}", digits.clamp(0, 20) as usize, v)
+}
+
+/// The rows as a Netzsch Proteus ASCII export of a tensile run (`#` header lines, `##` column
+/// line, decimal comma, `;`, CRLF, cp1252): temperature, time, Hz, MPa, tan δ.
+pub fn dma_proteus(rows: &[DmaRow]) -> Vec<u8> {
+    let mut s = String::from(
+        "#EXPORTTYPE:DATA ALL\r\n#FILE:synthetic.dm2\r\n#FORMAT:NETZSCH5\r\n#FTYPE:ANSI\r\n\
+         #INSTRUMENT:NETZSCH DMA 242E Artemis\r\n#MODE:Tension\r\n#DECIMAL:COMMA\r\n\
+         #SEPARATOR:SEMICOLON\r\n##Temp./°C;Time/min;Freq./Hz;E'/MPa;E''/MPa;tan d\r\n",
+    );
+    for (i, r) in rows.iter().enumerate() {
+        let line = format!(
+            "{:.4};{:.1};{};{};{};{}",
+            r.temp_c,
+            0.5 * i as f64,
+            fixed8(r.freq_hz),
+            fixed8(r.storage_pa * 1e-6),
+            fixed8(r.loss_pa * 1e-6),
+            fixed8(r.loss_pa / r.storage_pa)
+        );
+        s.push_str(&line.replace('.', ","));
+        s.push_str("\r\n");
+    }
+    // cp1252: every character here is ASCII except '°' (U+00B0, byte 0xB0 in cp1252).
+    s.chars()
+        .map(|c| if c == '°' { 0xB0 } else { c as u8 })
+        .collect()
 }
 
 #[cfg(test)]

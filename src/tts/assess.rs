@@ -13,13 +13,15 @@ use super::shift::{overlap_rms, Prepared};
 /// The flag of an isotherm whose shift the overlaps do not determine (docs/MATH.md §6.6).
 pub const SHIFT_NOT_DETERMINED: &str = "shift not determined by overlap";
 
-/// The shift and quality figures of every isotherm, and their summary.
+/// The shift and quality figures of every isotherm, and their summary; `kind` names the moduli in
+/// the flags (E′, E″ or G′, G″).
 pub(super) fn assess(
     iso: &[Clean],
     ch: &Channels,
     h: &Horizontal,
     log_b: &[f64],
     settings: &MasterSettings,
+    kind: crate::ModulusKind,
 ) -> (Vec<IsothermShift>, MasterQuality) {
     let n = iso.len();
     let (reach, min_pts) = (settings.pair_reach, settings.min_overlap_points);
@@ -43,7 +45,7 @@ pub(super) fn assess(
     let mut isotherms = Vec::with_capacity(n);
     for (i, c) in iso.iter().enumerate() {
         let kk = kramers_kronig_local(&ch.joint[i]);
-        let mut flags = isotherm_flags(&bounds, overlap[i], loss_overlap[i], vgp[i], kk);
+        let mut flags = isotherm_flags(&bounds, kind, overlap[i], loss_overlap[i], vgp[i], kk);
         if !h.determined[i] {
             flags.push(SHIFT_NOT_DETERMINED.to_string());
         }
@@ -103,11 +105,13 @@ pub(super) fn assess(
 /// these shifts, van Gurp–Palmen, and the local Kramers–Kronig ratio.
 fn isotherm_flags(
     bounds: &QualityBounds,
+    kind: crate::ModulusKind,
     overlap: Option<f64>,
     loss_overlap: Option<f64>,
     vgp: Option<f64>,
     kk: Option<f64>,
 ) -> Vec<String> {
+    let (storage, loss, _) = kind.symbols();
     let mut flags = Vec::new();
     if let Some(o) = overlap {
         if o > bounds.overlap_rms_max_log10 {
@@ -122,7 +126,7 @@ fn isotherm_flags(
     if let Some(o) = loss_overlap {
         if o > bounds.overlap_rms_max_log10 {
             flags.push(format!(
-                "E″ alone overlap RMS {o:.3} > {} (log10) at these shifts",
+                "{loss} alone overlap RMS {o:.3} > {} (log10) at these shifts",
                 bounds.overlap_rms_max_log10
             ));
         }
@@ -138,7 +142,7 @@ fn isotherm_flags(
     if let Some(k) = kk {
         if k.abs() > bounds.kk_max_abs_log10_ratio {
             flags.push(format!(
-                "Kramers–Kronig: median log10((π/2)dE′/dlnω / E″) = {k:.2}, |·| > {}",
+                "Kramers–Kronig: median log10((π/2)d{storage}/dlnω / {loss}) = {k:.2}, |·| > {}",
                 bounds.kk_max_abs_log10_ratio
             ));
         }

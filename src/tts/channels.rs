@@ -41,7 +41,12 @@ pub(super) struct Channels {
 impl Channels {
     /// Build the channels `settings` asks for; `log_b` are the vertical factors known before
     /// shifting (zero, or from temperature).
-    pub fn prepare(iso: &[Clean], log_b: &[f64], settings: &MasterSettings) -> Channels {
+    pub fn prepare(
+        iso: &[Clean],
+        log_b: &[f64],
+        settings: &MasterSettings,
+        kind: crate::ModulusKind,
+    ) -> Channels {
         let joint: Vec<Prepared> = iso
             .iter()
             .zip(log_b)
@@ -128,7 +133,8 @@ impl Channels {
             .iter()
             .map(|p| {
                 let w = &p.weights;
-                (w.len() == 2).then(|| if w[0] >= w[1] { "E′" } else { "E″" }.to_string())
+                let (storage, loss, _) = kind.symbols();
+                (w.len() == 2).then(|| if w[0] >= w[1] { storage } else { loss }.to_string())
             })
             .collect::<Vec<_>>();
         let carried = if carried.iter().any(Option::is_some) {

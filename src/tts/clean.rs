@@ -141,10 +141,12 @@ pub(super) fn clean(
             k = j;
         }
         if let Some(t) = thin(&mut x, &mut ls, &mut ll, THIN_ABOVE_POINTS) {
+            let (storage, loss, _) = m.kind.symbols();
             warnings.push(format!(
                 "isotherm {index} ({temp} °C): {} points at distinct frequencies thinned to {} means \
                  of {} consecutive points in log-frequency (largest RMS scatter within a group: \
-                 {:.2e} decade in log E′, {:.2e} in log E″); the shifts and the Prony fit use the means",
+                 {:.2e} decade in log {storage}, {:.2e} in log {loss}); the shifts and the Prony \
+                 fit use the means",
                 t.from,
                 x.len(),
                 if t.from % x.len() == 0 {

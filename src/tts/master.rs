@@ -260,7 +260,7 @@ fn build_once(
             .collect(),
         _ => vec![0.0; n],
     };
-    let ch = Channels::prepare(&iso, &log_b, settings);
+    let ch = Channels::prepare(&iso, &log_b, settings, measurement.kind);
     let mut h = horizontal_shifts(&ch, &temps, k0, t_ref, settings)?;
     if settings.vertical == VerticalShift::Fitted {
         log_b = fit_vertical(
@@ -293,7 +293,7 @@ fn build_once(
         &mut warnings,
     )?;
     warnings.extend(degenerate_wlf_warning(&laws.wlf));
-    let (isotherms, quality) = assess(&iso, &ch, &h, &log_b, settings);
+    let (isotherms, quality) = assess(&iso, &ch, &h, &log_b, settings, measurement.kind);
     let points = reduced_points(&iso, &h.shifts, &log_b);
     let mut resolved = settings.clone();
     resolved.tref_c = Some(t_ref);

@@ -88,6 +88,7 @@ fn friction_plot(
         curves: friction
             .iter()
             .map(|(s, p)| friction_curve(&s.name, p))
+            .chain(specimen_curves(friction))
             .collect(),
         colour_bar: None,
     };
@@ -96,13 +97,35 @@ fn friction_plot(
     })
 }
 
+/// Each replicate specimen's own F/N against temperature per scene (dashed), when the compound
+/// pools several (crate::pipeline::specimens).
+fn specimen_curves(friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> Vec<Curve> {
+    let mut v = Vec::new();
+    for (s, pts) in friction {
+        let n = pts.iter().map(|p| p.specimens.len()).max().unwrap_or(0);
+        for k in 0..n {
+            let points = pts
+                .iter()
+                .filter_map(|p| p.specimens.get(k).map(|&f| (p.temp_c, f)))
+                .collect();
+            v.push(Curve::new(
+                format!("{}, specimen {}", s.name, k + 1),
+                points,
+                Mark::Dashed,
+            ));
+        }
+    }
+    v
+}
+
 /// Bands are drawn no further than this factor beyond the curve's own lowest and highest F/N: a
 /// band widened for extrapolation (crate::bands eqs. 15.8, 15.9) can span ten decades and would
 /// flatten every curve of the plot; the friction table gives it in full.
 pub const BAND_CLIP_FACTOR: f64 = 10.0;
 
 /// One scene's F/N against temperature as a curve with its band (the p05…p95 of each point that
-/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range).
+/// has one, clipped to [`BAND_CLIP_FACTOR`] beyond the curve's range; each clipped end in
+/// [`Curve::band_cut`], so the chart marks it); points not determined are drawn hollow.
 pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     let mut c = Curve::new(
         name,
@@ -122,6 +145,24 @@ pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
     c.band = pts
         .iter()
         .filter_map(|p| p.band.map(|b| (p.temp_c, b.p05.max(lo), b.p95.min(hi))))
+        .collect();
+    c.band_cut = pts
+        .iter()
+        .filter_map(|p| p.band.map(|b| (p.temp_c, b)))
+        .flat_map(|(t, b)| {
+            [
+                (b.p95 > hi).then_some((t, hi, true)),
+                (b.p05 < lo).then_some((t, lo, false)),
+            ]
+        })
+        .flatten()
+        .collect();
+    // a point not determined is drawn hollow (issue 31)
+    c.hollow = pts
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.undetermined.is_some())
+        .map(|(i, _)| i)
         .collect();
     c
 }
@@ -218,7 +259,7 @@ pub fn write_report(
     allow_extrapolation: bool,
     dir: &Path,
 ) -> Result<(), ReportError> {
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    crate::fsutil::jail::create_dir_all(dir).map_err(io(dir))?;
     let prov = provenance_line(fit);
     let flags = fit.untrusted_reasons();
     let scene_maps: Vec<(&SceneSpec, &FrictionMaps)> =
@@ -275,6 +316,7 @@ pub fn write_report(
     );
     h.push_str(&sections::shift_factors(fit, ""));
     h.push_str(&sections::friction(friction, ""));
+    h.push_str(&sections::specimens(fit, friction));
     h.push_str(&sections::trust(fit, friction, allow_extrapolation));
     h.push_str(&maps_html);
     h.push_str(&sections::quality(fit));

@@ -3,7 +3,7 @@
 //! FEA cards. Each takes the fit (and what else it shows) and returns HTML text.
 
 use super::tan_delta::{tan_delta_at, tan_delta_peak};
-use crate::report::html::esc;
+use crate::report::html::{esc, num};
 use crate::report::{card_shift, cards};
 use crate::results::{CompoundFit, FrictionPoint, SceneSpec};
 use crate::ShiftLaw;
@@ -35,20 +35,11 @@ pub fn trust(
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     allow_extrapolation: bool,
 ) -> String {
-    let reasons = fit.untrusted_reasons();
+    let (reasons, care) = (fit.untrusted_reasons(), fit.care_reasons());
     let mut h = String::from("<h3>Standing in the ranking</h3>");
-    if reasons.is_empty() {
-        h.push_str("<p>Every quality figure of the fit is within its bound.</p>");
-    } else {
-        let _ = write!(
-            h,
-            "<p class=\"bad\">Not trusted: this compound is listed apart in the ranking, never ranked among trusted ones.</p><ul class=\"bad\">{}</ul>",
-            reasons.iter().map(|r| format!("<li>{}</li>", esc(r))).collect::<String>()
-        );
-    }
-    h.push_str("<table><tr><th>scene</th><th>mean F/N</th><th>averaged over (°C)</th><th>extrapolated (°C)</th><th>failed (°C)</th><th>verdict</th></tr>");
+    h.push_str("<table><tr><th>scene</th><th>mean F/N</th><th>averaged over (°C)</th><th>extrapolated (°C)</th><th>failed (°C)</th><th>not determined (°C)</th><th>verdict</th></tr>");
     for (spec, pts) in friction {
-        let s = crate::results::standing(&spec.name, pts, &reasons, allow_extrapolation);
+        let s = crate::results::standing(&spec.name, pts, &reasons, &care, allow_extrapolation);
         let list = |t: &[f64]| {
             t.iter()
                 .map(|t| t.to_string())
@@ -57,16 +48,82 @@ pub fn trust(
         };
         let _ = write!(
             h,
-            "<tr><td class=\"l\">{}</td><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}{}</td><td class=\"l\">{}</td><td class=\"l{}\">{}</td></tr>",
+            "<tr><td class=\"l\">{}</td><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td class=\"l{}\">{}</td></tr>",
             esc(&spec.name),
             s.mean_friction.map_or("–".to_string(), |f| format!("{f:.4e}")),
             list(&s.temps_c),
             list(&s.extrapolated_temps_c),
             if s.extrapolated_temps_c.is_empty() { "" } else if allow_extrapolation { " (averaged)" } else { " (left out)" },
             list(&s.failed_temps_c),
-            if s.trusted() { "" } else { " bad" },
-            if s.trusted() { "ranked".to_string() } else { esc(&s.untrusted.join("; ")) }
+            list(&s.undetermined_temps_c),
+            match s.level() {
+                crate::results::TrustLevel::Trusted => "",
+                crate::results::TrustLevel::UseWithCare => " warn",
+                crate::results::TrustLevel::NotTrusted => " bad",
+            },
+            esc(&s.verdict())
         );
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// The replicate specimens (issue 31): each one's own F/N beside the pooled fit's and its band,
+/// per scene and temperature, and whether the band holds it; empty with one specimen.
+pub fn specimens(fit: &CompoundFit, friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> String {
+    let n = friction
+        .iter()
+        .flat_map(|(_, p)| p)
+        .map(|p| p.specimens.len())
+        .max()
+        .unwrap_or(0);
+    if n < 2 {
+        return String::new();
+    }
+    let mut h = format!(
+        "<h3>Replicate specimens</h3><p>{n} specimens pooled (their files: {}). Each specimen fitted alone and rolled in the same scenes; the pooled fit's band includes the spread between them (docs/MATH.md §16). Dashed in the friction plot.</p><table><tr><th>scene</th><th>T (°C)</th><th>pooled F/N</th><th>band p05…p95</th>",
+        esc(&fit
+            .measurement
+            .sources
+            .iter()
+            .map(|s| s.path.as_str())
+            .collect::<Vec<_>>()
+            .join(", "))
+    );
+    for k in 0..n {
+        let _ = write!(h, "<th>specimen {}</th>", k + 1);
+    }
+    h.push_str("<th>ratio max/min</th></tr>");
+    for (spec, pts) in friction {
+        for p in pts.iter().filter(|p| p.specimens.len() == n) {
+            let _ = write!(
+                h,
+                "<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td>",
+                esc(&spec.name),
+                p.temp_c,
+                num(p.friction),
+                p.band
+                    .map_or("–".into(), |b| format!("{}…{}", num(b.p05), num(b.p95)))
+            );
+            for &f in &p.specimens {
+                let inside = p.band.is_some_and(|b| f >= b.p05 && f <= b.p95);
+                let _ = write!(
+                    h,
+                    "<td{}>{}</td>",
+                    if p.band.is_some() && !inside {
+                        " class=\"bad\" title=\"outside the band\""
+                    } else {
+                        ""
+                    },
+                    num(f)
+                );
+            }
+            let (lo, hi) = p
+                .specimens
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(a, b), &f| (a.min(f), b.max(f)));
+            let _ = write!(h, "<td>{:.2}</td></tr>", hi / lo);
+        }
     }
     h.push_str("</table>");
     h
@@ -248,9 +305,10 @@ pub fn friction(friction: &[(SceneSpec, Vec<FrictionPoint>)], friction_svg: &str
 /// The relaxation spectrum's Prony terms.
 pub fn prony(fit: &CompoundFit) -> String {
     let r = &fit.relaxation;
+    let (storage, loss, inf) = r.kind.symbols();
     let mut h = format!(
-        "<h2>Spectra and FEA cards</h2><details><summary>Prony series (relaxation, {:?}, at T_ref): E∞ = {:.4e} Pa, {} terms; RMS log10 error E′ {:.4}, E″ {:.4}</summary><table><tr><th>i</th><th>τ<sub>i</sub> (s)</th><th>E<sub>i</sub> (Pa)</th></tr>",
-        r.kind, r.modulus_inf_pa, r.terms.len(), fit.prony_info.rms_log10_storage, fit.prony_info.rms_log10_loss
+        "<h2>Spectra and FEA cards</h2><details><summary>Prony series (relaxation, {:?}, at T_ref): {inf} = {:.4e} Pa, {} terms; RMS log10 error {storage} {:.4}, {loss} {:.4}</summary><table><tr><th>i</th><th>τ<sub>i</sub> (s)</th><th>{}<sub>i</sub> (Pa)</th></tr>",
+        r.kind, r.modulus_inf_pa, r.terms.len(), fit.prony_info.rms_log10_storage, fit.prony_info.rms_log10_loss, r.kind.letter()
     );
     for (i, t) in r.terms.iter().enumerate() {
         let _ = write!(

@@ -8,7 +8,7 @@
 use super::tan_delta::tan_delta_at;
 use super::transitions::{onset, peak, Quantity};
 use crate::report::html::{esc, num, num_band};
-use crate::results::{standing, CompoundFit, FrictionPoint, SceneSpec};
+use crate::results::{standing, CompoundFit, FrictionPoint, SceneSpec, TrustLevel};
 use std::fmt::Write as _;
 
 /// Metadata keys read for each line of the sample table, in order of preference (compared without
@@ -132,21 +132,6 @@ fn facts(fit: &CompoundFit) -> String {
         num(m.freq_min_hz),
         num(m.freq_max_hz)
     );
-    let reasons = fit.untrusted_reasons();
-    if reasons.is_empty() {
-        let _ = write!(
-            h,
-            "<p class=\"ok\"><b>Quality: trusted.</b> Every quality figure is within its bound ({} figures).</p>",
-            fit.quality.len()
-        );
-    } else {
-        let _ =
-            write!(
-            h,
-            "<p class=\"bad\"><b>Quality: not trusted</b> (listed apart in the ranking): {}</p>",
-            reasons.iter().map(|r| esc(r)).collect::<Vec<_>>().join("; ")
-        );
-    }
     let t = |v: Option<(f64, f64)>| {
         v.map_or("outside the measured temperatures".to_string(), |(t, _)| {
             format!("{t:.1} °C")
@@ -289,9 +274,9 @@ pub fn friction_matrix(
         let _ = write!(h, "<th>{t} °C</th>");
     }
     h.push_str("</tr>");
-    let reasons = fit.untrusted_reasons();
+    let (reasons, care) = (fit.untrusted_reasons(), fit.care_reasons());
     for (spec, pts) in friction {
-        let s = standing(&spec.name, pts, &reasons, allow_extrapolation);
+        let s = standing(&spec.name, pts, &reasons, &care, allow_extrapolation);
         let _ = write!(
             h,
             "<tr><td class=\"l\">{}</td><td class=\"{}\">{}</td>",
@@ -405,10 +390,71 @@ pub fn first_screen(
     friction_svg: &str,
 ) -> String {
     format!(
-        "<section class=\"first\"><div>{}</div><div>{friction_svg}</div></section>{}",
+        "{}<section class=\"first\"><div>{}</div><div>{friction_svg}</div></section>{}",
+        verdict_html(fit, friction, allow_extrapolation),
         facts(fit),
         friction_matrix(fit, friction, allow_extrapolation)
     )
+}
+
+/// The compound's verdict, the worst over its scenes, in the words of ranking.csv and the index
+/// (crate::results::TrustLevel), with every reason behind it.
+pub fn verdict_html(
+    fit: &CompoundFit,
+    friction: &[(SceneSpec, Vec<FrictionPoint>)],
+    allow_extrapolation: bool,
+) -> String {
+    let (reasons, care) = (fit.untrusted_reasons(), fit.care_reasons());
+    let standings: Vec<_> = friction
+        .iter()
+        .map(|(spec, pts)| standing(&spec.name, pts, &reasons, &care, allow_extrapolation))
+        .collect();
+    let level = standings
+        .iter()
+        .map(|s| s.level())
+        .max()
+        .unwrap_or(TrustLevel::Trusted);
+    let mut why: Vec<String> = Vec::new();
+    for s in standings.iter().filter(|s| s.level() == level) {
+        for r in s.reasons() {
+            let r = if reasons.contains(r) || care.contains(r) {
+                r.clone()
+            } else {
+                format!("{}: {r}", s.scene)
+            };
+            if !why.contains(&r) {
+                why.push(r);
+            }
+        }
+    }
+    let class = match level {
+        TrustLevel::Trusted => "ok",
+        TrustLevel::UseWithCare => "warn",
+        TrustLevel::NotTrusted => "bad",
+    };
+    let mut h = format!(
+        "<p class=\"{class}\"><b>Verdict: {}.</b> {}</p>",
+        level.words(),
+        match level {
+            TrustLevel::Trusted => format!(
+                "Every check passed: {} quality figures within their bounds, the master-curve \
+                 checks, contact validity, every point determined.",
+                fit.quality.len()
+            ),
+            TrustLevel::UseWithCare => "Ranked, with these reasons:".to_string(),
+            TrustLevel::NotTrusted => "Listed apart in the ranking, never ranked:".to_string(),
+        }
+    );
+    if !why.is_empty() {
+        let _ = write!(
+            h,
+            "<ul class=\"{class}\">{}</ul>",
+            why.iter()
+                .map(|r| format!("<li>{}</li>", esc(r)))
+                .collect::<String>()
+        );
+    }
+    h
 }
 
 #[cfg(test)]
@@ -443,7 +489,38 @@ mod tests {
             model_reason: "cover thin against the contact".into(),
             warnings: vec![],
             band,
+            specimens: vec![],
+            undetermined: None,
+            error_estimate: None,
         }
+    }
+
+    /// A band beyond [`super::super::BAND_CLIP_FACTOR`] times the curve's range is clipped there and
+    /// each clipped end is listed as cut (so the chart marks it); a band inside is not.
+    #[test]
+    fn clipped_band_ends_are_marked_as_cut() {
+        let b = |p05: f64, p95: f64| {
+            Some(FrictionBand {
+                p05,
+                p50: 0.5 * (p05 + p95),
+                p95,
+            })
+        };
+        // curve range 1e-4 … 2e-4: the plot keeps 1e-5 … 2e-3
+        let pts = [
+            point(0.0, 1e-4, b(0.9e-4, 1.1e-4)),
+            point(10.0, 2e-4, b(1e-9, 1e2)),
+            point(20.0, 1.5e-4, b(1e-6, 1.6e-4)),
+        ];
+        let c = super::super::friction_curve("x", &pts);
+        let k = super::super::BAND_CLIP_FACTOR;
+        let (lo, hi) = (1e-4 / k, 2e-4 * k);
+        assert_eq!(
+            c.band_cut,
+            vec![(10.0, hi, true), (10.0, lo, false), (20.0, lo, false)]
+        );
+        assert_eq!(c.band[1], (10.0, lo, hi));
+        assert_eq!(c.band[0], (0.0, 0.9e-4, 1.1e-4));
     }
 
     #[test]
@@ -466,7 +543,7 @@ mod tests {
             h.contains("SBR &lt;tread&gt;") && h.contains("A. Tester"),
             "{h}"
         );
-        assert!(h.contains("Quality: trusted"));
+        assert!(h.contains("Verdict: trusted."), "{h}");
         assert!(h.contains("T<sub>g</sub> at 1 Hz") && h.contains("tan δ at 60 °C, 10 Hz"));
         // the band in the value's power of ten, the extrapolated point marked
         assert!(

@@ -10,8 +10,12 @@ use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
 
 /// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated,
 /// error, `note` (every flag of the row: failure, extrapolation, contact validity), `model` (the
-/// body solved, contact::body::layer) and `friction_p05`, `friction_p50`, `friction_p95` (the 90 %
-/// uncertainty band, crate::bands; empty with `--no-bands`). The
+/// body solved, contact::body::layer), `error_estimate` (the contact solver's relative error
+/// estimate of `friction`, at the scene's tolerance; empty when the solve failed) and
+/// `friction_p05`, `friction_p50`, `friction_p95` (the 90 % uncertainty band, crate::bands, with
+/// the between-specimen term of docs/MATH.md §16; empty with `--no-bands`), `undetermined` (why
+/// the point is not determined: never ranked or averaged) and `specimen_frictions` (each
+/// replicate specimen's own F/N, space-separated; empty with one). The
 /// compound's own flags (`flags`: why its fit is not trusted) come first as `#` lines and, when there
 /// are any, lead every row's note with `fit not trusted`. The fit's warnings (`fit_warnings`: the
 /// data, the master curve, the bands; the same for every row) are written once in full as
@@ -39,9 +43,16 @@ pub fn friction_csv(
                 p.error.as_deref().unwrap_or("").replace(['\r', '\n'], " "),
                 row_note(untrusted, p.note(), &codes),
                 p.model.clone(),
+                band_text(p.error_estimate),
                 band_text(p.band.map(|b| b.p05)),
                 band_text(p.band.map(|b| b.p50)),
                 band_text(p.band.map(|b| b.p95)),
+                p.undetermined.clone().unwrap_or_default(),
+                p.specimens
+                    .iter()
+                    .map(|f| format!("{f:e}"))
+                    .collect::<Vec<_>>()
+                    .join(" "),
             ]
         })
     });
@@ -66,9 +77,12 @@ pub fn friction_csv(
             "error",
             "note",
             "model",
+            "error_estimate",
             "friction_p05",
             "friction_p50",
             "friction_p95",
+            "undetermined",
+            "specimen_frictions",
         ],
         rows,
     )
@@ -180,6 +194,7 @@ mod tests {
             model: String::new(),
             model_reason: String::new(),
             band: None,
+            error_estimate: None,
             temp_c: 20.0,
             log10_a_t: 0.0,
             friction: if error.is_some() { f64::NAN } else { 1e-3 },
@@ -188,6 +203,8 @@ mod tests {
             extrapolated,
             error: error.map(str::to_string),
             warnings,
+            specimens: vec![],
+            undetermined: None,
         };
         let pts = vec![
             p(false, None, vec![]),

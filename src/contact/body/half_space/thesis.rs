@@ -29,8 +29,9 @@ use nalgebra::{DMatrix, DVector};
 
 /// Smallest number of intervals (one interior unknown plus β).
 pub const MIN_INTERVALS: usize = 2;
-/// Largest number of intervals accepted (dense LU: 20 000² doubles is 3.2 GB).
-pub const MAX_INTERVALS: usize = 20_000;
+/// Largest number of intervals accepted: the work budget's [`crate::limits::CONTACT_N_MAX`] (a dense
+/// n × n LU; 20 000² doubles were 3.2 GB).
+pub const MAX_INTERVALS: usize = crate::limits::CONTACT_N_MAX;
 
 /// Check n against [`MIN_INTERVALS`]..=[`MAX_INTERVALS`].
 pub fn check_intervals(n: usize) -> Result<usize, ContactError> {

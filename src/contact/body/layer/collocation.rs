@@ -12,7 +12,7 @@
 //! layer kernel (Toeplitz), rows i = 1…n, unknowns Q₁…Q_{n−1} and β.
 //!
 //! Convergence: the layer kernel has the half-space's log singularity plus a C^∞ part, so the scheme
-//! keeps the half-space's orders (README "Speed and accuracy of the thesis scheme": λ first order in
+//! keeps the half-space's orders (docs/DEVLOG.md "Speed and accuracy of the thesis scheme": λ first order in
 //! Δ, ρF/N at given load ≈ 2.8 when the front-edge layer is resolved) once Δ also resolves the
 //! layer's own length h′ (the pressure varies on that scale near the contact ends of a thin layer).
 //! The error estimate compares the solutions at n/2 and n (λ and β Richardson-extrapolated, see
@@ -27,7 +27,7 @@
 //! equally; n = 1024 costs 155–171 ms, the LU ≈ 150 ms of it. A load point needs ~6 solves per n and
 //! n doubled from 16 to where the Richardson estimate meets tol: n = 64–128 at 1e−3, 256–1024 at 1e−4,
 //! and at 1e−6 n ~ 10⁴–10⁵ (first order), out of reach. So this scheme gives 4–30 ms at 1e−3 and
-//! 20 ms–1 s at 1e−4 (README table) and cannot meet the goals, as the brief expected. The
+//! 20 ms–1 s at 1e−4 (docs/DEVLOG.md table) and cannot meet the goals, as the brief expected. The
 //! options weighed (the Toeplitz solve was not built; the spectral solver was):
 //! - keep the hat scheme and solve the Toeplitz-plus-rank-two system in O(n²) (Levinson with a
 //!   bordering/Sherman–Morrison step; the kernel table cannot be reused across the load loop's λ
@@ -170,7 +170,7 @@ fn solve_near(
 
 /// Solve at load N′ to the settings' tolerance (n doubled from `n_start`), with checks.
 ///
-/// λ and β converge to first order in Δ (observed order 1.00–1.01 for the half-space, README), so
+/// λ and β converge to first order in Δ (observed order 1.00–1.01 for the half-space, docs/DEVLOG.md), so
 /// they are Richardson-extrapolated, X_R(n) = 2X(n) − X(n/2), and their estimate is
 /// |X_R(n) − X_R(n/2)| (the change of the extrapolation, which bounds the error of the coarser
 /// extrapolation); ρF/N at given load converges faster (order ≈ 2.8 where the front layer is resolved)

@@ -6,7 +6,7 @@
 //! why, its error estimate and, when `auto` chose a cheaper body than the layer, the estimated
 //! difference from the layer's answer).
 //!
-//! `auto` (criterion measured in `tests::criterion_table`, table in the README): with λ the half-space
+//! `auto` (criterion measured in `tests::criterion_table`, table in docs/DEVLOG.md): with λ the half-space
 //! contact length (solved first, it is cheap), L = max(λ, 1/bᵢ over the modes holding ≥ 1 % of the
 //! compliance, rᵢ = fᵢ/bᵢ ≥ 0.01·S) the longest length the body's memory reaches, and h′ the cover,
 //! - when the half-space law [`C_HALF_SPACE`]·(L/h′)² ≤ tol: the half-space (measured: relative
@@ -35,7 +35,7 @@ use crate::CreepSpectrum;
 /// the largest measured constant is 2.5 with L = λ, here with L ≥ λ).
 pub const C_HALF_SPACE: f64 = 3.0;
 /// Thin compressible layer vs constrained Winkler: relative difference ≤ C_W·(h/λ)/(1−2ν). Measured
-/// (`tests::criterion_table`, README) over ν = 0, 0.2, 0.3, 0.45, 0.49 at h/λ ≈ 0.01–1: the ratio
+/// (`tests::criterion_table`, docs/DEVLOG.md) over ν = 0, 0.2, 0.3, 0.45, 0.49 at h/λ ≈ 0.01–1: the ratio
 /// difference·(1−2ν)/(h/λ) is 0.35–0.38 at ν = 0, 0.20–0.22 at ν = 0.2, 0.09–0.12 at ν = 0.3 and 0.45,
 /// ≤ 0.10 at ν = 0.49; one constant for all ν, the largest measured with a little margin. At ν = 0.49
 /// the spectral solver reaches the linear range (`tests::criterion_nu049`: C → 0.11 below h/λ ≈ 0.04,

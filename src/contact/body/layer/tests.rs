@@ -314,7 +314,7 @@ fn issue_figures_conveyor_idler() {
     assert!(rel(fw, 0.0058) < 0.05 / 5.8 && w.warnings.is_empty());
 }
 
-/// The criterion table of the README (issue 14 item 4): relative difference of the half-space and of
+/// The criterion table of docs/DEVLOG.md (issue 14 item 4): relative difference of the half-space and of
 /// the constrained Winkler foundation from the layer, against h/λ. Same n on both sides of each
 /// comparison. `cargo test --release --lib criterion_table -- --ignored --nocapture`.
 #[test]

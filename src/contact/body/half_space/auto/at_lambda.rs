@@ -25,7 +25,7 @@
 //! done by the trapezoid rule in v = ln σ, which converges like e^{−π²/h} for integrands analytic in
 //! |Im v| < π/2 (Trefethen & Weideman, SIAM Rev. 2014): h = 0.25 gives ~1e−17. Measured against the
 //! exact one-term solution the results agree to ~1e−13 already at the default step (see tests and the
-//! README of the bench), against first order in h for the thesis scheme.
+//! DEVLOG of the bench), against first order in h for the thesis scheme.
 //! Costs: O(N·Q·√μ_max + N²·Q) with Q ≈ 200 quadrature nodes, so fast modes (large μ) are lumped
 //! into the glassy compliance by [`super::reduction`] before they get here. The exterior values (the
 //! O(N·Q·√μ) part, half the time of a 30-term solve) are shared by the step-h solve and the step-2h

@@ -24,7 +24,7 @@
 //!   0.05·tol; the step not taken (and a target shift by the measured gain too small to chase)
 //!   counts twice in the λ error.
 //!
-//! Measured (`cargo bench --bench contact_auto`, README table; CPU time of one thread per load
+//! Measured (`cargo bench --bench contact_auto`, docs/DEVLOG.md table; CPU time of one thread per load
 //! point): one term 20/32/40 µs at tol 1e−3/1e−6/1e−9; 10 terms 0.09/0.33/0.96 ms; 30 terms over 24
 //! decades 0.17/0.65/1.55 ms (before the measured lumping correction: 1.7/10/51 ms), i.e. 4–6
 //! solves per load point. Estimates are ≤ tol and 2–66× the true error against tol 1e−10 solves

@@ -23,7 +23,7 @@
 //!   the measured/model ratio once known). With it a tolerance of 1e−6 lumps every mode with
 //!   c ≳ 3·10³ instead of c ≳ 10⁷ (the expansion of a mode costs ~√(83(1+r)c) Chebyshev terms):
 //!   on the benchmark's 30-term spectrum (24 decades, J∞/J_g = 1e3) 12 of 30 modes are lumped at
-//!   tol 1e−6 (10 at 1e−9, 14 at 1e−3) and the answer costs 0.64 ms instead of 10 ms (CPU, README).
+//!   tol 1e−6 (10 at 1e−9, 14 at 1e−3) and the answer costs 0.64 ms instead of 10 ms (CPU, docs/DEVLOG.md).
 //!   Without the correction the modes beyond the hard cap c = 1e7 alone had cost that spectrum a
 //!   true error of 4.5e−8 in ρF/N, whatever the tolerance.
 //! - **Slow modes (μᵢ = (1+rᵢ)cᵢ ≪ 1) are dropped.** Over the contact time they creep by only

@@ -10,8 +10,7 @@
 
 use super::at_lambda::{solve_at_lambda_pair, solve_at_lambda_rule, LaplaceRule};
 use super::degree::{
-    amplification, corrected, degree_budget, degree_error, degree_for, next_degree, rel, unscale,
-    w_lambda, Triple,
+    corrected, degree_budget, degree_error, degree_for, next_degree, unscale, w_lambda,
 };
 use super::secant::{bracket as secant_bracket, secant_loop, secant_until, start_guess, Start};
 use super::walk::{Walk, CARRY_CURVATURE};
@@ -819,6 +818,7 @@ fn finish(
 
 #[cfg(test)]
 mod tests {
+    use super::super::degree::rel;
     use super::*;
 
     #[test]

@@ -48,7 +48,7 @@
 //! Chebyshev coefficients a DCT-I matrix times those values, and G for all columns of the solve one
 //! more product ([`LayerTerm::apply_all`]).
 //!
-//! Cost (issue 14, README "Speed work" round 5): the products are formed node-major (each node's
+//! Cost (issue 14, docs/DEVLOG.md "Speed work" round 5): the products are formed node-major (each node's
 //! C/Γ entries one contiguous column, written once) and split at κ = 1, where the log part's nodes
 //! carry only the orders k + 1 ≤ 19 of (κ/2)ⁿ/n!; Miller's recurrence runs [`LANES`] nodes side by
 //! side and its normalisation 1/(J₀ + 2ΣJ₂ₖ) is folded into the node's weight (one division per

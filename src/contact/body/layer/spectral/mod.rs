@@ -77,9 +77,9 @@
 //! capped at `p_max` = 48 (`LayerSettings`): covers with h′/L < 0.5·log₁₀(1/tol)/48, i.e. h/λ below
 //! ≈ 0.016 at tol 1e−3 and ≈ 0.031 at 1e−6, are declined and `layer_at_load` solves them by the hat
 //! collocation with a warning; the `auto` body choice takes the constrained Winkler foundation there
-//! for compressible covers (README criterion table).
+//! for compressible covers (docs/DEVLOG.md criterion table).
 //!
-//! # Speed (`cargo bench --bench layer_profile`, README covers section)
+//! # Speed (`cargo bench --bench layer_profile`, docs/DEVLOG.md covers section)
 //! A load point costs 4–5 solves at given λ (round 5; 5–9 before): one secant walk ([`walk`])
 //! from a closed-form guess (the elastic layer seen as a half-space of the layer's compliance at
 //! k = 4/λ, module [`secant`]) or the caller's warm start ([`at_load::SpectralSettings::start`]),

@@ -14,7 +14,7 @@
 //! 2. the degree is the larger of the rule [`degree_for`] at λ and the degree the loop has reached;
 //! 3. the triple (p, p/2, p/4) is solved at λ, its degree error measured with the model gains, and
 //!    when the p/2 check fails (against 0.3·tol over the lumping's amplification, `degree_budget`) the degree for the *next* solve is raised by the measured convergence
-//!    rate (`at_load::next_degree`): the raise costs no solve of its own (the solve that showed it still
+//!    rate (`degree::next_degree`): the raise costs no solve of its own (the solve that showed it still
 //!    aims the secant; the former loop re-solved at the same λ after each raise).
 //!
 //! A change of reduction or degree starts a new *generation*. The loop stops only when its last two

@@ -1,0 +1,602 @@
+//! The hostile-input suite of issue 28: one seeded, replayable generator per family — symlink plants
+//! in the output folder, lock-file states, tampered fit files, work-budget edges, special files,
+//! broken tables, hostile strings — each drawing its cases from the test's seed (tests/seed.rs:
+//! `VISCOROLL_SEED=N` replays a run). The CI share draws a few cases per family; the `--ignored`
+//! tests draw many more and run inputs at the work budget's limits.
+
+use super::pipeline_hardening::rubber_csv;
+use super::seed::seed;
+use super::support::{bin, run_main, stderr, temp_dir, viscoroll};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use viscoroll::limits;
+
+/// SplitMix64: a small generator for the cases (the seed comes from tests/seed.rs).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+    fn pick<'a, T>(&mut self, v: &'a [T]) -> &'a T {
+        &v[self.below(v.len())]
+    }
+}
+
+/// One scene, two temperatures, no maps: the cheapest main job.
+const SCENES: &str = "[[scene]]\nname = \"s\"\nroll_radius_mm = 100.0\nload_n_per_m = 2000.0\nspeed_m_s = 1.0\ntemps_c = [0.0, 20.0]\n";
+
+/// An input folder with one compound `a` and the cheap scenes.
+fn input_folder(tag: &str) -> PathBuf {
+    let dir = temp_dir(tag);
+    std::fs::write(dir.join("a.csv"), rubber_csv(&[0.0, 20.0, 40.0], 12)).unwrap();
+    std::fs::write(dir.join("scenes.toml"), SCENES).unwrap();
+    dir
+}
+
+fn quick_run(dir: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec!["--no-bands"];
+    args.extend_from_slice(extra);
+    run_main(dir, out, &args)
+}
+
+/// Every regular file below `dir` with its bytes (symlinks not followed).
+fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut v = Vec::new();
+    let Ok(rd) = std::fs::read_dir(dir) else {
+        return v;
+    };
+    for e in rd.flatten() {
+        let t = e.file_type().unwrap();
+        if t.is_dir() {
+            v.extend(snapshot(&e.path()));
+        } else if t.is_file() {
+            v.push((e.path(), std::fs::read(e.path()).unwrap()));
+        }
+    }
+    v.sort();
+    v
+}
+
+/// Symlink plants: a link at a final name (ranking.csv, index.html, a fit file), at a guessable
+/// temporary name, or in place of a sub-folder (fits/, reports/, reports/a/). Nothing outside the
+/// output folder changes; a symlinked sub-folder fails the run (or its compound) naming the link.
+fn symlink_plants(cases: usize, rng: &mut Rng) {
+    let dir = input_folder("hostile-plant-in");
+    for case in 0..cases {
+        let out = temp_dir("hostile-plant-out");
+        let outside = temp_dir("hostile-plant-outside");
+        std::fs::write(outside.join("victim.txt"), b"precious").unwrap();
+        let before = snapshot(&outside);
+        let plant = *rng.pick(&[
+            "reports/ranking.csv",
+            "reports/index.html",
+            "fits/a.json",
+            "reports/a/friction.csv",
+            "fits/.a.tmp-1-0.json",
+            "fits",
+            "reports",
+            "reports/a",
+        ]);
+        let link = out.join(plant);
+        std::fs::create_dir_all(link.parent().unwrap()).unwrap();
+        let is_folder = !plant.contains('.');
+        let target = if is_folder {
+            outside.clone()
+        } else {
+            outside.join("victim.txt")
+        };
+        std::os::unix::fs::symlink(&target, &link).unwrap();
+        let o = quick_run(&dir, &out, &[]);
+        let err = stderr(&o);
+        assert_eq!(snapshot(&outside), before, "case {case} ({plant}): {err}");
+        if is_folder {
+            assert_ne!(o.status.code(), Some(0), "case {case} ({plant}): {err}");
+            assert!(
+                err.contains("symbolic link"),
+                "case {case} ({plant}): {err}"
+            );
+        } else {
+            assert!(
+                o.status.code().is_some_and(|c| c == 0 || c == 3),
+                "case {case} ({plant}): {err}"
+            );
+        }
+        let _ = std::fs::remove_dir_all(&out);
+        let _ = std::fs::remove_dir_all(&outside);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn symlinks_planted_in_the_output_folder_are_never_followed() {
+    let mut rng = Rng(seed("hostile symlink plants"));
+    symlink_plants(3, &mut rng);
+}
+
+/// Lock states: a lock file that is empty, garbage, a negative or foreign pid, or binary never
+/// blocks (`--wait 0` would fail at once if it did); a lock held by a live process makes a run say
+/// at once who holds it and give up after `--wait`.
+#[test]
+fn a_lock_file_never_blocks_and_a_held_lock_is_reported_at_once() {
+    let mut rng = Rng(seed("hostile lock states"));
+    let dir = input_folder("hostile-lock-in");
+    let out = temp_dir("hostile-lock-out");
+    let states: [&[u8]; 7] = [
+        b"",
+        b"hello",
+        b"-5",
+        b"1",
+        b"4294967",
+        b"\0\xff\xfe",
+        b"99999999999",
+    ];
+    for _ in 0..2 {
+        let content = *rng.pick(&states);
+        std::fs::write(out.join(".viscoroll.lock"), content).unwrap();
+        let o = quick_run(&dir, &out, &["--wait", "0"]);
+        assert!(
+            o.status.code().is_some_and(|c| c == 0 || c == 3),
+            "{content:?}: {}",
+            stderr(&o)
+        );
+    }
+    // Held by this test process: the run waits 1 s, naming our pid, then fails.
+    let held =
+        viscoroll::fsutil::DirLock::acquire(&out, std::time::Duration::ZERO, &|_| {}).unwrap();
+    let o = quick_run(&dir, &out, &["--wait", "1"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let me = format!("process {}", std::process::id());
+    assert!(
+        err.contains("waiting up to 1 s") && err.contains(&me),
+        "{err}"
+    );
+    drop(held);
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// Ways to tamper with a fit file, each applied to its JSON. The first two and the last are then
+/// resealed with a valid content hash ([`reseal`]), so only the validation can catch them.
+fn tamper(fit: &mut serde_json::Value, how: usize) -> &'static str {
+    match how {
+        0 => {
+            fit["shift_law"] = serde_json::json!({"law": "table", "t_ref_c": 20.0, "points": []});
+            "empty shift table"
+        }
+        1 => {
+            fit["relaxation"]["terms"][0]["modulus_pa"] = serde_json::json!(-1e6);
+            "negative modulus"
+        }
+        2 => {
+            fit.as_object_mut().unwrap().remove("content_sha256");
+            "no content hash"
+        }
+        3 => {
+            let t = fit["relaxation"]["terms"][0]["tau_s"].as_f64().unwrap();
+            fit["relaxation"]["terms"][0]["tau_s"] = serde_json::json!(t * 1.0001);
+            "one number changed"
+        }
+        _ => {
+            fit["relaxation"]["kind"] =
+                serde_json::json!(if fit["relaxation"]["kind"] == "tensile" {
+                    "shear"
+                } else {
+                    "tensile"
+                });
+            "inconsistent kinds"
+        }
+    }
+}
+
+/// A fit JSON with a content hash that matches its (tampered) content, as a careful forger would
+/// write it.
+fn reseal(fit: serde_json::Value) -> serde_json::Value {
+    let mut f: viscoroll::results::CompoundFit = serde_json::from_value(fit).unwrap();
+    f.content_sha256 = Some(f.content_hash().unwrap());
+    serde_json::to_value(&f).unwrap()
+}
+
+/// Tampered fits: `roll` and `export` refuse them with a clear error; `run` fits again, says so
+/// and replaces the file.
+#[test]
+fn a_tampered_fit_is_refused_by_roll_and_export_and_refitted_by_run() {
+    let mut rng = Rng(seed("hostile tampered fits"));
+    let dir = input_folder("hostile-fit-in");
+    let out = temp_dir("hostile-fit-out");
+    let o = quick_run(&dir, &out, &[]);
+    assert!(
+        o.status.code().is_some_and(|c| c == 0 || c == 3),
+        "{}",
+        stderr(&o)
+    );
+    let path = out.join("fits/a.json");
+    let good: serde_json::Value = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+    assert!(good["content_sha256"].is_string());
+    let p = path.display().to_string();
+    for _ in 0..2 {
+        let mut fit = good.clone();
+        let how = rng.below(5);
+        let what = tamper(&mut fit, how);
+        if matches!(how, 0 | 1 | 4) {
+            fit = reseal(fit);
+        }
+        std::fs::write(&path, serde_json::to_string_pretty(&fit).unwrap()).unwrap();
+        let roll = viscoroll(&[
+            "roll",
+            &p,
+            "--temp-c",
+            "20",
+            "--radius-mm",
+            "100",
+            "--load-n-per-m",
+            "2000",
+            "--speed-m-s",
+            "1",
+        ]);
+        assert_eq!(roll.status.code(), Some(1), "{what}: {}", stderr(&roll));
+        assert!(
+            stderr(&roll).contains("not a trustworthy fit file"),
+            "{what}: {}",
+            stderr(&roll)
+        );
+        let export = viscoroll(&["export", &p, "--to", "abaqus"]);
+        assert_eq!(export.status.code(), Some(1), "{what}: {}", stderr(&export));
+        assert!(
+            stderr(&export).contains("not a trustworthy fit file"),
+            "{what}"
+        );
+        let o = quick_run(&dir, &out, &["--json"]);
+        let summary: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let a = &summary["compounds"][0];
+        let summary = if a.is_null() {
+            &summary["detail"]["compounds"][0]
+        } else {
+            a
+        };
+        assert_eq!(summary["fit_action"], "refitted", "{what}: {}", stderr(&o));
+        assert!(
+            summary["warnings"]
+                .to_string()
+                .contains("failed its content hash"),
+            "{what}"
+        );
+        // the file is whole again: roll takes it
+        let roll = viscoroll(&[
+            "roll",
+            &p,
+            "--temp-c",
+            "20",
+            "--radius-mm",
+            "100",
+            "--load-n-per-m",
+            "2000",
+            "--speed-m-s",
+            "1",
+        ]);
+        assert_eq!(roll.status.code(), Some(0), "{what}: {}", stderr(&roll));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// A scenes TOML with one scene whose sizes are drawn around the limits.
+fn scene_with(name: &str, temps: usize, map_temps: usize, speeds: usize, cover_mm: f64) -> String {
+    let list = |n: usize, v: f64| {
+        let items: Vec<String> = (0..n).map(|k| format!("{}", v + k as f64 * 0.01)).collect();
+        format!("[{}]", items.join(", "))
+    };
+    let mut s = format!(
+        "[[scene]]\nname = \"{name}\"\nroll_radius_mm = 100.0\nload_n_per_m = 2000.0\nspeed_m_s = 1.0\ntemps_c = {}\n",
+        list(temps, 0.0)
+    );
+    if map_temps > 0 {
+        s += &format!("map_temps_c = {}\n", list(map_temps, 0.0));
+        s += &format!("map_speeds_m_s = {}\n", list(speeds, 1.0));
+    }
+    if cover_mm > 0.0 {
+        s += &format!("cover_thickness_mm = {cover_mm:e}\n");
+    }
+    s
+}
+
+/// Budget edges: every size at its limit is accepted, one beyond is refused with the key and the
+/// limit named (scenes TOML, Prony settings, `contact --n`, temperatures, names).
+fn budget_edges(cases: usize, rng: &mut Rng) {
+    use viscoroll::results::SceneSet;
+    let at = Path::new("scenes.toml");
+    for _ in 0..cases {
+        let beyond = rng.below(2) == 1;
+        let b = usize::from(beyond);
+        let which = rng.below(5);
+        let (text, key) = match which {
+            0 => (
+                scene_with("s", limits::SCENE_TEMPS_MAX + b, 0, 0, 0.0),
+                "temps_c",
+            ),
+            1 => (
+                scene_with("s", 2, limits::MAP_LIST_MAX + b, 1, 0.0),
+                "map_temps_c",
+            ),
+            2 => {
+                // map_temps × map_speeds at the cells limit (20 × 50 = 1000), or one row more
+                let t = limits::MAP_CELLS_MAX / limits::MAP_LIST_MAX + b;
+                (scene_with("s", 2, t, limits::MAP_LIST_MAX, 0.0), "cells")
+            }
+            3 => (
+                scene_with(&"n".repeat(limits::NAME_CHARS_MAX + b), 2, 0, 0, 0.0),
+                "name",
+            ),
+            _ => (
+                scene_with(
+                    "s",
+                    2,
+                    0,
+                    0,
+                    100.0 * limits::COVER_OVER_RADIUS_MIN * if beyond { 0.5 } else { 1.0 },
+                ),
+                "cover_thickness_mm",
+            ),
+        };
+        let r = SceneSet::parse(&text, at);
+        match (beyond, r) {
+            (false, Ok(_)) => {}
+            (true, Err(e)) => {
+                let e = e.to_string();
+                assert!(e.contains(key), "{e}");
+                assert!(e.len() < 400, "{e}");
+            }
+            (beyond, r) => panic!("{key} beyond={beyond}: {r:?}"),
+        }
+    }
+    // Prony settings and the fit's term count.
+    let mut p = viscoroll::prony::PronySettings {
+        lambda_count: limits::PRONY_LAMBDA_COUNT_MAX,
+        ..Default::default()
+    };
+    assert!(p.validate().is_ok());
+    p.lambda_count = 1_000_000_000;
+    let e = p.validate().unwrap_err().to_string();
+    assert!(
+        e.contains("lambda_count") && e.contains(&limits::PRONY_LAMBDA_COUNT_MAX.to_string()),
+        "{e}"
+    );
+    p.lambda_count = 12;
+    p.max_terms = Some(limits::PRONY_TERMS_MAX + 1 + rng.below(100_000));
+    assert!(p.validate().unwrap_err().to_string().contains("max_terms"));
+}
+
+#[test]
+fn sizes_at_the_limits_are_accepted_and_beyond_them_refused_naming_key_and_limit() {
+    let mut rng = Rng(seed("hostile budget edges"));
+    budget_edges(12, &mut rng);
+    // the command line: contact --n beyond the limit, temperatures below absolute zero
+    let n = (limits::CONTACT_N_MAX + 1 + rng.below(20_000)).to_string();
+    let o = viscoroll(&["contact", "--creep", "1:1", "--lambda", "1", "--n", &n]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(&limits::CONTACT_N_MAX.to_string()),
+        "{}",
+        stderr(&o)
+    );
+    let t = format!("{}", -273.16 - rng.below(10_000) as f64);
+    let o = viscoroll(&[
+        "roll",
+        "x.json",
+        "--temp-c",
+        &t,
+        "--radius-mm",
+        "100",
+        "--load-n-per-m",
+        "2000",
+        "--speed-m-s",
+        "1",
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("-273.15"), "{}", stderr(&o));
+}
+
+/// Wait for a child at most `secs` seconds (kill it and fail if it hangs).
+fn wait_bounded(mut child: std::process::Child, secs: u64, what: &str) -> std::process::Output {
+    let start = std::time::Instant::now();
+    loop {
+        if child.try_wait().unwrap().is_some() {
+            return child.wait_with_output().unwrap();
+        }
+        if start.elapsed().as_secs() > secs {
+            let _ = child.kill();
+            panic!("{what} hung for {secs} s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+}
+
+/// Special files: a FIFO, a symlink to /dev/zero, a socket-less device name, a folder named
+/// `*.csv` — each fails its own compound at once; the good compound gets its report.
+#[test]
+fn fifos_devices_and_odd_entries_fail_alone_without_blocking() {
+    let mut rng = Rng(seed("hostile special files"));
+    let dir = input_folder("hostile-special-in");
+    let out = temp_dir("hostile-special-out");
+    let kind = rng.below(3);
+    let odd = dir.join("odd.csv");
+    match kind {
+        0 => assert!(Command::new("mkfifo").arg(&odd).status().unwrap().success()),
+        1 => std::os::unix::fs::symlink("/dev/zero", &odd).unwrap(),
+        _ => std::os::unix::fs::symlink("/dev/null", &odd).unwrap(),
+    }
+    let child = Command::new(bin())
+        .args(["run", "--no-bands", "--out"])
+        .arg(&out)
+        .arg(&dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let o = wait_bounded(child, 120, "run over a special file");
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let line = err
+        .lines()
+        .find(|l| l.starts_with("odd: FAILED"))
+        .unwrap_or_else(|| panic!("{err}"));
+    assert!(line.contains("only regular files are read"), "{line}");
+    assert!(out.join("reports/a/datasheet.html").is_file(), "{err}");
+    // ingest of the same file: refused at once
+    let child = Command::new(bin())
+        .arg("ingest")
+        .arg(&odd)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let o = wait_bounded(child, 60, "ingest of a special file");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// Broken tables: a stray text or NUL line anywhere inside the table loses no row (a warning names
+/// its line); CR-only line ends and UTF-16BE read as the plain file; a second storage column is an
+/// error naming both, unless `--columns` picks one.
+fn broken_tables(cases: usize, rng: &mut Rng) {
+    use viscoroll::dma::{read_bytes, IngestOptions};
+    let plain = rubber_csv(&[0.0, 20.0, 40.0], 10);
+    let read = |bytes: Vec<u8>, opts: &IngestOptions| read_bytes(&[("t.csv".into(), bytes)], opts);
+    let opts = IngestOptions::default();
+    let base = read(plain.clone().into_bytes(), &opts).unwrap();
+    let points =
+        |m: &viscoroll::Measurement| m.isotherms.iter().map(|i| i.points.len()).sum::<usize>();
+    let n = points(&base);
+    let lines: Vec<&str> = plain.lines().collect();
+    for case in 0..cases {
+        let stray = *rng.pick(&["garbage", "\0\0\0\0", "-- note --", "#", "x;y", "nan nan"]);
+        let at = 2 + rng.below(lines.len() - 2); // below the header and the first data row
+        let mut v: Vec<&str> = lines.clone();
+        v.insert(at, stray);
+        let text = v.join("\n");
+        let m = read(text.into_bytes(), &opts)
+            .unwrap_or_else(|e| panic!("case {case} {stray:?} at {at}: {e}"));
+        assert_eq!(points(&m), n, "case {case}: {stray:?} at line {}", at + 1);
+        let named = format!("line {}", at + 1);
+        assert!(
+            m.warnings.iter().any(|w| w.contains(&named)),
+            "case {case}: {:?}",
+            m.warnings
+        );
+    }
+    let cr = plain.replace('\n', "\r");
+    assert_eq!(points(&read(cr.into_bytes(), &opts).unwrap()), n);
+    let be: Vec<u8> = plain.encode_utf16().flat_map(|u| u.to_be_bytes()).collect();
+    assert_eq!(points(&read(be, &opts).unwrap()), n);
+    // a second E' column at ten times the values
+    let dup: String = plain
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            let f: Vec<&str> = l.split(',').collect();
+            let extra = if i == 0 {
+                "E' [Pa]".to_string()
+            } else {
+                format!("{:e}", f[2].parse::<f64>().unwrap() * 10.0)
+            };
+            format!("{l},{extra}\n")
+        })
+        .collect();
+    let e = read(dup.clone().into_bytes(), &opts)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("two columns mean the storage modulus")
+            && e.contains("column 3")
+            && e.contains("column 5"),
+        "{e}"
+    );
+}
+
+#[test]
+fn tables_lose_no_row_silently() {
+    let mut rng = Rng(seed("hostile broken tables"));
+    broken_tables(8, &mut rng);
+}
+
+/// Hostile strings: CSV cells that would run as formulas are neutralised (numbers stay numbers),
+/// control characters are escaped; a long scene name is refused before any work; stdout on a full
+/// device ends with exit 1, no panic.
+#[test]
+fn hostile_strings_and_full_devices_are_handled() {
+    let mut rng = Rng(seed("hostile strings"));
+    let starts = ['=', '+', '-', '@', '\t', '\r'];
+    for _ in 0..50 {
+        let mut s = String::from(*rng.pick(&starts));
+        for _ in 0..rng.below(12) {
+            s.push(char::from(32 + rng.below(95) as u8));
+        }
+        s.push(*rng.pick(&['a', '\u{1b}', '\u{7}', ')']));
+        let c = viscoroll::report::csv_text::cell(&s);
+        assert!(c.starts_with('\''), "{s:?} -> {c:?}");
+        assert!(
+            !c.chars().any(|ch| ch.is_control() && ch != '\n'),
+            "{s:?} -> {c:?}"
+        );
+        let x = (rng.next() as f64 / u64::MAX as f64 - 0.5) * 1e6;
+        assert_eq!(
+            viscoroll::report::csv_text::cell(&format!("{x:e}")),
+            format!("{x:e}")
+        );
+    }
+    // a 5000-character scene name: refused at input, the reason whole and short
+    let dir = input_folder("hostile-name-in");
+    let out = temp_dir("hostile-name-out");
+    std::fs::write(
+        dir.join("scenes.toml"),
+        scene_with(&"n".repeat(5000), 2, 0, 0, 0.0),
+    )
+    .unwrap();
+    let o = quick_run(&dir, &out, &[]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("5000 characters") && err.contains("64"),
+        "{err}"
+    );
+    assert!(
+        !out.join("fits").exists(),
+        "work was done before the name was checked"
+    );
+    // stdout on a full device
+    if Path::new("/dev/full").exists() {
+        let full = std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap();
+        let o = Command::new(bin())
+            .args(["contact", "--creep", "1:1", "--lambda", "1", "--json"])
+            .stdout(full)
+            .output()
+            .unwrap();
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "{err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// The longer run: many more cases of every family.
+#[test]
+#[ignore = "hostile-input suite, long run (several minutes): cargo test --test tests hostile -- --ignored"]
+fn hostile_long_run() {
+    let mut rng = Rng(seed("hostile long run"));
+    symlink_plants(16, &mut rng);
+    budget_edges(400, &mut rng);
+    broken_tables(300, &mut rng);
+}
