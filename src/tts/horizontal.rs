@@ -1,6 +1,6 @@
 //! Third phase of the master curve: the horizontal shifts log10 a_T of every isotherm relative to
 //! T_ref, either automatic (pairwise chain, then global refinement: [`super::shift`]) or from a
-//! given law, with the overlap mismatch of each isotherm.
+//! given law.
 //!
 //! Automatic shifts are trusted only where the data determine them (docs/MATH.md §6.6): the run of
 //! neighbours around the reference isotherm whose overlaps each determine their relative shift
@@ -11,8 +11,8 @@
 
 use super::channels::Channels;
 use super::error::TtsError;
-use super::settings::{MasterSettings, ShiftCriterion, ShiftSource};
-use super::shift::{overlap_rms, pair_determined, pair_shift, refine_global, Prepared};
+use super::settings::{MasterSettings, ShiftSource};
+use super::shift::{pair_determined, pair_shift, refine_global, Prepared};
 use crate::material::ShiftLaw;
 
 /// A pair's overlap determines its relative shift when the shift's standard error from the pair
@@ -27,8 +27,6 @@ pub(super) struct Horizontal {
     pub shifts: Vec<f64>,
     /// Standard errors of the shifts (0 for a given law).
     pub std_err: Vec<f64>,
-    /// RMS overlap mismatch of each isotherm, log10 units (`None`: overlaps nothing).
-    pub overlap: Vec<Option<f64>>,
     /// Outer iterations of the global refinement (0 for a given law).
     pub iterations: usize,
     /// The given law, if the shifts come from one.
@@ -67,24 +65,9 @@ pub(super) fn horizontal_shifts(
             }
             let g = refine_global(shifting, &chain, k0, reach, min_pts);
             let (lo, hi) = determined_run(shifting, &g.shifts, k0, min_pts);
-            // Overlap figures in log10 units (not weighted); with the slope-weighted criterion on
-            // E′ alone, the figure the 0.05 bound was set for (E″ has its own, loss_overlap).
-            let overlap = if ch.weighted.is_empty() {
-                overlap_rms(shifting, &g.shifts, reach, min_pts)
-            } else if settings.criterion == ShiftCriterion::SlopeWeighted {
-                let storage: Vec<Prepared> = ch
-                    .joint
-                    .iter()
-                    .map(|p| Prepared::new(p.x.clone(), vec![p.channels[0].0.clone()]))
-                    .collect();
-                overlap_rms(&storage, &g.shifts, reach, min_pts)
-            } else {
-                overlap_rms(&ch.joint, &g.shifts, reach, min_pts)
-            };
             Ok(Horizontal {
                 shifts: g.shifts,
                 std_err: g.std_err,
-                overlap,
                 iterations: g.iterations,
                 given: None,
                 determined: (0..n).map(|i| lo <= i && i <= hi).collect(),
@@ -103,11 +86,9 @@ pub(super) fn horizontal_shifts(
                 }
                 s.push(v);
             }
-            let overlap = overlap_rms(shifting, &s, reach, min_pts);
             Ok(Horizontal {
                 shifts: s,
                 std_err: vec![0.0; n],
-                overlap,
                 iterations: 0,
                 given: Some(law.clone()),
                 determined: vec![true; n],
