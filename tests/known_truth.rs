@@ -110,8 +110,12 @@ struct Figures {
     interconversion: f64,
     /// Every point: (scene, T °C, error, error of the fitted spectrum with the true shifts, shift
     /// error in decades), errors as fractions.
-    points: Vec<(String, f64, f64, f64, f64)>,
+    points: Vec<Point>,
 }
+
+/// One compared point: (scene, T °C, error, error of the fitted spectrum with the true shifts,
+/// shift error in decades), errors as fractions.
+type Point = (String, f64, f64, f64, f64);
 
 /// Per compound: the [`Figures`] over both shipped scenes at [`TEMPS_C`]; with `verbose` the
 /// stage-by-stage table is printed.
@@ -365,7 +369,7 @@ fn evaluate(
 /// interconversion (worst |E*J* − 1| of the fitted pair) and the contact solver (auto at tol 1e−4
 /// against the independent path, the compound's worst).
 fn print_budget(summary: &[Figures], worst: usize) {
-    let mut all: Vec<(&Figures, &(String, f64, f64, f64, f64))> = summary
+    let mut all: Vec<(&Figures, &Point)> = summary
         .iter()
         .flat_map(|f| f.points.iter().map(move |p| (f, p)))
         .collect();
