@@ -654,6 +654,16 @@ fn bands_calibration_held_out_ten_seeds() {
 #[test]
 #[ignore = "fails: 3 of 8 held-out compounds refuse the model-error ensemble (more than a quarter of the refits fail in clarabel); see BandSettings::model_error"]
 fn bands_cover_the_true_friction_held_out_one_seed_each() {
+    let t = total(&calibrate_cases(one_seed_each()));
+    assert!(
+        (COVERAGE.0..=COVERAGE.1).contains(&t),
+        "coverage {t:.3} outside {COVERAGE:?}"
+    );
+}
+
+/// One measured case of each held-out compound (seeds 201–208: every protocol and every format
+/// appear).
+fn one_seed_each() -> Vec<(u64, Case)> {
     let cases: Vec<(u64, Case)> = held_out_cases(&[201, 202, 203, 204, 205, 206, 207, 208])
         .into_iter()
         .enumerate()
@@ -661,9 +671,66 @@ fn bands_cover_the_true_friction_held_out_one_seed_each() {
         .map(|(_, c)| c)
         .collect();
     assert_eq!(cases.len(), 8);
-    let t = total(&calibrate_cases(cases));
-    assert!(
-        (COVERAGE.0..=COVERAGE.1).contains(&t),
-        "coverage {t:.3} outside {COVERAGE:?}"
-    );
+    cases
+}
+
+/// Every bootstrap refit of the one-seed-each held-out cases converges, with and without the fit's
+/// own choices (eqs. 15.10–15.12): 0 of 32 failed in each of the 16 ensembles. Three of these
+/// cases (long-plateau, high-tg, steep-glass-side) have master curves whose E′-alone shifts miss
+/// the truth by 1.9–6.4 decades, so their fits miss the data by 0.65–2.5 decades rms in log E″
+/// and choose λ = 1e-9; before the Prony QP's column scaling (crate::prony::fit, "Numerics")
+/// 13–30 of their 32 refits failed (InsufficientProgress / NumericalError) and the band was
+/// refused. About 10 s (no contact solves).
+#[test]
+fn held_out_refits_all_converge() {
+    use rayon::prelude::*;
+    let failures: Vec<String> = one_seed_each()
+        .par_iter()
+        .flat_map(|(seed, case)| {
+            let dir = std::env::temp_dir().join(format!(
+                "viscoroll-refits-{}-{}-{seed}",
+                std::process::id(),
+                case.compound.name
+            ));
+            let _ = std::fs::remove_dir_all(&dir);
+            std::fs::create_dir_all(&dir).unwrap();
+            let path = dir.join(format!(
+                "{}.{}",
+                case.compound.name,
+                case.format.extension()
+            ));
+            std::fs::write(
+                &path,
+                case.format.write(&dma_rows(&case.compound, &case.protocol)),
+            )
+            .unwrap();
+            let m = read_files(&[path], &IngestOptions::default()).unwrap();
+            let (fit, master) =
+                fit_measurement_master(&case.compound.name, &m, &FitOptions::default()).unwrap();
+            let mut bad = Vec::new();
+            for model_error in [false, true] {
+                let bs = BandSettings {
+                    model_error,
+                    ..BandSettings::default()
+                };
+                match build_ensemble(&master, &m, &fit, &bs) {
+                    Ok(e) if e.replicates.len() == bs.replicates && e.notes.is_empty() => {}
+                    Ok(e) => bad.push(format!(
+                        "{} (model error {model_error}): {} of {} refits, {:?}",
+                        case.compound.name,
+                        e.replicates.len(),
+                        bs.replicates,
+                        e.notes
+                    )),
+                    Err(e) => bad.push(format!(
+                        "{} (model error {model_error}): {e}",
+                        case.compound.name
+                    )),
+                }
+            }
+            let _ = std::fs::remove_dir_all(&dir);
+            bad
+        })
+        .collect();
+    assert!(failures.is_empty(), "{failures:#?}");
 }
