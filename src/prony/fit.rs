@@ -492,8 +492,8 @@ impl Problem {
         let (mut ri, mut ci, mut vals) = (Vec::new(), Vec::new(), Vec::new());
         let d = &self.col_scale;
         for i in 0..nu {
-            for j in i..nx {
-                let v = self.r[(i, j)] * d[j];
+            for (j, dj) in d.iter().enumerate().take(nx).skip(i) {
+                let v = self.r[(i, j)] * dj;
                 if v != 0.0 {
                     ri.push(i);
                     ci.push(j);
@@ -507,8 +507,8 @@ impl Problem {
         let sl = (lambda * self.lambda_unit).sqrt();
         for i in 0..nv {
             if sl > 0.0 {
-                for j in 0..nx {
-                    let v = self.l[(i, j)] * d[j];
+                for (j, dj) in d.iter().enumerate().take(nx) {
+                    let v = self.l[(i, j)] * dj;
                     if v != 0.0 {
                         ri.push(nu + i);
                         ci.push(j);
