@@ -16,9 +16,11 @@ pub const PRONY_LAMBDA_COUNT_MAX: usize = 60;
 /// `prony.max_terms`) and terms a fit file may carry: the QP is dense in the terms (cost ~ n³ per
 /// iteration, memory ~ n² ); 5000 terms took > 60 s and 800 MB.
 pub const PRONY_TERMS_MAX: usize = 400;
-/// Intervals of the thesis collocation (`contact --n`): an n × n dense matrix (8 n² bytes, LU ~ n³);
-/// 20000 reached 3 GB, 4000 holds 128 MB per matrix.
-pub const CONTACT_N_MAX: usize = 4000;
+/// Intervals of the thesis collocation (`contact --n`): an n × n dense matrix (8 n² bytes, LU ~ n³,
+/// one per step of the load loop); 20000 reached 3 GB, and 4000 (128 MB) took 498 s with the load
+/// loop (debug binary, loaded machine: `cargo bench --bench budget_edges`), so 1000: 1/64 of that
+/// work, 8 MB per matrix. The thesis' tables use n ≤ 320.
+pub const CONTACT_N_MAX: usize = 1000;
 /// Scenes in one scenes TOML (each costs a friction curve and maps per compound).
 pub const SCENES_MAX: usize = 64;
 /// Temperatures of a scene's friction curve (`temps_c`), each a contact solve per compound.
@@ -32,6 +34,17 @@ pub const MAP_CELLS_MAX: usize = 1000;
 /// grows with contact length / thickness (1e-9 mm ran over 60 s at 800 MB); 1e-4 of a 100 mm roll
 /// is 10 µm, far below any real cover.
 pub const COVER_OVER_RADIUS_MIN: f64 = 1e-4;
+/// Work of one compound's scene set, in friction points: Σ over its scenes of `temps_c` plus the
+/// map cells divided by [`MAP_CELLS_PER_POINT`]. The per-scene limits above do not bound the set:
+/// 64 scenes × 200 temperatures on the thinnest cover ran for over 15 min. A friction point with
+/// its band costs at most 0.43 s (thinnest cover, tol 1e-10, 200 points in 85 s; a half-space point
+/// 0.07 s), measured with the unoptimised-crate debug binary with three processes on 2 cores, so
+/// an upper bound; `cargo bench --bench budget_edges` measures the set at this limit.
+pub const SCENE_WORK_MAX: usize = 250;
+/// Map cells that cost one friction point: maps come from one interpolant per scene, and a cell
+/// cost 1/5.5 of a point on the thinnest cover (1000 cells and 9 points in 61 s) and 1/9 on a
+/// half-space (8.6 s).
+pub const MAP_CELLS_PER_POINT: usize = 5;
 /// Characters of a compound or scene name (they become file and folder names and table cells).
 pub const NAME_CHARS_MAX: usize = 64;
 /// Bytes of a DMA export, measurement JSON or fit file read (a 1e6-row CSV is ~50 MB).
@@ -129,6 +142,18 @@ pub fn map_cells(key: &str, temps: usize, speeds: usize, loads: usize) -> Result
     })
 }
 
+/// The work of a scene set: `points` friction points (Σ `temps_c`) and `cells` map cells, against
+/// [`SCENE_WORK_MAX`].
+pub fn scene_work(key: &str, points: usize, cells: usize) -> Result<(), LimitError> {
+    let work = points.saturating_add(cells.div_ceil(MAP_CELLS_PER_POINT));
+    at_most(key, work, SCENE_WORK_MAX).map_err(|mut e| {
+        e.value = format!(
+            "{points} temperatures + {cells} map cells / {MAP_CELLS_PER_POINT} = {work} friction points per compound"
+        );
+        e
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -163,5 +188,12 @@ mod tests {
             .to_string()
             .contains("3000 cells"));
         assert!(map_cells("m", usize::MAX, usize::MAX, 1).is_err());
+        assert!(scene_work("w", SCENE_WORK_MAX - 2, 2 * MAP_CELLS_PER_POINT).is_ok());
+        let e = scene_work("w", SCENE_WORK_MAX, 1).unwrap_err().to_string();
+        assert!(
+            e.contains(&format!("= {} friction points", SCENE_WORK_MAX + 1)),
+            "{e}"
+        );
+        assert!(scene_work("w", usize::MAX, usize::MAX).is_err());
     }
 }

@@ -316,7 +316,7 @@ fn budget_edges(cases: usize, rng: &mut Rng) {
     for _ in 0..cases {
         let beyond = rng.below(2) == 1;
         let b = usize::from(beyond);
-        let which = rng.below(5);
+        let which = rng.below(6);
         let (text, key) = match which {
             0 => (
                 scene_with("s", limits::SCENE_TEMPS_MAX + b, 0, 0, 0.0),
@@ -335,6 +335,23 @@ fn budget_edges(cases: usize, rng: &mut Rng) {
                 scene_with(&"n".repeat(limits::NAME_CHARS_MAX + b), 2, 0, 0, 0.0),
                 "name",
             ),
+            4 => {
+                // the set's work: scenes of 200 temperatures, the last one topping it up to the
+                // limit (or one point beyond), 10 map cells in the first (2 points)
+                let mut left = limits::SCENE_WORK_MAX + b - 2;
+                let mut text = scene_with("m", 0, 0, 0, 0.0);
+                text = text.replace("temps_c = []", "temps_c = [0.0]");
+                left -= 1;
+                text += "map_temps_c = [0.0]\nmap_speeds_m_s = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0]\n";
+                let mut k = 0;
+                while left > 0 {
+                    let n = left.min(limits::SCENE_TEMPS_MAX);
+                    text += &scene_with(&format!("s{k}"), n, 0, 0, 0.0);
+                    left -= n;
+                    k += 1;
+                }
+                (text, "work")
+            }
             _ => (
                 scene_with(
                     "s",

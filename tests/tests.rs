@@ -56,3 +56,4 @@ mod spectra_cards;
 mod spectra_cli;
 mod spectra_exact;
 mod support;
+mod unreadable_folder;

@@ -228,6 +228,8 @@ struct Fitted {
     action: FitAction,
     no_bands: Option<String>,
     specimen_fits: Vec<Result<CompoundFit, String>>,
+    /// Each replicate specimen's own measurement (empty with one), for the datasheet's curves.
+    specimens: Vec<Measurement>,
 }
 
 /// (scene, its temperatures, cover) → the friction ratios of each replicate.
@@ -238,10 +240,10 @@ type SolvedRatios = (
 
 /// Fit (or reuse the fit of) a compound measured in isotherms, with its bands when asked.
 fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError> {
-    let (measurement, specimen_fits) = if c.specimens.len() >= 2 {
+    let (measurement, specimen_fits, specimens) = if c.specimens.len() >= 2 {
         pooled_specimens(c, opts)?
     } else {
-        (checked_measurement(c)?, Vec::new())
+        (checked_measurement(c)?, Vec::new(), Vec::new())
     };
     let (fit, action, no_bands) = fit_or_reuse_with_bands(
         &c.name,
@@ -257,17 +259,25 @@ fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, Pipeline
         action,
         no_bands,
         specimen_fits,
+        specimens,
     })
 }
 
 /// Replicate specimens: each read alone and fitted alone (its friction gives the spread between
 /// specimens, crate::bands::between), and their measurements pooled for the compound's fit
-/// (super::specimens).
+/// (super::specimens); the specimens' own measurements are handed on for the datasheet.
 #[allow(clippy::type_complexity)]
 fn pooled_specimens(
     c: &CompoundInput,
     opts: &RunOptions,
-) -> Result<(Measurement, Vec<Result<CompoundFit, String>>), PipelineError> {
+) -> Result<
+    (
+        Measurement,
+        Vec<Result<CompoundFit, String>>,
+        Vec<Measurement>,
+    ),
+    PipelineError,
+> {
     let ms: Vec<Measurement> = c
         .specimens
         .iter()
@@ -279,7 +289,9 @@ fn pooled_specimens(
             })
         })
         .collect::<Result<_, _>>()?;
-    let (pooled, _notes) = super::specimens::pool(&c.name, &ms)?;
+    // what could not be pooled reaches the fit's warnings, and so friction.csv and the datasheet
+    let (mut pooled, notes) = super::specimens::pool(&c.name, &ms)?;
+    pooled.warnings.extend(notes);
     let options = fit_options(c, opts);
     let fits = ms
         .par_iter()
@@ -289,7 +301,7 @@ fn pooled_specimens(
                 .map_err(|e| cap_line(&format!("specimen {}: {e}", k + 1)))
         })
         .collect();
-    Ok((pooled, fits))
+    Ok((pooled, fits, ms))
 }
 
 /// Fit (or reuse the fit of) a master curve read already shifted (pyvisco's CSV pair: the compound's
@@ -338,6 +350,7 @@ fn fit_shifted(
         action,
         no_bands,
         specimen_fits: Vec::new(),
+        specimens: Vec::new(),
     })
 }
 
@@ -426,6 +439,7 @@ fn one_compound(
         action,
         no_bands,
         specimen_fits,
+        specimens,
     } = match &c.settings.shift_factors {
         None => fit_measured(c, opts)?,
         Some(sf) => fit_shifted(c, sf, opts)?,
@@ -494,7 +508,10 @@ fn one_compound(
     }
     write_report(
         &fit,
-        &measurement,
+        crate::report::Measured {
+            pooled: &measurement,
+            specimens: &specimens,
+        },
         &fit_level,
         &friction,
         &maps,

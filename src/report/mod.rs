@@ -19,7 +19,7 @@ pub mod plots;
 pub mod ranking;
 pub mod ticks;
 
-pub use datasheet::write_report;
+pub use datasheet::{write_report, Measured};
 pub use error::{write_file, ReportError};
 pub use index::{index_html, write_index, TanDeltaProxy};
 pub use ranking::{ranked, ranking_csv};

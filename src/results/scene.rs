@@ -129,6 +129,22 @@ impl SceneSet {
         use crate::limits as lim;
         let budget = |e: lim::LimitError| cfg(e.to_string());
         lim::at_most("[[scene]] tables", set.scene.len(), lim::SCENES_MAX).map_err(budget)?;
+        let points = set.scene.iter().map(|s| s.temps_c.len()).sum();
+        let cells = set
+            .scene
+            .iter()
+            .map(|s| {
+                s.map_temps_c
+                    .len()
+                    .saturating_mul(s.map_speeds_m_s.len() + s.map_loads_n_per_m.len())
+            })
+            .fold(0usize, usize::saturating_add);
+        lim::scene_work(
+            "the scenes' work (Σ temps_c + map cells / 5)",
+            points,
+            cells,
+        )
+        .map_err(budget)?;
         for (i, s) in set.scene.iter().enumerate() {
             lim::name(&format!("scene[{i}]: name"), &s.name).map_err(budget)?;
             let at = |key: &str| format!("scene[{i}] ({}): {key}", s.name);

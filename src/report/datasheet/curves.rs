@@ -122,6 +122,64 @@ pub fn temperature_sweeps(fit: &CompoundFit, m: &Measurement) -> (Chart, Chart) 
     )
 }
 
+/// Each replicate specimen's own measurement at 1 Hz against temperature (E′ dots, E″ circles,
+/// one colour per specimen) beside the pooled fit's lines (issue 31: "the datasheet shows each
+/// specimen's curves"); `None` with fewer than two specimens or none of the fit's kind.
+pub fn specimen_sweeps(fit: &CompoundFit, specimens: &[Measurement]) -> Option<Chart> {
+    if specimens.len() < 2 || specimens.iter().any(|m| m.kind != fit.relaxation.kind) {
+        return None;
+    }
+    let f = SWEEP_FREQS_HZ[0];
+    let temps = sweep_temps(fit);
+    let sym = symbols(fit.relaxation.kind);
+    let line =
+        |q: Quantity| -> Vec<(f64, f64)> { temps.iter().map(|&t| (t, at(fit, q, t, f))).collect() };
+    let mut curves = vec![
+        Curve::new(
+            format!("{} pooled fit", sym.0),
+            line(Quantity::Storage),
+            Mark::Line,
+        )
+        .coloured(PALETTE[7]),
+        Curve::new(
+            format!("{} pooled fit", sym.1),
+            line(Quantity::Loss),
+            Mark::Dashed,
+        )
+        .coloured(PALETTE[7]),
+    ];
+    for (k, m) in specimens.iter().enumerate() {
+        let pts = measured_at(m, f);
+        let colour = PALETTE[k % 7];
+        curves.push(
+            Curve::new(
+                format!("{} specimen {}", sym.0, k + 1),
+                pts.iter().map(|p| (p.0, p.1)).collect(),
+                Mark::LineDots,
+            )
+            .coloured(colour),
+        );
+        curves.push(
+            Curve::new(
+                format!("{} specimen {}", sym.1, k + 1),
+                pts.iter().map(|p| (p.0, p.2)).collect(),
+                Mark::LineCircles,
+            )
+            .coloured(colour),
+        );
+    }
+    Some(Chart {
+        title: format!(
+            "{} and {} of each specimen at {f} Hz (lines: pooled fit)",
+            sym.0, sym.1
+        ),
+        x: Axis::lin("temperature T [°C]"),
+        y: Axis::log("modulus [Pa]"),
+        curves,
+        colour_bar: None,
+    })
+}
+
 /// tan δ of the master curve (points) and of the Prony fit (line) against reduced frequency.
 pub fn master_tan_delta(fit: &CompoundFit) -> Chart {
     let pts = thinned(&fit.master_curve);
@@ -240,6 +298,47 @@ mod tests {
         // J rises and E falls monotonically
         assert!(ep.windows(2).all(|w| w[1].1 <= w[0].1));
         assert!(jp.windows(2).all(|w| w[1].1 >= w[0].1));
+    }
+
+    /// A measurement at −10, 0 and 10 °C with points at 0.5, 1 and 10 Hz, E′ = scale·(1 + f)·(1 + T²),
+    /// E″ a tenth of it.
+    fn swept(scale: f64) -> crate::Measurement {
+        let iso: Vec<serde_json::Value> = [-10.0f64, 0.0, 10.0]
+            .iter()
+            .map(|&t| {
+                let pts: Vec<serde_json::Value> = [0.5f64, 1.0, 10.0]
+                    .iter()
+                    .map(|&f| {
+                        let e = scale * (1.0 + f) * (1.0 + t * t);
+                        serde_json::json!({"freq_hz": f, "storage_pa": e, "loss_pa": 0.1 * e,
+                                           "temp_c": t, "line": 1, "flags": []})
+                    })
+                    .collect();
+                serde_json::json!({"temp_nominal_c": t, "temp_mean_c": t, "source": 0,
+                                   "points": pts})
+            })
+            .collect();
+        serde_json::from_value(serde_json::json!({"sources": [], "kind": "tensile",
+            "poisson": 0.5, "isotherms": iso, "warnings": []}))
+        .unwrap()
+    }
+
+    #[test]
+    fn each_specimen_is_drawn_with_its_own_1_hz_points() {
+        let fit = one_term_fit((-10.0, 10.0));
+        assert!(specimen_sweeps(&fit, &[swept(1.0)]).is_none());
+        let c = specimen_sweeps(&fit, &[swept(1.0), swept(2.0)]).unwrap();
+        // the pooled fit's E′ and E″, then E′ and E″ of each specimen
+        assert_eq!(c.curves.len(), 6);
+        for (k, scale) in [(0usize, 1.0), (1, 2.0)] {
+            let (e1, e2) = (&c.curves[2 + 2 * k], &c.curves[3 + 2 * k]);
+            assert_eq!(e1.points.len(), 3, "one point per isotherm, at 1 Hz only");
+            for (&(t, e), &(t2, l)) in e1.points.iter().zip(&e2.points) {
+                assert_eq!(t, t2);
+                assert_eq!(e, scale * 2.0 * (1.0 + t * t));
+                assert_eq!(l, 0.1 * e);
+            }
+        }
     }
 
     #[test]

@@ -169,17 +169,17 @@ pub fn friction_curve(name: &str, pts: &[FrictionPoint]) -> Curve {
 
 /// The viscoelastic curves: temperature sweeps, master curves, E(t) and J(t), isotherms and shift
 /// factors, as one grid of plots.
-fn curve_plots(
-    dir: &Path,
-    fit: &CompoundFit,
-    measurement: &Measurement,
-) -> Result<String, ReportError> {
-    let (sweep, sweep_tan) = curves::temperature_sweeps(fit, measurement);
+fn curve_plots(dir: &Path, fit: &CompoundFit, measured: Measured) -> Result<String, ReportError> {
+    let (sweep, sweep_tan) = curves::temperature_sweeps(fit, measured.pooled);
     let (relax, creep) = curves::relaxation_and_creep(fit);
     let mut h = String::new();
     for (stem, chart) in [
         ("sweep_moduli", Some(sweep)),
         ("sweep_tan_delta", Some(sweep_tan)),
+        (
+            "specimen_moduli",
+            curves::specimen_sweeps(fit, measured.specimens),
+        ),
         ("master_tan_delta", Some(curves::master_tan_delta(fit))),
         ("relaxation_modulus", Some(relax)),
         ("creep_compliance", creep),
@@ -246,13 +246,23 @@ fn map_section(
     Ok(h)
 }
 
+/// The measurement a fit was made from: the one the fit took (pooled when the compound has
+/// replicate specimens, crate::pipeline::specimens), and each specimen's own (empty with one).
+#[derive(Clone, Copy)]
+pub struct Measured<'a> {
+    /// What the fit took.
+    pub pooled: &'a Measurement,
+    /// Each replicate specimen's measurement, in the compound's order.
+    pub specimens: &'a [Measurement],
+}
+
 /// Write `dir/` (plots, friction tables, datasheet.html) for one compound; `maps` has one entry per
 /// scene of `friction`, in the same order; `allow_extrapolation` as in the ranking (the datasheet
 /// shows the compound's standing per scene by the same rule); `fit_warnings` are the warnings of
 /// the fit that hold for every row (friction.csv writes them once, with a code per row).
 pub fn write_report(
     fit: &CompoundFit,
-    measurement: &Measurement,
+    measured: Measured,
     fit_warnings: &[String],
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     maps: &[FrictionMaps],
@@ -280,8 +290,8 @@ pub fn write_report(
 
     let friction_svg = friction_plot(dir, fit, friction)?;
     let maps_html = map_section(dir, friction, maps)?;
-    let (iso_svg, master_svg, shift_svg) = fit_plots(dir, fit, measurement)?;
-    let curves_html = curve_plots(dir, fit, measurement)?;
+    let (iso_svg, master_svg, shift_svg) = fit_plots(dir, fit, measured.pooled)?;
+    let curves_html = curve_plots(dir, fit, measured)?;
 
     let created = fit
         .provenance

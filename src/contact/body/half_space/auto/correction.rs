@@ -122,11 +122,17 @@ pub(super) fn lumping_error(
 }
 
 /// Relative round-off floor of the corrected ρF/N. Each solve's ρF/N = L − β + L·F₂/(2F₁) (eq. in
-/// `auto`'s module doc) is a difference of O(λ) terms, so its absolute error is a few ε·(λ + |β|):
+/// `auto`'s module doc) is a difference of O(λ) terms, each a sum over the n Chebyshev
+/// coefficients, so its absolute error is bounded by n·ε·(λ + |β|) (the worst-case bound of a sum of
+/// n terms, Higham, *Accuracy and Stability of Numerical Algorithms*, 2nd ed., eq. 4.4; n ≥ 8):
 /// once for the reduced solve (none when every mode is lumped or dropped: the elastic solve gives
 /// β = L and F₂ = 0 exactly), and for the lumping correction twice (the calibration is a difference
 /// of two solves) times its amplification Σwᵢ/w*. Large relative to a small friction.
+///
+/// The former 8ε was exceeded 4× (a tol 1e−6 solve claimed 2.8e−12 and was 1.2e−11 from a tol
+/// 1e−10 one, n = 132; `VISCOROLL_SEED=0x1db992c883b85c68`, case 1 of `contact_props`).
 pub(super) fn roundoff_floor(sol: &LambdaSolution, red: &Reduction, corr: &Correction) -> f64 {
     let solves = if red.modes_used > 0 { 1.0 } else { 0.0 } + 2.0 * corr.amplification;
-    8.0 * f64::EPSILON * solves * (sol.lambda + sol.beta.abs()) / sol.friction_rho.abs().max(1e-300)
+    let n = sol.coefficients.len().max(8) as f64;
+    n * f64::EPSILON * solves * (sol.lambda + sol.beta.abs()) / sol.friction_rho.abs().max(1e-300)
 }
