@@ -214,7 +214,14 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                 }
                 None => roll(&scene, &true_at_t, &settings).unwrap().friction,
             };
-            let b = band_of(p.friction, r).expect("a band at every point");
+            // A refused band (more than a quarter of the replicates' solves failed, or the
+            // friction itself) is a point not covered: p05 = p95 = NaN, counted in the tables.
+            let refused = viscoroll::results::FrictionBand {
+                p05: f64::NAN,
+                p50: f64::NAN,
+                p95: f64::NAN,
+            };
+            let b = band_of(p.friction, r).unwrap_or(refused);
             out.push(Point {
                 compound: compound.name.clone(),
                 scene: spec.name.clone(),
@@ -227,7 +234,7 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                 window_decades: bands.window[i].as_ref().map(|w| w.excess.decades),
                 extrapolated: bands.tail_ln[i].is_some(),
                 before: bands_before.as_ref().map(|b| {
-                    let b = band_of(p.friction, &b.ratios[i]).expect("a band at every point");
+                    let b = band_of(p.friction, &b.ratios[i]).unwrap_or(refused);
                     (b.p05, b.p95)
                 }),
             });
@@ -322,14 +329,17 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
             })
             .collect();
         let (bw, _) = median_widths(&before.iter().collect::<Vec<_>>());
+        let refused = |f: &dyn Fn(&Point) -> f64| of.iter().filter(|p| f(p).is_nan()).count();
         println!(
-            "| {name} | {} | {:.2} % | {lw:.4} | {} / {} | {} | {:.2} % |",
+            "| {name} | {} | {:.2} % | {lw:.4} | {} / {} | {} | {:.2} % | refused {} / before {} |",
             pct(coverage_of(of.iter().copied())),
             100.0 * w,
             of.iter().filter(|p| p.truth > p.p95).count(),
             of.iter().filter(|p| p.truth < p.p05).count(),
             pct(coverage_of(before.iter())),
-            100.0 * bw
+            100.0 * bw,
+            refused(&|p| p.p05),
+            refused(&|p| p.before.map_or(0.0, |b| b.0))
         );
     };
     for c in &compounds {
@@ -429,7 +439,9 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
 
 /// Medians of the relative half-width (p95 − p05)/(2F) and of the log half-width ln(p95/p05)/2.
 fn median_widths(pts: &[&Point]) -> (f64, f64) {
-    let median = |mut v: Vec<f64>| {
+    let median = |v: Vec<f64>| {
+        // Refused bands (NaN) left out of the widths; they count as misses in the coverage.
+        let mut v: Vec<f64> = v.into_iter().filter(|x| x.is_finite()).collect();
         v.sort_by(f64::total_cmp);
         v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
     };

@@ -75,7 +75,9 @@ fn an_unreadable_compound_folder_fails_only_its_compound() {
     // the run finishes: exit 1 says a compound failed, and only that one
     assert_eq!(o.status.code(), Some(1), "{err}");
     let summary: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON object");
-    let compounds = summary["detail"]["compounds"].as_array().expect("compounds listed");
+    let compounds = summary["detail"]["compounds"]
+        .as_array()
+        .expect("compounds listed");
     let by_name = |n: &str| {
         compounds
             .iter()
