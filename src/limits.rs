@@ -18,9 +18,10 @@ pub const PRONY_LAMBDA_COUNT_MAX: usize = 60;
 pub const PRONY_TERMS_MAX: usize = 400;
 /// Intervals of the thesis collocation (`contact --n`): an n × n dense matrix (8 n² bytes, LU ~ n³,
 /// one per step of the load loop); 20000 reached 3 GB, and 4000 (128 MB) took 498 s with the load
-/// loop (debug binary, loaded machine: `cargo bench --bench budget_edges`), so 1000: 1/64 of that
-/// work, 8 MB per matrix. The thesis' tables use n ≤ 320.
-pub const CONTACT_N_MAX: usize = 1000;
+/// loop (debug binary, loaded machine: `cargo bench --bench budget_edges`), so 2000: 1/8 of that
+/// work, 32 MB per matrix. The thesis' tables use n ≤ 320; the independent checks of the layer and
+/// of the `auto` scheme use up to 1280.
+pub const CONTACT_N_MAX: usize = 2000;
 /// Scenes in one scenes TOML (each costs a friction curve and maps per compound).
 pub const SCENES_MAX: usize = 64;
 /// Temperatures of a scene's friction curve (`temps_c`), each a contact solve per compound.

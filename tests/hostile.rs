@@ -6,7 +6,7 @@
 
 use super::pipeline_hardening::rubber_csv;
 use super::seed::seed;
-use super::support::{bin, run_main, stderr, temp_dir, viscoroll};
+use super::support::{bin, data_dir, run_main, stderr, temp_dir, viscoroll};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use viscoroll::limits;
@@ -507,6 +507,70 @@ fn broken_tables(cases: usize, rng: &mut Rng) {
         assert!(
             m.warnings.iter().any(|w| w.contains(&named)),
             "case {case}: {:?}",
+            m.warnings
+        );
+    }
+    // every text format: the shipped TRIOS LIMS, DMA-suite and pyvisco exports, and TRIOS text and
+    // Proteus written by testdata; the stray goes just above a random data row (not the first)
+    let mut texts: Vec<(String, Vec<u8>)> = [
+        "trios-aresg2-lims/frequency_sweep_tts.txt",
+        "dmasuite-tensile/T20.txt",
+        "pyvisco-ems-ca/freq_user_raw.csv",
+    ]
+    .iter()
+    .map(|f| (f.to_string(), std::fs::read(data_dir().join(f)).unwrap()))
+    .collect();
+    let compound = &viscoroll::testdata::realistic::realistic_compounds()[0];
+    let protocol = viscoroll::testdata::realistic::DmaProtocol {
+        temps_c: vec![0.0, 20.0, 40.0],
+        ..Default::default()
+    };
+    let rows = viscoroll::testdata::realistic::dma_rows(compound, &protocol);
+    for f in [
+        viscoroll::testdata::realistic::ExportFormat::TriosText,
+        viscoroll::testdata::realistic::ExportFormat::Proteus,
+    ] {
+        texts.push((format!("{f:?}.{}", f.extension()), f.write(&rows)));
+    }
+    for (name, bytes) in texts {
+        let base = read_bytes(&[(name.clone(), bytes.clone())], &opts).unwrap();
+        let n = points(&base);
+        let data_lines: Vec<usize> = base
+            .isotherms
+            .iter()
+            .flat_map(|i| i.points.iter().map(|p| p.line))
+            .filter(|&l| l > 1)
+            .collect();
+        let at = data_lines[1 + rng.below(data_lines.len() - 1)]; // 1-based line of a data row
+        let stray = *rng.pick(&["garbage", "\0\0\0\0", "-- note --", "x;y", "nan nan"]);
+        // the files may end lines with CR LF (Proteus): insert with the file's own ending
+        let text = String::from_utf8_lossy(&bytes).into_owned();
+        let eol = if text.contains("\r\n") { "\r\n" } else { "\n" };
+        let mut v: Vec<&str> = text.split(eol).collect();
+        v.insert(at - 1, stray);
+        let broken: Vec<u8> = if name.starts_with("Proteus") {
+            // cp1252 as written: the inserted line is ASCII, so bytes are rebuilt from the original
+            let mut out = Vec::new();
+            let mut line = 0;
+            for chunk in bytes.split_inclusive(|&b| b == b'\n') {
+                line += 1;
+                if line == at {
+                    out.extend_from_slice(stray.as_bytes());
+                    out.extend_from_slice(eol.as_bytes());
+                }
+                out.extend_from_slice(chunk);
+            }
+            out
+        } else {
+            v.join(eol).into_bytes()
+        };
+        let m = read_bytes(&[(name.clone(), broken)], &opts)
+            .unwrap_or_else(|e| panic!("{name}: {stray:?} at line {at}: {e}"));
+        assert_eq!(points(&m), n, "{name}: {stray:?} at line {at}");
+        let named = format!("line {at}");
+        assert!(
+            m.warnings.iter().any(|w| w.contains(&named)),
+            "{name}: {stray:?} at line {at}: {:?}",
             m.warnings
         );
     }

@@ -18,6 +18,25 @@
 //! looser worst-case bound (see [`bounds`]). With the default seed every stage's figure is also held
 //! to about 2–3× what it measures ([`tight_bounds`]). The table and a stage-by-stage breakdown print with
 //! `cargo test --test tests known_truth -- --nocapture`.
+//!
+//! Measured with the default settings of `run` on branch `shift` (slope-weighted shifts, pair reach
+//! 3, issue 32; default seed, `cargo test --test tests known_truth::friction_from -- --nocapture`),
+//! 132 points (4 compounds × 3 scenes × 11 temperatures):
+//!
+//! | compound      | median % | worst % | shift dec | Prony (spec) % |
+//! |---------------|---------:|--------:|----------:|---------------:|
+//! | nr-br-idler   |    0.418 |   1.318 |    0.0140 |          1.178 |
+//! | nr-tread      |    0.302 |   1.006 |    0.0155 |          1.061 |
+//! | sbr-tread     |    0.178 |   0.721 |    0.0181 |          0.814 |
+//! | high-tg-tread |    0.174 |   4.841 |    0.0111 |          4.899 |
+//! | all           |    0.300 |   4.841 |           |                |
+//!
+//! Issue 32's goal (median ≤ 0.5 %, worst ≤ 2 %): the median is met, the worst is not. Error budget
+//! of the worst points (total = shifts + Prony; interconversion ≤ 1e−15, contact ≤ 8e−6): the three
+//! worst are high-tg-tread at −40 °C (4.84, 4.61, 4.17 %), all Prony (4.90/4.66/4.22 %; shifts
+//! −0.06 %): the glassy end of its master curve, E″ 0.086 decade off; next nr-br-idler
+//! conveyor-idler 50 °C −1.32 % (shifts −0.50, Prony −0.82) and 20 °C −1.17 % (Prony −1.18). The
+//! largest share is the Prony fit at the glassy edge of a high-T_g rubber; not fixed here.
 
 use crate::reference::{friction_at_length, SceneSi};
 use rayon::prelude::*;
@@ -105,7 +124,17 @@ struct Figures {
     contact_load: f64,
     /// Worst |F/N fit / F/N independent − 1| there.
     end_to_end: f64,
+    /// Worst |E*·J* − 1| of the fitted relaxation spectrum and its exact creep spectrum over the
+    /// scenes' frequencies at every temperature (the interconversion's error).
+    interconversion: f64,
+    /// Every point: (scene, T °C, error, error of the fitted spectrum with the true shifts, shift
+    /// error in decades), errors as fractions.
+    points: Vec<Point>,
 }
+
+/// One compared point: (scene, T °C, error, error of the fitted spectrum with the true shifts,
+/// shift error in decades), errors as fractions.
+type Point = (String, f64, f64, f64, f64);
 
 /// Per compound: the [`Figures`] over both shipped scenes at [`TEMPS_C`]; with `verbose` the
 /// stage-by-stage table is printed.
@@ -195,11 +224,18 @@ fn evaluate(
             (e1, e2)
         };
         let (win1, win2) = moduli_err(f_lo.log10(), f_hi.log10());
+        // The interconversion: E*·J* = 1 for an exact pair, over 1e-8…1e8 Hz.
+        let omegas: Vec<f64> = (0..=160)
+            .map(|k| 2.0 * std::f64::consts::PI * 10f64.powf(-8.0 + 0.1 * k as f64))
+            .collect();
+        let interconversion =
+            viscoroll::creep::exact::max_product_error(&fit.relaxation, &fit_creep, &omegas);
         let mut fig = Figures {
             name: compound.name.clone(),
             shift: shift_err.iter().map(|(_, e)| e.abs()).fold(0.0, f64::max),
             storage: win1,
             loss: win2,
+            interconversion,
             ..Figures::default()
         };
         // (scene, true spectrum at T, true F/N and contact length from auto, fitted F/N, T)
@@ -274,6 +310,13 @@ fn evaluate(
                 // The fitted spectrum with the true shifts: the error of the spectrum alone.
                 let spec_only = on_body(&shifted(&fit_creep, true_shift(p.temp_c))).friction;
                 fig.spectrum = fig.spectrum.max((spec_only / truth - 1.0).abs());
+                fig.points.push((
+                    spec.name.clone(),
+                    p.temp_c,
+                    p.friction / truth - 1.0,
+                    spec_only / truth - 1.0,
+                    p.log10_a_t - true_shift(p.temp_c),
+                ));
                 // A failed solve (NaN) counts as an infinite error.
                 let err = (p.friction / truth - 1.0).abs();
                 errs.push(if err.is_finite() { err } else { f64::INFINITY });
@@ -337,6 +380,48 @@ fn evaluate(
     }
     let _ = std::fs::remove_dir_all(&dir);
     summary
+}
+
+/// The error budget of the worst points (issue 32): each point's error split by stage — the shifts
+/// (the fit's error less that of its spectrum with the true shifts), the Prony fit (the fitted
+/// spectrum with the true shifts against the truth, both through the same solver), the
+/// interconversion (worst |E*J* − 1| of the fitted pair) and the contact solver (auto at tol 1e−4
+/// against the independent path, the compound's worst).
+fn print_budget(summary: &[Figures], worst: usize) {
+    let mut all: Vec<(&Figures, &Point)> = summary
+        .iter()
+        .flat_map(|f| f.points.iter().map(move |p| (f, p)))
+        .collect();
+    all.sort_by(|a, b| b.1 .2.abs().total_cmp(&a.1 .2.abs()));
+    println!(
+        "\nerror budget, {worst} worst points (per cent of F/N; shift in decades)\n\
+         compound        scene            T °C   total %  shifts %   Prony %  interconv.  contact   shift dec"
+    );
+    for (f, (scene, t, err, spec, shift)) in all.into_iter().take(worst) {
+        println!(
+            "{:<15} {:<15} {:>6} {:>8.3} {:>9.3} {:>9.3} {:>11.1e} {:>8.1e} {:>+10.4}",
+            f.name,
+            scene,
+            t,
+            100.0 * err,
+            100.0 * (err - spec),
+            100.0 * spec,
+            f.interconversion,
+            f.contact,
+            shift
+        );
+    }
+    let mut e: Vec<f64> = summary
+        .iter()
+        .flat_map(|f| f.points.iter().map(|p| p.2.abs()))
+        .collect();
+    let worst_all = e.iter().copied().fold(0.0, f64::max);
+    println!(
+        "all compounds: median {:.3} %, worst {:.3} % over {} points",
+        100.0 * median(&mut e),
+        100.0 * worst_all,
+        e.len()
+    );
 }
 
 fn print_summary(summary: &[Figures]) {
@@ -468,8 +553,18 @@ fn friction_from_synthetic_exports_matches_the_true_spectrum() {
         true,
     );
     print_summary(&summary);
+    print_budget(&summary, 10);
     // At least three compounds held to the issue's figures.
     assert_eq!(summary.len(), 4);
+    // The interconversion is exact (docs/MATH.md §4): E*J* = 1 to rounding.
+    for f in &summary {
+        assert!(
+            f.interconversion < 1e-9,
+            "{}: {:.1e}",
+            f.name,
+            f.interconversion
+        );
+    }
     assert!(
         summary
             .iter()
@@ -510,4 +605,33 @@ fn known_truth_other_seeds() {
         );
     }
     assert!(bad.is_empty(), "{bad:?}");
+}
+
+/// A fifth shape (issue 32): the narrow glass transition of `non_overlapping_compounds` (T_g ≈ −29 °C,
+/// steep WLF), whose coldest isotherms in the default protocol lie 4 decades apart and are placed by
+/// the law fitted to the overlapping ones (tests/master_plateau.rs). End to end over the three shipped
+/// scenes at −40 … +60 °C, with the error budget of its worst points:
+/// `cargo test --test tests known_truth_narrow -- --ignored --nocapture`.
+#[test]
+#[ignore = "a fifth compound, ~1 min; run on demand"]
+fn known_truth_narrow_transition() {
+    let compounds = vec![viscoroll::testdata::realistic::non_overlapping_compounds()[0].clone()];
+    let summary = evaluate(
+        &compounds,
+        &DmaProtocol::default(),
+        &FitOptions::default(),
+        true,
+        false,
+    );
+    print_summary(&summary);
+    print_budget(&summary, 10);
+    let f = &summary[0];
+    assert!(f.interconversion < 1e-9, "{:.1e}", f.interconversion);
+    // The stress case's acceptance bounds (see `bounds`).
+    assert!(
+        f.median <= 0.02 && f.worst <= 0.10,
+        "median {:.2} %, worst {:.2} %",
+        100.0 * f.median,
+        100.0 * f.worst
+    );
 }

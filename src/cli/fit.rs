@@ -2,8 +2,9 @@
 //!
 //! Input: a measurement JSON (the serde of [`crate::Measurement`], as `viscoroll ingest -o` writes it);
 //! output: `fits/NAME.json`, the file `roll`, `rank` and `export` read. The same settings as the main
-//! job (`viscoroll run`): shifts on log E′, the table of the shifts found as the shift law, the Prony
-//! QP with its GCV weight (`crate::pipeline::fit_compound`). An existing fit made from the same inputs
+//! job (`viscoroll run`): slope-weighted shifts, the table of the shifts found as the shift law, the
+//! Prony QP with its GCV weight (`crate::pipeline::fit_compound`); the master-curve and Prony flags
+//! are `master`'s and `run`'s (crate::cli::tuning_args). An existing fit made from the same inputs
 //! with the same settings is reused; a different one is kept unless `--force` is given.
 //!
 //! The fit file carries the bootstrap ensemble of the uncertainty bands (crate::bands, docs/MATH.md
@@ -56,18 +57,12 @@ pub struct Args {
     /// middle of the range).
     #[arg(long, allow_negative_numbers = true, value_parser = super::temp_c)]
     pub tref: Option<f64>,
-    /// Keep at most N relaxation terms (E∞ not counted): the fit chooses their positions and
-    /// non-negative weights (e.g. 18 for an LS-DYNA card). Default: no cap.
-    #[arg(long, value_name = "N")]
-    pub max_terms: Option<usize>,
-    /// Target RMS log10 error of E′ and E″ ("0.02" for both, "0.012,0.10" for each): the fewest
-    /// terms that reach it. Default: the errors of the dense grid fit (fewer terms, no less accurate).
-    #[arg(long, value_name = "E1[,E2]")]
-    pub target_rms: Option<String>,
-    /// Reduce the dense grid fit to the fewest terms at free positions that are no less accurate
-    /// against the data (implied by --max-terms and --target-rms; default: the dense grid fit).
-    #[arg(long)]
-    pub reduce: bool,
+    /// The master-curve flags (the same as `master`'s).
+    #[command(flatten)]
+    pub tts: super::tuning_args::TtsArgs,
+    /// The Prony flags (the same in `run`).
+    #[command(flatten)]
+    pub prony: super::tuning_args::PronyArgs,
     /// Print the trade table of terms against RMS log10 E′ and E″ on stderr.
     #[arg(long)]
     pub trade: bool,
@@ -163,16 +158,13 @@ fn source(args: &Args) -> anyhow::Result<Source> {
     )
 }
 
-/// The fit options from the flags: reference temperature, term cap and target.
+/// The fit options from the flags: the main job's defaults with the flags given laid over them.
 fn fit_options(args: &Args) -> anyhow::Result<FitOptions> {
     let mut options = FitOptions::default();
     options.master.tref_c = args.tref;
-    options.prony.max_terms = args.max_terms;
-    options.prony.reduce_terms =
-        args.reduce || args.max_terms.is_some() || args.target_rms.is_some();
-    if let Some(t) = &args.target_rms {
-        options.prony.target_rms_log10 = Some(parse_target(t)?);
-    }
+    args.tts
+        .tuning(args.tref, Some(&args.prony))?
+        .apply(&mut options);
     Ok(options)
 }
 
@@ -254,7 +246,7 @@ fn print_fit(
             fit.compound,
             t[0],
             t[1],
-            args.max_terms.map_or("the dense fit".to_string(), |n| format!("{n} terms")),
+            args.prony.max_terms.map_or("the dense fit".to_string(), |n| format!("{n} terms")),
             fit.relaxation.terms.len()
         );
     }
@@ -290,22 +282,4 @@ fn read_measurement(path: &std::path::Path) -> anyhow::Result<crate::Measurement
         &path.display().to_string(),
         &text,
     )?)
-}
-
-/// `--target-rms E1[,E2]`: one value for both moduli or one each, finite and > 0.
-fn parse_target(s: &str) -> anyhow::Result<[f64; 2]> {
-    let v: Vec<f64> = s
-        .split(',')
-        .map(|t| t.trim().parse::<f64>())
-        .collect::<Result<_, _>>()
-        .with_context(|| format!("--target-rms {s}: expected E1 or E1,E2 (RMS log10 errors)"))?;
-    let t = match v.as_slice() {
-        [a] => [*a, *a],
-        [a, b] => [*a, *b],
-        _ => anyhow::bail!("--target-rms {s}: expected one or two numbers"),
-    };
-    if t.iter().any(|x| !(x.is_finite() && *x > 0.0)) {
-        anyhow::bail!("--target-rms {s}: the errors must be finite and > 0");
-    }
-    Ok(t)
 }

@@ -38,6 +38,7 @@ mod roll_cover;
 mod roll_print;
 mod run;
 mod spectrum_input;
+mod tuning_args;
 
 use clap::{Parser, Subcommand};
 

@@ -49,6 +49,12 @@ pub struct Args {
     /// 1–2 s less per compound.
     #[arg(long)]
     pub no_bands: bool,
+    /// The master-curve flags (the same as `master`'s; a compound's keys in compounds.toml win).
+    #[command(flatten)]
+    pub tts: super::tuning_args::TtsArgs,
+    /// The Prony flags (the same as `fit`'s).
+    #[command(flatten)]
+    pub prony: super::tuning_args::PronyArgs,
     /// Longest wait in seconds for another run that holds the output folder's lock (it is told at
     /// once who holds it, and since when); 0 fails at once.
     #[arg(long, value_name = "SECONDS", default_value_t = crate::pipeline::run::LOCK_WAIT.as_secs())]
@@ -93,6 +99,9 @@ fn run_with_bar(opts: &RunOptions) -> anyhow::Result<crate::pipeline::RunSummary
 /// Run `viscoroll run`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let mut opts = RunOptions::for_folder(&args.dir, &args.out, args.scenes.as_deref(), args.tref)?;
+    args.tts
+        .tuning(args.tref, Some(&args.prony))?
+        .apply(&mut opts.fit);
     opts.force = args.force;
     if let Some(t) = args.tol {
         opts.set_tol(t)?;

@@ -308,7 +308,76 @@ fn parse_one(
         Format::Reptate => reptate::read(name, t)?,
         Format::Generic => generic::read(name, t)?,
     };
+    let mut raw = raw;
+    drop_rows_without_numbers(&mut raw, t);
+    note_unread_lines(&mut raw, t);
     Ok((format, raw, decoded.encoding))
+}
+
+/// A row with no finite number in it is no data row, whatever the reader took it for (a stray text line
+/// inside a TRIOS or Proteus table): it leaves the table with a note naming its line, so the rows
+/// around it are read, instead of failing the file on its first text cell.
+fn drop_rows_without_numbers(raw: &mut RawFile, text: &str) {
+    use super::table::Cell;
+    let lines: Vec<&str> = text.lines().collect();
+    for b in &mut raw.blocks {
+        b.rows.retain(|r| {
+            if r.cells.iter().any(|c| matches!(c, Cell::Num(v) if v.is_finite())) {
+                return true;
+            }
+            let shown: String = match r.loc {
+                Loc::Line(n) => lines.get(n.wrapping_sub(1)).copied().unwrap_or(""),
+                _ => "",
+            }
+            .chars()
+            .take(40)
+            .flat_map(char::escape_debug)
+            .collect();
+            raw.notes.push(format!(
+                "{}: not a data row (\"{shown}\": no number in it), skipped; the table goes on below it",
+                r.loc
+            ));
+            false
+        });
+    }
+}
+
+/// Lines inside a table that no reader took as a row (issue 28 item 6, as one mechanism for every
+/// text format): between a block's first and last row, a non-blank line that is not a row of it is
+/// named in a note (which reaches the warnings), unless the reader named it already. The rows
+/// around it are read; nothing inside a table is skipped without a word.
+fn note_unread_lines(raw: &mut RawFile, text: &str) {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut unread = Vec::new();
+    for b in &raw.blocks {
+        let mut rows: Vec<usize> = b
+            .rows
+            .iter()
+            .filter_map(|r| match r.loc {
+                Loc::Line(n) => Some(n),
+                _ => None,
+            })
+            .collect();
+        rows.sort_unstable();
+        let (Some(&first), Some(&last)) = (rows.first(), rows.last()) else {
+            continue;
+        };
+        for n in first..last {
+            let line = lines.get(n.wrapping_sub(1)).copied().unwrap_or("");
+            if line.trim().is_empty() || rows.binary_search(&n).is_ok() {
+                continue;
+            }
+            let named = format!("line {n}:");
+            if raw.notes.iter().any(|x| x.starts_with(&named)) {
+                continue;
+            }
+            let shown: String = line.chars().take(40).flat_map(char::escape_debug).collect();
+            unread.push(format!(
+                "line {n}: not a data row (\"{shown}\"), skipped; the table goes on below it"
+            ));
+        }
+    }
+    raw.notes.extend(unread);
 }
 
 impl Measurement {

@@ -24,6 +24,16 @@
 //!                                 # segment); also the string "freq=Frq,storage=Mod1,loss=Mod2"
 //! tref_c = 20.0                   # reference temperature of the master curve
 //! prony = { terms_per_decade = 1.5 }   # keys of the Prony settings (fit file `settings.prony`)
+//! # The options of `viscoroll master` / `fit` / `run`, same names and values (crate::pipeline::tuning):
+//! criterion = "slope-weighted"    # slope-weighted (default), storage, joint, tan-delta
+//! shift = "auto"                  # auto, wlf:C1,C2, arrhenius:EA (at tref_c) or a file
+//! vertical = "none"               # none, fitted, temperature
+//! law = "table"                   # table (default of fit and run), auto, wlf, arrhenius
+//! fit_range = "-30:60"            # WLF/Arrhenius fitted over these temperatures, °C
+//! nominal = false                 # shift with the nominal (set) temperatures
+//! max_terms = 18                  # at most this many relaxation terms
+//! target_rms = "0.012,0.10"       # the fewest terms that reach these RMS log10 errors
+//! reduce = false                  # the fewest terms no less accurate than the dense fit
 //! ```
 //!
 //! Replicate specimens of one compound (issue 31): `specimens` instead of `files`, one entry per
@@ -48,6 +58,7 @@
 //! ```
 
 use super::error::{io, PipelineError};
+use super::tuning::{self, FitTuning};
 use crate::dma::IngestOptions;
 use crate::prony::PronySettings;
 use crate::ModulusKind;
@@ -82,6 +93,8 @@ pub struct CompoundSettings {
     pub prony: Option<PronySettings>,
     /// pyvisco's shift-factor CSV of a master curve given as the compound's one file.
     pub shift_factors: Option<PathBuf>,
+    /// The master-curve and Prony options given (`criterion`, `law`, `max_terms`, …).
+    pub tuning: FitTuning,
 }
 
 #[derive(Deserialize)]
@@ -118,6 +131,24 @@ struct ListedCompound {
     shift_factors: Option<String>,
     #[serde(default)]
     columns: Option<ColumnsSetting>,
+    #[serde(default)]
+    shift: Option<String>,
+    #[serde(default)]
+    vertical: Option<String>,
+    #[serde(default)]
+    criterion: Option<String>,
+    #[serde(default)]
+    law: Option<String>,
+    #[serde(default)]
+    fit_range: Option<String>,
+    #[serde(default)]
+    nominal: Option<bool>,
+    #[serde(default)]
+    max_terms: Option<usize>,
+    #[serde(default)]
+    target_rms: Option<String>,
+    #[serde(default)]
+    reduce: Option<bool>,
 }
 
 /// `columns` of a compound: a table `{ freq = "Frq", … }` or the `ingest --columns` string.
@@ -129,8 +160,49 @@ enum ColumnsSetting {
 }
 
 impl ListedCompound {
+    /// The master-curve and Prony options, each checked (the message names the key); a `shift`
+    /// file is found from `dir`.
+    fn tuning(&self, dir: &Path) -> Result<FitTuning, String> {
+        Ok(FitTuning {
+            shift: self
+                .shift
+                .as_deref()
+                .map(|s| tuning::parse_shift(s, self.tref_c, dir))
+                .transpose()?,
+            vertical: self
+                .vertical
+                .as_deref()
+                .map(tuning::parse_vertical)
+                .transpose()?,
+            criterion: self
+                .criterion
+                .as_deref()
+                .map(tuning::parse_criterion)
+                .transpose()?,
+            law: self.law.as_deref().map(tuning::parse_law).transpose()?,
+            fit_range_c: self
+                .fit_range
+                .as_deref()
+                .map(tuning::parse_fit_range)
+                .transpose()
+                .map_err(|e| format!("fit_range: {e}"))?,
+            nominal: self.nominal.unwrap_or(false),
+            max_terms: match self.max_terms {
+                Some(0) => return Err("max_terms = 0: expected at least 1".into()),
+                n => n,
+            },
+            target_rms: self
+                .target_rms
+                .as_deref()
+                .map(tuning::parse_target_rms)
+                .transpose()
+                .map_err(|e| format!("target_rms: {e}"))?,
+            reduce: self.reduce.unwrap_or(false),
+        })
+    }
+
     /// The settings, each checked (the message names the key).
-    fn settings(&self) -> Result<CompoundSettings, String> {
+    fn settings(&self, dir: &Path) -> Result<CompoundSettings, String> {
         use crate::dma::units::{FreqUnit, ModulusUnit, TempUnit};
         let mut o = IngestOptions::default();
         let mut any = false;
@@ -201,6 +273,7 @@ impl ListedCompound {
             tref_c: self.tref_c,
             prony,
             shift_factors: None,
+            tuning: self.tuning(dir)?,
         })
     }
 }
@@ -444,7 +517,7 @@ pub fn discover(
             // A bad setting (or name) fails its compound only.
             let checked = crate::limits::name("name", &c.name)
                 .map_err(|e| e.to_string())
-                .and_then(|()| c.settings());
+                .and_then(|()| c.settings(dir));
             let mut settings = match checked {
                 Ok(s) => s,
                 Err(message) => {
@@ -673,11 +746,29 @@ mod tests {
         );
         let p = s.prony.as_ref().unwrap();
         assert_eq!(p.terms_per_decade, 1.5);
+        // The options of `master`/`fit`/`run` under their names.
+        std::fs::write(
+            dir.join("compounds.toml"),
+            "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\ncriterion = \"storage\"\nlaw = \"wlf\"\nfit_range = \"-30:60\"\nvertical = \"fitted\"\nmax_terms = 18\n",
+        )
+        .unwrap();
+        let (c2, _) = discover(&dir, &[]).unwrap();
+        let t = &c2[0].settings.tuning;
+        assert_eq!(t.criterion, Some(crate::tts::ShiftCriterion::Storage));
+        assert_eq!(t.law, Some(crate::tts::LawChoice::Wlf));
+        assert_eq!(t.fit_range_c, Some((-30.0, 60.0)));
+        assert_eq!(t.vertical, Some(crate::tts::VerticalShift::Fitted));
+        assert_eq!(t.max_terms, Some(18));
         assert_eq!(p.max_iter, PronySettings::default().max_iter);
         for bad in [
             "poisson = 0.7",
             "mode = \"bend\"",
             "prony = { nope = 1 }",
+            "criterion = \"e-prime\"",
+            "fit_range = \"60:-30\"",
+            "target_rms = \"0\"",
+            "law = \"vft\"",
+            "shift = \"wlf:1,2\"",
             "tref_c = 1e9",
         ] {
             std::fs::write(

@@ -11,7 +11,7 @@ use crate::bands::BandSettings;
 use crate::dma::{read_files, sha256_hex, IngestOptions};
 use crate::prony::{fit_prony, MasterPoint as PronyPoint, PronySettings};
 use crate::results::{CompoundFit, QualityFigure, TtsSummary};
-use crate::tts::{build_master_curve, LawChoice, MasterSettings, ShiftCriterion};
+use crate::tts::{build_master_curve, LawChoice, MasterSettings};
 use std::path::{Path, PathBuf};
 
 /// Bound on the worst overlap RMS of the master curve (log10 units) above which it is flagged: 0.05
@@ -30,7 +30,8 @@ pub struct FitOptions {
 impl Default for FitOptions {
     fn default() -> Self {
         Self {
-            // The criterion `viscoroll master` uses by default (log E′: the best-conditioned channel).
+            // The criterion `viscoroll master` uses by default (slope-weighted: per isotherm, the
+            // channel that carries the shift there; crate::tts::ShiftCriterion::SlopeWeighted).
             // The law used for friction is the table of the shifts found (interpolated, extrapolated
             // linearly from the end segments): on the shipped EMS-CA and DMA-suite sets the fitted WLF
             // and Arrhenius laws miss the shifts by 0.77–1.7 decades RMS, which would move the
@@ -40,7 +41,6 @@ impl Default for FitOptions {
             // on the synthetic exports of tests/known_truth.rs (±1.5 K drift, 1 %/3 % noise) the
             // mean |shift error| at −40 °C fell from 0.04–0.11 to 0.016–0.019 decade (4 seeds).
             master: MasterSettings {
-                criterion: ShiftCriterion::Storage,
                 law: LawChoice::Table,
                 correct_point_temperatures: true,
                 ..MasterSettings::default()

@@ -13,6 +13,7 @@ pub mod scenes;
 pub mod shard;
 pub mod specimens;
 pub mod trust;
+pub mod tuning;
 
 /// The fit file's types (crate::results::compound_fit), at their former path.
 pub use crate::results::compound_fit;
@@ -26,3 +27,4 @@ pub use run::{
     RunSummary,
 };
 pub use scenes::{SceneSet, SceneSpec};
+pub use tuning::FitTuning;

@@ -217,6 +217,7 @@ fn fit_options(c: &CompoundInput, opts: &RunOptions) -> FitOptions {
     if let Some(p) = &c.settings.prony {
         fit.prony = p.clone();
     }
+    c.settings.tuning.apply(&mut fit);
     fit
 }
 

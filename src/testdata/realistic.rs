@@ -210,6 +210,58 @@ pub fn realistic_compounds() -> Vec<RealisticCompound> {
     ]
 }
 
+/// Rubbers whose isotherms do not all overlap (issue 32): a narrow glass transition with a steep
+/// WLF law (the "universal" C₁ = 17.4, C₂ = 51.6 K at T_g), so that with 5 K steps neighbouring
+/// isotherms near and below T_g lie 2–6 decades apart in reduced frequency and do not overlap
+/// within 0.1–100 Hz, and below T_g E′ is flat (glassy). The spectrum reaches 6 decades past the
+/// coldest isotherm's window, so E″ there is a rubber's, not a Prony artefact.
+/// - `narrow-tg`: T_g = −40 °C, a narrow bell (0.7 / 1.2 decades);
+/// - `narrow-tg-filled`: T_g = −20 °C, the bell 0.9 / 1.6 decades, a 3 % slow filler tail.
+pub fn non_overlapping_compounds() -> Vec<RealisticCompound> {
+    let make =
+        |name: &str, tg: f64, short: f64, long: f64, slow: f64, what: &str| RealisticCompound {
+            name: name.into(),
+            description: what.into(),
+            spectrum: RubberShape {
+                n_terms: 46,
+                log10_tau_min_s: -24.0,
+                decades: 30.0,
+                modulus_inf_pa: 1.5e6,
+                glassy_over_rubbery: 1000.0,
+                log10_tau_peak_s: -1.0,
+                width_short_decades: short,
+                width_long_decades: long,
+                slow_fraction: slow,
+                log10_tau_slow_s: 3.0,
+                width_slow_decades: 1.5,
+            }
+            .spectrum(),
+            law: ShiftLaw::Wlf {
+                t_ref_c: tg,
+                c1: 17.4,
+                c2_k: 51.6,
+            },
+        };
+    vec![
+        make(
+            "narrow-tg",
+            -40.0,
+            0.7,
+            1.2,
+            0.004,
+            "narrow glass transition at −40 °C, steep WLF (17.4, 51.6 K at T_g)",
+        ),
+        make(
+            "narrow-tg-filled",
+            -20.0,
+            0.9,
+            1.6,
+            0.03,
+            "narrow glass transition at −20 °C with a filler tail, steep WLF",
+        ),
+    ]
+}
+
 /// The τ range (log10 s) a spectrum must span for `law` so that every isotherm of −60 … +100 °C
 /// at 0.1–100 Hz lies within it, one decade to spare at each end: (fastest, slowest).
 fn tau_range_for(law: &ShiftLaw) -> (f64, f64) {

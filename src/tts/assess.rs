@@ -1,5 +1,5 @@
 //! Fifth phase of the master curve: the quality figures of each isotherm at its final shifts — the
-//! overlap mismatch, E″ alone at those shifts, van Gurp–Palmen and the local Kramers–Kronig rule
+//! overlap mismatch of log10 E′ and of log10 E″ with the nearest neighbours, van Gurp–Palmen and the local Kramers–Kronig rule
 //! ([`super::quality`]) — their flags against the bounds, and the summary [`MasterQuality`].
 
 use super::channels::Channels;
@@ -9,6 +9,15 @@ use super::master::{IsothermShift, MasterQuality};
 use super::quality::{kramers_kronig_local, van_gurp_palmen, QualityBounds};
 use super::settings::{MasterSettings, VerticalShift};
 use super::shift::{overlap_rms, Prepared};
+
+/// The overlap figures compare each isotherm with its nearest neighbours only, whatever pair reach
+/// the shifting used (docs/MATH.md §6.5): a figure held to a fixed bound must not change its meaning
+/// with an estimation setting (on the DMA-suite set the warmest isotherm's E′ figure is 0.044, 0.049
+/// and 0.055 at reach 1, 2 and 3 under the storage criterion, at the same shifts within 0.01 decade).
+const QUALITY_REACH: usize = 1;
+
+/// The flag of an isotherm whose shift the overlaps do not determine (docs/MATH.md §6.6).
+pub const SHIFT_NOT_DETERMINED: &str = "shift not determined by overlap";
 
 /// The shift and quality figures of every isotherm, and their summary; `kind` names the moduli in
 /// the flags (E′, E″ or G′, G″).
@@ -21,14 +30,28 @@ pub(super) fn assess(
     kind: crate::ModulusKind,
 ) -> (Vec<IsothermShift>, MasterQuality) {
     let n = iso.len();
-    let (reach, min_pts) = (settings.pair_reach, settings.min_overlap_points);
-    let (shifts, overlap) = (&h.shifts, &h.overlap);
-    let loss_only: Vec<Prepared> = ch
-        .joint
-        .iter()
-        .map(|p| Prepared::new(p.x.clone(), vec![p.channels[1].0.clone()]))
-        .collect();
-    let loss_overlap = overlap_rms(&loss_only, shifts, reach, min_pts);
+    let min_pts = settings.min_overlap_points;
+    let shifts = &h.shifts;
+    // log10 E′ and log10 E″ at the final factors: the joint channels carry the b_T known before
+    // shifting (none or T/T_ref); a fitted b_T comes after.
+    let fitted_b = settings.vertical == VerticalShift::Fitted;
+    let alone = |c: usize| -> Vec<Prepared> {
+        ch.joint
+            .iter()
+            .zip(log_b)
+            .map(|(p, &b)| {
+                let y = &p.channels[c].0;
+                let y = if fitted_b {
+                    y.iter().map(|v| v - b).collect()
+                } else {
+                    y.clone()
+                };
+                Prepared::new(p.x.clone(), vec![y])
+            })
+            .collect()
+    };
+    let overlap = overlap_rms(&alone(0), shifts, QUALITY_REACH, min_pts);
+    let loss_overlap = overlap_rms(&alone(1), shifts, QUALITY_REACH, min_pts);
     let vgp = van_gurp_palmen(
         &ch.joint,
         &if settings.vertical == VerticalShift::Fitted {
@@ -42,7 +65,10 @@ pub(super) fn assess(
     let mut isotherms = Vec::with_capacity(n);
     for (i, c) in iso.iter().enumerate() {
         let kk = kramers_kronig_local(&ch.joint[i]);
-        let flags = isotherm_flags(&bounds, kind, overlap[i], loss_overlap[i], vgp[i], kk);
+        let mut flags = isotherm_flags(&bounds, kind, overlap[i], loss_overlap[i], vgp[i], kk);
+        if !h.determined[i] {
+            flags.push(SHIFT_NOT_DETERMINED.to_string());
+        }
         for f in &flags {
             flags_all.push(format!("{:.2} °C: {f}", c.temp));
         }
@@ -61,6 +87,7 @@ pub(super) fn assess(
             kk_median_log10_ratio: kk,
             flags,
             shift_channel: ch.carried.get(i).cloned().flatten(),
+            shift_determined: h.determined[i],
         });
     }
     let max_of = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, f64::max);
@@ -86,6 +113,10 @@ pub(super) fn assess(
         point_temperature_correction_max_log10: 0.0,
         point_temperature_passes: 0,
         flags: flags_all,
+        shift_not_determined_c: (0..n)
+            .filter(|&i| !h.determined[i])
+            .map(|i| iso[i].temp)
+            .collect(),
     };
     (isotherms, quality)
 }

@@ -3,17 +3,18 @@
 //!
 //! - `joint`: log10 E′ and log10 E″ (less log10 b_T), always built (the quality figures use it);
 //! - `tan`: log10 tan δ, for the tan δ criterion and for fitted vertical shifts;
-//! - `storage`: log10 E′ alone, the default criterion;
+//! - `storage`: log10 E′ alone (the `storage` criterion);
 //! - `weighted`: the joint channels each divided by its own scatter (docs/MATH.md §6): maximum
 //!   likelihood with an unknown variance per channel, so a channel that cannot be superposed (an
 //!   instrument resonance in E″, a secondary relaxation) gives way to the one that can. With the
 //!   slope-weighted criterion each isotherm also weighs each channel by its share of the
-//!   information, I_c = (median |d log M_c/d log f| / σ_c)² / Σ I: where E′ is flat (a plateau),
+//!   information, I_c = (median |d log M_c/d log f| / σ_c)² / Σ I (the default criterion): where
+//!   E′ is flat (a plateau),
 //!   its residuals say nothing about the shift and only add noise, so E″ carries it. Only on the
 //!   rubbery side of the transition (median log E′ below the middle of its range over the
 //!   isotherms): below T_g, E″ holds secondary relaxations that do not superpose (on the shipped
 //!   EMS-CA set, E″ carrying the glassy isotherms collapsed their shifts to within 0.6 decade over
-//!   55 K), so there E′ alone carries the shift, as with the default criterion.
+//!   55 K), so there E′ alone carries the shift, as with the `storage` criterion.
 
 use super::clean::Clean;
 use super::settings::{MasterSettings, ShiftCriterion, ShiftSource, VerticalShift};

@@ -69,6 +69,7 @@ pub fn master_curve_from_reduced(
             kk_median_log10_ratio: None,
             flags: Vec::new(),
             shift_channel: None,
+            shift_determined: true,
         }],
         points,
         wlf: None,
@@ -87,6 +88,7 @@ pub fn master_curve_from_reduced(
             point_temperature_correction_max_log10: 0.0,
             point_temperature_passes: 0,
             flags: Vec::new(),
+            shift_not_determined_c: Vec::new(),
         },
         settings,
         warnings: vec![format!(

@@ -58,11 +58,12 @@ pub struct IsothermShift {
     pub points_used: usize,
     /// Points left out (non-finite or non-positive f, E′ or E″; repeated frequencies merged).
     pub points_dropped: usize,
-    /// RMS mismatch of its overlaps, log10 units (`None`: overlaps nothing).
+    /// RMS mismatch of log10 E′ in its overlaps with its nearest neighbours at the final shifts and
+    /// vertical factors, log10 units, whatever the criterion (`None`: overlaps nothing;
+    /// docs/MATH.md §6.5).
     pub overlap_rms_log10: Option<f64>,
-    /// RMS mismatch of log10 E″ alone in its overlaps at the final shifts (log10 units): with the
-    /// default E′ criterion, whether E″ superposes with the shifts found from E′ (a direct test of
-    /// thermorheological simplicity).
+    /// The same for log10 E″: whether E″ superposes at these shifts (a direct test of
+    /// thermorheological simplicity where E′ carried the shift).
     #[serde(default)]
     pub loss_overlap_rms_log10: Option<f64>,
     /// van Gurp–Palmen RMS against its neighbours, degrees.
@@ -74,6 +75,14 @@ pub struct IsothermShift {
     /// The channel that carried the shift (`E′` or `E″`), with the slope-weighted criterion.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shift_channel: Option<String>,
+    /// Whether the overlaps with its neighbours determine its shift (docs/MATH.md §6.6); if not, the
+    /// shift is still where the overlaps put it, flagged (see `MasterCurve::warnings`).
+    #[serde(default = "yes")]
+    pub shift_determined: bool,
+}
+
+fn yes() -> bool {
+    true
 }
 
 /// Summary of the quality figures.
@@ -107,6 +116,10 @@ pub struct MasterQuality {
     pub point_temperature_passes: usize,
     /// Every flag, prefixed with its isotherm's temperature.
     pub flags: Vec<String>,
+    /// Temperatures (°C) of the isotherms whose shift the overlaps do not determine (flagged, not
+    /// moved, docs/MATH.md §6.6): later stages mark results that rest on them.
+    #[serde(default)]
+    pub shift_not_determined_c: Vec<f64>,
 }
 
 /// A master curve with its shift law and quality figures.
@@ -258,6 +271,17 @@ fn build_once(
             settings.pair_reach,
             settings.min_overlap_points,
         );
+    }
+    let undetermined: Vec<String> = (0..n)
+        .filter(|&i| !h.determined[i])
+        .map(|i| format!("{:.1}", temps[i]))
+        .collect();
+    if !undetermined.is_empty() {
+        warnings.push(format!(
+            "shift not determined by overlap at {} °C (neighbouring isotherms too far apart, or a \
+             flat modulus): left where the overlaps put them; check these isotherms",
+            undetermined.join(", ")
+        ));
     }
     let laws = fit_and_choose(
         &temps,
@@ -473,6 +497,66 @@ mod roundtrip_tests {
             mc.quality.overlap_rms_max_log10 < 5e-3,
             "{}",
             mc.quality.overlap_rms_max_log10
+        );
+    }
+
+    #[test]
+    fn mis_shifted_and_inconsistent_isotherms_are_flagged() {
+        // (a) The true shifts with the 20 °C isotherm moved 0.4 decade: its E′ overlap with its
+        // neighbours is off by about |d log E′/d log f|·0.4 (the true law gives < 5e-3), so it and
+        // nothing far from it is flagged against the 0.05 bound.
+        let m = synthetic_measurement(&broad_spectrum(), &SyntheticSettings::new(temps(), truth()));
+        let table = ShiftLaw::Table {
+            t_ref_c: 20.0,
+            points: temps()
+                .iter()
+                .map(|&t| (t, truth().log10_a_t(t) + if t == 20.0 { 0.4 } else { 0.0 }))
+                .collect(),
+        };
+        let st = MasterSettings {
+            tref_c: Some(0.0),
+            shift: ShiftSource::Given { law: table },
+            ..Default::default()
+        };
+        let mc = build_master_curve(&m, &st).unwrap();
+        let bound = mc.quality.bounds.overlap_rms_max_log10;
+        for iso in &mc.isotherms {
+            let o = iso.overlap_rms_log10.unwrap();
+            let flagged = iso.flags.iter().any(|f| f.starts_with("overlap RMS"));
+            if (iso.temp_c - 20.0).abs() < 1.0 {
+                assert!(o > bound && flagged, "{}: {o} {:?}", iso.temp_c, iso.flags);
+            }
+            if (iso.temp_c - 20.0).abs() > 15.0 {
+                assert!(o < 5e-3 && !flagged, "{}: {o} {:?}", iso.temp_c, iso.flags);
+            }
+        }
+        // (b) Inconsistent data, shifted automatically: E′ of the 20 °C isotherm raised by 30 %
+        // (0.11 decade), E″ left alone. No horizontal shift superposes both moduli, so whichever
+        // carries the shift, the other's overlap at that isotherm exceeds the bound and is flagged
+        // (measured: E′ 0.015, E″ 0.083 with the default criterion).
+        let mut m = m;
+        for iso in &mut m.isotherms {
+            if (iso.temp_mean_c - 20.0).abs() < 1.0 {
+                for p in &mut iso.points {
+                    p.storage_pa *= 1.3;
+                }
+            }
+        }
+        let mc = build_master_curve(&m, &MasterSettings::default()).unwrap();
+        let iso = mc
+            .isotherms
+            .iter()
+            .find(|i| (i.temp_c - 20.0).abs() < 1.0)
+            .unwrap();
+        let (e1, e2) = (
+            iso.overlap_rms_log10.unwrap(),
+            iso.loss_overlap_rms_log10.unwrap(),
+        );
+        assert!(e1.max(e2) > bound, "{e1} {e2}");
+        assert!(
+            iso.flags.iter().any(|f| f.contains("overlap RMS")),
+            "{e1} {e2} {:?}",
+            iso.flags
         );
     }
 

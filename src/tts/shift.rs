@@ -67,6 +67,23 @@ impl Prepared {
         s[s.len() / 2]
     }
 
+    /// Slope of the least-squares line through channel `c` against x (0 for one point).
+    fn line_slope(&self, c: usize) -> f64 {
+        let y = &self.channels[c].0;
+        let n = self.x.len() as f64;
+        let (mx, my) = (self.x.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
+        let (mut sxy, mut sxx) = (0.0, 0.0);
+        for (x, y) in self.x.iter().zip(y) {
+            sxy += (x - mx) * (y - my);
+            sxx += (x - mx) * (x - mx);
+        }
+        if sxx > 0.0 {
+            sxy / sxx
+        } else {
+            0.0
+        }
+    }
+
     fn x_min(&self) -> f64 {
         self.x[0]
     }
@@ -153,6 +170,47 @@ fn pair_cost(a: &Prepared, b: &Prepared, d: f64, min_points: usize) -> Option<(f
         }
     }
     Some((sum / (ops.len() * nch) as f64, ops.len()))
+}
+
+/// Whether the overlap of a pair at d = s_b − s_a determines d (docs/MATH.md §6.6): at least
+/// `2·min_points` points overlap (an isotherm pushed against the end of the scan, where the data do
+/// not overlap, keeps only about `min_points`), and the shift's standard error from the pair alone,
+/// σ_d = √(s² / Σ g²) with s² = Σ r²/(m − 1) over its m weighted residuals and g each residual's
+/// sensitivity to d taken from the least-squares line of the other isotherm's channel (not its
+/// spline, whose slope on flat noisy data is the noise's), is at most `max_std` decades: a flat
+/// channel (E′ below T_g) leaves Σ g² ≈ 0.
+pub(crate) fn pair_determined(
+    a: &Prepared,
+    b: &Prepared,
+    d: f64,
+    min_points: usize,
+    max_std: f64,
+) -> bool {
+    let ops = overlap_points(a, b, d);
+    if ops.len() < 2 * min_points {
+        return false;
+    }
+    let nch = a.channels.len();
+    let (sa, sb): (Vec<f64>, Vec<f64>) =
+        (0..nch).map(|c| (a.line_slope(c), b.line_slope(c))).unzip();
+    let (mut rr, mut gg, mut m) = (0.0, 0.0, 0usize);
+    for &op in &ops {
+        for c in 0..nch {
+            let (r, _) = residual(a, b, d, op, c);
+            let w = if a.weights.is_empty() || b.weights.is_empty() {
+                1.0
+            } else {
+                (a.weights[c] * b.weights[c]).sqrt()
+            };
+            // A point of a is compared with b's curve, and vice versa.
+            let g = w * if op.from_a { sb[c] } else { sa[c] };
+            rr += r * r;
+            gg += g * g;
+            m += 1;
+        }
+    }
+    let std = (rr / (m.saturating_sub(1).max(1)) as f64 / gg).sqrt();
+    std <= max_std
 }
 
 /// Result of the pairwise search for one neighbour pair.
@@ -246,8 +304,6 @@ pub(crate) struct GlobalShifts {
     pub shifts: Vec<f64>,
     /// Standard error of each shift (0 for the reference).
     pub std_err: Vec<f64>,
-    /// RMS mismatch of each isotherm's overlaps (log10 units), `None` if it overlaps nothing.
-    pub overlap_rms: Vec<Option<f64>>,
     /// Outer iterations used.
     pub iterations: usize,
 }
@@ -370,11 +426,9 @@ pub(crate) fn refine_global(
             }
         }
     }
-    let overlap_rms = overlap_rms(iso, &s, reach, min_points);
     GlobalShifts {
         shifts: s,
         std_err,
-        overlap_rms,
         iterations,
     }
 }
