@@ -633,7 +633,11 @@ impl Problem {
                 if best == Some(0) {
                     // The minimum at the grid's lower end is no minimum: the search goes on down,
                     // a grid step at a time, while the score falls (module docs, "λ").
-                    let step = if count > 1 { (l1 - l0) / (count - 1) as f64 } else { 1.0 };
+                    let step = if count > 1 {
+                        (l1 - l0) / (count - 1) as f64
+                    } else {
+                        1.0
+                    };
                     let step = step.max(0.5);
                     for _ in 0..GCV_EXTEND_MAX {
                         let lambda = cands[0].lambda * 10f64.powf(-step);
