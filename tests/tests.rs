@@ -25,6 +25,7 @@ mod fit_cli;
 mod fit_exports;
 mod fit_search_gaps;
 mod fits_outside;
+mod fluid_rolling;
 mod fuzz_inputs;
 mod golden_outputs;
 mod hostile;
