@@ -30,6 +30,7 @@ mod fuzz_inputs;
 mod golden_outputs;
 mod hostile;
 mod ingest_cli;
+mod json_schemas;
 mod known_truth;
 mod layer_degree;
 mod layer_props;

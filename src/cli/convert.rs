@@ -157,7 +157,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             },
             "info": info,
         });
-        outln!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", super::output::versioned(obj));
     } else {
         if args.output.is_none() {
             outln!("{}", serde_json::to_string_pretty(&creep_json)?);
