@@ -108,7 +108,7 @@ fn convert_gives_the_flow_term_and_roll_refuses_a_fluid_with_the_reason() {
         assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
         let e = stderr(&o);
         assert!(
-            e.contains("no steady rolling state") && e.contains("ln(1/ε)"),
+            e.contains("no steady state") && e.contains("ln(1/ε)"),
             "{}: {e}",
             input.display()
         );
