@@ -480,11 +480,6 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
     all
 }
 
-/// The fraction of the claimed points of `pts` covered (the main job's promise).
-fn claimed_total(pts: &[Point]) -> f64 {
-    let (h, n) = coverage_of(pts.iter().filter(|p| p.claimed));
-    h as f64 / n as f64
-}
 
 /// Medians of the relative half-width (p95 − p05)/(2F) and of the log half-width ln(p95/p05)/2.
 fn median_widths(pts: &[&Point]) -> (f64, f64) {
