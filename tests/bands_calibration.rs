@@ -480,7 +480,6 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
     all
 }
 
-
 /// Medians of the relative half-width (p95 − p05)/(2F) and of the log half-width ln(p95/p05)/2.
 fn median_widths(pts: &[&Point]) -> (f64, f64) {
     let median = |v: Vec<f64>| {

@@ -154,8 +154,9 @@ fn run_and_roll_give_bands_and_no_bands_moves_nothing_else() {
     ] {
         let got = v[key].as_f64().unwrap() / v["friction"].as_f64().unwrap();
         assert!((got / rel(covered, i) - 1.0).abs() < 1e-12, "{key}: {v}");
+        // p50 is the friction itself on either body (eq. 15.5); the ends are the cover's own
         assert!(
-            (got / rel(half_space, i) - 1.0).abs() > 1e-6,
+            key == "friction_p50" || (got / rel(half_space, i) - 1.0).abs() > 1e-6,
             "{key}: the half-space's band"
         );
     }
