@@ -285,6 +285,11 @@ def test_maps_are_the_run_maps(runs, scene):
     for a, b in [("T", "temp_c"), ("speed_m_s", "speed_m_s"), ("load_n_per_m", "load_n_per_m"),
                  ("friction", "friction")]:
         assert listed[a].tolist() == e[b].tolist(), a
+    scn = next(s for s in vr.shipped_scenes() if s["name"] == scene)
+    sp = listed[listed["sweep"] == "speed"]
+    assert (sp["load_n_per_m"] == scn["load_n_per_m"]).all() and len(sp) == len(scn["map_speeds_m_s"]) * len(scn["map_temps_c"])
+    ld = listed[listed["sweep"] == "load"]
+    assert (ld["speed_m_s"] == scn["speed_m_s"]).all()
     e2 = read_cli_csv(out_cli / "reports" / "ems-ca" / "friction_map_2d.csv")
     e2 = e2[e2["scene"] == scene].reset_index(drop=True)
     grid = m[m["kind"] == "grid"].reset_index(drop=True)
@@ -301,3 +306,15 @@ def test_run_of_an_empty_folder_raises(scratch):
     empty.mkdir()
     with pytest.raises(vr.RunError):
         vr.run(empty, scratch / "empty-out")
+
+
+def test_the_notebook_example_runs(tmp_path, monkeypatch):
+    """examples/python_notebook.py, the README's main example from Python, runs to its end."""
+    import runpy
+    import tempfile
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))  # its output folder goes here
+    ns = runpy.run_path(str(REPO / "examples" / "python_notebook.py"), run_name="__main__")
+    assert set(ns["friction"]["compound"]) == {"ems-ca", "dmasuite-tensile", "trios-aresg2-lims"}
+    assert (ns["OUT"] / "reports" / "ranking.csv").exists()
+    assert len(ns["speeds"]) == len(ns["scene"]["map_speeds_m_s"]) * len(ns["scene"]["map_temps_c"])

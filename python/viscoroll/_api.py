@@ -627,7 +627,8 @@ def maps(fit_: Fit, scene) -> pd.DataFrame:
     One row per map point: ``scene``, ``T``, ``speed_m_s``, ``load_n_per_m``, ``friction``,
     ``contact_length_mm`` and ``kind``: ``listed`` (the scene's speeds and loads: friction_map.csv),
     ``grid`` (the speed x load grid: friction_map_2d.csv) or ``curve`` (the dense curves the plots
-    draw). ``.attrs``: ``error_estimate``, ``tol``, ``solves``. Errors raise :class:`MapsError`."""
+    draw); ``sweep`` of a listed point: ``speed`` (at the scene's load) or ``load`` (at its speed).
+    ``.attrs``: ``error_estimate``, ``tol``, ``solves``. Errors raise :class:`MapsError`."""
     spec = _scene(scene)
     m = json.loads(_core.maps(fit_._text, json.dumps(spec)))
     _warn(m.get("warnings", []), f"{fit_.compound}, {spec['name']}: ")
@@ -647,6 +648,12 @@ def maps(fit_: Fit, scene) -> pd.DataFrame:
                 }
             )
         )
+    # the listed points come per map temperature as the speeds (at the scene's load), then the
+    # loads (at its speed): crate::pipeline::scenes::map_jobs
+    ns, nl = len(spec.get("map_speeds_m_s", [])), len(spec.get("map_loads_n_per_m", []))
+    listed = frames[0]
+    if len(listed) == len(spec.get("map_temps_c", [])) * (ns + nl):
+        listed["sweep"] = (["speed"] * ns + ["load"] * nl) * len(spec["map_temps_c"])
     df = pd.concat(frames, ignore_index=True).astype({"friction": float, "contact_length_mm": float})
     df.attrs.update({k: m.get(k) for k in ("error_estimate", "tol", "solves")})
     return df
