@@ -36,9 +36,11 @@
 //! seeds 101–110, whole range or truncated at −20 °C / +40 °C, written as plain CSV, TRIOS text or
 //! Proteus ASCII; each point's band with the fit's own choices drawn (eqs. 15.10–15.12) and, beside
 //! it, the data's scatter alone: `VISCOROLL_HELD_OUT_SEEDS=10 cargo test --release --test tests
-//! bands_calibration_held_out_ten_seeds -- --ignored --nocapture`. Its one-seed-each subset is
-//! ignored too for now: 3 of its 8 cases refuse the model-error ensemble (see
-//! `BandSettings::model_error`).
+//! bands_calibration_held_out_ten_seeds -- --ignored --nocapture` (use the test profile, without
+//! `--release`, on a shared machine; a refused band counts as a miss and is counted apart). Its
+//! one-seed-each subset (`bands_cover_the_true_friction_held_out_one_seed_each`) is ignored for
+//! its run time; CI checks that every refit of those 8 cases converges, with and without the
+//! fit's own choices (`held_out_refits_all_converge`, about 10 s).
 
 use std::path::PathBuf;
 use viscoroll::bands::{band_of, build_ensemble, scene_bands_on, BandSettings};
@@ -214,7 +216,14 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                 }
                 None => roll(&scene, &true_at_t, &settings).unwrap().friction,
             };
-            let b = band_of(p.friction, r).expect("a band at every point");
+            // A refused band (more than a quarter of the replicates' solves failed, or the
+            // friction itself) is a point not covered: p05 = p95 = NaN, counted in the tables.
+            let refused = viscoroll::results::FrictionBand {
+                p05: f64::NAN,
+                p50: f64::NAN,
+                p95: f64::NAN,
+            };
+            let b = band_of(p.friction, r).unwrap_or(refused);
             out.push(Point {
                 compound: compound.name.clone(),
                 scene: spec.name.clone(),
@@ -227,7 +236,7 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                 window_decades: bands.window[i].as_ref().map(|w| w.excess.decades),
                 extrapolated: bands.tail_ln[i].is_some(),
                 before: bands_before.as_ref().map(|b| {
-                    let b = band_of(p.friction, &b.ratios[i]).expect("a band at every point");
+                    let b = band_of(p.friction, &b.ratios[i]).unwrap_or(refused);
                     (b.p05, b.p95)
                 }),
             });
@@ -322,14 +331,17 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
             })
             .collect();
         let (bw, _) = median_widths(&before.iter().collect::<Vec<_>>());
+        let refused = |f: &dyn Fn(&Point) -> f64| of.iter().filter(|p| f(p).is_nan()).count();
         println!(
-            "| {name} | {} | {:.2} % | {lw:.4} | {} / {} | {} | {:.2} % |",
+            "| {name} | {} | {:.2} % | {lw:.4} | {} / {} | {} | {:.2} % | refused {} / before {} |",
             pct(coverage_of(of.iter().copied())),
             100.0 * w,
             of.iter().filter(|p| p.truth > p.p95).count(),
             of.iter().filter(|p| p.truth < p.p05).count(),
             pct(coverage_of(before.iter())),
-            100.0 * bw
+            100.0 * bw,
+            refused(&|p| p.p05),
+            refused(&|p| p.before.map_or(0.0, |b| b.0))
         );
     };
     for c in &compounds {
@@ -429,7 +441,9 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
 
 /// Medians of the relative half-width (p95 − p05)/(2F) and of the log half-width ln(p95/p05)/2.
 fn median_widths(pts: &[&Point]) -> (f64, f64) {
-    let median = |mut v: Vec<f64>| {
+    let median = |v: Vec<f64>| {
+        // Refused bands (NaN) left out of the widths; they count as misses in the coverage.
+        let mut v: Vec<f64> = v.into_iter().filter(|x| x.is_finite()).collect();
         v.sort_by(f64::total_cmp);
         v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
     };
@@ -652,8 +666,18 @@ fn bands_calibration_held_out_ten_seeds() {
 /// 85–95 % widened by about 1.5 of those, which a band at 90 % fails by chance in well under 5 %
 /// of draws, while a band that is 2× too narrow (coverage ≈ 60 %) or 2× too wide (≈ 100 %) fails.
 #[test]
-#[ignore = "fails: 3 of 8 held-out compounds refuse the model-error ensemble (more than a quarter of the refits fail in clarabel); see BandSettings::model_error"]
+#[ignore = "several minutes in the test profile (8 cases, two ensembles each, every scene's contact solves); the refits' convergence is checked in CI by held_out_refits_all_converge"]
 fn bands_cover_the_true_friction_held_out_one_seed_each() {
+    let t = total(&calibrate_cases(one_seed_each()));
+    assert!(
+        (COVERAGE.0..=COVERAGE.1).contains(&t),
+        "coverage {t:.3} outside {COVERAGE:?}"
+    );
+}
+
+/// One measured case of each held-out compound (seeds 201–208: every protocol and every format
+/// appear).
+fn one_seed_each() -> Vec<(u64, Case)> {
     let cases: Vec<(u64, Case)> = held_out_cases(&[201, 202, 203, 204, 205, 206, 207, 208])
         .into_iter()
         .enumerate()
@@ -661,9 +685,66 @@ fn bands_cover_the_true_friction_held_out_one_seed_each() {
         .map(|(_, c)| c)
         .collect();
     assert_eq!(cases.len(), 8);
-    let t = total(&calibrate_cases(cases));
-    assert!(
-        (COVERAGE.0..=COVERAGE.1).contains(&t),
-        "coverage {t:.3} outside {COVERAGE:?}"
-    );
+    cases
+}
+
+/// Every bootstrap refit of the one-seed-each held-out cases converges, with and without the fit's
+/// own choices (eqs. 15.10–15.12): 0 of 32 failed in each of the 16 ensembles. Three of these
+/// cases (long-plateau, high-tg, steep-glass-side) have master curves whose E′-alone shifts miss
+/// the truth by 1.9–6.4 decades, so their fits miss the data by 0.65–2.5 decades rms in log E″
+/// and choose λ = 1e-9; before the Prony QP's column scaling (crate::prony::fit, "Numerics")
+/// 13–30 of their 32 refits failed (InsufficientProgress / NumericalError) and the band was
+/// refused. About 10 s (no contact solves).
+#[test]
+fn held_out_refits_all_converge() {
+    use rayon::prelude::*;
+    let failures: Vec<String> = one_seed_each()
+        .par_iter()
+        .flat_map(|(seed, case)| {
+            let dir = std::env::temp_dir().join(format!(
+                "viscoroll-refits-{}-{}-{seed}",
+                std::process::id(),
+                case.compound.name
+            ));
+            let _ = std::fs::remove_dir_all(&dir);
+            std::fs::create_dir_all(&dir).unwrap();
+            let path = dir.join(format!(
+                "{}.{}",
+                case.compound.name,
+                case.format.extension()
+            ));
+            std::fs::write(
+                &path,
+                case.format.write(&dma_rows(&case.compound, &case.protocol)),
+            )
+            .unwrap();
+            let m = read_files(&[path], &IngestOptions::default()).unwrap();
+            let (fit, master) =
+                fit_measurement_master(&case.compound.name, &m, &FitOptions::default()).unwrap();
+            let mut bad = Vec::new();
+            for model_error in [false, true] {
+                let bs = BandSettings {
+                    model_error,
+                    ..BandSettings::default()
+                };
+                match build_ensemble(&master, &m, &fit, &bs) {
+                    Ok(e) if e.replicates.len() == bs.replicates && e.notes.is_empty() => {}
+                    Ok(e) => bad.push(format!(
+                        "{} (model error {model_error}): {} of {} refits, {:?}",
+                        case.compound.name,
+                        e.replicates.len(),
+                        bs.replicates,
+                        e.notes
+                    )),
+                    Err(e) => bad.push(format!(
+                        "{} (model error {model_error}): {e}",
+                        case.compound.name
+                    )),
+                }
+            }
+            let _ = std::fs::remove_dir_all(&dir);
+            bad
+        })
+        .collect();
+    assert!(failures.is_empty(), "{failures:#?}");
 }

@@ -256,22 +256,7 @@ fn replicate(
         ..prony.clone()
     };
     let (kind, poisson) = (fit.relaxation.kind, fit.relaxation.poisson);
-    // Where the QP at the drawn λ and grid does not converge (the solver's limit at small λ, met
-    // on held-out compounds whose fit chose the grid's smallest λ), the replicate is refitted on
-    // the fit's own grid at ten times the larger of the drawn and the fit's λ (better conditioned).
-    let refit = fit_prony(&points, kind, poisson, &drawn).or_else(|_| {
-        let lambda = 10.0
-            * fit.prony_info.lambda.max(match drawn.weight_rule {
-                WeightRule::Fixed { lambda } => lambda,
-                _ => 0.0,
-            });
-        let again = PronySettings {
-            weight_rule: WeightRule::Fixed { lambda },
-            ..prony.clone()
-        };
-        fit_prony(&points, kind, poisson, &again)
-    });
-    let refit = refit.map_err(|e| e.to_string())?;
+    let refit = fit_prony(&points, kind, poisson, &drawn).map_err(|e| e.to_string())?;
     let (creep, _) =
         crate::creep::relaxation_to_creep(&refit.spectrum).map_err(|e| e.to_string())?;
     Ok(BandReplicate {

@@ -30,6 +30,14 @@
 //!   handed to clarabel is, with residual variables u (n+1 of them) and v (n−2):
 //!   minimise ½‖u‖² + ½‖v‖² s.t. R x − u = Qᵀb, √(λ‖A‖²_F/‖L‖²_F) L x − v = 0, x ≥ 0. Its KKT system has the
 //!   condition of A, not of AᵀA, which the noise-free round trip to 1e-6 needs.
+//! * Column scaling: the QP's unknowns are y_j = ‖A_j‖·x_j (A_j column j of A, ‖A_j‖ = ‖R_j‖), so
+//!   every column of R D and of L D (D = diag(1/‖A_j‖)) has the same scale; x = D y. Same problem
+//!   (D > 0 keeps x ≥ 0 ⇔ y ≥ 0), but without it the columns' norms span up to ~1e5 (a term at the
+//!   glassy end against one where a low E″ divides the residual), beyond what the solver's own
+//!   equilibration evens out: at λ ≤ 1e-8 on master curves that miss their data by decades (a
+//!   shift criterion that failed on a flat E′), 13–30 of 32 bootstrap refits ended
+//!   InsufficientProgress or NumericalError; with it none did (tests/bands_calibration.rs
+//!   `held_out_refits_all_converge`).
 //! * λ: the rule in [`WeightRule`], over a log-spaced grid; each solve is a few dozen variables.
 //! * Terms whose largest relative contribution to any datum is below `drop_threshold` are dropped.
 //! * Size: A has 2m rows, so a master curve of m = 1e6 points would take gigabytes. Above
@@ -402,6 +410,8 @@ struct Problem {
     l: DMatrix<f64>,
     /// Largest |entry| of each column of A (the most a unit of x_j can move any datum, relatively).
     col_max: Vec<f64>,
+    /// 1/‖A_j‖ of each column (the QP's column scaling D, module docs; 1 for a zero column).
+    col_scale: Vec<f64>,
 }
 
 impl Problem {
@@ -436,6 +446,16 @@ impl Problem {
             l[(i, i + 3)] = 1.0;
         }
         let lambda_unit = a.norm_squared() / l.norm_squared().max(f64::MIN_POSITIVE);
+        let col_scale = (0..=n)
+            .map(|j| {
+                let norm = a.column(j).norm();
+                if norm > 0.0 && norm.is_finite() {
+                    1.0 / norm
+                } else {
+                    1.0
+                }
+            })
+            .collect();
         Self {
             a,
             r,
@@ -444,6 +464,7 @@ impl Problem {
             lambda_unit,
             l,
             col_max,
+            col_scale,
         }
     }
 
@@ -456,7 +477,8 @@ impl Problem {
         (rn, sn)
     }
 
-    /// Solve the QP at weight λ (module docs): variables z = [x (n+1); u (n+1); v (n−2)].
+    /// Solve the QP at weight λ (module docs): variables z = [y (n+1); u (n+1); v (n−2)], y the
+    /// column-scaled unknowns (x = D y).
     fn solve(&self, lambda: f64, max_iter: u32) -> Result<Solution, PronyError> {
         let nx = self.r.ncols();
         let nu = self.r.nrows();
@@ -466,11 +488,12 @@ impl Problem {
         let pi: Vec<usize> = (nx..nz).collect();
         let p = CscMatrix::new_from_triplets(nz, nz, pi.clone(), pi, vec![1.0; nu + nv]);
         let q = vec![0.0; nz];
-        // Constraint rows: zero cone  [R −I 0; √λL 0 −I] z = [Qᵀb; 0],  non-negative cone  −x + s = 0.
+        // Constraint rows: zero cone  [RD −I 0; √λLD 0 −I] z = [Qᵀb; 0],  non-negative cone  −y + s = 0.
         let (mut ri, mut ci, mut vals) = (Vec::new(), Vec::new(), Vec::new());
+        let d = &self.col_scale;
         for i in 0..nu {
-            for j in i..nx {
-                let v = self.r[(i, j)];
+            for (j, dj) in d.iter().enumerate().take(nx).skip(i) {
+                let v = self.r[(i, j)] * dj;
                 if v != 0.0 {
                     ri.push(i);
                     ci.push(j);
@@ -484,8 +507,8 @@ impl Problem {
         let sl = (lambda * self.lambda_unit).sqrt();
         for i in 0..nv {
             if sl > 0.0 {
-                for j in 0..nx {
-                    let v = self.l[(i, j)];
+                for (j, dj) in d.iter().enumerate().take(nx) {
+                    let v = self.l[(i, j)] * dj;
                     if v != 0.0 {
                         ri.push(nu + i);
                         ci.push(j);
@@ -516,7 +539,11 @@ impl Problem {
             .map_err(|e| PronyError::Solver(format!("{e:?}")))?;
         solver.solve();
         Ok(Solution {
-            x: solver.solution.x[..nx].to_vec(),
+            x: solver.solution.x[..nx]
+                .iter()
+                .zip(d)
+                .map(|(y, d)| y * d)
+                .collect(),
             status: solver.solution.status,
             iterations: solver.solution.iterations,
         })

@@ -112,6 +112,16 @@ pub fn solve_at_lambda(
 ) -> Result<DimensionlessSolution, ContactError> {
     positive("lambda", lambda)?;
     crate::contact::half_space::thesis::check_intervals(n)?;
+    let ratio = lambda / kernel.thickness();
+    if ratio > LAMBDA_OVER_THICKNESS_MAX {
+        return Err(ContactError::OutOfRange {
+            scheme: "bonded-layer (a cover this thin against its contact is a Winkler foundation)",
+            quantity: "contact length / cover thickness",
+            value: ratio,
+            bound: "at most",
+            limit: LAMBDA_OVER_THICKNESS_MAX,
+        });
+    }
     let h = lambda / n as f64;
     let a = kernel.hat_averages(n, h);
     // the thesis' assembly and solve, shared (the system is the same for any kernel K + const)
@@ -248,6 +258,15 @@ pub fn solve_layer_at_load(
     }
 }
 
+/// Largest contact length over cover thickness, λ/h′, at which one solve at λ is made. The kernel
+/// table's linear quadrature has GL_ORDER·T_MAX·x_max/h′ nodes, x_max ≈ 1.5λ for the contact checks
+/// (module doc of [`super::kernel`]), so at this bound a table holds about 4·10⁶ nodes (≈ 100 MB) and costs
+/// ≈ 0.2 s at the starting n. Covers the scenes accept (h ≥ 10⁻⁴ R, `limits::COVER_OVER_RADIUS_MIN`)
+/// under contacts of a ≤ 0.3 R stay below 3·10³; beyond it the thin-cover limits apply (the `auto`
+/// choice takes the Winkler foundation there). Only a bracket search on a wild spectrum (a bootstrap
+/// replicate fitted to a far-off point) reached it: λ/h′ ≈ 10⁵–10⁶, 4 GB per table, before this bound.
+pub const LAMBDA_OVER_THICKNESS_MAX: f64 = 1e4;
+
 /// Largest work (kernel-table operations, [`kernel_work`]) of one solve at given λ that the n-doubling
 /// of [`solve_layer_at_load`] starts: about 0.1 s. Only layers thinner than ~λ/100 reach it before
 /// n = 512 (the correction's quadrature needs panels of width ~h/2 up to k = 27/h over |x| ≤ 1.5λ).
@@ -315,4 +334,28 @@ pub fn contact_checks(
         min_gap = min_gap.min(s(i));
     }
     Ok((min_q / max_q, min_gap / depth.max(f64::MIN_POSITIVE)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::CreepTerm;
+
+    /// A solve at λ/h′ beyond the bound is refused before any kernel table is built (a bracket search
+    /// on a wild bootstrap replicate asked for λ/h′ ≈ 10⁵–10⁶: gigabytes of quadrature nodes), and
+    /// the largest ratio the bound admits is still solved.
+    #[test]
+    fn a_contact_far_longer_than_the_cover_is_refused_not_tabulated() {
+        let terms = [CreepTerm { f: 1.0, b: 1.0 }];
+        let kernel = LayerKernel::new(&terms, 1e-3, 0.5).unwrap();
+        let beyond = 1.01 * LAMBDA_OVER_THICKNESS_MAX * 1e-3;
+        match solve_at_lambda(&kernel, beyond, 8) {
+            Err(ContactError::OutOfRange { value, limit, .. }) => {
+                assert!(value > limit && (value / 1.01e4 - 1.0).abs() < 1e-12)
+            }
+            other => panic!("expected OutOfRange, got {other:?}"),
+        }
+        let within = 0.99 * LAMBDA_OVER_THICKNESS_MAX * 1e-3;
+        assert!(solve_at_lambda(&kernel, within, 8).is_ok());
+    }
 }
