@@ -94,6 +94,11 @@ struct Point {
     /// (p05, p95) of the data's scatter alone (`BandSettings::model_error` off: the bands before
     /// issue 32), when compared.
     before: Option<(f64, f64)>,
+    /// Whether the main job states this band as a claim: the fit is trusted and the point is
+    /// determined (`FrictionPoint::determine`: band within a factor 10, temperature within 10 K
+    /// of the measured ones). Points that are not are printed as "not determined" or "not
+    /// trusted", never ranked.
+    claimed: bool,
 }
 
 /// Mean and standard deviation of the finite ln ratios (as crate::bands::band_of reads them).
@@ -112,15 +117,15 @@ fn log_stats(r: &[f64]) -> (f64, f64) {
 }
 
 /// Coverage of two other readings of the same replicates, for comparison (not asserted): the band
-/// centred on F itself (p50 = F, half-width 1.645 s) and the basic bootstrap (the bias e^m reflected:
-/// p50 = F·e^(−m)).
+/// centred on the replicates (p50 = F·e^m, half-width 1.645 s: eq. 15.5 before issue 32) and the
+/// basic bootstrap (the offset reflected: p50 = F·e^(−m)).
 fn other_readings(p: &Point) -> (bool, bool) {
     let (m, s) = p.stats;
     let z = viscoroll::bands::friction::Z95;
     let inside = |c: f64| {
         p.friction * (c - z * s).exp() <= p.truth && p.truth <= p.friction * (c + z * s).exp()
     };
-    (inside(0.0), inside(-m))
+    (inside(m), inside(-m))
 }
 
 /// One measured compound of a calibration: the compound, the run's protocol (seed, temperatures)
@@ -163,12 +168,9 @@ fn points_of_case(case: &Case) -> Vec<Point> {
     std::fs::create_dir_all(&dir).unwrap();
     let scenes = SceneSet::shipped();
     let settings = pipeline_contact_settings();
-    // The held-out cases compare the ensemble with the fit's own choices (eqs. 15.10–15.12) against
-    // the data's scatter alone; the tuning cases use the default.
-    let bs = BandSettings {
-        model_error: case.compare,
-        ..BandSettings::default()
-    };
+    // Every case uses the main job's default ensemble (with the fit's own choices, eqs.
+    // 15.10–15.12); the held-out cases also build the data's scatter alone, to compare.
+    let bs = BandSettings::default();
     let mut out = Vec::new();
     let path: PathBuf = dir.join(format!("{}.{}", compound.name, case.format.extension()));
     std::fs::write(
@@ -189,6 +191,7 @@ fn points_of_case(case: &Case) -> Vec<Point> {
         .compare
         .then(|| build_ensemble(&master, &m, &fit, &bs_before).unwrap());
     let (true_creep, _) = relaxation_to_creep(&compound.spectrum).unwrap();
+    let trusted = fit.untrusted_reasons().is_empty();
     for base in &scenes.scene {
         let mut spec = base.clone();
         spec.temps_c = TEMPS_C.to_vec();
@@ -224,6 +227,10 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                 p95: f64::NAN,
             };
             let b = band_of(p.friction, r).unwrap_or(refused);
+            let mut judged = p.clone();
+            judged.band = Some(b);
+            judged.determine(fit.measured_range_c());
+            let claimed = trusted && judged.undetermined.is_none();
             out.push(Point {
                 compound: compound.name.clone(),
                 scene: spec.name.clone(),
@@ -239,6 +246,7 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                     let b = band_of(p.friction, &b.ratios[i]).unwrap_or(refused);
                     (b.p05, b.p95)
                 }),
+                claimed,
             });
         }
     }
@@ -430,14 +438,48 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
     let centred = all.iter().filter(|(_, p)| other_readings(p).0).count();
     let basic = all.iter().filter(|(_, p)| other_readings(p).1).count();
     println!(
-        "other readings of the same replicates: centred on F {:.1} %, basic bootstrap {:.1} %",
+        "other readings of the same replicates: centred on the replicates {:.1} %, basic bootstrap {:.1} %",
         100.0 * centred as f64 / n,
         100.0 * basic as f64 / n
     );
+    println!(
+        "\nThe claims (trusted fit, determined point; what the main job prints as a band):\n\
+         | compound | claimed | covered | median half-width | not claimed | not claimed, missed |"
+    );
+    println!("| --- | --- | --- | --- | --- | --- |");
+    let claim_row = |name: &str, of: Vec<&Point>| {
+        let claimed: Vec<&Point> = of.iter().copied().filter(|p| p.claimed).collect();
+        let (w, _) = median_widths(&claimed);
+        let open: Vec<&Point> = of.iter().copied().filter(|p| !p.claimed).collect();
+        println!(
+            "| {name} | {}/{} | {} | {:.2} % | {} | {} |",
+            claimed.len(),
+            of.len(),
+            pct(coverage_of(claimed.iter().copied())),
+            100.0 * w,
+            open.len(),
+            open.iter().filter(|p| !covered(p)).count()
+        );
+    };
+    for c in &compounds {
+        claim_row(
+            c,
+            all.iter()
+                .map(|(_, p)| p)
+                .filter(|p| &p.compound == c)
+                .collect(),
+        );
+    }
+    claim_row("all", all.iter().map(|(_, p)| p).collect());
     let all: Vec<Point> = all.into_iter().map(|(_, p)| p).collect();
     println!("total: {}", pct(coverage_of(all.iter())));
+    println!(
+        "claimed: {}",
+        pct(coverage_of(all.iter().filter(|p| p.claimed)))
+    );
     all
 }
+
 
 /// Medians of the relative half-width (p95 − p05)/(2F) and of the log half-width ln(p95/p05)/2.
 fn median_widths(pts: &[&Point]) -> (f64, f64) {
@@ -747,4 +789,30 @@ fn held_out_refits_all_converge() {
         })
         .collect();
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// Writes every held-out case's export of the seeds in `VISCOROLL_HELD_OUT_SEEDS` (default 101–103)
+/// into the folder `VISCOROLL_DUMP_DIR` (one file per case, as the calibration writes it), to look at
+/// a case with the CLI: `VISCOROLL_DUMP_DIR=/tmp/h cargo test --test tests dump_held_out_exports --
+/// --ignored`, then `viscoroll master /tmp/h/seed102-high-tg.csv`.
+#[test]
+#[ignore = "a tool, not a check"]
+fn dump_held_out_exports() {
+    let Ok(dir) = std::env::var("VISCOROLL_DUMP_DIR") else {
+        return;
+    };
+    let n: u64 = std::env::var("VISCOROLL_HELD_OUT_SEEDS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(3);
+    std::fs::create_dir_all(&dir).unwrap();
+    for (seed, case) in held_out_cases(&(101..=100 + n).collect::<Vec<u64>>()) {
+        let name = format!(
+            "seed{seed}-{}.{}",
+            case.compound.name,
+            case.format.extension()
+        );
+        let text = case.format.write(&dma_rows(&case.compound, &case.protocol));
+        std::fs::write(PathBuf::from(&dir).join(name), text).unwrap();
+    }
 }

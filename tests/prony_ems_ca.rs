@@ -112,3 +112,187 @@ fn ems_ca_report_figures() {
         );
     }
 }
+
+/// A master curve in pyvisco's layout (`f, E_stor, E_loss` over `Hz, MPa, MPa`) under data/.
+fn pyvisco_master(file: &str) -> Vec<MasterPoint> {
+    let path = format!("{}/data/pyvisco-ems-ca/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let mut header = || lines.next().unwrap().replace(' ', "");
+    assert_eq!(header(), "f,E_stor,E_loss");
+    assert_eq!(header(), "Hz,MPa,MPa");
+    lines
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|x| x.trim().parse().unwrap()).collect();
+            MasterPoint {
+                reduced_freq_hz: v[0],
+                storage_pa: v[1] * 1e6,
+                loss_pa: v[2] * 1e6,
+            }
+        })
+        .collect()
+}
+
+/// pyvisco's shipped fit (its Prony-term CSV, tools/gen_pyvisco_reference.py) and its RMS log10 of
+/// E′ and E″ on `pts`, computed here from the terms alone: [`log10_errors`] of the spectrum our
+/// reader makes of them (Eᵢ = αᵢE₀, E∞ = E₀(1 − Σαᵢ)). (The same numbers as numpy's evaluation of
+/// pyvisco's own E_freq_norm when the files were made: 0.0493/0.4187, 0.0099/0.3844, 0.0047/0.1881.)
+fn pyvisco_fit(file: &str, pts: &[MasterPoint]) -> (usize, f64, f64) {
+    let path = format!("{}/data/pyvisco-ems-ca/{file}", env!("CARGO_MANIFEST_DIR"));
+    let s =
+        viscoroll::prony::pyvisco_csv::read_pyvisco_terms(file, &std::fs::read(path).unwrap(), 0.5)
+            .unwrap();
+    let e = log10_errors(pts, &s);
+    (s.terms.len(), e.rms_storage, e.rms_loss)
+}
+
+/// Our fit at pyvisco's term count (the reduction to at most `n` terms) with E″ weighted by `w`.
+fn ours(pts: &[MasterPoint], n: usize, w: f64) -> (usize, f64, f64) {
+    let s = PronySettings {
+        loss_weight: w,
+        max_terms: Some(n),
+        reduce_terms: true,
+        ..PronySettings::default()
+    };
+    let f = fit_prony(pts, ModulusKind::Tensile, 0.5, &s).unwrap();
+    let i = &f.info;
+    assert_eq!(i.solver_status, "Solved");
+    (i.n_terms_kept, i.rms_log10_storage, i.rms_log10_loss)
+}
+
+/// Issue 29 item 6: one setting beats pyvisco on both E′ and E″ at pyvisco's term count.
+///
+/// On the shipped master curve (freq_user_master.csv, 206 points) pyvisco 2.1.3 fits 26 terms:
+/// 0.0493/0.4187 by default, 0.0099/0.3844 with its optimiser (α and τ free). `--loss-weight 0.12
+/// --max-terms 26` gives 0.0091/0.3540: better on both than either. On the master curve pyvisco builds
+/// itself from the raw data (210 points; its optimised 32-term fit 0.0047/0.1881, the issue's
+/// "E″ 0.181" is of this order), `--loss-weight 0.08 --max-terms 32` gives 0.0040/0.1554. The
+/// margins (≥ 8 % on each figure) are far above anything the solver's tolerance (1e-8) can move.
+/// The issue's stated pair for pyvisco, E′ 0.014 with E″ 0.181, is not reached on the shipped curve
+/// by anything: there pyvisco's own optimiser and every weight of ours lie on one frontier
+/// (E″ ≈ 0.35 at E′ ≈ 0.01, E″ ≈ 0.28 at E′ ≈ 0.018; the trade table), so that pair was measured on
+/// another curve; on pyvisco's own raw-data master curve `--loss-weight 0.3 --max-terms 32` beats it
+/// (0.0122/0.118).
+#[test]
+fn one_loss_weight_beats_pyvisco_on_both_moduli_at_its_term_count() {
+    let pts = pyvisco_master("freq_user_master.csv");
+    assert_eq!(pts.len(), 206);
+    let (n, _, _) = pyvisco_fit("pyvisco_prony_terms_freq_user_master.csv", &pts);
+    assert_eq!(n, 26);
+    let (k, e1, e2) = ours(&pts, n, 0.12);
+    assert!(k <= n);
+    for file in [
+        "pyvisco_prony_terms_freq_user_master.csv",
+        "pyvisco_prony_terms_freq_user_master_opt.csv",
+    ] {
+        let (_, p1, p2) = pyvisco_fit(file, &pts);
+        assert!(
+            e1 < p1 && e2 < p2,
+            "{file}: ours {e1}/{e2}, pyvisco {p1}/{p2}"
+        );
+    }
+    // Default weights are today's behaviour: E″ far better than pyvisco, E′ worse.
+    let (_, d1, d2) = ours(&pts, n, 1.0);
+    let (_, p1, p2) = pyvisco_fit("pyvisco_prony_terms_freq_user_master_opt.csv", &pts);
+    assert!(
+        d2 < p2 / 4.0 && d1 > p1,
+        "ours {d1}/{d2}, pyvisco {p1}/{p2}"
+    );
+
+    let raw = pyvisco_master("pyvisco_master_freq_user_raw.csv");
+    assert_eq!(raw.len(), 210);
+    let (n, p1, p2) = pyvisco_fit("pyvisco_prony_terms_freq_user_raw_opt.csv", &raw);
+    assert_eq!(n, 32);
+    let (k, e1, e2) = ours(&raw, n, 0.08);
+    assert!(
+        k <= n && e1 < p1 && e2 < p2,
+        "ours {e1}/{e2}, pyvisco {p1}/{p2}"
+    );
+}
+
+/// `fit --loss-weight W --max-terms N` is the library's setting: the fit file records the weight and
+/// the same figures as [`fit_prony`] with it (the flag reaches the QP, nothing else moves).
+#[test]
+fn fit_flag_loss_weight_reaches_the_fit() {
+    let dir = crate::support::temp_dir("loss-weight-flag");
+    let data = |f: &str| format!("{}/data/pyvisco-ems-ca/{f}", env!("CARGO_MANIFEST_DIR"));
+    let out = dir.join("ems.json");
+    let o = crate::support::viscoroll(&[
+        "fit",
+        "--master-curve",
+        &data("freq_user_master.csv"),
+        "--shift-factors",
+        &data("freq_user_master__shift_factors.csv"),
+        "--max-terms",
+        "26",
+        "--loss-weight",
+        "0.12",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", crate::support::stderr(&o));
+    let fit = viscoroll::pipeline::CompoundFit::read(&out).unwrap();
+    let (_, e1, e2) = ours(&pyvisco_master("freq_user_master.csv"), 26, 0.12);
+    let i = &fit.prony_info;
+    assert!((i.rms_log10_storage - e1).abs() < 1e-9 && (i.rms_log10_loss - e2).abs() < 1e-9);
+    assert_eq!(fit.settings.prony.loss_weight, 0.12);
+    let bad = dir.join("bad.json");
+    let o = crate::support::viscoroll(&[
+        "fit",
+        "--master-curve",
+        &data("freq_user_master.csv"),
+        "--shift-factors",
+        &data("freq_user_master__shift_factors.csv"),
+        "--loss-weight",
+        "0",
+        "-o",
+        bad.to_str().unwrap(),
+    ]);
+    let e = crate::support::stderr(&o);
+    assert!(
+        !o.status.success() && e.contains("loss-weight") && !bad.exists(),
+        "{e}"
+    );
+}
+
+/// The E′/E″ trade table of the user guide (run with `--ignored --nocapture`): RMS log10 of E′ and
+/// E″ against `loss_weight`, at pyvisco's term count and for the dense grid fit, on the shipped master
+/// curve and on pyvisco's own master curve from the raw data, beside pyvisco's fits.
+#[test]
+#[ignore]
+fn ems_ca_trade_table() {
+    for (master, terms) in [
+        (
+            "freq_user_master.csv",
+            [
+                "pyvisco_prony_terms_freq_user_master.csv",
+                "pyvisco_prony_terms_freq_user_master_opt.csv",
+            ],
+        ),
+        (
+            "pyvisco_master_freq_user_raw.csv",
+            ["pyvisco_prony_terms_freq_user_raw_opt.csv", ""],
+        ),
+    ] {
+        let pts = pyvisco_master(master);
+        let mut n = 0;
+        for t in terms.iter().filter(|t| !t.is_empty()) {
+            let (k, p1, p2) = pyvisco_fit(t, &pts);
+            n = k;
+            eprintln!("{master}: pyvisco {t}: {k} terms, E' {p1:.4}, E'' {p2:.4}");
+        }
+        eprintln!("| loss_weight | E′ ({n} terms) | E″ ({n} terms) | E′ (dense) | E″ (dense) |");
+        for w in [1.0, 0.5, 0.3, 0.2, 0.15, 0.12, 0.1, 0.08, 0.05] {
+            let (_, e1, e2) = ours(&pts, n, w);
+            let s = PronySettings {
+                loss_weight: w,
+                ..PronySettings::default()
+            };
+            let f = fit_prony(&pts, ModulusKind::Tensile, 0.5, &s).unwrap();
+            eprintln!(
+                "| {w} | {e1:.4} | {e2:.4} | {:.4} | {:.4} |",
+                f.info.rms_log10_storage, f.info.rms_log10_loss
+            );
+        }
+    }
+}

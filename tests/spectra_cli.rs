@@ -62,8 +62,10 @@ fn convert_prints_one_json_object_with_its_checks() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--force"));
 }
 
+/// A fluid converts exactly with its flow term (tests/fluid_rolling.rs); Park & Schapery's method has
+/// no flow term and refuses it in one line.
 #[test]
-fn convert_refuses_a_fluid_in_one_line() {
+fn park_schapery_refuses_a_fluid_in_one_line() {
     let d = temp_dir("spectra-fluid");
     let f = d.join("fluid.json");
     std::fs::write(
@@ -71,7 +73,11 @@ fn convert_refuses_a_fluid_in_one_line() {
         r#"{ "modulus_inf_pa": 0, "terms": [ { "modulus_pa": 1e6, "tau_s": 1 } ] }"#,
     )
     .unwrap();
-    let out = bin().arg("convert").arg(&f).arg("--json").output().unwrap();
+    let out = bin()
+        .args(["convert", "--method", "park-schapery", "--json"])
+        .arg(&f)
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
     // With --json a failure is one JSON object on stdout (issue 15), the message also on stderr.
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");

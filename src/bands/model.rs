@@ -9,7 +9,9 @@
 //!
 //! 1. Shift criterion (eq. 15.10): the master curve is rebuilt with each other criterion of
 //!    E′ alone, the slope-weighted E′/E″ and the joint E′/E″; its shift of isotherm k minus the
-//!    fit's, d_(c,k), is one draw of the criterion's error. A replicate takes one criterion c at
+//!    fit's, d_(c,k), is one draw of the criterion's error (0 where the fit's shift is determined by
+//!    overlap and the alternative's is not: a criterion that cannot see a shift, E′ alone on a
+//!    flat rubbery plateau, has no say on it). A replicate takes one criterion c at
 //!    random and adds w·d_(c,k) to every isotherm's shift (w standard normal, one per replicate).
 //! 2. Shift-table interpolation (eq. 15.11): the law is linear in T between isotherms; its error at
 //!    the middle of an interval of width h is L″h²/8, L″ the second difference of the shifts there.
@@ -88,7 +90,15 @@ pub(super) fn model_choices(master: &MasterCurve, measurement: &Measurement) -> 
                 alt.isotherms
                     .iter()
                     .find(|a| a.measurement_index == i.measurement_index)
-                    .map(|a| a.log10_a_t - i.log10_a_t)
+                    // An alternative that cannot determine a shift the fit's criterion does
+                    // determine has no say there (the E′ criterion on a flat rubbery plateau).
+                    .map(|a| {
+                        if i.shift_determined && !a.shift_determined {
+                            0.0
+                        } else {
+                            a.log10_a_t - i.log10_a_t
+                        }
+                    })
                     .filter(|d| d.is_finite())
             })
             .collect();

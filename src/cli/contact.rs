@@ -430,5 +430,5 @@ fn print_json(mut obj: serde_json::Value, rho: Option<f64>, friction: Option<f64
         obj["rho"] = serde_json::json!(rho);
         obj["friction"] = serde_json::json!(fr);
     }
-    outln!("{obj}");
+    outln!("{}", super::output::versioned(obj));
 }

@@ -4,11 +4,14 @@
 //!
 //! `--json` prints one object: `{ "method", "variant", "input", "output", "creep_spectrum", "checks":
 //! { "max_abs_product_error", "omega_min_rad_s", "omega_max_rad_s", "glassy_product", "relaxed_product",
-//! "negative_terms" }, "info" }`. Without `--json` and without `-o` the creep spectrum JSON goes to
+//! "negative_terms" }, "info" }`. A fluid (E∞ = 0, exact method) converts with its flow term t/η₀
+//! (docs/MATH.md §17): the creep spectrum then carries `viscosity_pa_s` and `relaxed_product` is null. Without `--json` and without `-o` the creep spectrum JSON goes to
 //! stdout; a summary always goes to stderr (unless `--json`).
 
 use crate::creep::exact::max_product_error;
-use crate::creep::{park_schapery, relaxation_to_creep, ParkSchaperySettings, ParkSchaperyVariant};
+use crate::creep::{
+    fluid_to_creep, park_schapery, relaxation_to_creep, ParkSchaperySettings, ParkSchaperyVariant,
+};
 use anyhow::Context;
 use std::path::PathBuf;
 
@@ -62,7 +65,15 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     relax
         .validate()
         .with_context(|| format!("{}", args.spectrum.display()))?;
+    // A fluid (E∞ = 0) converts exactly with its flow term t/η₀ (docs/MATH.md §17).
+    let fluid = relax.modulus_inf_pa == 0.0 && args.method == Method::Exact;
+    let mut viscosity_pa_s = None;
     let (creep, variant, info) = match args.method {
+        Method::Exact if fluid => {
+            let (f, info) = fluid_to_creep(&relax)?;
+            viscosity_pa_s = Some(f.viscosity_pa_s);
+            (f.solid, None, serde_json::to_value(info)?)
+        }
         Method::Exact => {
             let (c, info) = relaxation_to_creep(&relax)?;
             (c, None, serde_json::to_value(info)?)
@@ -93,19 +104,35 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let omegas: Vec<f64> = (0..=n)
         .map(|k| wmin * (wmax / wmin).powf(k as f64 / n as f64))
         .collect();
-    let product = max_product_error(&relax, &creep, &omegas);
+    let product = match viscosity_pa_s {
+        Some(viscosity_pa_s) => crate::creep::FluidCreep {
+            solid: creep.clone(),
+            viscosity_pa_s,
+        }
+        .max_product_error(&relax, &omegas),
+        None => max_product_error(&relax, &creep, &omegas),
+    };
     let glassy = creep.creep_compliance(0.0) * relax.instantaneous_modulus();
-    let relaxed = creep.compliance_relaxed() * relax.modulus_inf_pa;
+    // A fluid has no relaxed compliance: J(t) grows like t/η₀.
+    let relaxed = viscosity_pa_s
+        .is_none()
+        .then(|| creep.compliance_relaxed() * relax.modulus_inf_pa);
     let negative = creep
         .terms
         .iter()
         .filter(|t| t.compliance_per_pa < 0.0)
         .count();
 
+    // The creep spectrum as written: a fluid's carries its flow term as `viscosity_pa_s`, which
+    // `roll` refuses with the reason (crate::pipeline::roll_fit::CreepSource::read).
+    let mut creep_json = serde_json::to_value(&creep)?;
+    if let (Some(eta), Some(obj)) = (viscosity_pa_s, creep_json.as_object_mut()) {
+        obj.insert("viscosity_pa_s".into(), eta.into());
+    }
     if let Some(out) = &args.output {
         super::output::write_atomic(
             out,
-            serde_json::to_string_pretty(&creep)?.as_bytes(),
+            serde_json::to_string_pretty(&creep_json)?.as_bytes(),
             args.force,
         )?;
     }
@@ -119,7 +146,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "variant": variant,
             "input": args.spectrum.display().to_string(),
             "output": args.output.as_ref().map(|p| p.display().to_string()),
-            "creep_spectrum": creep,
+            "creep_spectrum": creep_json,
             "checks": {
                 "max_abs_product_error": product,
                 "omega_min_rad_s": wmin,
@@ -130,15 +157,22 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             },
             "info": info,
         });
-        outln!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", super::output::versioned(obj));
     } else {
         if args.output.is_none() {
-            outln!("{}", serde_json::to_string_pretty(&creep)?);
+            outln!("{}", serde_json::to_string_pretty(&creep_json)?);
         }
         errln!(
-            "viscoroll convert: {method}{}: {} retardation terms; max |E*J* − 1| = {product:.2e} over ω = {wmin:.1e}…{wmax:.1e} rad/s; J(0)·E₀ = {glassy:.15}; J∞·E∞ = {relaxed:.15}{}",
+            "viscoroll convert: {method}{}: {} retardation terms; max |E*J* − 1| = {product:.2e} over ω = {wmin:.1e}…{wmax:.1e} rad/s; J(0)·E₀ = {glassy:.15}; {}{}",
             variant.map(|v| format!(" ({v})")).unwrap_or_default(),
             creep.terms.len(),
+            match (relaxed, viscosity_pa_s) {
+                (Some(r), _) => format!("J∞·E∞ = {r:.15}"),
+                (None, eta) => format!(
+                    "a fluid (E∞ = 0): flow term t/η₀, η₀ = {:.6e} Pa·s",
+                    eta.unwrap_or(f64::NAN)
+                ),
+            },
             if negative > 0 {
                 format!("; WARNING: {negative} negative strengths (non-physical)")
             } else {

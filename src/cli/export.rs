@@ -178,7 +178,7 @@ fn export_pyvisco_terms(args: &Args, spectrum: &RelaxationSpectrum) -> anyhow::R
             "output": out.display().to_string(),
             "terms": spectrum.terms.len(),
         });
-        outln!("{obj}");
+        outln!("{}", super::output::versioned(obj));
     } else {
         errln!(
             "viscoroll export: pyvisco Prony terms ({} terms) → {}",
@@ -252,7 +252,7 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
             "temperatures": shifts.len(),
             "t_ref_c": t_ref,
         });
-        outln!("{obj}");
+        outln!("{}", super::output::versioned(obj));
     } else {
         errln!(
             "viscoroll export: pyvisco master curve ({} points at T_ref = {t_ref} °C) → {}; shift \
@@ -367,7 +367,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "card": card,
             "notes": notes,
         });
-        outln!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", super::output::versioned(obj));
     } else {
         if args.output.is_none() {
             out!("{card}");

@@ -200,7 +200,7 @@ fn print_fit(
             "bands_note": bands_note(args, fit, no_bands),
             "bands_notes": fit.bands.as_ref().map_or(&[][..], |b| &b.notes[..]),
         });
-        outln!("{obj}");
+        outln!("{}", super::output::versioned(obj));
     } else {
         let (storage, loss, _) = fit.relaxation.kind.symbols();
         errln!(

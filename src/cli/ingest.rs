@@ -238,7 +238,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             "warnings": m.warnings,
             "output": args.output.as_ref().map(|p| p.display().to_string()),
         });
-        outln!("{}", serde_json::to_string(&obj)?);
+        outln!("{}", super::output::versioned(obj));
     }
     Ok(())
 }

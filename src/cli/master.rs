@@ -79,8 +79,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     summary(&master);
     if args.json {
+        let value: serde_json::Value = serde_json::from_str(&json)?;
         let mut stdout = std::io::stdout().lock();
-        writeln!(stdout, "{json}")?;
+        writeln!(stdout, "{}", super::output::versioned(value))?;
     }
     Ok(())
 }

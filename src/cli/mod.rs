@@ -177,7 +177,7 @@ fn fail(
         if let Some(d) = detail {
             obj["detail"] = d.clone();
         }
-        outln!("{obj}");
+        outln!("{}", output::versioned(obj));
     }
     code
 }

@@ -1,5 +1,5 @@
 //! Output files of the CLI: [`crate::fsutil::write_atomic`] with the CLI's messages (never replace
-//! an existing file unless asked to).
+//! an existing file unless asked to); and the version stamp of every `--json` output ([`versioned`]).
 
 use std::path::Path;
 
@@ -71,4 +71,17 @@ pub(crate) fn stream_exit_code(code: i32) -> i32 {
         2 => code.max(1),
         _ => code,
     }
+}
+
+/// Version of the layouts of the `--json` outputs, published as JSON Schemas in docs/schemas/ (one per
+/// command, `error.schema.json` for the error object): raised when a field is removed, renamed or
+/// changes meaning; new fields do not raise it.
+pub const JSON_SCHEMA_VERSION: u32 = 1;
+
+/// A `--json` output object with its `schema_version` ([`JSON_SCHEMA_VERSION`]).
+pub(crate) fn versioned(mut value: serde_json::Value) -> serde_json::Value {
+    if let Some(o) = value.as_object_mut() {
+        o.insert("schema_version".into(), JSON_SCHEMA_VERSION.into());
+    }
+    value
 }

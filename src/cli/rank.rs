@@ -106,7 +106,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     }
     if failed.is_empty() && apart.is_empty() {
         if args.json {
-            outln!("{obj}");
+            outln!("{}", super::output::versioned(obj));
         }
         return Ok(());
     }

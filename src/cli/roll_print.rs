@@ -44,7 +44,7 @@ impl Answer<'_> {
     /// on stderr.
     pub fn print(&self) {
         if self.args.json {
-            outln!("{}", self.json());
+            outln!("{}", super::output::versioned(self.json()));
         } else {
             self.text();
         }

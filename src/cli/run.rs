@@ -155,7 +155,7 @@ pub(super) fn finish(summary: &crate::pipeline::RunSummary, json: bool) -> anyho
     let (code, kind, message) = match summary.status() {
         RunStatus::AllGood => {
             if json {
-                outln!("{}", serde_json::to_string(summary)?);
+                outln!("{}", super::output::versioned(serde_json::to_value(summary)?));
             }
             return Ok(());
         }

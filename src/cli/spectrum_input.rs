@@ -57,8 +57,7 @@ pub fn read_spectrum_input(path: &Path) -> anyhow::Result<SpectrumInput> {
 
 /// `roll` takes a creep spectrum or a fit file. A relaxation spectrum given instead is refused with
 /// the step that is missing, and a fluid (E∞ = 0: a relaxation spectrum, or a fit file whose
-/// relaxation has none) with the reason: under a load moving steadily over it a fluid flows without
-/// bound (J(t) ~ t/η₀, docs/MATH.md §4), so the rolling contact has no steady state to solve for.
+/// relaxation has none) with the reason ([`crate::creep::FLUID_NO_STEADY_ROLLING`], docs/MATH.md §17).
 pub fn refuse_fluid_or_relaxation(path: &Path) -> anyhow::Result<()> {
     let Ok(text) = crate::fsutil::read_regular_to_string(path, crate::limits::INPUT_BYTES_MAX)
     else {
@@ -91,10 +90,10 @@ pub fn refuse_fluid_or_relaxation(path: &Path) -> anyhow::Result<()> {
             .unwrap_or(0.0);
         anyhow::bail!(
             "{}: modulus_inf_pa = 0, a fluid (zero-shear viscosity η₀ = Σ Eᵢτᵢ = {eta:.3e} Pa·s, \
-             tensile or shear as the spectrum's kind): a steadily rolling contact on a fluid has no \
-             steady state (the body keeps flowing under the moving load, J(t) ~ t/η₀), so roll \
-             needs a solid with an equilibrium modulus E∞ > 0",
-            path.display()
+             tensile or shear as the spectrum's kind; `viscoroll convert` gives its creep function \
+             with the flow term t/η₀). {}",
+            path.display(),
+            crate::creep::FLUID_NO_STEADY_ROLLING
         );
     }
     if value.get("format_version").is_none() {

@@ -49,6 +49,11 @@ pub struct PronyArgs {
     /// against the data (implied by --max-terms and --target-rms; default: the dense grid fit).
     #[arg(long)]
     pub reduce: bool,
+    /// Weight of the E″ residuals against the E′ residuals in the Prony fit (default 1: both alike;
+    /// below 1 favours E′, e.g. 0.12 with --max-terms 26 beats pyvisco on both E′ and E″ on its
+    /// EMS-CA master curve; see the user guide's trade table).
+    #[arg(long, value_name = "W")]
+    pub loss_weight: Option<f64>,
 }
 
 /// `--vertical` values.
@@ -140,6 +145,11 @@ impl TtsArgs {
                 .transpose()
                 .map_err(err)?;
             t.reduce = p.reduce;
+            t.loss_weight = p
+                .loss_weight
+                .map(tuning::check_loss_weight)
+                .transpose()
+                .map_err(err)?;
         }
         Ok(t)
     }

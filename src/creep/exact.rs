@@ -36,6 +36,7 @@
 //! Degenerate input, handled explicitly:
 //! - E∞ = 0 (a fluid): [`CreepError::Fluid`]. Its creep function has a flow term t/η₀ (eq. 2.11) that a
 //!   [`CreepSpectrum`] (a solid, eq. 2.12) cannot hold; rather than drop or fake it we refuse.
+//!   [`fluid_to_creep`] converts it exactly into a [`FluidCreep`]: the solid part plus η₀ (MATH §17).
 //! - Zero-strength terms are removed (they are no poles); their count is reported.
 //! - Equal or nearly equal times (relative difference ≤ 8 ε) are merged into one term with the summed
 //!   strength (the change of E(t) is below 8 ε relative); the count is reported.
@@ -110,6 +111,104 @@ pub fn relaxation_to_creep(
             poisson: relax.poisson,
             compliance_glassy_per_pa: 1.0 / e0,
             terms,
+        },
+        info,
+    ))
+}
+
+/// A fluid's creep function (docs/MATH.md §17): J(t) = J_g + Σⱼ Jⱼ(1 − e^(−t/τⱼ)) + t/η₀, the solid
+/// part as a [`CreepSpectrum`] and the flow term's viscosity η₀ (of the spectrum's kind).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FluidCreep {
+    /// J_g and the retardation terms (N − 1 of them for N relaxation terms).
+    pub solid: CreepSpectrum,
+    /// Zero-shear viscosity η₀ = Σ Eᵢρᵢ in Pa·s (tensile or shear, as the spectrum's kind).
+    pub viscosity_pa_s: f64,
+}
+
+impl FluidCreep {
+    /// J(t) in 1/Pa at `t_s` ≥ 0, flow term included.
+    pub fn creep_compliance(&self, t_s: f64) -> f64 {
+        self.solid.creep_compliance(t_s) + t_s / self.viscosity_pa_s
+    }
+
+    /// (J′, J″) at ω with J* = J′ − iJ″: the flow term adds 1/(ωη₀) to J″.
+    pub fn complex_compliance(&self, omega_rad_s: f64) -> (f64, f64) {
+        let (j1, j2) = self.solid.complex_compliance(omega_rad_s);
+        (j1, j2 + 1.0 / (omega_rad_s * self.viscosity_pa_s))
+    }
+
+    /// max over `omegas_rad_s` of |E*(ω)·J*(ω) − 1|, flow term included (as [`max_product_error`]).
+    pub fn max_product_error(&self, relax: &RelaxationSpectrum, omegas_rad_s: &[f64]) -> f64 {
+        omegas_rad_s
+            .iter()
+            .map(|&w| {
+                let (e1, e2) = relax.complex_modulus(w);
+                let (j1, j2) = self.complex_compliance(w);
+                (e1 * j1 + e2 * j2 - 1.0).hypot(e2 * j1 - e1 * j2)
+            })
+            .fold(0.0, f64::max)
+    }
+}
+
+/// Exact relaxation → creep conversion of a fluid, E∞ = 0 (docs/MATH.md §17): M(−σ) = −Σ Eᵢσ/(rᵢ − σ)
+/// has the root σ = 0 (the flow term t/η₀, from 1/M(s) ≈ 1/(η₀s) near 0) and one root between each
+/// pair of consecutive relaxation rates (none in (0, r₁), where every term is negative), found and
+/// weighed as in [`relaxation_to_creep`]. A spectrum with E∞ > 0 is refused (use
+/// [`relaxation_to_creep`]).
+pub fn fluid_to_creep(relax: &RelaxationSpectrum) -> Result<(FluidCreep, ExactInfo), CreepError> {
+    relax.validate()?;
+    if relax.modulus_inf_pa != 0.0 {
+        return Err(CreepError::InvalidSetting {
+            setting: "modulus_inf_pa",
+            reason: format!(
+                "{:e} > 0: a solid; its creep spectrum has no flow term",
+                relax.modulus_inf_pa
+            ),
+        });
+    }
+    let mut info = ExactInfo::default();
+    let poles = clean_terms(
+        relax.terms.iter().map(|t| (t.tau_s, t.modulus_pa)),
+        &mut info,
+    );
+    let e0 = poles.iter().map(|p| p.2).sum::<f64>();
+    let viscosity_pa_s: f64 = relax.terms.iter().map(|t| t.modulus_pa * t.tau_s).sum();
+    let series = PoleSeries {
+        c: 0.0,
+        p: poles.iter().map(|p| p.0).collect(),
+        p_lo: poles.iter().map(|p| p.1).collect(),
+        w: poles.iter().map(|p| p.2).collect(),
+        num_is_x: true,
+        positive_above: true,
+    };
+    let mut terms = Vec::with_capacity(poles.len().saturating_sub(1));
+    for k in 1..series.p.len() {
+        match series.root(series.p[k - 1], Some(k - 1), Some(series.p[k]), Some(k)) {
+            Some(root) => {
+                let jj = series.strength(&root);
+                if jj > 0.0 && jj.is_finite() {
+                    terms.push(RetardationTerm {
+                        compliance_per_pa: jj,
+                        tau_s: 1.0 / root.x,
+                    });
+                } else {
+                    info.negligible_terms_dropped += 1;
+                }
+            }
+            None => info.negligible_terms_dropped += 1,
+        }
+    }
+    terms.sort_by(|a, b| b.tau_s.total_cmp(&a.tau_s));
+    Ok((
+        FluidCreep {
+            solid: CreepSpectrum {
+                kind: relax.kind,
+                poisson: relax.poisson,
+                compliance_glassy_per_pa: 1.0 / e0,
+                terms,
+            },
+            viscosity_pa_s,
         },
         info,
     ))
@@ -512,6 +611,66 @@ mod tests {
                 viscosity_pa_s: 6.0
             }
         );
+    }
+
+    /// Maxwell model E(t) = E₁e^(−t/ρ): J(t) = 1/E₁ + t/(E₁ρ) exactly, no retardation term.
+    #[test]
+    fn maxwell_fluid_has_the_textbook_creep_function() {
+        let (f, info) = fluid_to_creep(&relax(0.0, &[(2e6, 1e-3)])).unwrap();
+        assert_eq!(info, ExactInfo::default());
+        assert!(f.solid.terms.is_empty());
+        assert_eq!(f.solid.compliance_glassy_per_pa, 5e-7);
+        assert_eq!(f.viscosity_pa_s, 2e3);
+        assert!((f.creep_compliance(1.0) / (5e-7 + 1.0 / 2e3) - 1.0).abs() < 1e-15);
+        assert!(fluid_to_creep(&relax(1.0, &[(2e6, 1e-3)])).is_err());
+    }
+
+    /// A fluid of several terms against identities that do not use the roots: E*·J* = 1 at every ω
+    /// (flow term included), J_g = 1/ΣEᵢ, and the steady-state compliance
+    /// J_e = J_g + ΣJⱼ = Σ Eᵢρᵢ² / η₀² (the t → ∞ intercept of J(t) − t/η₀, from the Laplace
+    /// expansion 1/M(s) = 1/(η₀s) + Σ Eᵢρᵢ²/η₀² + O(s)).
+    #[test]
+    fn fluid_of_several_terms_satisfies_the_identities() {
+        let terms = [
+            (3e8, 1e-7),
+            (2e7, 1e-4),
+            (5e6, 1e-1),
+            (1e5, 1e2),
+            (1e4, 1e4),
+        ];
+        let r = relax(0.0, &terms);
+        let (f, info) = fluid_to_creep(&r).unwrap();
+        assert_eq!(info, ExactInfo::default());
+        assert_eq!(f.solid.terms.len(), terms.len() - 1);
+        let eta: f64 = terms.iter().map(|t| t.0 * t.1).sum();
+        let je = terms.iter().map(|t| t.0 * t.1 * t.1).sum::<f64>() / (eta * eta);
+        assert!((f.solid.compliance_relaxed() / je - 1.0).abs() < 1e-13);
+        let omegas: Vec<f64> = (-60..=60).map(|k| 10f64.powf(k as f64 * 0.25)).collect();
+        let worst = f.max_product_error(&r, &omegas);
+        // A few hundred ε: sums of 5 terms spanning 11 decades of times.
+        assert!(worst < 1e-13, "{worst:e}");
+    }
+
+    /// The solid path converges to the fluid as E∞ → 0⁺: its longest retardation term runs away
+    /// (τ → ∞) with J/τ → 1/η₀, and the other terms tend to the fluid's.
+    #[test]
+    fn solid_tends_to_the_fluid_as_e_inf_vanishes() {
+        let terms = [(3e8, 1e-7), (2e7, 1e-4), (5e6, 1e-1), (1e5, 1e2)];
+        let (f, _) = fluid_to_creep(&relax(0.0, &terms)).unwrap();
+        for eps in [1e-6, 1e-9] {
+            let (c, _) = relaxation_to_creep(&relax(eps, &terms)).unwrap();
+            let long = c.terms[0];
+            // J₁/τ₁ − 1/η₀ and the other terms move by O(E∞/E(longest ρ)) relative.
+            let tol = 100.0 * eps / 1e5;
+            assert!(
+                (long.compliance_per_pa / long.tau_s * f.viscosity_pa_s - 1.0).abs() < tol,
+                "{eps}"
+            );
+            for (a, b) in c.terms[1..].iter().zip(&f.solid.terms) {
+                assert!((a.tau_s / b.tau_s - 1.0).abs() < tol, "{eps} {a:?} {b:?}");
+                assert!((a.compliance_per_pa / b.compliance_per_pa - 1.0).abs() < tol);
+            }
+        }
     }
 
     #[test]

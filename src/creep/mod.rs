@@ -39,6 +39,15 @@ pub struct CreepSpectrum {
     pub terms: Vec<RetardationTerm>,
 }
 
+/// Why the rolling contact refuses a fluid (E∞ = 0; docs/MATH.md §17), for every message that does.
+pub const FLUID_NO_STEADY_ROLLING: &str =
+    "A fluid has no steady state in rolling on the half-space: its creep rate tends to 1/η₀ instead of \
+     0, so the surface keeps tilting under every load that has passed, whose elastic slope decays only \
+     like 1/distance in plane strain; the memory integral diverges logarithmically (friction at \
+     E∞ = ε grows like ln(1/ε) without a limit). A cover bonded to a rigid carcass or a Winkler \
+     foundation would have a steady state, but they are not solved for fluids; give a solid \
+     (E∞ > 0), e.g. refit with the equilibrium modulus left free (docs/MATH.md §17).";
+
 pub mod error;
 pub mod exact;
 pub mod park_schapery;
@@ -46,7 +55,7 @@ pub mod spectrum;
 
 pub use crate::material::AtTemperature;
 pub use error::CreepError;
-pub use exact::{creep_to_relaxation, relaxation_to_creep, ExactInfo};
+pub use exact::{creep_to_relaxation, fluid_to_creep, relaxation_to_creep, ExactInfo, FluidCreep};
 pub use park_schapery::{
     park_schapery, ParkSchaperyInfo, ParkSchaperySettings, ParkSchaperyVariant,
 };

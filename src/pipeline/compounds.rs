@@ -34,6 +34,7 @@
 //! max_terms = 18                  # at most this many relaxation terms
 //! target_rms = "0.012,0.10"       # the fewest terms that reach these RMS log10 errors
 //! reduce = false                  # the fewest terms no less accurate than the dense fit
+//! loss_weight = 0.12              # weight of E″ against E′ in the Prony fit (default 1)
 //! ```
 //!
 //! Replicate specimens of one compound (issue 31): `specimens` instead of `files`, one entry per
@@ -149,6 +150,8 @@ struct ListedCompound {
     target_rms: Option<String>,
     #[serde(default)]
     reduce: Option<bool>,
+    #[serde(default)]
+    loss_weight: Option<f64>,
 }
 
 /// `columns` of a compound: a table `{ freq = "Frq", … }` or the `ingest --columns` string.
@@ -198,6 +201,11 @@ impl ListedCompound {
                 .transpose()
                 .map_err(|e| format!("target_rms: {e}"))?,
             reduce: self.reduce.unwrap_or(false),
+            loss_weight: self
+                .loss_weight
+                .map(tuning::check_loss_weight)
+                .transpose()
+                .map_err(|e| format!("loss_weight: {e}"))?,
         })
     }
 
@@ -749,7 +757,7 @@ mod tests {
         // The options of `master`/`fit`/`run` under their names.
         std::fs::write(
             dir.join("compounds.toml"),
-            "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\ncriterion = \"storage\"\nlaw = \"wlf\"\nfit_range = \"-30:60\"\nvertical = \"fitted\"\nmax_terms = 18\n",
+            "[[compound]]\nname = \"x\"\nfiles = [\"a.txt\"]\ncriterion = \"storage\"\nlaw = \"wlf\"\nfit_range = \"-30:60\"\nvertical = \"fitted\"\nmax_terms = 18\nloss_weight = 0.12\n",
         )
         .unwrap();
         let (c2, _) = discover(&dir, &[]).unwrap();
@@ -759,6 +767,7 @@ mod tests {
         assert_eq!(t.fit_range_c, Some((-30.0, 60.0)));
         assert_eq!(t.vertical, Some(crate::tts::VerticalShift::Fitted));
         assert_eq!(t.max_terms, Some(18));
+        assert_eq!(t.loss_weight, Some(0.12));
         assert_eq!(p.max_iter, PronySettings::default().max_iter);
         for bad in [
             "poisson = 0.7",
@@ -767,6 +776,7 @@ mod tests {
             "criterion = \"e-prime\"",
             "fit_range = \"60:-30\"",
             "target_rms = \"0\"",
+            "loss_weight = -1",
             "law = \"vft\"",
             "shift = \"wlf:1,2\"",
             "tref_c = 1e9",

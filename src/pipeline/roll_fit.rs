@@ -25,8 +25,9 @@ pub enum CreepSource {
 
 impl CreepSource {
     /// Read a fit file (it has a `format_version`), a bare creep spectrum (JSON), or pyvisco's
-    /// Prony-term CSV (crate::prony::pyvisco_csv, ν = 0.5), converted exactly to creep (§4; a fluid,
-    /// E∞ = 0, is refused there: no steady rolling state).
+    /// Prony-term CSV (crate::prony::pyvisco_csv, ν = 0.5), converted exactly to creep (§4). A fluid,
+    /// E∞ = 0, is refused, as a relaxation spectrum or as the creep function `convert` writes for it
+    /// (its `viscosity_pa_s`): no steady rolling state (docs/MATH.md §17).
     pub fn read(path: &Path) -> Result<Self, PipelineError> {
         let bytes =
             crate::fsutil::read_regular(path, crate::limits::INPUT_BYTES_MAX).map_err(io(path))?;
@@ -48,6 +49,12 @@ impl CreepSource {
             .map_err(|e| config(format!("not a creep spectrum or fit file: {e}")))?;
         if value.get("format_version").is_some() {
             Ok(CreepSource::Fit(Box::new(CompoundFit::read(path)?)))
+        } else if let Some(eta) = value.get("viscosity_pa_s") {
+            // A fluid's creep function as `convert` writes it (flow term t/η₀ apart).
+            Err(config(format!(
+                "a fluid's creep function (flow term t/η₀, viscosity_pa_s = {eta}). {}",
+                crate::creep::FLUID_NO_STEADY_ROLLING
+            )))
         } else {
             serde_json::from_value(value)
                 .map(CreepSource::Spectrum)

@@ -1,7 +1,8 @@
 //! The master-curve and Prony options a user can set, one set of names for every way in: the flags
 //! of `viscoroll master`, `fit` and `run`, and the keys of a compound in `compounds.toml`
 //! (`--criterion slope-weighted` ↔ `criterion = "slope-weighted"`, `--fit-range -30:60` ↔
-//! `fit_range = "-30:60"`, `--max-terms 18` ↔ `max_terms = 18`).
+//! `fit_range = "-30:60"`, `--max-terms 18` ↔ `max_terms = 18`, `--loss-weight 0.12` ↔
+//! `loss_weight = 0.12`).
 //!
 //! Input: the option values as given (text, parsed and checked here, the message naming the
 //! option); output: a [`FitTuning`] that lays the given options over [`FitOptions`]. Options not
@@ -34,6 +35,9 @@ pub struct FitTuning {
     pub target_rms: Option<[f64; 2]>,
     /// `reduce`: reduce the dense fit to the fewest terms no less accurate.
     pub reduce: bool,
+    /// `loss_weight`: weight of the E″ residuals against the E′ residuals in the Prony fit
+    /// (crate::prony::PronySettings::loss_weight; docs/MATH.md §5.2).
+    pub loss_weight: Option<f64>,
 }
 
 impl FitTuning {
@@ -62,6 +66,9 @@ impl FitTuning {
         }
         if let Some(t) = self.target_rms {
             o.prony.target_rms_log10 = Some(t);
+        }
+        if let Some(w) = self.loss_weight {
+            o.prony.loss_weight = w;
         }
         o.prony.reduce_terms |=
             self.reduce || self.max_terms.is_some() || self.target_rms.is_some();
@@ -139,6 +146,18 @@ pub fn parse_target_rms(s: &str) -> Result<[f64; 2], String> {
         return Err(format!("target-rms {s}: the errors must be finite and > 0"));
     }
     Ok(t)
+}
+
+/// `loss_weight`: the weight of E″ against E′ in the Prony fit, finite and > 0 (1 = both alike, the
+/// default; below 1 favours E′).
+pub fn check_loss_weight(w: f64) -> Result<f64, String> {
+    if w.is_finite() && w > 0.0 {
+        Ok(w)
+    } else {
+        Err(format!(
+            "loss-weight {w}: expected a finite weight > 0 (1: E′ and E″ alike; below 1 favours E′)"
+        ))
+    }
 }
 
 fn parse_number(s: &str, what: &str) -> Result<f64, String> {
@@ -229,6 +248,7 @@ mod tests {
             fit_range_c: Some(parse_fit_range("-30:60").unwrap()),
             nominal: true,
             max_terms: Some(18),
+            loss_weight: Some(check_loss_weight(0.12).unwrap()),
             ..FitTuning::default()
         };
         t.apply(&mut o);
@@ -238,6 +258,7 @@ mod tests {
         assert_eq!(o.master.law_fit_range_c, Some((-30.0, 60.0)));
         assert_eq!(o.master.temperature, TemperatureBasis::Nominal);
         assert_eq!(o.prony.max_terms, Some(18));
+        assert_eq!(o.prony.loss_weight, 0.12);
         assert!(o.prony.reduce_terms);
         // Untouched: the point-temperature correction of the main job.
         assert_eq!(
@@ -255,6 +276,8 @@ mod tests {
             (parse_fit_range("60:-30").unwrap_err(), "fit-range"),
             (parse_fit_range("x:3").unwrap_err(), "fit-range"),
             (parse_target_rms("0,1").unwrap_err(), "target-rms"),
+            (check_loss_weight(0.0).unwrap_err(), "loss-weight"),
+            (check_loss_weight(f64::NAN).unwrap_err(), "loss-weight"),
             (
                 parse_shift("wlf:1,2", None, Path::new(".")).unwrap_err(),
                 "shift",

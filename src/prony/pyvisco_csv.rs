@@ -7,7 +7,7 @@
 //! series is E(t) = E₀ (1 − Σᵢ αᵢ (1 − e^(−t/τᵢ))), so Eᵢ = αᵢ E₀ and E∞ = E₀ (1 − Σᵢ αᵢ)
 //! (docs/MATH.md §5's form with E₀ = E∞ + Σ Eᵢ). The reader takes Eᵢ from `E_i` when present, else
 //! αᵢ E₀, and E∞ from E₀ (1 − Σ αᵢ) when α is present (E₀ − Σ Eᵢ otherwise). pyvisco scales the
-//! αᵢ to sum to 1 when its fit gives more, so E∞ = 0 (a fluid: crate::creep handles it, §16) is a
+//! αᵢ to sum to 1 when its fit gives more, so E∞ = 0 (a fluid: crate::creep converts it with its flow term, §17; `roll` refuses it) is a
 //! file it writes; a |E∞| below 1e-12 E₀ is rounding and read as 0, a more negative one refused.
 //! Units are read from the file, never guessed; an unparsable cell is an error, never dropped.
 

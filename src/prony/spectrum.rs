@@ -65,7 +65,7 @@ impl RelaxationSpectrum {
     }
 
     /// Check that the spectrum is admissible: E∞ ≥ 0, Eᵢ ≥ 0, ρᵢ > 0, all finite, E₀ > 0,
-    /// ν in (−1, 0.5]. (E∞ = 0, a fluid, is admissible here; the creep conversion rejects it.)
+    /// ν in (−1, 0.5]. (E∞ = 0, a fluid, is admissible here: crate::creep::fluid_to_creep.)
     pub fn validate(&self) -> Result<(), MaterialError> {
         check_poisson(self.poisson)?;
         check_positive(|| "modulus_inf_pa".into(), self.modulus_inf_pa, true)?;
