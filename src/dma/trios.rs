@@ -148,6 +148,16 @@ pub fn read_lims(file: &str, text: &str) -> Result<RawFile, DmaError> {
                             .collect(),
                     });
                 }
+                // Inside a step only its keys and `Data point` rows are read; any other line
+                // there is named, as super::read names the lines between data rows no reader took.
+                _ if !b.names.is_empty() => raw.notes.push(format!(
+                    "line {}: not a data row (\"{}\"), skipped; the table goes on below it",
+                    ln + 1,
+                    t.chars()
+                        .take(40)
+                        .flat_map(char::escape_debug)
+                        .collect::<String>()
+                )),
                 _ => {}
             },
             None => {
