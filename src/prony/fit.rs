@@ -45,7 +45,7 @@
 //!   data by 0.11 (E′) and 0.15 (E″) decades rms, where the unregularised non-negative least squares
 //!   reaches 0.004 and 0.012; the GCV score was still falling at the grid's end. So with GCV a
 //!   minimum at the grid's lower end extends the search downwards, a grid step at a time, while the
-//!   score falls (at most [`GCV_EXTEND_MAX`] steps).
+//!   score falls (at most `GCV_EXTEND_MAX` = 12 steps).
 //! * Terms whose largest relative contribution to any datum is below `drop_threshold` are dropped.
 //! * Size: A has 2m rows, so a master curve of m = 1e6 points would take gigabytes. Above
 //!   [`THIN_ABOVE_POINTS`] points the curve is first replaced by the means (in log f, log E′, log E″)
