@@ -11,7 +11,8 @@ use crate::support::{data_dir, stderr, temp_dir, viscoroll};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
-fn schema(name: &str) -> Value {
+/// The published schema `docs/schemas/NAME.schema.json`.
+pub(crate) fn schema(name: &str) -> Value {
     let p = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("docs/schemas/{name}.schema.json"));
     serde_json::from_str(&std::fs::read_to_string(&p).unwrap()).unwrap()
 }
@@ -30,7 +31,7 @@ fn type_ok(t: &str, v: &Value) -> bool {
 }
 
 /// The errors of `v` against `s` (empty: valid), each with its JSON path.
-fn validate(s: &Value, v: &Value, path: &str, errors: &mut Vec<String>) {
+pub(crate) fn validate(s: &Value, v: &Value, path: &str, errors: &mut Vec<String>) {
     let s = s.as_object().expect("a schema is an object");
     for (k, rule) in s {
         match k.as_str() {
@@ -236,6 +237,8 @@ fn a_schema_for_every_command_with_json() {
         want.push(format!("{cmd}.schema.json"));
     }
     want.push("error.schema.json".into());
+    // not a command's output: the sidecar of every CSV table (tests/csv_tables.rs)
+    want.push("csv-meta.schema.json".into());
     want.sort();
     assert_eq!(have, want);
 }

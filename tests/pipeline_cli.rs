@@ -14,7 +14,7 @@ fn friction_rows(path: &Path) -> Vec<(String, f64, f64, f64)> {
     std::fs::read_to_string(path)
         .unwrap()
         .lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("scene,"))
+        .filter(|l| !l.starts_with("scene,"))
         .map(|l| {
             let c: Vec<&str> = l.split(',').collect();
             (
@@ -80,7 +80,7 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
         let map = std::fs::read_to_string(rep.join("friction_map.csv")).unwrap();
         let map_rows: Vec<f64> = map
             .lines()
-            .filter(|l| !l.starts_with('#') && !l.starts_with("scene,"))
+            .filter(|l| !l.starts_with("scene,"))
             .map(|l| l.rsplit(',').next().unwrap().parse().unwrap())
             .collect();
         let expected_map: usize = scenes
@@ -126,7 +126,7 @@ fn run_on_shipped_data_then_rank_roll_and_reuse() {
         let grid = std::fs::read_to_string(rep.join("friction_map_2d.csv")).unwrap();
         let grid_rows: Vec<Vec<f64>> = grid
             .lines()
-            .filter(|l| !l.starts_with('#') && !l.starts_with("scene,"))
+            .filter(|l| !l.starts_with("scene,"))
             .map(|l| l.split(',').skip(1).map(|v| v.parse().unwrap()).collect())
             .collect();
         // Every scene with maps has the grid (a cover's from the 2-D interpolant of contact::maps).

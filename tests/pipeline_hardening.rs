@@ -5,7 +5,7 @@
 //! numbers out of range, `--tref` and measurement JSON. Inputs are synthetic exports of a known
 //! rubber-like material, written by [`rubber_csv`].
 
-use crate::support::{bin, fit_warning_lines_and_notes, run_main, temp_dir};
+use crate::support::{bin, fit_warnings_and_notes, run_main, temp_dir};
 use std::io::Write as _;
 use std::path::Path;
 use std::process::Command;
@@ -231,12 +231,7 @@ fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
     assert_eq!(v["kind"], "untrusted_results");
     assert_eq!(v["detail"]["compounds"].as_array().unwrap().len(), 2);
     let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();
-    let body: String = ranking
-        .lines()
-        .filter(|l| !l.starts_with('#'))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(body.as_bytes())
+    let rows: Vec<csv::StringRecord> = csv::Reader::from_reader(ranking.as_bytes())
         .records()
         .map(|r| r.unwrap())
         .collect();
@@ -254,8 +249,18 @@ fn an_untrusted_fit_is_listed_apart_and_the_run_exits_3() {
             other => panic!("{other}"),
         }
     }
-    let friction = std::fs::read_to_string(out.join("reports/coarse/friction.csv")).unwrap();
-    assert!(friction.contains("# not trusted: prony_rms_log10_storage"));
+    let friction = out.join("reports/coarse/friction.csv");
+    let reasons = crate::support::column(&friction, "not_trusted");
+    assert!(!reasons.is_empty());
+    assert!(
+        reasons
+            .iter()
+            .all(|r| r.contains("prony_rms_log10_storage")),
+        "{reasons:?}"
+    );
+    assert!(crate::support::table_meta(&friction)["not_trusted"]
+        .to_string()
+        .contains("prony_rms_log10_storage"));
     let sheet = std::fs::read_to_string(out.join("reports/coarse/datasheet.html")).unwrap();
     assert!(
         sheet.contains("Verdict: not trusted"),
@@ -422,18 +427,22 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
     );
     let sheet = std::fs::read_to_string(out.join("reports/dense/datasheet.html")).unwrap();
     assert!(sheet.contains("thinned to 1000 means"));
-    // friction.csv: each fit warning once in full in the header, its code in every row's note.
+    // friction.csv: each fit warning once in full in its sidecar, its code at the end of every
+    // row's note.
     let csv_path = out.join("reports/dense/friction.csv");
-    let (header_lines, notes) = fit_warning_lines_and_notes(&csv_path);
+    let (warnings, notes) = fit_warnings_and_notes(&csv_path);
     assert_eq!(
-        header_lines
+        warnings
             .iter()
             .filter(|l| l.contains("thinned to 1000 means"))
             .count(),
         2,
-        "{header_lines:?}"
+        "{warnings:?}"
     );
-    let codes = format!("fit warnings F1–F{} (header)", header_lines.len());
+    let codes = format!(
+        "fit warnings F1–F{} (see friction.meta.json)",
+        warnings.len()
+    );
     assert!(!notes.is_empty());
     for n in &notes {
         assert!(n.ends_with(&codes), "{n:?} does not point at {codes}");
@@ -447,8 +456,8 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
             .unwrap();
     assert_eq!(fit["master_curve"].as_array().unwrap().len(), 60);
     assert!(!fit["tts"]["warnings"].to_string().contains("thinned"));
-    let (header_lines, _) = fit_warning_lines_and_notes(&csv_path);
-    assert!(header_lines.iter().all(|l| !l.contains("thinned")));
+    let (warnings, _) = fit_warnings_and_notes(&csv_path);
+    assert!(warnings.iter().all(|l| !l.contains("thinned")));
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -256,10 +256,9 @@ fn run_takes_a_pyvisco_master_curve_listed_in_compounds_toml() {
     let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();
     assert!(ranking.contains("ems-ca-pyvisco"), "{ranking}");
     // No bands for a master curve read already shifted: the reason is a fit warning of
-    // friction.csv, written once in the header and pointed at from every row's note.
-    let (lines, notes) = crate::support::fit_warning_lines_and_notes(
-        &out.join("reports/ems-ca-pyvisco/friction.csv"),
-    );
+    // friction.csv, written once in its sidecar and pointed at from every row's note.
+    let (lines, notes) =
+        crate::support::fit_warnings_and_notes(&out.join("reports/ems-ca-pyvisco/friction.csv"));
     assert!(
         lines
             .iter()
@@ -267,9 +266,9 @@ fn run_takes_a_pyvisco_master_curve_listed_in_compounds_toml() {
         "{lines:?}"
     );
     let codes = if lines.len() == 1 {
-        "fit warning F1 (header)".to_string()
+        "fit warning F1 (see friction.meta.json)".to_string()
     } else {
-        format!("fit warnings F1–F{} (header)", lines.len())
+        format!("fit warnings F1–F{} (see friction.meta.json)", lines.len())
     };
     assert!(notes.iter().all(|n| n.ends_with(&codes)), "{notes:?}");
 }

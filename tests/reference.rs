@@ -324,22 +324,10 @@ pub fn job_on_sls(
     (dir, report)
 }
 
-/// The rows of a report CSV (comment lines `#` skipped) as header → cell maps.
+/// The rows of a report CSV as header → cell maps.
 pub fn csv_rows(path: &std::path::Path) -> Vec<std::collections::HashMap<String, String>> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let head: Vec<String> = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_string)
-        .collect();
-    lines
-        .map(|l| {
-            head.iter()
-                .cloned()
-                .zip(l.split(',').map(str::to_string))
-                .collect()
-        })
+    let (head, rows) = crate::support::table(path);
+    rows.into_iter()
+        .map(|r| head.iter().cloned().zip(r).collect())
         .collect()
 }

@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests (one copy instead of one per file): the built binary,
 //! fresh scratch folders, the shipped data, running the main job, and reading the CSV tables it
-//! writes (comment lines `# …` skipped, parsed with the csv crate).
+//! writes (parsed strictly with the csv crate: one header row, rows as wide, no comment lines) and
+//! their sidecars (`NAME.meta.json`).
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -49,21 +50,35 @@ pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
-/// A CSV table written by the main job: its header and rows as text, `#` comment lines skipped.
+/// A CSV table written by the main job: its header and rows as text. Read strictly, as a reader
+/// with no comment handling would (pandas' default): the csv crate refuses a row whose width
+/// differs from the header's, and a `#` line would be a row of one field.
 pub fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let body: String = text
-        .lines()
-        .filter(|l| !l.starts_with('#'))
-        .map(|l| format!("{l}\n"))
+    let mut rd = csv::ReaderBuilder::new().from_reader(text.as_bytes());
+    let header: Vec<String> = rd
+        .headers()
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+        .iter()
+        .map(str::to_string)
         .collect();
-    let mut rd = csv::ReaderBuilder::new().from_reader(body.as_bytes());
-    let header = rd.headers().unwrap().iter().map(str::to_string).collect();
     let rows = rd
         .records()
-        .map(|r| r.unwrap().iter().map(str::to_string).collect())
+        .map(|r| {
+            r.unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+                .iter()
+                .map(str::to_string)
+                .collect()
+        })
         .collect();
     (header, rows)
+}
+
+/// The sidecar `NAME.meta.json` of the table `NAME.csv` at `path`, as JSON.
+pub fn table_meta(path: &Path) -> serde_json::Value {
+    let p = path.with_extension("meta.json");
+    let text = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
 }
 
 /// Index of the column `name` in `header` (panics naming it if absent).
@@ -94,19 +109,16 @@ pub fn num(v: &serde_json::Value, key: &str) -> f64 {
         .unwrap_or_else(|| panic!("field {key} missing or not a number in {v}"))
 }
 
-/// The `# fit warning Fk: …` lines of a friction.csv (checked to be numbered F1, F2, … in order)
-/// and its note column.
-pub fn fit_warning_lines_and_notes(path: &Path) -> (Vec<String>, Vec<String>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let lines: Vec<String> = text
-        .lines()
-        .filter(|l| l.starts_with("# fit warning F"))
-        .map(str::to_string)
+/// The fit warnings of a friction.csv (its sidecar's `warnings`, F1, F2, … in order) and its
+/// note column.
+pub fn fit_warnings_and_notes(path: &Path) -> (Vec<String>, Vec<String>) {
+    let warnings: Vec<String> = table_meta(path)["warnings"]
+        .as_array()
+        .expect("warnings in the sidecar")
+        .iter()
+        .map(|w| w.as_str().unwrap().to_string())
         .collect();
-    for (k, l) in lines.iter().enumerate() {
-        assert!(l.starts_with(&format!("# fit warning F{}: ", k + 1)), "{l}");
-    }
-    (lines, column(path, "note"))
+    (warnings, column(path, "note"))
 }
 
 /// A fit file's JSON, edited on purpose by a test, sealed again with its content hash (as

@@ -15,6 +15,7 @@ mod contact_scene;
 mod contact_thesis;
 mod contact_thesis_vs_exact;
 mod covered_job;
+mod csv_tables;
 mod dma_errors;
 mod dma_formats;
 mod dma_quirks;

@@ -664,10 +664,9 @@ def maps(fit_: Fit, scene) -> pd.DataFrame:
 
 
 def _read_table(path: str) -> pd.DataFrame:
-    """A CSV the CLI writes (its `#` comment lines skipped, if it has any)."""
-    with open(path, encoding="utf-8") as f:
-        lines = [l for l in f if not l.startswith("#")]
-    return pd.read_csv(io.StringIO("".join(lines)))
+    """A CSV the CLI writes: one header row, no comment lines (its notes are in the sidecar
+    ``NAME.meta.json``)."""
+    return pd.read_csv(path, encoding="utf-8")
 
 
 class Run:

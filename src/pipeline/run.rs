@@ -13,7 +13,7 @@ use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitActio
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::bands::BandSettings;
 use crate::dma::read_files;
-use crate::report::{ranking_csv, write_file, write_index, write_report, TanDeltaProxy};
+use crate::report::{write_index, write_ranking, write_report, TanDeltaProxy};
 use crate::results::{
     cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneSpec, SceneStanding,
 };
@@ -877,9 +877,11 @@ pub fn run_all_with_progress(
         super::shard::write_shard_file(&opts.out_dir, &file)?;
         return Ok(file.summary);
     }
-    write_file(
+    write_ranking(
         &ranking_path,
-        ranking_csv(&outcomes, &opts.scenes, opts.allow_extrapolation).as_bytes(),
+        &outcomes,
+        &opts.scenes,
+        opts.allow_extrapolation,
     )?;
     // the index reads the whole summary (comparisons included), so it is written last
     let summary = RunSummary {

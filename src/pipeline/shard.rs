@@ -22,7 +22,7 @@
 
 use super::error::{io, PipelineError};
 use super::run::{compare_ranked, fit_path};
-use crate::report::{ranking_csv, write_file, write_index, TanDeltaProxy};
+use crate::report::{write_file, write_index, write_ranking, TanDeltaProxy};
 use crate::results::{CompoundFit, RunSummary, SceneSet};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -257,9 +257,11 @@ pub fn merge_shards(out_dir: &Path) -> Result<RunSummary, PipelineError> {
         index_html: reports.join("index.html"),
         comparisons,
     };
-    write_file(
+    write_ranking(
         &summary.ranking_csv,
-        ranking_csv(&summary.compounds, &scenes, summary.allow_extrapolation).as_bytes(),
+        &summary.compounds,
+        &scenes,
+        summary.allow_extrapolation,
     )?;
     write_index(&reports, &summary, &scenes, &proxies)?;
     Ok(summary)

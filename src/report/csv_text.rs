@@ -1,12 +1,14 @@
 //! CSV text for the report tables, written with the `csv` crate so that a field holding a comma,
 //! a quote or a line break (a compound name, an error message) is quoted and never breaks a row.
 //!
-//! Every field and comment passes through [`cell`]: a text that a spreadsheet would run as a formula
+//! Every field passes through [`cell`]: a text that a spreadsheet would run as a formula
 //! (starting with `=`, `+`, `-`, `@`, tab or CR; OWASP's CSV-injection guidance) gets a leading `'`,
 //! while numbers (`-1.5e3`, `+2`, `NaN`, and lists of them: `-40 -30`) stay numbers; control characters other than a line break
 //! are shown escaped (`\u{1b}`), so no escape sequence reaches a terminal or a viewer.
 //!
-//! Input: `#` comment lines, a header and rows of already formatted fields; output: the file's text.
+//! Input: a header and rows of already formatted fields; output: the file's text — one header row
+//! and the rows, no comment lines (what a table says about itself is its sidecar,
+//! crate::report::csv_meta).
 
 use std::borrow::Cow;
 
@@ -39,20 +41,12 @@ fn escape_controls(text: &str) -> Cow<'_, str> {
     out.into()
 }
 
-/// Build a CSV text: each comment as a `# ` line (line breaks inside a comment become spaces, so a
-/// comment never spills into the table), then the header and the rows.
-pub fn csv_text<I, R>(comments: &[String], header: &[&str], rows: I) -> String
+/// Build a CSV text: the header, then the rows.
+pub fn csv_text<I, R>(header: &[&str], rows: I) -> String
 where
     I: IntoIterator<Item = R>,
     R: IntoIterator<Item = String>,
 {
-    let mut out = String::new();
-    for c in comments {
-        out.push_str("# ");
-        // the line starts with `#`, so only control characters need care
-        out.push_str(&escape_controls(&c.replace(['\r', '\n'], " ")));
-        out.push('\n');
-    }
     let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
     // Writing to a Vec cannot fail (no I/O); a record of another length than the header is a bug
     // of the caller, caught by the tests of every table.
@@ -67,8 +61,7 @@ where
         let _ = w.write_record(&r);
     }
     let bytes = w.into_inner().unwrap_or_default();
-    out.push_str(&String::from_utf8_lossy(&bytes));
-    out
+    String::from_utf8_lossy(&bytes).into_owned()
 }
 
 #[cfg(test)]
@@ -78,16 +71,14 @@ mod tests {
     #[test]
     fn commas_quotes_and_line_breaks_stay_in_their_field() {
         let text = csv_text(
-            &["made by a\ntest".to_string()],
             &["name", "value"],
             [
                 vec!["a, b".to_string(), "1".to_string()],
                 vec!["say \"hi\"\nthere".to_string(), "2".to_string()],
             ],
         );
-        assert!(text.starts_with("# made by a test\n"), "{text}");
-        let body: String = text.lines().skip(1).map(|l| format!("{l}\n")).collect();
-        let mut rd = csv::Reader::from_reader(body.as_bytes());
+        assert!(text.starts_with("name,value\n"), "{text}");
+        let mut rd = csv::Reader::from_reader(text.as_bytes());
         let rows: Vec<Vec<String>> = rd
             .records()
             .map(|r| r.unwrap().iter().map(str::to_string).collect())

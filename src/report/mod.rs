@@ -3,13 +3,15 @@
 //!
 //! Input: the saved results ([`crate::results`]): fits, friction points and maps, run outcomes;
 //! output: files, each written atomically through [`write_file`] (the crate's one atomic writer,
-//! [`crate::fsutil`]). CSV goes through the csv crate ([`csv_text`]). Imports only downward
+//! [`crate::fsutil`]). CSV goes through the csv crate ([`csv_text`]): one header row, no comment
+//! lines, a sidecar `NAME.meta.json` beside each table ([`csv_meta`]). Imports only downward
 //! (results and the stages); the pipeline calls it.
 
 pub mod card_refit;
 pub mod card_shift;
 pub mod cards;
 pub mod chart;
+pub mod csv_meta;
 pub mod csv_text;
 pub mod datasheet;
 pub mod error;
@@ -22,4 +24,4 @@ pub mod ticks;
 pub use datasheet::{write_report, Measured};
 pub use error::{write_file, ReportError};
 pub use index::{index_html, write_index, TanDeltaProxy};
-pub use ranking::{ranked, ranking_csv};
+pub use ranking::{ranked, ranking_csv, write_ranking};

@@ -3,10 +3,11 @@
 //! `reports/ranking.csv`.
 //!
 //! Input: the [`CompoundOutcome`]s (each with its [`SceneStanding`] per scene, the rule in
-//! crate::results::outcome) and the [`SceneSet`]; output: the order ([`ranked`], [`apart`]) and the
+//! crate::results::outcome) and the [`SceneSet`]; output: the order ([`ranked`], [`apart`]), the
 //! CSV text ([`ranking_csv`], written with the csv crate, so a compound name with a comma stays one
-//! field).
+//! field) and its sidecar `ranking.meta.json` ([`ranking_meta`]; both written by [`write_ranking`]).
 
+use super::csv_meta::CsvMeta;
 use super::csv_text::csv_text;
 use crate::results::{CompoundOutcome, SceneSet, SceneStanding};
 
@@ -143,19 +144,7 @@ pub fn ranking_csv(
             ));
         }
     }
-    let rule = if allow_extrapolation {
-        "over every temperature that computed, extrapolated ones included (--allow-extrapolation)"
-    } else {
-        "over the measured temperatures only (extrapolated ones left out)"
-    };
     csv_text(
-        &[
-            format!(
-                "viscoroll {}: compounds ranked by temperature-averaged rolling friction F/N per scene (lowest first), {rule}",
-                env!("CARGO_PKG_VERSION")
-            ),
-            "verdict: trusted, use with care (ranked; reasons in `note`) or not trusted (listed apart with an empty rank; reasons in `note`); means over the temperatures the ranked compounds share (`own_temps_c`: a compound's own window where it is wider)".to_string(),
-        ],
         &[
             "scene",
             "rank",
@@ -178,6 +167,39 @@ pub fn ranking_csv(
             "band_covers",
         ],
         rows,
+    )
+}
+
+/// The sidecar of `reports/ranking.csv` (crate::report::csv_meta): the ranking's rule
+/// (`settings.allow_extrapolation`, `settings.scenes`) and how to read the verdict.
+pub fn ranking_meta(scenes: &SceneSet, allow_extrapolation: bool) -> CsvMeta {
+    let rule = if allow_extrapolation {
+        "over every temperature that computed, extrapolated ones included (--allow-extrapolation)"
+    } else {
+        "over the measured temperatures only (extrapolated ones left out)"
+    };
+    let names: Vec<&str> = scenes.scene.iter().map(|s| s.name.as_str()).collect();
+    let mut m = CsvMeta::new(
+        "ranking.csv",
+        &format!("compounds ranked by temperature-averaged rolling friction F/N per scene (lowest first), {rule}"),
+    )
+    .setting("allow_extrapolation", allow_extrapolation)
+    .setting("scenes", names);
+    m.notes.push("verdict: trusted, use with care (ranked; reasons in `note`) or not trusted (listed apart with an empty rank; reasons in `note`); means over the temperatures the ranked compounds share (`own_temps_c`: a compound's own window where it is wider)".to_string());
+    m
+}
+
+/// Write `reports/ranking.csv` at `path` and its sidecar ([`ranking_csv`], [`ranking_meta`]).
+pub fn write_ranking(
+    path: &std::path::Path,
+    outcomes: &[CompoundOutcome],
+    scenes: &SceneSet,
+    allow_extrapolation: bool,
+) -> Result<(), super::ReportError> {
+    super::csv_meta::write_table(
+        path,
+        &ranking_csv(outcomes, scenes, allow_extrapolation),
+        &ranking_meta(scenes, allow_extrapolation),
     )
 }
 
@@ -288,13 +310,10 @@ pub(crate) mod tests {
         }
     }
 
+    /// The rows, read strictly (one header, rows as wide, no comment lines).
     fn rows(text: &str) -> Vec<csv::StringRecord> {
-        let body: String = text
-            .lines()
-            .filter(|l| !l.starts_with('#'))
-            .map(|l| format!("{l}\n"))
-            .collect();
-        csv::Reader::from_reader(body.as_bytes())
+        assert!(text.starts_with("scene,rank,"), "{text}");
+        csv::Reader::from_reader(text.as_bytes())
             .records()
             .map(|r| r.unwrap())
             .collect()

@@ -1,5 +1,6 @@
 //! A compound's report folder `reports/NAME/`: plots (SVG, PNG beside), `friction.csv`,
-//! `friction_map.csv`, `friction_map_2d.csv` and `datasheet.html` (plots inline as SVG).
+//! `friction_map.csv`, `friction_map_2d.csv` (each with its sidecar `NAME.meta.json`,
+//! crate::report::csv_meta) and `datasheet.html` (plots inline as SVG).
 //!
 //! Input: a [`CompoundFit`], its [`Measurement`] (for the raw isotherms), the friction of each scene
 //! and its maps; output: files, each written atomically ([`crate::report::write_file`]). The page is
@@ -19,6 +20,7 @@ pub mod transitions;
 pub use tan_delta::{tan_delta_at, tan_delta_peak};
 
 use super::chart::{Axis, Chart, Curve, Mark};
+use super::csv_meta::write_table;
 use super::error::{io, write_file, ReportError};
 use super::html::{esc, plot_pair, STYLE};
 use super::plots;
@@ -275,17 +277,25 @@ pub fn write_report(
     let scene_maps: Vec<(&SceneSpec, &FrictionMaps)> =
         friction.iter().map(|(s, _)| s).zip(maps).collect();
     let tol = maps.first().map_or(f64::NAN, |m| m.tol);
-    write_file(
+    let meta = |table: &str, description: &str| {
+        tables::compound_meta(fit, table, description, &flags, fit_warnings)
+    };
+    write_table(
         &dir.join("friction.csv"),
-        tables::friction_csv(&prov, &flags, fit_warnings, friction).as_bytes(),
+        &tables::friction_csv(&flags, fit_warnings, friction),
+        &meta("friction.csv", tables::FRICTION_DESCRIPTION)
+            .setting("allow_extrapolation", allow_extrapolation),
     )?;
-    write_file(
+    write_table(
         &dir.join("friction_map.csv"),
-        tables::map_csv(&prov, &scene_maps).as_bytes(),
+        &tables::map_csv(&scene_maps),
+        &meta("friction_map.csv", tables::MAP_DESCRIPTION),
     )?;
-    write_file(
+    write_table(
         &dir.join("friction_map_2d.csv"),
-        tables::grid_csv(&prov, tol, &scene_maps).as_bytes(),
+        &tables::grid_csv(&scene_maps),
+        &meta("friction_map_2d.csv", tables::GRID_DESCRIPTION)
+            .setting("tolerance", (tol.is_finite()).then_some(tol)),
     )?;
 
     let friction_svg = friction_plot(dir, fit, friction)?;

@@ -1,12 +1,45 @@
 //! The CSV tables of a compound's report folder: `friction.csv` (one row per scene and temperature),
 //! `friction_map.csv` (F/N against speed and load) and `friction_map_2d.csv` (the speed × load grid).
 //!
-//! Input: the friction points and maps of each scene; output: CSV text (crate::report::csv_text).
+//! Input: the friction points and maps of each scene; output: CSV text (crate::report::csv_text),
+//! one header row and no comment lines, and each table's sidecar ([`compound_meta`]:
+//! provenance, the fit's settings, its warnings; crate::report::csv_meta).
 //! Numbers are printed in their shortest round-trip form (`{:e}`), so a value read back is the value
 //! computed.
 
+use crate::report::csv_meta::CsvMeta;
 use crate::report::csv_text::csv_text;
-use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
+use crate::results::{CompoundFit, FrictionMaps, FrictionPoint, SceneSpec};
+
+/// The sidecar of a compound's table `table` (crate::report::csv_meta): the fit's tool, version,
+/// inputs and resolved settings (`settings.fit`), why it is not trusted (`flags`) and its
+/// warnings (`fit_warnings`, numbered F1, F2, … in order).
+pub fn compound_meta(
+    fit: &CompoundFit,
+    table: &str,
+    description: &str,
+    flags: &[String],
+    fit_warnings: &[String],
+) -> CsvMeta {
+    let mut m = CsvMeta::new(table, description).setting("fit", &fit.settings);
+    m.tool.clone_from(&fit.provenance.tool);
+    m.tool_version.clone_from(&fit.provenance.tool_version);
+    m.compound = Some(fit.compound.clone());
+    m.inputs.clone_from(&fit.provenance.inputs);
+    m.not_trusted = flags.to_vec();
+    m.warnings = fit_warnings.to_vec();
+    m
+}
+
+/// What friction.csv holds (its sidecar's `description`).
+pub const FRICTION_DESCRIPTION: &str =
+    "rolling friction F/N of one compound per scene and temperature, with its band and notes";
+/// What friction_map.csv holds.
+pub const MAP_DESCRIPTION: &str =
+    "F/N against the scene's listed speeds and loads at each map temperature";
+/// What friction_map_2d.csv holds; the interpolant's relative tolerance is `settings.tolerance`.
+pub const GRID_DESCRIPTION: &str =
+    "F/N and contact length on a speed x load grid at each map temperature (reduced-variable interpolant)";
 
 /// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated,
 /// error, `note` (every flag of the row: failure, extrapolation, contact validity), `model` (the
@@ -16,21 +49,22 @@ use crate::results::{FrictionMaps, FrictionPoint, SceneSpec};
 /// the between-specimen term of docs/MATH.md §16; empty with `--no-bands`), `undetermined` (why
 /// the point is not determined: never ranked or averaged) and `specimen_frictions` (each
 /// replicate specimen's own F/N, space-separated; empty with one). The
-/// compound's own flags (`flags`: why its fit is not trusted) come first as `#` lines and, when there
-/// are any, lead every row's note with `fit not trusted`. The fit's warnings (`fit_warnings`: the
-/// data, the master curve, the bands; the same for every row) are written once in full as
-/// `# fit warning Fk: …` lines, and every row's note ends with their codes ([`fit_warning_codes`]),
-/// so a reader of one row knows to look up.
+/// compound's own flags (`flags`: why its fit is not trusted) are every row's `not_trusted`
+/// (`; `-separated) and, when there are any, lead its note with `fit not trusted`. The fit's
+/// warnings (`fit_warnings`: the data, the master curve, the bands; the same for every row, and
+/// long: 24 lines for EMS-CA) are written once in full, in order, in the sidecar's `warnings`
+/// (friction.meta.json, [`compound_meta`]; the datasheet shows them too), and every row's note
+/// ends with their codes F1–Fn ([`fit_warning_codes`]), so a reader of one row knows to look there.
 pub fn friction_csv(
-    prov: &str,
     flags: &[String],
     fit_warnings: &[String],
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
 ) -> String {
     let untrusted = !flags.is_empty();
     let codes = fit_warning_codes(fit_warnings.len());
+    let not_trusted = flags.join("; ").replace(['\r', '\n'], " ");
     let rows = friction.iter().flat_map(|(spec, pts)| {
-        let codes = codes.clone();
+        let (codes, not_trusted) = (codes.clone(), not_trusted.clone());
         pts.iter().map(move |p| {
             vec![
                 spec.name.clone(),
@@ -53,19 +87,11 @@ pub fn friction_csv(
                     .map(|f| format!("{f:e}"))
                     .collect::<Vec<_>>()
                     .join(" "),
+                not_trusted.clone(),
             ]
         })
     });
-    let mut comments = vec![prov.to_string()];
-    comments.extend(flags.iter().map(|f| format!("not trusted: {f}")));
-    comments.extend(
-        fit_warnings
-            .iter()
-            .enumerate()
-            .map(|(k, w)| format!("fit warning F{}: {}", k + 1, w.replace(['\r', '\n'], " "))),
-    );
     csv_text(
-        &comments,
         &[
             "scene",
             "temp_c",
@@ -83,18 +109,19 @@ pub fn friction_csv(
             "friction_p95",
             "undetermined",
             "specimen_frictions",
+            "not_trusted",
         ],
         rows,
     )
 }
 
-/// The pointer a row's note carries to the `# fit warning` lines: `fit warning F1 (header)`,
-/// `fit warnings F1–F4 (header)`; empty without fit warnings.
+/// The pointer a row's note carries to the sidecar's warnings: `fit warning F1 (see
+/// friction.meta.json)`, `fit warnings F1–F4 (see friction.meta.json)`; empty without fit warnings.
 pub fn fit_warning_codes(n: usize) -> String {
     match n {
         0 => String::new(),
-        1 => "fit warning F1 (header)".into(),
-        n => format!("fit warnings F1–F{n} (header)"),
+        1 => "fit warning F1 (see friction.meta.json)".into(),
+        n => format!("fit warnings F1–F{n} (see friction.meta.json)"),
     }
 }
 
@@ -120,7 +147,7 @@ pub fn band_text(v: Option<f64>) -> String {
 }
 
 /// `friction_map.csv`: F/N against the listed speeds and loads at every map temperature.
-pub fn map_csv(prov: &str, scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
+pub fn map_csv(scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
     let rows = scenes.iter().flat_map(|(spec, map)| {
         map.points.iter().map(move |p| {
             vec![
@@ -133,14 +160,14 @@ pub fn map_csv(prov: &str, scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
         })
     });
     csv_text(
-        &[prov.to_string()],
         &["scene", "temp_c", "speed_m_s", "load_n_per_m", "friction"],
         rows,
     )
 }
 
-/// `friction_map_2d.csv`: F/N and contact length on the speed × load grid.
-pub fn grid_csv(prov: &str, tol: f64, scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
+/// `friction_map_2d.csv`: F/N and contact length on the speed × load grid (the interpolant's
+/// tolerance is in the sidecar, [`GRID_DESCRIPTION`]).
+pub fn grid_csv(scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
     let rows = scenes.iter().flat_map(|(spec, map)| {
         map.grid.iter().map(move |p| {
             vec![
@@ -154,10 +181,6 @@ pub fn grid_csv(prov: &str, tol: f64, scenes: &[(&SceneSpec, &FrictionMaps)]) ->
         })
     });
     csv_text(
-        &[
-            prov.to_string(),
-            format!("F/N on a speed × load grid at each map temperature (reduced-variable interpolant, relative tolerance {tol:e})"),
-        ],
         &[
             "scene",
             "temp_c",
@@ -174,17 +197,26 @@ pub fn grid_csv(prov: &str, tol: f64, scenes: &[(&SceneSpec, &FrictionMaps)]) ->
 mod tests {
     use super::*;
 
-    /// The data rows of a CSV text, `#` lines skipped.
+    /// The data rows of a CSV text, read strictly: one header, every row as wide (the csv
+    /// crate's default refuses a row of another width), no comment lines.
     fn records(text: &str) -> Vec<csv::StringRecord> {
-        let body: String = text
-            .lines()
-            .filter(|l| !l.starts_with('#'))
-            .map(|l| format!("{l}\n"))
-            .collect();
-        csv::Reader::from_reader(body.as_bytes())
+        assert!(text.starts_with("scene,"), "{text}");
+        csv::Reader::from_reader(text.as_bytes())
             .records()
             .map(|r| r.unwrap())
             .collect()
+    }
+
+    /// The column `name` of every row.
+    fn column(text: &str, name: &str) -> Vec<String> {
+        let mut rd = csv::Reader::from_reader(text.as_bytes());
+        let c = rd
+            .headers()
+            .unwrap()
+            .iter()
+            .position(|h| h == name)
+            .unwrap();
+        rd.records().map(|r| r.unwrap()[c].to_string()).collect()
     }
 
     #[test]
@@ -216,12 +248,13 @@ mod tests {
             p(false, Some("no root, bracket [1, 2]"), vec![]),
         ];
         let text = friction_csv(
-            "prov",
-            &["prony_rms out of bound".into()],
+            &["prony_rms out of bound".into(), "shift rms".into()],
             &[],
             &[(spec.clone(), pts.clone())],
         );
-        assert!(text.contains("# not trusted: prony_rms out of bound"));
+        assert!(column(&text, "not_trusted")
+            .iter()
+            .all(|n| n == "prony_rms out of bound; shift rms"));
         assert!(!text.contains("fit warning"));
         let rows = records(&text);
         assert_eq!(&rows[0][8], "fit not trusted");
@@ -229,20 +262,25 @@ mod tests {
         assert!(rows[2][8].contains("failed: no root, bracket [1, 2]"));
         assert_eq!(&rows[2][7], "no root, bracket [1, 2]");
 
-        // Fit warnings: once in full in the header, a code at the end of every row's note.
+        // Fit warnings: not in the table (the sidecar holds them), a code at the end of every
+        // row's note.
         let warnings = [
             "master curve: isotherm at 20 °C thinned from 40000 to 1000 points".to_string(),
             "uncertainty bands not computed: the ensemble failed".to_string(),
         ];
-        let text = friction_csv("prov", &[], &warnings, &[(spec, pts)]);
-        assert!(text.contains("# fit warning F1: master curve: isotherm at 20 °C thinned"));
-        assert!(text.contains("# fit warning F2: uncertainty bands not computed"));
+        let text = friction_csv(&[], &warnings, &[(spec, pts)]);
+        assert!(!text.contains("thinned") && !text.contains("ensemble failed"));
+        assert!(column(&text, "not_trusted").iter().all(String::is_empty));
         let rows = records(&text);
-        assert_eq!(&rows[0][8], "fit warnings F1–F2 (header)");
+        assert_eq!(&rows[0][8], "fit warnings F1–F2 (see friction.meta.json)");
         assert!(
-            rows[1][8].contains("0.570") && rows[1][8].ends_with("; fit warnings F1–F2 (header)")
+            rows[1][8].contains("0.570")
+                && rows[1][8].ends_with("; fit warnings F1–F2 (see friction.meta.json)")
         );
         assert!(rows[2][8].starts_with("failed: no root"));
-        assert_eq!(fit_warning_codes(1), "fit warning F1 (header)");
+        assert_eq!(
+            fit_warning_codes(1),
+            "fit warning F1 (see friction.meta.json)"
+        );
     }
 }
