@@ -3,9 +3,14 @@
 //! a file by default — and beside it a sidecar `NAME.meta.json` that validates against
 //! docs/schemas/csv-meta.schema.json and names its table. friction.csv's fit warnings are in its
 //! sidecar, and every row's note points at exactly that many (F1–Fn).
+//!
+//! The run's workbook `reports/viscoroll.xlsx`, read back with calamine, holds the same tables cell
+//! for cell (a number where the CSV field reads as a finite number, else the text), and each
+//! compound's master curve, shifts and Prony terms as its fit file has them, to the bit.
 
 use crate::json_schemas::{schema, validate};
 use crate::support::{data_dir, run_main, table, table_meta, temp_dir};
+use calamine::{Data, Reader};
 use std::path::{Path, PathBuf};
 
 /// Every file under `dir` whose name ends with `suffix`, sorted.
@@ -84,5 +89,137 @@ fn every_table_of_the_main_job_is_one_header_and_rows_beside_a_valid_sidecar() {
             }
         }
     }
+    check_workbook(&out);
     let _ = std::fs::remove_dir_all(&out);
+}
+
+type Book = calamine::Xlsx<std::io::BufReader<std::fs::File>>;
+
+/// The sheet `name` as rows of cells (an empty cell as `Data::Empty`, rows padded to `width`).
+fn sheet(wb: &mut Book, name: &str, width: usize) -> Vec<Vec<Data>> {
+    let r = wb
+        .worksheet_range(name)
+        .unwrap_or_else(|e| panic!("sheet {name}: {e}"));
+    assert_eq!(r.start(), Some((0, 0)), "{name}");
+    (0..r.height())
+        .map(|i| {
+            (0..width.max(r.width()))
+                .map(|j| r.get((i, j)).cloned().unwrap_or(Data::Empty))
+                .collect()
+        })
+        .collect()
+}
+
+/// A sheet equals the CSV table at `csv`: the header as texts, each field a number where it reads
+/// as a finite one (the same f64), empty where empty, else the same text.
+fn same_as_csv(wb: &mut Book, name: &str, csv: &Path) {
+    let (header, rows) = table(csv);
+    let cells = sheet(wb, name, header.len());
+    assert_eq!(cells.len(), rows.len() + 1, "{name}: rows");
+    for (j, h) in header.iter().enumerate() {
+        assert_eq!(cells[0][j], Data::String(h.clone()), "{name}: header");
+    }
+    for (i, row) in rows.iter().enumerate() {
+        for (j, f) in row.iter().enumerate() {
+            let want = match f.parse::<f64>() {
+                Ok(v) if v.is_finite() => Data::Float(v),
+                _ if f.is_empty() => Data::Empty,
+                _ => Data::String(f.clone()),
+            };
+            assert_eq!(
+                cells[i + 1][j],
+                want,
+                "{name} row {} column {}",
+                i + 1,
+                header[j]
+            );
+        }
+    }
+}
+
+/// The cell as a number (an empty cell: None).
+fn number(d: &Data) -> Option<f64> {
+    match d {
+        Data::Float(v) => Some(*v),
+        Data::Int(v) => Some(*v as f64),
+        Data::Empty => None,
+        other => panic!("not a number: {other:?}"),
+    }
+}
+
+fn check_workbook(out: &Path) {
+    let reports = out.join("reports");
+    let mut wb: Book = calamine::open_workbook(reports.join("viscoroll.xlsx")).unwrap();
+    same_as_csv(&mut wb, "ranking", &reports.join("ranking.csv"));
+    // contents: sheet, compound, table; six sheets per compound
+    let contents = sheet(&mut wb, "contents", 3);
+    let mut seen = Vec::new();
+    for compound in ["ems-ca", "dmasuite-tensile", "trios-aresg2-lims"] {
+        let of = |suffix: &str| -> String {
+            let row = contents
+                .iter()
+                .find(|r| {
+                    r[1] == Data::String(compound.into())
+                        && matches!(&r[0], Data::String(s) if s.ends_with(&format!(" {suffix}")))
+                })
+                .unwrap_or_else(|| panic!("{compound} {suffix}: not in contents"));
+            let Data::String(name) = &row[0] else {
+                unreachable!()
+            };
+            name.clone()
+        };
+        let dir = reports.join(compound);
+        same_as_csv(&mut wb, &of("friction"), &dir.join("friction.csv"));
+        same_as_csv(&mut wb, &of("map"), &dir.join("friction_map.csv"));
+        same_as_csv(&mut wb, &of("map 2d"), &dir.join("friction_map_2d.csv"));
+        let fit = viscoroll::results::CompoundFit::read(
+            &out.join("fits").join(format!("{compound}.json")),
+        )
+        .unwrap();
+        let master = sheet(&mut wb, &of("master"), 3);
+        assert_eq!(master.len(), fit.master_curve.len() + 1);
+        for (row, p) in master[1..].iter().zip(&fit.master_curve) {
+            let got: Vec<Option<f64>> = row.iter().map(number).collect();
+            assert_eq!(
+                got,
+                [Some(p.reduced_freq_hz), Some(p.storage_pa), Some(p.loss_pa)]
+            );
+        }
+        let shifts = sheet(&mut wb, &of("shifts"), 2);
+        let want = &fit.tts.as_ref().unwrap().shifts;
+        assert_eq!(shifts.len(), want.len() + 1);
+        for (row, &(t, a)) in shifts[1..].iter().zip(want) {
+            assert_eq!((number(&row[0]), number(&row[1])), (Some(t), Some(a)));
+        }
+        // Prony terms by τ, then E∞ without a τ; α = Eᵢ/E₀ sums with α∞ to 1.
+        let prony = sheet(&mut wb, &of("prony"), 3);
+        let r = &fit.relaxation;
+        assert_eq!(prony.len(), r.terms.len() + 2);
+        let mut terms = r.terms.clone();
+        terms.sort_by(|a, b| a.tau_s.total_cmp(&b.tau_s));
+        for (row, t) in prony[1..].iter().zip(&terms) {
+            assert_eq!(
+                (number(&row[0]), number(&row[1])),
+                (Some(t.tau_s), Some(t.modulus_pa))
+            );
+        }
+        let last = prony.last().unwrap();
+        assert_eq!(
+            (number(&last[0]), number(&last[1])),
+            (None, Some(r.modulus_inf_pa))
+        );
+        let alpha: f64 = prony[1..].iter().map(|r| number(&r[2]).unwrap()).sum();
+        assert!((alpha - 1.0).abs() < 1e-12, "{compound}: Σα = {alpha}");
+        for s in ["friction", "map", "map 2d", "master", "shifts", "prony"] {
+            seen.push(of(s));
+        }
+    }
+    // every sheet name fits Excel and is unique without regard to case
+    let names = wb.sheet_names();
+    assert_eq!(names.len(), 2 + seen.len(), "{names:?}");
+    let mut lower: Vec<String> = names.iter().map(|n| n.to_lowercase()).collect();
+    lower.sort();
+    lower.dedup();
+    assert_eq!(lower.len(), names.len());
+    assert!(names.iter().all(|n| n.chars().count() <= 31));
 }

@@ -79,6 +79,10 @@ fn four_shards_merge_into_the_whole_runs_ranking() {
     let one = std::fs::read_to_string(whole.join("reports/ranking.csv")).unwrap();
     assert_eq!(merged, one);
     assert!(one.lines().count() > 8, "{one}");
+    // the merge writes the whole run's workbook too, byte for byte (its tables and fits are the
+    // same, and the file carries no time of its own)
+    let book = |d: &std::path::Path| std::fs::read(d.join("reports/viscoroll.xlsx")).unwrap();
+    assert!(book(&sharded) == book(&whole), "the workbooks differ");
     let index = std::fs::read_to_string(sharded.join("reports/index.html")).unwrap();
     assert!(names.iter().all(|n| index.contains(n.as_str())));
     assert_eq!(fitted(&sharded), fitted(&whole));

@@ -246,6 +246,7 @@ const RUN_KEYS: &[&str] = &[
     "tol",
     "no_bands",
     "shard",
+    "no_xlsx",
     "shift",
     "vertical",
     "criterion",
@@ -277,6 +278,7 @@ fn run(py: Python<'_>, dir: &str, out: &str, options: &str) -> PyResult<(String,
     if o.flag("no_bands")? {
         opts.bands = None;
     }
+    opts.xlsx = !o.flag("no_xlsx")?;
     if let Some(s) = o.str("shard")? {
         opts.shard = Some(
             s.parse()

@@ -733,6 +733,7 @@ def run(
     tol: Optional[float] = None,
     bands: bool = True,
     shard: Optional[str] = None,
+    xlsx: bool = True,
     **fit_options,
 ) -> Run:
     """The main job: ``viscoroll run DIR --out OUT`` (fits/ and reports/ written into ``out``).
@@ -740,7 +741,8 @@ def run(
     A compound that failed or is not trusted does not raise: each such compound is issued as a
     :class:`ViscorollWarning` (the run goes on, as the CLI's), with its reasons; the tables are in
     the returned :class:`Run`. A folder that cannot be run raises :class:`RunError`. The fit
-    options (``criterion``, ``law``, ``max_terms``...) are ``run``'s flags."""
+    options (``criterion``, ``law``, ``max_terms``...) are ``run``'s flags; ``xlsx=False`` is
+    ``--no-xlsx`` (no ``reports/viscoroll.xlsx``)."""
     opts = _opts(
         scenes=None if scenes is None else os.fspath(scenes),
         force=force or None,
@@ -749,6 +751,7 @@ def run(
         tol=tol,
         no_bands=(not bands) or None,
         shard=shard,
+        no_xlsx=(not xlsx) or None,
         **fit_options,
     )
     text, log = _core.run(os.fspath(dir), os.fspath(out), opts)

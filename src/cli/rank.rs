@@ -45,6 +45,9 @@ pub struct Args {
     /// Average extrapolated temperatures too (marked *).
     #[arg(long)]
     pub allow_extrapolation: bool,
+    /// With --out: do not write the run's workbook reports/viscoroll.xlsx.
+    #[arg(long, requires = "out")]
+    pub no_xlsx: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -53,7 +56,7 @@ pub struct Args {
 /// Run `viscoroll rank`.
 pub fn run(args: Args) -> anyhow::Result<()> {
     if let Some(out) = &args.out {
-        return merge(out, args.json);
+        return merge(out, !args.no_xlsx, args.json);
     }
     let file = crate::pipeline::run::scenes_file(args.scenes.as_deref(), Path::new("."));
     let set = match &file {
@@ -206,8 +209,8 @@ fn print_table(spec: &crate::results::SceneSpec, results: &[crate::pipeline::run
 }
 
 /// `rank --out OUT`: merge the shards; output and exit code as `viscoroll run`'s.
-fn merge(out: &std::path::Path, json: bool) -> anyhow::Result<()> {
-    let summary = crate::pipeline::shard::merge_shards(out)?;
+fn merge(out: &std::path::Path, xlsx: bool, json: bool) -> anyhow::Result<()> {
+    let summary = crate::pipeline::shard::merge_shards(out, xlsx)?;
     let (n, failed, untrusted) = (
         summary.compounds.len(),
         summary.failures(),

@@ -64,6 +64,10 @@ pub struct Args {
     /// `viscoroll rank --out OUT` writes the ranking and index.
     #[arg(long, value_name = "K/N")]
     pub shard: Option<crate::pipeline::shard::Shard>,
+    /// Do not write the run's workbook reports/viscoroll.xlsx (the ranking and every compound's
+    /// tables, master curve, shifts and Prony terms, a sheet each).
+    #[arg(long)]
+    pub no_xlsx: bool,
     /// Print one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -107,6 +111,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         opts.set_tol(t)?;
     }
     opts.allow_extrapolation = args.allow_extrapolation;
+    opts.xlsx = !args.no_xlsx;
     opts.lock_wait = std::time::Duration::from_secs(args.wait);
     if args.no_bands {
         opts.bands = None;

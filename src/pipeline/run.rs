@@ -13,7 +13,7 @@ use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitActio
 use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
 use crate::bands::BandSettings;
 use crate::dma::read_files;
-use crate::report::{write_index, write_ranking, write_report, TanDeltaProxy};
+use crate::report::{write_index, write_ranking, write_report, write_workbook, TanDeltaProxy};
 use crate::results::{
     cap_line, standing, CompoundFit, FrictionPoint, SceneSet, SceneSpec, SceneStanding,
 };
@@ -49,6 +49,9 @@ pub struct RunOptions {
     pub lock_wait: std::time::Duration,
     /// Run only this shard's compounds (`--shard K/N`, crate::pipeline::shard); `None`: all.
     pub shard: Option<super::shard::Shard>,
+    /// Write the run's workbook `reports/viscoroll.xlsx` (crate::report::workbook; `--no-xlsx`
+    /// skips it). A shard never writes it: the merge does.
+    pub xlsx: bool,
 }
 
 impl RunOptions {
@@ -87,6 +90,7 @@ impl RunOptions {
             bands: Some(BandSettings::default()),
             lock_wait: LOCK_WAIT,
             shard: None,
+            xlsx: true,
         })
     }
 }
@@ -892,6 +896,9 @@ pub fn run_all_with_progress(
         index_html: index_path,
         comparisons,
     };
+    if opts.xlsx {
+        write_workbook(&summary)?;
+    }
     write_index(&reports, &summary, &opts.scenes, &proxies)?;
     Ok(summary)
 }

@@ -22,7 +22,7 @@
 
 use super::error::{io, PipelineError};
 use super::run::{compare_ranked, fit_path};
-use crate::report::{write_file, write_index, write_ranking, TanDeltaProxy};
+use crate::report::{write_file, write_index, write_ranking, write_workbook, TanDeltaProxy};
 use crate::results::{CompoundFit, RunSummary, SceneSet};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -195,9 +195,10 @@ fn check_whole(out_dir: &Path, files: &[ShardFile]) -> Result<SceneSet, Pipeline
     Ok(first.scenes.clone())
 }
 
-/// Merge the shards of a run in `out_dir` (see the module docs): writes `reports/ranking.csv` and
-/// `reports/index.html` and returns the whole run's summary (outcomes in discovery order).
-pub fn merge_shards(out_dir: &Path) -> Result<RunSummary, PipelineError> {
+/// Merge the shards of a run in `out_dir` (see the module docs): writes `reports/ranking.csv`,
+/// the workbook `reports/viscoroll.xlsx` when `xlsx` (crate::report::workbook) and
+/// `reports/index.html`, and returns the whole run's summary (outcomes in discovery order).
+pub fn merge_shards(out_dir: &Path, xlsx: bool) -> Result<RunSummary, PipelineError> {
     let _lock = crate::fsutil::DirLock::acquire(out_dir, super::run::LOCK_WAIT, &|_| {})
         .map_err(io(out_dir))?;
     let files = read_shard_files(out_dir)?;
@@ -263,6 +264,9 @@ pub fn merge_shards(out_dir: &Path) -> Result<RunSummary, PipelineError> {
         &scenes,
         summary.allow_extrapolation,
     )?;
+    if xlsx {
+        write_workbook(&summary)?;
+    }
     write_index(&reports, &summary, &scenes, &proxies)?;
     Ok(summary)
 }

@@ -20,8 +20,10 @@ pub mod index;
 pub mod plots;
 pub mod ranking;
 pub mod ticks;
+pub mod workbook;
 
 pub use datasheet::{write_report, Measured};
 pub use error::{write_file, ReportError};
 pub use index::{index_html, write_index, TanDeltaProxy};
 pub use ranking::{ranked, ranking_csv, write_ranking};
+pub use workbook::write_workbook;
