@@ -1,6 +1,7 @@
 //! The stages after the fit, each the library call the CLI makes: `roll` (one dimensional scene on a
 //! fit or a creep spectrum: crate::pipeline::roll_fit::roll_source_at and the band of
-//! src/cli/roll.rs), `maps` (crate::pipeline::scenes::friction_maps, as the main job makes a
+//! src/cli/roll.rs; with `cover_mm` or `model`, the covered body of src/cli/roll_cover.rs:
+//! crate::contact::body::layer::roll_cover on the spectrum at the temperature), `maps` (crate::pipeline::scenes::friction_maps, as the main job makes a
 //! scene's maps), `run` (crate::pipeline::run_all, as src/cli/run.rs), and the shipped scenes.
 //!
 //! In: JSON text of the library's serde types and an options object (crate::opts); out: JSON text.
@@ -8,6 +9,7 @@
 use crate::opts::Opts;
 use crate::{stage_err, to_json, Stage};
 use pyo3::prelude::*;
+use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
 use viscoroll::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
 use viscoroll::pipeline::roll_fit::{roll_source_at, CreepSource};
 use viscoroll::results::{CompoundFit, SceneSet};
@@ -49,11 +51,13 @@ fn source(json: &str) -> PyResult<CreepSource> {
     })
 }
 
-/// The 90 % band of `friction` at `t` on the half-space, with its notes, or why there is none: the
-/// band of `viscoroll roll` (src/cli/roll.rs `band_or_why`, the same library calls).
+/// The 90 % band of `friction` at `t` on the half-space (`cover_m` `None`) or on a cover of
+/// `cover_m` bonded to a rigid carcass, with its notes, or why there is none: the band of
+/// `viscoroll roll` (src/cli/roll.rs `band_or_why`, the same library calls).
 fn band(
     source: &CreepSource,
     scene: &Scene,
+    cover_m: Option<f64>,
     t: Option<f64>,
     friction: f64,
 ) -> (
@@ -81,7 +85,7 @@ fn band(
             }
         },
     };
-    let ratios = bands::scene_bands_on(fit, ensemble, scene, None, &[t], &settings);
+    let ratios = bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
     let (b, mut notes) = ratios.point_band(0, friction);
     let b = b.map(|b| bands::widen(b, bands::between_sd_ln(&[]), 1));
     notes.push(bands::specimens_note(1, bands::PRIOR_SD_LN));
@@ -107,6 +111,8 @@ const ROLL_KEYS: &[&str] = &[
     "scheme",
     "tol",
     "no_bands",
+    "cover_mm",
+    "model",
 ];
 
 /// One scene on a half-space at each temperature of `temps_c` (a fit; `None` for a bare creep
@@ -153,6 +159,7 @@ fn roll(
         ..ContactSettings::default()
     };
     let no_bands = o.flag("no_bands")?;
+    let cover = cover_options(&o, radius_mm)?;
     let source = source(source_json)?;
     let scene = Scene {
         radius_m: radius_mm * 1e-3,
@@ -168,11 +175,23 @@ fn roll(
     let answers = py.detach(|| -> Result<Vec<serde_json::Value>, anyhow::Error> {
         let mut out = Vec::new();
         for t in temps {
+            if let Some((cover_m, choice)) = cover {
+                out.push(roll_covered(
+                    &source,
+                    t,
+                    &scene,
+                    cover_m,
+                    choice,
+                    settings.auto.tol,
+                    no_bands,
+                )?);
+                continue;
+            }
             let r = roll_source_at(&source, t, &scene, &settings)?;
             let (b, notes) = if no_bands {
                 (Err("skipped (--no-bands)".to_string()), vec![])
             } else {
-                band(&source, &scene, t, r.roll.friction)
+                band(&source, &scene, None, t, r.roll.friction)
             };
             let (sol, d) = (&r.roll, &r.roll.dimensionless);
             out.push(serde_json::json!({
@@ -204,6 +223,94 @@ fn roll(
         Ok(out)
     });
     to_json(Stage::Roll, &answers.map_err(stage_err(stage))?)
+}
+
+/// The cover of `roll`'s options, as `viscoroll roll --cover-mm H --model M` checks them: `None`
+/// without `cover_mm` and `model` (the half-space path), else (thickness in m or none, the body).
+fn cover_options(o: &Opts, radius_mm: f64) -> PyResult<Option<(Option<f64>, ModelChoice)>> {
+    let err = |m: String| stage_err(Stage::Roll)(anyhow::anyhow!(m));
+    let (h, model) = (o.f64("cover_mm")?, o.str("model")?);
+    if h.is_none() && model.is_none() {
+        return Ok(None);
+    }
+    let name = model.unwrap_or_else(|| "auto".into());
+    let choice = ModelChoice::parse(&name).ok_or_else(|| {
+        err(format!(
+            "model `{name}` is not known (auto, half-space, layer, winkler)"
+        ))
+    })?;
+    if let Some(h) = h {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(err(format!("cover_mm must be finite and > 0, got {h}")));
+        }
+        viscoroll::limits::cover("cover_mm", h, radius_mm).map_err(|e| err(e.to_string()))?;
+    }
+    Ok(Some((h.map(|h| h * 1e-3), choice)))
+}
+
+/// One scene on a cover at `t` (src/cli/roll_cover.rs): the spectrum at the temperature, the body
+/// chosen and solved by crate::contact::body::layer::roll_cover, and the band solved on the body
+/// the main job's bands solve. The fields of `viscoroll roll --cover-mm --json`.
+fn roll_covered(
+    source: &CreepSource,
+    t: Option<f64>,
+    scene: &Scene,
+    cover_m: Option<f64>,
+    choice: ModelChoice,
+    tol: f64,
+    no_bands: bool,
+) -> Result<serde_json::Value, anyhow::Error> {
+    let (spectrum, shifted, mut warnings) = match (source, t) {
+        (CreepSource::Fit(fit), Some(t)) => {
+            let (at, w) = viscoroll::pipeline::roll_fit::fit_spectrum_at(fit, t)?;
+            (
+                at.spectrum.clone(),
+                Some(at),
+                w.into_iter().collect::<Vec<_>>(),
+            )
+        }
+        (CreepSource::Spectrum(s), None) => (s.clone(), None, Vec::new()),
+        (CreepSource::Fit(_), None) => anyhow::bail!("a fit needs a temperature (temp_c)"),
+        (CreepSource::Spectrum(_), Some(_)) => {
+            anyhow::bail!("temp_c needs a fit (a bare creep spectrum has no shift law)")
+        }
+    };
+    let r = roll_cover(scene, &spectrum, cover_m, choice, tol)?;
+    warnings.extend(r.warnings.iter().cloned());
+    let (b, notes) = match choice {
+        _ if no_bands => (Err("skipped (--no-bands)".to_string()), vec![]),
+        ModelChoice::Winkler => (Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()), vec![]),
+        ModelChoice::HalfSpace => band(source, scene, None, t, r.roll.friction),
+        ModelChoice::Auto | ModelChoice::Layer => band(source, scene, cover_m, t, r.roll.friction),
+    };
+    let sol = &r.roll;
+    Ok(serde_json::json!({
+        "temp_c": shifted.as_ref().map(|a| a.temp_c),
+        "log10_a_t": shifted.as_ref().map(|a| a.log10_a_t),
+        "extrapolated": shifted.as_ref().map(|a| a.extrapolated),
+        "friction": sol.friction,
+        "contact_length_mm": sol.contact_length_m * 1e3,
+        "offset_mm": sol.offset_m * 1e3,
+        "resistance_n_per_m": sol.resistance_n_per_m,
+        "max_pressure_mpa": sol.max_pressure_pa * 1e-6,
+        "x_mm": sol.x_m.iter().map(|x| x * 1e3).collect::<Vec<_>>(),
+        "pressure_mpa": sol.pressure_pa.iter().map(|p| p * 1e-6).collect::<Vec<_>>(),
+        "poisson": sol.problem.poisson,
+        "cover_mm": cover_m.map(|h| h * 1e3),
+        "cover_over_contact": r.cover_over_contact,
+        "model": r.model.name(),
+        "model_reason": r.reason,
+        "model_error_estimate": r.model_error_estimate,
+        "error_estimate": r.error_estimate,
+        "min_pressure_ratio": r.min_pressure_ratio,
+        "min_gap_ratio": r.min_gap_ratio,
+        "friction_p05": b.as_ref().ok().map(|b| b.p05),
+        "friction_p50": b.as_ref().ok().map(|b| b.p50),
+        "friction_p95": b.as_ref().ok().map(|b| b.p95),
+        "bands_note": b.as_ref().err(),
+        "bands_notes": notes,
+        "warnings": warnings,
+    }))
 }
 
 /// One scene (JSON of a `[[scene]]` table of scenes.toml), checked as scenes.toml is.

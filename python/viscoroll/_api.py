@@ -550,9 +550,14 @@ def roll(
     n: int = 200,
     tol: float = 1e-6,
     bands: bool = True,
+    cover_mm: Optional[float] = None,
+    model: Optional[str] = None,
 ) -> pd.DataFrame:
-    """One rolling scene on a half-space: ``viscoroll roll``, at each temperature of ``temp_c``
-    (a number or an array; a :class:`Fit` needs it, a :class:`Creep` takes none).
+    """One rolling scene: ``viscoroll roll``, at each temperature of ``temp_c`` (a number or an
+    array; a :class:`Fit` needs it, a :class:`Creep` takes none). On a half-space by default; with
+    ``cover_mm`` (a rubber cover of that thickness bonded to a rigid carcass) or ``model``
+    (``auto``, ``half-space``, ``layer``, ``winkler``) as ``viscoroll roll --cover-mm H --model M``,
+    with the columns ``model``, ``model_reason`` and ``cover_over_contact`` besides.
 
     One row per temperature: ``T``, ``log_aT``, ``extrapolated``, ``friction`` (F/N),
     ``friction_p05``/``p50``/``p95`` (the 90 % band, NaN without one, ``bands_note`` why),
@@ -575,6 +580,8 @@ def roll(
         n=n,
         tol=tol,
         no_bands=(not bands) or None,
+        cover_mm=cover_mm,
+        model=model,
     )
     rows = json.loads(_core.roll(text, temps, opts))
     for r in rows:
@@ -598,6 +605,9 @@ def roll(
             "warnings": ["; ".join(r["warnings"]) for r in rows],
         }
     ).astype({"friction_p05": float, "friction_p50": float, "friction_p95": float})
+    if rows and "model" in rows[0]:
+        for k in ["model", "model_reason", "cover_over_contact"]:
+            df[k] = [r[k] for r in rows]
     df.attrs["pressure"] = [
         pd.DataFrame({"x_mm": r["x_mm"], "pressure_mpa": r["pressure_mpa"]}) for r in rows
     ]
