@@ -303,7 +303,13 @@ fn failed_band_replicates_are_counted_and_too_many_refuse_the_band() {
     v["bands"]["notes"] = serde_json::json!([refits]);
     std::fs::write(&fit, super::support::sealed_fit_json(v)).unwrap();
     run();
-    assert!(std::fs::read_to_string(&friction).unwrap().contains(refits));
+    // a fit warning of friction.csv: in its sidecar, pointed at from every row's note
+    let (fit_warnings, notes) = super::support::fit_warnings_and_notes(&friction);
+    assert!(
+        fit_warnings.iter().any(|w| w.contains(refits)),
+        "{fit_warnings:?}"
+    );
+    assert!(notes.iter().all(|n| n.contains("(see friction.meta.json)")));
     let (rows, sheet, warnings, mean_p05) = texts();
     let said = "uncertainty band from 27 of 32 bootstrap replicates: 5 failed";
     for (note, p05) in &rows {
