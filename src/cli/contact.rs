@@ -11,9 +11,9 @@
 //! (h′), `cover_over_contact` (h′/λ), `poisson`, `error_estimate`, `tol`, `min_pressure_ratio`,
 //! `min_gap_ratio`, `warnings`.
 
-use crate::contact::body::layer::{
-    self, auto_choice, roll_cover::push_length_warning, solve_cover, BodyAnswer, BodyModel,
-    CoverAnswer, ModelChoice,
+use crate::contact::body::layer::{self, BodyAnswer, BodyModel};
+use crate::contact::cover::{
+    auto_choice, push_length_warning, solve_cover, CoverAnswer, ModelChoice,
 };
 use crate::contact::{self, AutoSettings, ContactSettings, CreepTerm, Scheme};
 use anyhow::{bail, Context};
@@ -175,7 +175,7 @@ fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> any
         _ => bail!("give exactly one of --lambda and --load"),
     };
     let d = &sol;
-    let Some(diag) = d.auto.as_ref() else {
+    let Some(diag) = d.diagnostics.as_ref() else {
         bail!("the auto scheme returned no diagnostics");
     };
     let friction = args.rho.map(|rho| d.friction_rho / rho);
@@ -354,8 +354,14 @@ fn cover_at_lambda(
             BodyAnswer {
                 model,
                 error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
-                min_pressure_ratio: sol.auto.as_ref().map_or(f64::NAN, |d| d.min_pressure_ratio),
-                min_gap_ratio: sol.auto.as_ref().map_or(f64::NAN, |d| d.min_gap_ratio),
+                min_pressure_ratio: sol
+                    .diagnostics
+                    .as_ref()
+                    .map_or(f64::NAN, |d| d.min_pressure_ratio),
+                min_gap_ratio: sol
+                    .diagnostics
+                    .as_ref()
+                    .map_or(f64::NAN, |d| d.min_gap_ratio),
                 warnings: sol.warnings.clone(),
                 solution: sol,
             }

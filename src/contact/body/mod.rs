@@ -25,9 +25,8 @@ pub mod half_space;
 pub mod layer;
 
 use super::error::ContactError;
-use super::scene::DimensionlessScene;
+use super::problem::{DimensionlessScene, DimensionlessSolution};
 use super::settings::ContactSettings;
-use super::DimensionlessSolution;
 use serde::{Deserialize, Serialize};
 
 /// What the roll rolls on (dimensional parameters, SI). JSON: `{"kind": "half_space"}`.

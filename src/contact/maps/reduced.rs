@@ -6,7 +6,7 @@
 
 use super::FrictionMapError;
 use crate::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 use crate::{CreepSpectrum, ModulusKind};
 use std::f64::consts::PI;
 

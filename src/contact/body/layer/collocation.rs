@@ -46,7 +46,7 @@
 use super::kernel::LayerKernel;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::DimensionlessSolution;
+use crate::contact::problem::DimensionlessSolution;
 
 /// Settings of the layer solve at given load.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -339,7 +339,7 @@ pub fn contact_checks(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
 
     /// A solve at λ/h′ beyond the bound is refused before any kernel table is built (a bracket search
     /// on a wild bootstrap replicate asked for λ/h′ ≈ 10⁵–10⁶: gigabytes of quadrature nodes), and

@@ -44,7 +44,7 @@ use super::compliance::{winkler_coefficient, WinklerColumns};
 use crate::contact::error::{positive, ContactError};
 use crate::contact::half_space::modes::Modes;
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use crate::special::gauss_legendre::gauss_legendre;
 
 /// A Winkler foundation with its relaxation modes.
@@ -163,7 +163,7 @@ impl Winkler {
                 n: 0,
                 iterations: 0,
                 error_estimate: Some(0.0),
-                auto: None,
+                diagnostics: None,
                 warnings: Vec::new(),
             },
             min_pressure_ratio,

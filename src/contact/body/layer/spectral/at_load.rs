@@ -23,7 +23,7 @@ use crate::contact::body::layer::collocation::{contact_checks, lambda_guess, Lay
 use crate::contact::body::layer::LayerKernel;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use crate::special::chebyshev::sine_series;
 use std::cell::RefCell;
 
@@ -269,7 +269,7 @@ fn to_dimensionless(s: &LambdaSolution, p: usize) -> DimensionlessSolution {
         n: p,
         iterations: 0,
         error_estimate: None,
-        auto: None,
+        diagnostics: None,
         warnings: Vec::new(),
     }
 }

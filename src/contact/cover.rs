@@ -23,12 +23,16 @@
 //! indentation, estimated as the roll's depth below the higher contact edge, max(β, λ−β)²/(2ρ)·VT
 //! (a lower bound of the true one), below about 30 % of the cover.
 
-use super::{layer_at_load, winkler_at_load, BodyAnswer, BodyModel, LayerSettings, WinklerColumns};
 use crate::contact::body::half_space;
+pub use crate::contact::body::layer::LAYER_TOL_FLOOR;
+use crate::contact::body::layer::{
+    layer_at_load, winkler_at_load, BodyAnswer, BodyModel, LayerSettings, WinklerColumns,
+};
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::LoadSettings;
+use crate::contact::problem::CreepTerm;
 use crate::contact::scene::{RollSolution, Scene};
-use crate::contact::{roll, Body, ContactSettings, CreepTerm};
+use crate::contact::{roll, Body, ContactSettings};
 use crate::CreepSpectrum;
 
 /// Half-space law of approach: relative difference from the layer ≤ C_HS·(L/h)² (module doc;
@@ -41,10 +45,6 @@ pub const C_HALF_SPACE: f64 = 3.0;
 /// the spectral solver reaches the linear range (`tests::criterion_nu049`: C → 0.11 below h/λ ≈ 0.04,
 /// down to h/λ = 0.009), so the rule holds there with a margin of 3.6.
 pub const C_WINKLER: f64 = 0.4;
-/// The hat collocation (the fallback for very thin covers) converges to first order in λ
-/// (Richardson-extrapolated); below this tolerance its cost grows past a second per point, so it is
-/// solved to at least this.
-pub const LAYER_TOL_FLOOR: f64 = 1e-4;
 
 /// Which body to solve.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -135,7 +135,7 @@ pub fn auto_choice(
 /// The half-space answer of the `auto` scheme at `tol` as a [`BodyAnswer`].
 fn half_space_answer(terms: &[CreepTerm], load: f64, tol: f64) -> Result<BodyAnswer, ContactError> {
     let sol = half_space::solve_at_load(terms, load, &ContactSettings::auto(tol))?;
-    let diag = sol.auto.clone();
+    let diag = sol.diagnostics.clone();
     Ok(BodyAnswer {
         model: BodyModel::HalfSpace,
         error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
@@ -313,7 +313,7 @@ pub fn roll_cover_with(
             ..*scene
         };
         let r = roll(&hs_scene, spectrum, &ContactSettings::auto(tol))?;
-        let diag = r.dimensionless.auto.clone();
+        let diag = r.dimensionless.diagnostics.clone();
         return Ok(CoverRoll {
             error_estimate: r.dimensionless.error_estimate.unwrap_or(f64::NAN),
             model: BodyModel::HalfSpace,
