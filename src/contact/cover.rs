@@ -264,6 +264,114 @@ pub fn solve_cover_with(
     })
 }
 
+/// Solve the dimensionless problem at given contact length λ on a cover of dimensionless thickness
+/// `thickness` = h/(VT) with the body `choice` (`viscoroll contact --cover --lambda`): the half-space by
+/// the scheme of `settings`; the bonded layer by the hat collocation with `settings.n` intervals, its
+/// error estimated from the same solve at n/2 (largest relative change of β, N′ and ρF/N); the Winkler
+/// foundations in closed form; `auto` applies the criterion of [`auto_choice`] at the given λ with `tol`.
+pub fn solve_cover_at_lambda(
+    terms: &[CreepTerm],
+    lambda: f64,
+    thickness: f64,
+    poisson: f64,
+    choice: ModelChoice,
+    tol: f64,
+    settings: &ContactSettings,
+) -> Result<CoverAnswer, ContactError> {
+    positive("cover thickness h/(VT)", thickness)?;
+    let (h, nu) = (thickness, poisson);
+    let (model, reason, model_err) = match choice {
+        ModelChoice::HalfSpace => (BodyModel::HalfSpace, "half-space asked for (--model half-space)".to_string(), None),
+        ModelChoice::Layer => (BodyModel::Layer, "bonded layer asked for (--model layer)".to_string(), None),
+        ModelChoice::Winkler => (
+            BodyModel::Winkler,
+            "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)".to_string(),
+            None,
+        ),
+        ModelChoice::Auto => match auto_choice(terms, lambda, h, nu, tol) {
+            Some((m, e)) => (
+                m,
+                format!(
+                    "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {e:.1e})",
+                    h / lambda,
+                    m.name(),
+                    tol
+                ),
+                Some(e),
+            ),
+            None => (
+                BodyModel::Layer,
+                "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".to_string(),
+                None,
+            ),
+        },
+    };
+    let answer = match model {
+        BodyModel::HalfSpace => {
+            let sol = half_space::solve_at_lambda(terms, lambda, settings)?;
+            BodyAnswer {
+                model,
+                error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
+                min_pressure_ratio: sol
+                    .diagnostics
+                    .as_ref()
+                    .map_or(f64::NAN, |d| d.min_pressure_ratio),
+                min_gap_ratio: sol
+                    .diagnostics
+                    .as_ref()
+                    .map_or(f64::NAN, |d| d.min_gap_ratio),
+                warnings: sol.warnings.clone(),
+                solution: sol,
+            }
+        }
+        BodyModel::Layer => {
+            let k = crate::contact::body::layer::LayerKernel::new(terms, h, nu)?;
+            let n = settings.n.max(4) / 2 * 2;
+            let fine = crate::contact::body::layer::collocation::solve_at_lambda(&k, lambda, n)?;
+            let coarse =
+                crate::contact::body::layer::collocation::solve_at_lambda(&k, lambda, n / 2)?;
+            let rel = |a: f64, b: f64| (a - b).abs() / a.abs().max(b.abs()).max(f64::MIN_POSITIVE);
+            let est = rel(fine.beta, coarse.beta)
+                .max(rel(fine.load, coarse.load))
+                .max(rel(fine.friction_rho, coarse.friction_rho));
+            let (min_pressure_ratio, min_gap_ratio) =
+                crate::contact::body::layer::collocation::contact_checks(&k, &fine)?;
+            BodyAnswer {
+                model,
+                error_estimate: est,
+                min_pressure_ratio,
+                min_gap_ratio,
+                warnings: Vec::new(),
+                solution: fine,
+            }
+        }
+        BodyModel::Winkler | BodyModel::WinklerConstrained => {
+            let columns = if model == BodyModel::Winkler {
+                crate::contact::body::layer::WinklerColumns::Uniaxial
+            } else {
+                crate::contact::body::layer::WinklerColumns::Constrained
+            };
+            let w = crate::contact::body::layer::Winkler::new(terms, columns, h, nu)?
+                .at_lambda(lambda)?;
+            let mut solution = w.solution;
+            solution.warnings.extend(w.warnings.iter().cloned());
+            BodyAnswer {
+                model,
+                error_estimate: 0.0,
+                min_pressure_ratio: w.min_pressure_ratio,
+                min_gap_ratio: w.min_gap_ratio,
+                warnings: w.warnings,
+                solution,
+            }
+        }
+    };
+    Ok(CoverAnswer {
+        answer,
+        reason,
+        model_error_estimate: model_err,
+    })
+}
+
 /// Solve `scene` on a cover of `cover_m` (None: half-space) with the body `choice`, to `tol`.
 pub fn roll_cover(
     scene: &Scene,

@@ -5,10 +5,13 @@
 //! [`Scheme`]: thesis, exact or auto); output: the [`RollSolution`] (pressure, contact length,
 //! offset, rolling-friction coefficient, error estimate and warnings) or a [`ContactError`].
 //!
-//! Layout: [`scene`] (to and from the dimensionless problem, [`roll`]), [`settings`], [`error`],
-//! [`load`] (the load loop of the thesis scheme), [`body`] (the seam: one enum, one dispatch;
-//! [`body::half_space`] holds the half-space kernel, modes, reduction and the three schemes),
-//! [`maps`] (friction maps of a spectrum from one reduced variable, half-space only).
+//! Layout: the ground, importing nothing else of contact: [`problem`] (the dimensionless problem and
+//! solution common to every body), [`settings`] (every scheme's settings), [`error`]; [`load`] (the
+//! load loop) on it; [`body`] (the seam: one enum, one dispatch; [`body::half_space`] holds the
+//! half-space kernel, modes, reduction and the three schemes, [`body::layer`] the cover and the Winkler
+//! foundations) over them; [`scene`] (to and from the dimensionless problem, [`roll`]), [`cover`] (the
+//! choice of body for a cover) and [`maps`] (friction maps of a spectrum from one reduced variable)
+//! over the dispatch.
 //!
 //! Dimensionless problem (thesis §3.2, eq. 3.25): lengths in units of V·T, contact on 0 ≤ ξ ≤ λ with the
 //! front (leading) edge at ξ = λ, creep function γ(ζ) = Σᵢ fᵢ e^(−bᵢζ) (eq. 3.7), unknown pressure Q′(ξ)
