@@ -898,7 +898,7 @@ mod tests {
         // 1 + 2·Σwᵢ/w* times, and the answer missed tol 1e−4 (estimate 1.2e−4, flagged; this test
         // fails so). With the budget divided by that factor it meets tol, and its true error
         // (against tol 1e−9) lies within its estimate plus the refinement's.
-        use crate::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+        use crate::contact::body::half_space::auto::{solve_auto_at_load, AutoSettings};
         let terms = super::super::spread_terms(30, 24.0);
         let hs = solve_auto_at_load(
             &terms,
