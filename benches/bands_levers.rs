@@ -8,9 +8,8 @@
 use viscoroll::bands::friction::band_contact_settings;
 use viscoroll::bands::{build_ensemble, BandSettings};
 use viscoroll::contact::body::layer::collocation::contact_checks;
-use viscoroll::contact::body::layer::{
-    layer_at_load, roll_cover_from, LayerKernel, LayerSettings, ModelChoice,
-};
+use viscoroll::contact::body::layer::{layer_at_load, LayerKernel, LayerSettings};
+use viscoroll::contact::cover::{roll_cover_from, ModelChoice};
 use viscoroll::contact::{roll, Scene};
 use viscoroll::pipeline::RunOptions;
 use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};

@@ -126,8 +126,8 @@ fn main() {
                 "| {name} | {tol:.0e} | {} | {} | {}/{} | {e_fr:.1e} | {e_l:.1e} | {:.1e} | {tn} | {tt} |",
                 micros(t),
                 micros(wall),
-                s.auto.as_ref().unwrap().modes_used,
-                s.auto.as_ref().unwrap().modes_total,
+                s.diagnostics.as_ref().unwrap().modes_used,
+                s.diagnostics.as_ref().unwrap().modes_total,
                 s.error_estimate.unwrap()
             );
         }
@@ -142,8 +142,8 @@ fn main() {
         }
         println!(
             "| {name}: reference tol 1e-10 | | | | {}/{} | | | {:.1e} | | |",
-            reference.auto.as_ref().unwrap().modes_used,
-            reference.auto.as_ref().unwrap().modes_total,
+            reference.diagnostics.as_ref().unwrap().modes_used,
+            reference.diagnostics.as_ref().unwrap().modes_total,
             reference.error_estimate.unwrap()
         );
     }

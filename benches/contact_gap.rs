@@ -44,7 +44,7 @@ fn main() {
             ..Default::default()
         };
         let first = solve_auto_at_load(&terms, 1.0, &on).unwrap();
-        let (used, n_coef) = (first.auto.as_ref().unwrap().modes_used, first.n);
+        let (used, n_coef) = (first.diagnostics.as_ref().unwrap().modes_used, first.n);
         let t_off = time_it(|| {
             solve_auto_at_load(&terms, 1.0, &off).unwrap();
         });

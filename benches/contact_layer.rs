@@ -13,7 +13,7 @@ use std::time::Instant;
 use viscoroll::contact::body::layer::{
     collocation, layer_at_load, winkler_at_load, LayerKernel, LayerSettings, WinklerColumns,
 };
-use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
+use viscoroll::contact::cover::{roll_cover, ModelChoice};
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
 use viscoroll::contact::load::LoadSettings;
 use viscoroll::contact::{Body, CreepTerm, Scene};

@@ -65,7 +65,7 @@ fn rescaled(terms: &[CreepTerm], k: f64) -> Vec<CreepTerm> {
 }
 
 fn split(s: &DimensionlessSolution) -> (usize, usize, usize) {
-    let d = s.auto.as_ref().expect("auto diagnostics");
+    let d = s.diagnostics.as_ref().expect("auto diagnostics");
     (d.modes_used, d.modes_lumped, d.modes_dropped)
 }
 

@@ -44,7 +44,7 @@
 
 use std::path::PathBuf;
 use viscoroll::bands::{band_of, build_ensemble, scene_bands_on, BandSettings};
-use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
+use viscoroll::contact::cover::{roll_cover, ModelChoice};
 use viscoroll::contact::roll;
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::dma::{read_files, IngestOptions};

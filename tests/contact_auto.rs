@@ -5,14 +5,14 @@
 //! mpmath table (tests/data/exact_one_term_reference.csv).
 
 use viscoroll::contact::{
-    one_term_at_load, roll, solve_at_lambda, solve_at_load, AutoDiagnostics, AutoSettings, Body,
-    ContactSettings, CreepTerm, DimensionlessSolution, Scene, Scheme,
+    one_term_at_load, roll, solve_at_lambda, solve_at_load, AutoSettings, Body, ContactSettings,
+    CreepTerm, Diagnostics, DimensionlessSolution, Scene, Scheme,
 };
 use viscoroll::creep::{CreepSpectrum, RetardationTerm};
 
 /// The `auto` diagnostics of an answer (every solve here uses the `auto` scheme).
-fn diag(s: &DimensionlessSolution) -> &AutoDiagnostics {
-    s.auto.as_ref().expect("auto diagnostics")
+fn diag(s: &DimensionlessSolution) -> &Diagnostics {
+    s.diagnostics.as_ref().expect("auto diagnostics")
 }
 
 fn settings(tol: f64) -> ContactSettings {

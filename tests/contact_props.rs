@@ -17,14 +17,14 @@
 //! of the former fixed seed 0x5EED_0004; the lumping-cap test) keep their fixed seeds.
 
 use viscoroll::contact::{
-    roll, AutoDiagnostics, AutoSettings, Body, ContactSettings, DimensionlessSolution,
-    RollSolution, Scene, Scheme,
+    roll, AutoSettings, Body, ContactSettings, Diagnostics, DimensionlessSolution, RollSolution,
+    Scene, Scheme,
 };
 use viscoroll::creep::{CreepSpectrum, RetardationTerm};
 
 /// The `auto` diagnostics of an answer (every solve here uses the `auto` scheme).
-fn diag(s: &DimensionlessSolution) -> &AutoDiagnostics {
-    s.auto.as_ref().expect("auto diagnostics")
+fn diag(s: &DimensionlessSolution) -> &Diagnostics {
+    s.diagnostics.as_ref().expect("auto diagnostics")
 }
 
 /// Cases of properties 1–3 in CI (each is two solves, tol 1e−6 and 1e−10).

@@ -8,14 +8,14 @@
 //! `cargo test --release --test tests contact_rear::scan -- --ignored --nocapture`.
 
 use viscoroll::contact::{
-    roll, solve_at_lambda, solve_at_load, AutoDiagnostics, AutoSettings, Body, ContactSettings,
-    CreepTerm, DimensionlessSolution, Scene, Scheme,
+    roll, solve_at_lambda, solve_at_load, AutoSettings, Body, ContactSettings, CreepTerm,
+    Diagnostics, DimensionlessSolution, Scene, Scheme,
 };
 use viscoroll::creep::{CreepSpectrum, RetardationTerm};
 
 /// The `auto` diagnostics of an answer (every solve here uses the `auto` scheme).
-fn diag(s: &DimensionlessSolution) -> &AutoDiagnostics {
-    s.auto.as_ref().expect("auto diagnostics")
+fn diag(s: &DimensionlessSolution) -> &Diagnostics {
+    s.diagnostics.as_ref().expect("auto diagnostics")
 }
 
 fn rel(a: f64, b: f64) -> f64 {

@@ -41,7 +41,7 @@
 use crate::reference::{friction_at_length, SceneSi};
 use rayon::prelude::*;
 use std::path::PathBuf;
-use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
+use viscoroll::contact::cover::{roll_cover, ModelChoice};
 use viscoroll::contact::{roll, AutoSettings, ContactSettings, Scheme};
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet, COVER_TOL};

@@ -23,9 +23,8 @@
 //! `#[ignore]`d: `cargo test --release --test tests layer_props::sweep -- --ignored --nocapture`.
 
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
-use viscoroll::contact::body::layer::{
-    layer_at_load, solve_cover, BodyModel, LayerSettings, ModelChoice,
-};
+use viscoroll::contact::body::layer::{layer_at_load, BodyModel, LayerSettings};
+use viscoroll::contact::cover::{solve_cover, ModelChoice};
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
 use viscoroll::contact::CreepTerm;
 

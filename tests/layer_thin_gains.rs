@@ -27,7 +27,8 @@
 
 use viscoroll::contact::body::layer::spectral::at_lambda::solve_at_lambda as fixed_degree;
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
-use viscoroll::contact::body::layer::{solve_cover, BodyModel, ModelChoice};
+use viscoroll::contact::body::layer::BodyModel;
+use viscoroll::contact::cover::{solve_cover, ModelChoice};
 use viscoroll::contact::half_space::modes::Modes;
 use viscoroll::contact::CreepTerm;
 

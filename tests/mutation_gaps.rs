@@ -3,7 +3,8 @@
 //! against a reference computed here by a different route (geometry, limits, exact solutions).
 
 use crate::reference::{Kind, Sls};
-use viscoroll::contact::body::layer::{roll_cover, BodyModel, ModelChoice};
+use viscoroll::contact::body::layer::BodyModel;
+use viscoroll::contact::cover::{roll_cover, ModelChoice};
 use viscoroll::contact::{Body, Scene};
 use viscoroll::CreepSpectrum;
 

@@ -8,7 +8,8 @@
 //! ([`band_of`], [`mean_band`]).
 
 use super::BandSettings;
-use crate::contact::body::layer::{roll_cover_with, BodyModel, ModelChoice};
+use crate::contact::body::layer::BodyModel;
+use crate::contact::cover::{roll_cover_with, ModelChoice};
 use crate::contact::{roll, AutoSettings, ContactSettings, RollSolution, Scene, Scheme};
 use crate::results::{CompoundFit, FrictionBand, FrictionPoint};
 use crate::CreepSpectrum;
@@ -113,7 +114,7 @@ impl<F> CoverSolver for F where
 }
 
 /// The covered solver of a scene for the bands: F/N, contact length in m and body of a creep
-/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`](crate::contact::body::layer::roll_cover_from), the
+/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`](crate::contact::cover::roll_cover_from), the
 /// body `choice` at [`COVER_BAND_TOL`] or the band tolerance if looser), the layer solve started
 /// from `start` = (contact length in m, d ln N′/d ln λ) when given (the fit's own covered solve at
 /// the same temperature: a replicate's contact differs from it by its scatter, a few per cent; the
@@ -563,7 +564,7 @@ mod tests {
         // (`roll_cover_from`): F/N and contact length the same to the bit, cold and warm-started,
         // on the layer and by `auto`, on the example spectrum (R 66.5 mm, 10 kN/m, 4 m/s) on 5 and
         // 10 mm covers.
-        use crate::contact::body::layer::roll_cover_from;
+        use crate::contact::cover::roll_cover_from;
         let text = std::fs::read_to_string(concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/data/spectra/example_creep.json"

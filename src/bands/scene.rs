@@ -16,7 +16,8 @@ use super::window::{
     window_note, WindowExcess, WindowSide,
 };
 use super::BandSettings;
-use crate::contact::body::layer::{BodyModel, ModelChoice};
+use crate::contact::body::layer::BodyModel;
+use crate::contact::cover::ModelChoice;
 use crate::contact::Scene;
 use crate::results::{BandEnsemble, CompoundFit, FrictionBand};
 use crate::CreepSpectrum;

@@ -11,10 +11,7 @@
 //! (h′), `cover_over_contact` (h′/λ), `poisson`, `error_estimate`, `tol`, `min_pressure_ratio`,
 //! `min_gap_ratio`, `warnings`.
 
-use crate::contact::body::layer::{
-    self, auto_choice, roll_cover::push_length_warning, solve_cover, BodyAnswer, BodyModel,
-    CoverAnswer, ModelChoice,
-};
+use crate::contact::cover::{push_length_warning, solve_cover, solve_cover_at_lambda, ModelChoice};
 use crate::contact::{self, AutoSettings, ContactSettings, CreepTerm, Scheme};
 use anyhow::{bail, Context};
 
@@ -175,7 +172,7 @@ fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> any
         _ => bail!("give exactly one of --lambda and --load"),
     };
     let d = &sol;
-    let Some(diag) = d.auto.as_ref() else {
+    let Some(diag) = d.diagnostics.as_ref() else {
         bail!("the auto scheme returned no diagnostics");
     };
     let friction = args.rho.map(|rho| d.friction_rho / rho);
@@ -246,7 +243,7 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
             if !(lambda.is_finite() && lambda > 0.0) {
                 bail!("--lambda must be finite and > 0, got {lambda}");
             }
-            cover_at_lambda(terms, lambda, h, nu, choice, args, settings)?
+            solve_cover_at_lambda(terms, lambda, h, nu, choice, args.tol, settings)?
         }
         (Some(_), Some(_)) => bail!("give only one of --lambda and --load, not both"),
         (None, None) => bail!("give one of --lambda L (contact length) or --load N' (load)"),
@@ -310,100 +307,6 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
         }
     }
     Ok(())
-}
-
-/// The cover at given λ (see [`run_cover`]).
-fn cover_at_lambda(
-    terms: &[CreepTerm],
-    lambda: f64,
-    h: f64,
-    nu: f64,
-    choice: ModelChoice,
-    args: &Args,
-    settings: &ContactSettings,
-) -> anyhow::Result<CoverAnswer> {
-    let (model, reason, model_err) = match choice {
-        ModelChoice::HalfSpace => (BodyModel::HalfSpace, "half-space asked for (--model half-space)".to_string(), None),
-        ModelChoice::Layer => (BodyModel::Layer, "bonded layer asked for (--model layer)".to_string(), None),
-        ModelChoice::Winkler => (
-            BodyModel::Winkler,
-            "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)".to_string(),
-            None,
-        ),
-        ModelChoice::Auto => match auto_choice(terms, lambda, h, nu, args.tol) {
-            Some((m, e)) => (
-                m,
-                format!(
-                    "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {e:.1e})",
-                    h / lambda,
-                    m.name(),
-                    args.tol
-                ),
-                Some(e),
-            ),
-            None => (
-                BodyModel::Layer,
-                "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".to_string(),
-                None,
-            ),
-        },
-    };
-    let answer = match model {
-        BodyModel::HalfSpace => {
-            let sol = contact::solve_at_lambda(terms, lambda, settings)?;
-            BodyAnswer {
-                model,
-                error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
-                min_pressure_ratio: sol.auto.as_ref().map_or(f64::NAN, |d| d.min_pressure_ratio),
-                min_gap_ratio: sol.auto.as_ref().map_or(f64::NAN, |d| d.min_gap_ratio),
-                warnings: sol.warnings.clone(),
-                solution: sol,
-            }
-        }
-        BodyModel::Layer => {
-            let k = layer::LayerKernel::new(terms, h, nu)?;
-            let n = settings.n.max(4) / 2 * 2;
-            let fine = layer::collocation::solve_at_lambda(&k, lambda, n)?;
-            let coarse = layer::collocation::solve_at_lambda(&k, lambda, n / 2)?;
-            let rel = |a: f64, b: f64| (a - b).abs() / a.abs().max(b.abs()).max(f64::MIN_POSITIVE);
-            let est = rel(fine.beta, coarse.beta)
-                .max(rel(fine.load, coarse.load))
-                .max(rel(fine.friction_rho, coarse.friction_rho));
-            let (min_pressure_ratio, min_gap_ratio) =
-                layer::collocation::contact_checks(&k, &fine)?;
-            BodyAnswer {
-                model,
-                error_estimate: est,
-                min_pressure_ratio,
-                min_gap_ratio,
-                warnings: Vec::new(),
-                solution: fine,
-            }
-        }
-        BodyModel::Winkler | BodyModel::WinklerConstrained => {
-            let columns = if model == BodyModel::Winkler {
-                layer::WinklerColumns::Uniaxial
-            } else {
-                layer::WinklerColumns::Constrained
-            };
-            let w = layer::Winkler::new(terms, columns, h, nu)?.at_lambda(lambda)?;
-            let mut solution = w.solution;
-            solution.warnings.extend(w.warnings.iter().cloned());
-            BodyAnswer {
-                model,
-                error_estimate: 0.0,
-                min_pressure_ratio: w.min_pressure_ratio,
-                min_gap_ratio: w.min_gap_ratio,
-                warnings: w.warnings,
-                solution,
-            }
-        }
-    };
-    Ok(CoverAnswer {
-        answer,
-        reason,
-        model_error_estimate: model_err,
-    })
 }
 
 /// The fields every `contact --json` answer carries: scheme, creep terms, λ, β, β/λ, N′, ρF/N, n,

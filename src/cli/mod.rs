@@ -34,6 +34,8 @@ mod master;
 mod output;
 mod rank;
 mod roll;
+mod roll_args;
+mod roll_band;
 mod roll_cover;
 mod roll_print;
 mod run;

@@ -1,5 +1,5 @@
 //! `viscoroll roll … --cover-mm H [--model auto|half-space|layer|winkler]`: the scene on a rubber cover
-//! of thickness H bonded to a rigid carcass ([`crate::contact::body::layer::roll_cover`]).
+//! of thickness H bonded to a rigid carcass ([`crate::contact::cover::roll_cover`]).
 //!
 //! `--json` prints the fields of `roll` plus `model` (the body solved), `model_reason`,
 //! `model_error_estimate` (when `auto` chose a cheaper body than the layer: its estimated relative
@@ -8,9 +8,10 @@
 //! band `friction_p05/p50/p95` with `bands_note` (a fit file made by `viscoroll run`: solved on the
 //! cover as in the main job, docs/MATH.md eq. 15.6); printed by the shared [`super::roll_print`]. Warnings also go to stderr.
 
-use super::roll::Args;
+use super::roll_args::Args;
+use super::roll_band::{band, band_fields};
 use super::roll_print::{Answer, Shift};
-use crate::contact::body::layer::{roll_cover, ModelChoice};
+use crate::contact::cover::{roll_cover, ModelChoice};
 use crate::contact::Scene;
 use crate::creep::AtTemperature;
 use crate::pipeline::roll_fit::CreepSource;
@@ -51,8 +52,8 @@ pub fn run(
     // or on the half-space when one was asked for; the uniaxial Winkler model has none.
     let band = match choice {
         ModelChoice::Winkler => Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()).into(),
-        ModelChoice::HalfSpace => super::roll::band(args, source, scene, None, r.roll.friction),
-        ModelChoice::Auto | ModelChoice::Layer => super::roll::band(
+        ModelChoice::HalfSpace => band(args, source, scene, None, r.roll.friction),
+        ModelChoice::Auto | ModelChoice::Layer => band(
             args,
             source,
             scene,
@@ -72,7 +73,7 @@ pub fn run(
         "min_gap_ratio": r.min_gap_ratio,
     });
     let mut json_extra = json_extra.as_object().cloned().unwrap_or_default();
-    let band_line = super::roll::band_fields(&band, &mut json_extra);
+    let band_line = band_fields(&band, &mut json_extra);
     Answer {
         args,
         sol: &r.roll,

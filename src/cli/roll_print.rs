@@ -4,7 +4,7 @@
 //! It takes the SI solution, the temperature shift (fit files only), the warnings and what each
 //! caller adds (JSON fields, text lines), and prints the shared fields once.
 
-use super::roll::Args;
+use super::roll_args::Args;
 use crate::contact::scene::RollSolution;
 
 /// The temperature a fit's spectrum was moved to.

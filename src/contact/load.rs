@@ -24,38 +24,8 @@
 //! References: R. P. Brent, *Algorithms for Minimization without Derivatives*, Prentice-Hall 1973, ch. 4.
 
 use super::error::{positive, ContactError};
-use super::DimensionlessSolution;
-
-/// Settings of the load loop.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LoadSettings {
-    /// Relative tolerance on the load: stop when |N′(λ) − N′₀| ≤ `rel_tol`·N′₀. Default 1e-10 (far
-    /// below any discretisation error, and Brent converges superlinearly, so it costs few solves).
-    pub rel_tol: f64,
-    /// Stop also when the bracket on λ is narrower than this, relative (the load is then accepted if
-    /// within `accept_tol`). Default 1e-10: N′(λ) carries rounding noise of ≈ 1e-9 relative at n ≈ 200
-    /// (the collocation matrix of a first-kind equation has condition ≈ 1e4), so Brent cannot always
-    /// meet `rel_tol`; λ is then known to 1e-10 anyway.
-    pub lambda_rel_tol: f64,
-    /// Loosest relative load error accepted when the λ bracket has collapsed. Default 1e-8.
-    pub accept_tol: f64,
-    /// Largest number of solves. Default 100.
-    pub max_solves: usize,
-    /// How many times each end of the initial bracket may be widened by 1.25. Default 40 (a factor 7500).
-    pub max_expand: usize,
-}
-
-impl Default for LoadSettings {
-    fn default() -> Self {
-        Self {
-            rel_tol: 1e-10,
-            lambda_rel_tol: 1e-10,
-            accept_tol: 1e-8,
-            max_solves: 100,
-            max_expand: 40,
-        }
-    }
-}
+use super::problem::DimensionlessSolution;
+pub use super::settings::LoadSettings;
 
 /// Solve for the contact length that carries load `load` (N′₀), with the solver `solve` at given λ.
 ///
@@ -604,7 +574,7 @@ mod tests {
             n: 0,
             iterations: 0,
             error_estimate: None,
-            auto: None,
+            diagnostics: None,
             warnings: Vec::new(),
         }
     }

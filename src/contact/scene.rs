@@ -20,8 +20,8 @@
 
 use super::body::{self, Body};
 use super::error::{non_negative, positive, ContactError};
+use super::problem::{CreepTerm, DimensionlessScene, DimensionlessSolution};
 use super::settings::ContactSettings;
-use super::{CreepTerm, DimensionlessSolution};
 use crate::{CreepSpectrum, ModulusKind};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -41,27 +41,6 @@ pub struct Scene {
     /// What the roll rolls on (default: the half-space, also when absent from JSON).
     #[serde(default)]
     pub body: Body,
-}
-
-/// The dimensionless problem of a scene and the scales to go back.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct DimensionlessScene {
-    /// Creep terms fᵢ = (Jᵢ/J_g)(T/τᵢ), bᵢ = T/τᵢ (eq. 3.8).
-    pub terms: Vec<CreepTerm>,
-    /// Load N′ (eq. 3.24); 1/4 by the choice of T.
-    pub load: f64,
-    /// ρ = R/(VT).
-    pub rho: f64,
-    /// Characteristic time T in s.
-    pub time_scale_s: f64,
-    /// Length scale V·T in m (= the glassy Hertz contact length).
-    pub length_scale_m: f64,
-    /// q = `pressure_scale_pa`·Q′, i.e. π·VT/(R·C).
-    pub pressure_scale_pa: f64,
-    /// Poisson's ratio used.
-    pub poisson: f64,
-    /// C = (1−ν)/μ₀ in 1/Pa.
-    pub compliance_factor_per_pa: f64,
 }
 
 /// The solution of a scene in SI units.

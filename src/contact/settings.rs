@@ -2,12 +2,12 @@
 //! settings of each, carried together by one [`ContactSettings`] (physics lives in
 //! [`super::scene::Scene`]).
 //!
+//! Imports nothing else of `contact`: the ground floor with [`super::problem`] and [`super::error`].
+//!
 //! Input: nothing (plain data, built by the caller); output: handed to [`super::roll`], to the
 //! dimensionless entry points [`super::solve_at_load`] / [`super::solve_at_lambda`] and through the
 //! body dispatch ([`super::body`]) to the scheme.
 
-use super::body::half_space::auto::AutoSettings;
-use super::load::LoadSettings;
 use serde::{Deserialize, Serialize};
 
 /// Which discretisation solves eq. 3.25.
@@ -99,6 +99,67 @@ impl ContactSettings {
             scheme: Scheme::Thesis,
             n,
             ..Self::default()
+        }
+    }
+}
+
+/// Settings of the `auto` scheme.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct AutoSettings {
+    /// Relative tolerance on ρ·F/N and λ (default 1e−6; allowed 1e−12 … 0.1).
+    pub tol: f64,
+    /// Iteration limit of the load loop (default 100; a bracketed secant needs ~6).
+    pub max_iterations: usize,
+    /// Uniform-in-θ points of the returned pressure profile (default 200), plus ~40 in the front layer.
+    pub profile_points: usize,
+    /// Evaluate the gap outside the contact (default true; costs ~4 points × 129 × N kernel
+    /// evaluations, ≈ 0.3 ms for one term, more than the solve itself for few terms).
+    #[serde(default = "default_true")]
+    pub gap_check: bool,
+}
+
+fn default_true() -> bool {
+    true
+}
+
+impl Default for AutoSettings {
+    fn default() -> Self {
+        AutoSettings {
+            tol: 1e-6,
+            max_iterations: 100,
+            profile_points: 200,
+            gap_check: true,
+        }
+    }
+}
+
+/// Settings of the load loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadSettings {
+    /// Relative tolerance on the load: stop when |N′(λ) − N′₀| ≤ `rel_tol`·N′₀. Default 1e-10 (far
+    /// below any discretisation error, and Brent converges superlinearly, so it costs few solves).
+    pub rel_tol: f64,
+    /// Stop also when the bracket on λ is narrower than this, relative (the load is then accepted if
+    /// within `accept_tol`). Default 1e-10: N′(λ) carries rounding noise of ≈ 1e-9 relative at n ≈ 200
+    /// (the collocation matrix of a first-kind equation has condition ≈ 1e4), so Brent cannot always
+    /// meet `rel_tol`; λ is then known to 1e-10 anyway.
+    pub lambda_rel_tol: f64,
+    /// Loosest relative load error accepted when the λ bracket has collapsed. Default 1e-8.
+    pub accept_tol: f64,
+    /// Largest number of solves. Default 100.
+    pub max_solves: usize,
+    /// How many times each end of the initial bracket may be widened by 1.25. Default 40 (a factor 7500).
+    pub max_expand: usize,
+}
+
+impl Default for LoadSettings {
+    fn default() -> Self {
+        Self {
+            rel_tol: 1e-10,
+            lambda_rel_tol: 1e-10,
+            accept_tol: 1e-8,
+            max_solves: 100,
+            max_expand: 40,
         }
     }
 }

@@ -4,9 +4,11 @@
 //! fit files, friction in the scenes, and the reports (written by crate::report), plus a
 //! [`RunSummary`]. The result types live one floor down, in crate::results.
 
+mod compare;
 pub mod compounds;
 pub mod error;
 pub mod fit_compound;
+mod folder;
 pub mod roll_fit;
 pub mod run;
 pub mod scenes;

@@ -21,10 +21,9 @@ use crate::Measurement;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
+use super::compare::compare_ranked;
+pub use super::folder::{fit_path, LOCK_WAIT};
 pub use crate::results::{CompoundOutcome, RunStatus, RunSummary};
-
-/// How long a run waits for another run that holds the output folder.
-pub const LOCK_WAIT: std::time::Duration = std::time::Duration::from_secs(1800);
 
 /// Options of [`run_all`].
 #[derive(Debug, Clone)]
@@ -903,41 +902,6 @@ pub fn run_all_with_progress(
     Ok(summary)
 }
 
-/// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,
-/// in ranking order), and each standing's `tied_with` filled from the ties.
-pub(super) fn compare_ranked(
-    outcomes: &mut [CompoundOutcome],
-    scenes: &SceneSet,
-) -> Vec<crate::results::PairComparison> {
-    let mut all = Vec::new();
-    for spec in &scenes.scene {
-        let ranked: Vec<(String, crate::results::FrictionBand)> =
-            crate::report::ranked(outcomes, &spec.name)
-                .into_iter()
-                .filter_map(|(o, s)| s.band.map(|b| (o.compound.clone(), b)))
-                .collect();
-        let pairs = crate::bands::comparisons(&spec.name, &ranked);
-        for o in outcomes.iter_mut() {
-            let name = o.compound.clone();
-            if let Some(st) = o.standings.iter_mut().find(|s| s.scene == spec.name) {
-                st.tied_with = pairs
-                    .iter()
-                    .filter(|p| p.tied && (p.a == name || p.b == name))
-                    .map(|p| {
-                        if p.a == name {
-                            p.b.clone()
-                        } else {
-                            p.a.clone()
-                        }
-                    })
-                    .collect();
-            }
-        }
-        all.extend(pairs);
-    }
-    all
-}
-
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
 /// compounds first by mean friction, then the others, then the failures. With `bands` (and a fit
 /// file that carries its ensemble, as `run` writes it) each point and each mean gets its band as in
@@ -1001,9 +965,4 @@ pub fn rank_fits(
             .collect();
     }
     (v, pairs)
-}
-
-/// The output folder's fit path of a compound.
-pub fn fit_path(out_dir: &Path, compound: &str) -> PathBuf {
-    out_dir.join("fits").join(format!("{compound}.json"))
 }

@@ -6,7 +6,7 @@
 
 use super::error::PipelineError;
 use super::roll_fit::fit_spectrum_at;
-use crate::contact::body::layer::{roll_cover, ModelChoice};
+use crate::contact::cover::{roll_cover, ModelChoice};
 use crate::contact::maps::{
     covered_map, friction_map, CoveredProblem, MapQuery, MapSettings, MapValue, ReducedProblem,
 };
@@ -304,7 +304,7 @@ pub fn friction_maps(
     }
     let mut warnings = solved.warnings;
     let (points, grid, curves, long) = sort_map_points(&jobs, values, spec);
-    // the covered body's validity check (contact::body::layer::roll_cover) at the listed map points
+    // the covered body's validity check (contact::cover::roll_cover) at the listed map points
     if long > 0.3 {
         warnings.push(format!(
             "map: contact length / radius up to {long:.2} > 0.3: the flat-surface, small-strain \

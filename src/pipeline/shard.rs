@@ -20,8 +20,9 @@
 //! and writes `reports/ranking.csv` and `reports/index.html` (the tan δ proxies from the fit files
 //! in `OUT/fits/`). Friction is not solved again: the ranking is the whole run's, to the bit.
 
+use super::compare::compare_ranked;
 use super::error::{io, PipelineError};
-use super::run::{compare_ranked, fit_path};
+use super::folder::{fit_path, LOCK_WAIT};
 use crate::report::{write_file, write_index, write_ranking, write_workbook, TanDeltaProxy};
 use crate::results::{CompoundFit, RunSummary, SceneSet};
 use serde::{Deserialize, Serialize};
@@ -199,8 +200,8 @@ fn check_whole(out_dir: &Path, files: &[ShardFile]) -> Result<SceneSet, Pipeline
 /// the workbook `reports/viscoroll.xlsx` when `xlsx` (crate::report::workbook) and
 /// `reports/index.html`, and returns the whole run's summary (outcomes in discovery order).
 pub fn merge_shards(out_dir: &Path, xlsx: bool) -> Result<RunSummary, PipelineError> {
-    let _lock = crate::fsutil::DirLock::acquire(out_dir, super::run::LOCK_WAIT, &|_| {})
-        .map_err(io(out_dir))?;
+    let _lock =
+        crate::fsutil::DirLock::acquire(out_dir, LOCK_WAIT, &|_| {}).map_err(io(out_dir))?;
     let files = read_shard_files(out_dir)?;
     let scenes = check_whole(out_dir, &files)?;
     let total = files[0].compounds_total;

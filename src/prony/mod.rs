@@ -10,6 +10,7 @@ mod error;
 pub mod fit;
 mod info;
 pub mod kernel;
+pub mod points;
 pub mod pyvisco_csv;
 mod settings;
 pub mod synthetic;

@@ -42,8 +42,8 @@
 //!   squares problems whose variables separate, SIAM J. Numer. Anal. 10, 413–432; Kaufman, L. (1975),
 //!   A variable projection method for solving separable nonlinear least squares problems, BIT 15, 49–57.
 
-use super::fit::{log10_errors, Log10Errors, MasterPoint};
 use super::kernel::{loss_kernel, storage_kernel};
+use super::points::{log10_errors, Log10Errors, MasterPoint};
 use super::{PronyError, RelaxationSpectrum, RelaxationTerm};
 use crate::ModulusKind;
 use nalgebra::{DMatrix, DVector};

@@ -8,6 +8,7 @@
 
 pub mod band_ensemble;
 pub mod compound_fit;
+mod line;
 pub mod outcome;
 pub mod scene;
 

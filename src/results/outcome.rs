@@ -15,25 +15,10 @@
 //! warned of its validity, a point is not determined, or extrapolated temperatures are averaged
 //! in; else *trusted*. A failed or undetermined point never enters a mean.
 
+pub use super::line::{cap_line, MAX_LINE_BYTES};
 use super::scene::FrictionPoint;
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
-
-/// Longest error or warning line kept in outcomes and reports, in bytes (a 30 MB line in an input
-/// must not become a 30 MB line in index.html).
-pub const MAX_LINE_BYTES: usize = 600;
-
-/// `s` cut to [`MAX_LINE_BYTES`] (at a character boundary) with a note of what was cut.
-pub fn cap_line(s: &str) -> String {
-    if s.len() <= MAX_LINE_BYTES {
-        return s.to_string();
-    }
-    let mut end = MAX_LINE_BYTES;
-    while !s.is_char_boundary(end) {
-        end -= 1;
-    }
-    format!("{}… ({} more bytes cut)", &s[..end], s.len() - end)
-}
 
 /// The trust levels of a compound's result in a scene, worst last (issue 31).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]

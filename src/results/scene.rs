@@ -57,7 +57,7 @@ pub struct SceneSpec {
     #[serde(default)]
     pub poisson: Option<f64>,
     /// Thickness in mm of a rubber cover bonded to a rigid carcass; absent: a half-space. The body
-    /// solved is chosen by `contact::body::layer::roll_cover` (`auto`: the cheapest within tolerance).
+    /// solved is chosen by `contact::cover::roll_cover` (`auto`: the cheapest within tolerance).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cover_thickness_mm: Option<f64>,
     /// Temperatures in °C of the friction maps (each solve costs; keep it short).
@@ -387,7 +387,7 @@ impl FrictionPoint {
             v.push("extrapolated shift law (outside the measured temperatures)".into());
         }
         v.extend(self.warnings.iter().cloned());
-        super::outcome::cap_line(&v.join("; ").replace(['\r', '\n'], " "))
+        super::line::cap_line(&v.join("; ").replace(['\r', '\n'], " "))
     }
 }
 

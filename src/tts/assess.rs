@@ -5,8 +5,8 @@
 use super::channels::Channels;
 use super::clean::Clean;
 use super::horizontal::Horizontal;
-use super::master::{IsothermShift, MasterQuality};
 use super::quality::{kramers_kronig_local, van_gurp_palmen, QualityBounds};
+use super::quality_types::{IsothermShift, MasterQuality};
 use super::settings::{MasterSettings, VerticalShift};
 use super::shift::{overlap_rms, Prepared};
 

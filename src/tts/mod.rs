@@ -14,6 +14,7 @@ mod law_choice;
 mod master;
 pub mod point_temps;
 pub mod quality;
+mod quality_types;
 mod settings;
 mod shift;
 pub mod vertical;

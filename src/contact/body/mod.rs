@@ -9,25 +9,29 @@
 //! eq. 3.19, the three schemes that solve eq. 3.25 on it, and everything they hard-wire about it).
 //!
 //! # Adding a body
-//! 1. one new file (or folder) `body/NAME.rs` with `solve_at_load` and `solve_at_lambda` taking
-//!    the dimensionless problem, the body's own (dimensionless) parameters and the settings;
+//! (docs/ARCHITECTURE.md, "Add a contact body", says the same and what is still outside the seam.)
+//! 1. one new folder `body/NAME/` with `solve_at_load` and `solve_at_lambda` taking the
+//!    dimensionless problem ([`crate::contact::problem`]), the body's own (dimensionless) parameters
+//!    and the settings; it imports the ground (`problem`, `settings`, `error`), `load` and shared
+//!    numerics, never this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
-//!    `Layer { thickness_m }`), validated in [`Body::validate`];
-//! 3. its arm in [`solve_at_load`] and [`solve_at_lambda`] below, the single dispatch point (lengths
-//!    go in units of `problem.length_scale_m`).
+//!    `Layer { thickness_m }`), validated in [`Body::validate`], and its arm in [`solve_at_load`] and
+//!    [`solve_at_lambda`] below, the single dispatch point (lengths go in units of
+//!    `problem.length_scale_m`);
+//! 3. its tests, through [`crate::contact::roll`] where they can.
 //!
-//! Nothing else changes: the scene carries the body (`Scene::body`, serde default = half-space, so
-//! existing JSON keeps working), [`crate::contact::roll`] and the friction maps call the dispatch,
-//! and the scheme is chosen by [`crate::contact::Scheme`] inside the body. A scheme a body does not
-//! support is refused with [`ContactError::Unsupported`].
+//! The scene carries the body (`Scene::body`, serde default = half-space, so existing JSON keeps
+//! working), [`crate::contact::roll`] calls the dispatch, and the scheme is chosen by
+//! [`crate::contact::Scheme`] inside the body. A scheme a body does not support is refused with
+//! [`ContactError::Unsupported`]. The choice of a body for a cover (`auto`) is
+//! [`crate::contact::cover`], one file over this dispatch.
 
 pub mod half_space;
 pub mod layer;
 
 use super::error::ContactError;
-use super::scene::DimensionlessScene;
+use super::problem::{DimensionlessScene, DimensionlessSolution};
 use super::settings::ContactSettings;
-use super::DimensionlessSolution;
 use serde::{Deserialize, Serialize};
 
 /// What the roll rolls on (dimensional parameters, SI). JSON: `{"kind": "half_space"}`.

@@ -9,7 +9,7 @@
 //! # Why two variables suffice (exact; docs/MATH.md §13)
 //! As for the half-space ([`super`]): with T = l_g/V and VT = l_g, a scene (R, N*, V, T) has the
 //! creep terms bᵢ = s/τᵢ, fᵢ = (Jᵢ/J_g)·bᵢ with s = l_g/(V·a_T), and the load N′ = 1/4. The cover
-//! enters [`crate::contact::body::layer::roll_cover`] only as its dimensionless thickness
+//! enters [`crate::contact::cover::roll_cover`] only as its dimensionless thickness
 //! h′ = h/(VT) = h/l_g, the **second reduced variable η = h/l_g**, and ν through the layer's
 //! compliance (a property of the compound, fixed for a map). So the dimensionless covered problem
 //! and its solution φ = ρF/N, λ depend on the compound and on (s, η) alone; back in SI units

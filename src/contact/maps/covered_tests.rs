@@ -4,7 +4,7 @@
 
 use super::surface::{clenshaw_2d, coefficients_2d, eta_start_degree, lebesgue, tails_2d};
 use super::*;
-use crate::contact::body::layer::{roll_cover, ModelChoice};
+use crate::contact::cover::{roll_cover, ModelChoice};
 use crate::contact::{Body, Scene};
 use crate::testdata::{broad_spectrum, SplitMix64};
 use crate::{CreepSpectrum, ShiftLaw};
@@ -36,7 +36,7 @@ fn direct(
     (r, n, v, t): (f64, f64, f64, f64),
     h_m: f64,
     tol: f64,
-) -> crate::contact::body::layer::CoverRoll {
+) -> crate::contact::cover::CoverRoll {
     let at = c.at_temperature(law, t, None).unwrap();
     let scene = Scene {
         radius_m: r,

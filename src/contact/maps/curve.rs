@@ -6,7 +6,7 @@
 
 use super::reduced::{node_tol, Node, ReducedProblem};
 use super::{FrictionMapError, MapSettings, MAX_PANELS};
-use crate::contact::half_space::auto::AutoSettings;
+use crate::contact::body::half_space::auto::AutoSettings;
 use crate::special::chebyshev::{clenshaw, lobatto_coefficients};
 use rayon::prelude::*;
 use std::f64::consts::PI;

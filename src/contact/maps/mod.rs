@@ -61,7 +61,7 @@ pub use curve::ReducedCurve;
 pub use reduced::{node_tol, Node, ReducedProblem, ReducedSolution};
 pub use surface::CoveredSurface;
 
-use crate::contact::ContactError;
+use crate::contact::error::ContactError;
 use rayon::prelude::*;
 
 /// Largest number of panels (a bound on the work: ~16 solves each; never reached in the tests).

@@ -5,8 +5,8 @@
 //! Input: a [`CreepSpectrum`] (+ Poisson's ratio), s; output: [`ReducedSolution`] / [`Node`].
 
 use super::FrictionMapError;
-use crate::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
-use crate::contact::CreepTerm;
+use crate::contact::body::half_space::auto::{solve_auto_at_load, AutoSettings};
+use crate::contact::problem::CreepTerm;
 use crate::{CreepSpectrum, ModulusKind};
 use std::f64::consts::PI;
 

@@ -59,7 +59,7 @@
 
 use crate::contact::error::ContactError;
 use crate::contact::load::{iterate, Brent, Keep, Seen, Verdict};
-use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use crate::special::gauss_legendre::Integrator;
 use crate::special::{one_minus_one_plus_c_i0, scaled_bessel_i};
 
@@ -395,7 +395,7 @@ impl OneTermExact {
             n: 0,
             iterations: self.iterations,
             error_estimate: None,
-            auto: None,
+            diagnostics: None,
             warnings: Vec::new(),
         }
     }
@@ -408,7 +408,7 @@ impl OneTermExact {
 mod tests {
     use super::*;
     use crate::contact::error::ContactError;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
     use crate::special::gauss_legendre::Integrator;
     use crate::special::kernel_bracket;
     use std::f64::consts::PI;

@@ -23,7 +23,7 @@
 //! Units: ξ in units of V·T (thesis §3.2); K is dimensionless.
 
 use crate::contact::error::{non_negative, positive, ContactError};
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 use crate::special::{kernel_bracket, kernel_bracket_int1, kernel_bracket_int2, EULER_GAMMA};
 
 /// Below this bᵢh the hat averages use the leading series term of h₂ (see [`Kernel::hat_averages`]).

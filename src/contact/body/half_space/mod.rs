@@ -21,8 +21,8 @@ pub mod thesis;
 
 use crate::contact::error::ContactError;
 use crate::contact::load::solve_at_load as load_loop;
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use crate::contact::settings::{ContactSettings, Scheme};
-use crate::contact::{CreepTerm, DimensionlessSolution};
 use kernel::Kernel;
 
 /// Solve at contact length λ with the scheme of `settings`.

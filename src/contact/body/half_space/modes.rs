@@ -11,7 +11,7 @@
 //! exactly one root κⱼ in (bⱼ, bⱼ₊₁) and one in (b_N, b_N + Σf]: N real roots. We store
 //! δⱼ = κⱼ − bⱼ so that bᵢ − κⱼ = (bᵢ − bⱼ) − δⱼ keeps its digits when fⱼ ≪ bⱼ. For one term κ = b + f.
 
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 
 /// Sorted, merged creep terms and their characteristic roots.
 #[derive(Debug, Clone, PartialEq)]

@@ -396,7 +396,7 @@ mod tests {
     use super::super::exact::one_term_at_lambda;
     use super::super::kernel::Kernel;
     use super::*;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
     use crate::special::gauss_legendre::Integrator;
 
     #[test]

@@ -24,7 +24,7 @@
 
 use super::kernel::Kernel;
 use crate::contact::error::{positive, ContactError};
-use crate::contact::DimensionlessSolution;
+use crate::contact::problem::DimensionlessSolution;
 use nalgebra::{DMatrix, DVector};
 
 /// Smallest number of intervals (one interior unknown plus β).
@@ -109,7 +109,7 @@ pub fn solve_hat_system(
         n,
         iterations: 0,
         error_estimate: None,
-        auto: None,
+        diagnostics: None,
         warnings: Vec::new(),
     })
 }

@@ -58,9 +58,9 @@
 pub mod check_rule;
 
 use super::compliance::layer_defect;
+use crate::contact::body::half_space::kernel::Kernel;
 use crate::contact::error::{positive, ContactError};
-use crate::contact::half_space::kernel::Kernel;
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 use crate::special::gauss_legendre::gauss_legendre;
 
 /// Gauss–Legendre order of each panel.

@@ -17,23 +17,23 @@
 pub mod collocation;
 pub mod compliance;
 pub mod kernel;
-pub mod roll_cover;
 pub mod spectral;
 pub mod winkler;
 
 pub use collocation::{LayerAnswer, LayerSettings};
 pub use compliance::WinklerColumns;
 pub use kernel::LayerKernel;
-pub use roll_cover::{
-    auto_choice, roll_cover, roll_cover_from, roll_cover_with, solve_cover, solve_cover_from,
-    solve_cover_with, CoverAnswer, CoverRoll, ModelChoice,
-};
 pub use winkler::{Winkler, WinklerAnswer};
 
 use crate::contact::error::ContactError;
 use crate::contact::load::LoadSettings;
-use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use serde::{Deserialize, Serialize};
+
+/// The hat collocation (the fallback for very thin covers) converges to first order in λ
+/// (Richardson-extrapolated); below this tolerance its cost grows past a second per point, so it is
+/// solved to at least this.
+pub const LAYER_TOL_FLOOR: f64 = 1e-4;
 
 /// The body a scene is solved on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -81,7 +81,7 @@ pub struct BodyAnswer {
 /// Solve the bonded layer of dimensionless thickness `thickness` at load N′: by the spectral solver
 /// ([`spectral`]) to `settings.tol`, or, where the cover is too thin against the contact for its
 /// degree cap `settings.p_max` (or `settings.spectral` is false), by the hat collocation
-/// ([`collocation`]) to max(tol, [`roll_cover::LAYER_TOL_FLOOR`]), with a warning saying so.
+/// ([`collocation`]) to max(tol, [`LAYER_TOL_FLOOR`]), with a warning saying so.
 pub fn layer_at_load(
     terms: &[CreepTerm],
     load: f64,
@@ -114,15 +114,15 @@ pub fn layer_at_load(
     }
     let kernel = LayerKernel::new(terms, thickness, poisson)?;
     let hat_settings = LayerSettings {
-        tol: settings.tol.max(roll_cover::LAYER_TOL_FLOOR),
+        tol: settings.tol.max(LAYER_TOL_FLOOR),
         ..*settings
     };
     let a = collocation::solve_layer_at_load(&kernel, load, &hat_settings)?;
-    if settings.tol < roll_cover::LAYER_TOL_FLOOR {
+    if settings.tol < LAYER_TOL_FLOOR {
         fallback_warnings.push(format!(
             "tolerance not reached: the hat collocation is solved to {:.0e} (estimate {:.1e}), not to \
              tol {:.0e} (first order; finer costs seconds)",
-            roll_cover::LAYER_TOL_FLOOR,
+            LAYER_TOL_FLOOR,
             a.error_estimate,
             settings.tol
         ));

@@ -4,9 +4,9 @@
 use super::collocation::{lambda_guess, solve_at_load_n};
 use super::compliance::{winkler_coefficient, WinklerColumns};
 use super::*;
-use crate::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
-use crate::contact::half_space::kernel::Kernel;
-use crate::contact::half_space::thesis;
+use crate::contact::body::half_space::auto::{solve_auto_at_load, AutoSettings};
+use crate::contact::body::half_space::kernel::Kernel;
+use crate::contact::body::half_space::thesis;
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
 use crate::contact::{Body, CreepTerm, Scene};
 use crate::CreepSpectrum;

@@ -41,10 +41,10 @@
 //! surface whenever β < λ.
 
 use super::compliance::{winkler_coefficient, WinklerColumns};
+use crate::contact::body::half_space::modes::Modes;
 use crate::contact::error::{positive, ContactError};
-use crate::contact::half_space::modes::Modes;
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use crate::special::gauss_legendre::gauss_legendre;
 
 /// A Winkler foundation with its relaxation modes.
@@ -79,7 +79,7 @@ impl Winkler {
     ) -> Result<Self, ContactError> {
         positive("foundation height h/(VT)", thickness)?;
         // Validates the terms (fᵢ ≥ 0, bᵢ > 0).
-        crate::contact::half_space::kernel::Kernel::new(terms)?;
+        crate::contact::body::half_space::kernel::Kernel::new(terms)?;
         let c_w = winkler_coefficient(columns, thickness, nu).ok_or_else(|| {
             ContactError::Unsupported(
                 "a Winkler foundation of constrained columns is rigid at Poisson's ratio 0.5"
@@ -163,7 +163,7 @@ impl Winkler {
                 n: 0,
                 iterations: 0,
                 error_estimate: Some(0.0),
-                auto: None,
+                diagnostics: None,
                 warnings: Vec::new(),
             },
             min_pressure_ratio,

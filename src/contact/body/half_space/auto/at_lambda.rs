@@ -298,7 +298,7 @@ fn finish(lambda: f64, l: f64, beta: f64, mu_max: f64, fcoef: Vec<f64>) -> Lambd
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
 
     #[test]
     fn hertz_limit() {

@@ -9,7 +9,7 @@ use super::at_lambda::{LambdaSolution, QuadratureSettings};
 use super::reduction::{
     calibration_mode, lump_weight, lumped_residual, model_gains, solve_reduced, unlump, Reduction,
 };
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 
 /// Σ wᵢ·λ over the lumped modes (wᵢ ∝ 1/λ, so this is independent of λ).
 pub(super) fn lumped_weight_times_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {

@@ -16,7 +16,7 @@ use super::reduction::{
 use super::settings::{budgets, quad_for, validate, AutoSettings};
 use crate::contact::error::ContactError;
 use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Verdict};
-use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 
 /// Solve at given load N′ > 0: rounds of mode selection (at the last λ), load loop and measured
 /// correction, until the estimate fits the budgets or the selection cannot change (at most 4).

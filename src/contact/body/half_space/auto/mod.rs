@@ -2,7 +2,7 @@
 //! iteration; every answer carries its error estimate and the contact-condition checks.
 //!
 //! Input: creep terms ([`CreepTerm`]), λ or N′, [`AutoSettings`]; output: a [`DimensionlessSolution`]
-//! with `scheme = "auto"`, its [`AutoDiagnostics`] (mode counts, checks) and warnings, or a
+//! with `scheme = "auto"`, its [`Diagnostics`](crate::contact::problem::Diagnostics) (mode counts, checks) and warnings, or a
 //! [`ContactError`].
 //!
 //! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ; docs/MATH.md §9):
@@ -43,11 +43,10 @@ pub mod reduction;
 mod settings;
 
 pub use load::solve_auto_at_load;
-pub use outcome::AutoDiagnostics;
 pub use settings::AutoSettings;
 
 use crate::contact::error::ContactError;
-use crate::contact::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use correction::{
     calibrate, lumped_weight_times_lambda, lumping_error, roundoff_floor, Correction,
 };

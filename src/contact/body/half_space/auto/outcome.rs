@@ -1,6 +1,6 @@
 //! The answer of the `auto` scheme: the pressure profile, the contact checks (inside: Q′ ≥ 0;
 //! outside: [`super::gap_check`]), the warnings, the zero-answer case and the error estimate, packed
-//! into a [`DimensionlessSolution`] with its [`AutoDiagnostics`].
+//! into a [`DimensionlessSolution`] with its [`Diagnostics`].
 //!
 //! Input: the reduced problem, the corrected [`LambdaSolution`] and the error estimates; output: the
 //! [`DimensionlessSolution`].
@@ -9,39 +9,8 @@ use super::at_lambda::LambdaSolution;
 use super::gap_check::gap_check;
 use super::reduction::Reduction;
 use super::settings::AutoSettings;
-use crate::contact::{CreepTerm, DimensionlessSolution};
-use serde::{Deserialize, Serialize};
-
-/// The diagnostics of an `auto` answer (in [`DimensionlessSolution::auto`]; its warnings are in
-/// [`DimensionlessSolution::warnings`]).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct AutoDiagnostics {
-    /// Modes solved for explicitly.
-    pub modes_used: usize,
-    /// Modes in the input (terms with f > 0).
-    pub modes_total: usize,
-    /// Fast modes lumped into the glassy compliance.
-    pub modes_lumped: usize,
-    /// Slow modes dropped.
-    pub modes_dropped: usize,
-    /// Estimated relative error of ρF/N.
-    pub friction_error: f64,
-    /// Estimated relative error of λ (at given load) or of N′ (at given λ).
-    pub size_error: f64,
-    /// min Q′ / max Q′ over the profile (≥ −tol when the contact condition holds).
-    pub min_pressure_ratio: f64,
-    /// Smallest gap outside the contact (behind the rear edge, ahead of the front edge, and around
-    /// the roll's lowest point when β < 0) over the depth scale λ²/8; < 0 means the roll penetrates
-    /// the surface there (accurate to ~1e−10 of λ²/8 plus the solution's own error, see
-    /// `rear_gap`; NaN when the check is switched off).
-    #[serde(default)]
-    pub min_gap_ratio: f64,
-    /// Where the smallest gap lies (ξ, < 0 behind the rear edge, > λ ahead of the front edge).
-    #[serde(default)]
-    pub min_gap_xi: f64,
-    /// The tolerance asked for.
-    pub tol: f64,
-}
+use crate::contact::problem::Diagnostics;
+use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 
 /// Pack a corrected solution with its estimates (`friction_error`, its round-off part `floor`,
 /// `size_error`) into the scheme's answer.
@@ -83,7 +52,7 @@ pub(super) fn package(
         n,
         iterations,
         error_estimate: Some(error_estimate),
-        auto: Some(AutoDiagnostics {
+        diagnostics: Some(Diagnostics {
             modes_used: red.modes_used,
             modes_total,
             modes_lumped: red.lumped.len(),

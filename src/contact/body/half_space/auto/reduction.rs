@@ -46,8 +46,8 @@ use super::at_lambda::{
     solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings,
 };
 use crate::contact::body::half_space::modes::Modes;
-use crate::contact::ContactError;
-use crate::contact::CreepTerm;
+use crate::contact::error::ContactError;
+use crate::contact::problem::CreepTerm;
 use std::f64::consts::PI;
 
 /// Smallest c of a lumped mode: the first-order law of the module doc holds from here on.

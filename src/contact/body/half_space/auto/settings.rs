@@ -6,38 +6,8 @@
 
 use super::at_lambda::QuadratureSettings;
 use crate::contact::error::ContactError;
-use crate::contact::CreepTerm;
-use serde::{Deserialize, Serialize};
-
-/// Settings of the `auto` scheme.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct AutoSettings {
-    /// Relative tolerance on ρ·F/N and λ (default 1e−6; allowed 1e−12 … 0.1).
-    pub tol: f64,
-    /// Iteration limit of the load loop (default 100; a bracketed secant needs ~6).
-    pub max_iterations: usize,
-    /// Uniform-in-θ points of the returned pressure profile (default 200), plus ~40 in the front layer.
-    pub profile_points: usize,
-    /// Evaluate the gap outside the contact (default true; costs ~4 points × 129 × N kernel
-    /// evaluations, ≈ 0.3 ms for one term, more than the solve itself for few terms).
-    #[serde(default = "default_true")]
-    pub gap_check: bool,
-}
-
-fn default_true() -> bool {
-    true
-}
-
-impl Default for AutoSettings {
-    fn default() -> Self {
-        AutoSettings {
-            tol: 1e-6,
-            max_iterations: 100,
-            profile_points: 200,
-            gap_check: true,
-        }
-    }
-}
+use crate::contact::problem::CreepTerm;
+pub use crate::contact::settings::AutoSettings;
 
 /// Largest strength f/b of one creep term the auto scheme takes (see [`validate`]).
 pub const MAX_MODE_STRENGTH: f64 = 1e15;

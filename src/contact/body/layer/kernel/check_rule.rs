@@ -72,10 +72,10 @@
 //! ≤ 1e−10 of the largest difference allowed.
 
 use super::LayerKernel;
-use crate::contact::body::layer::compliance::layer_defect;
-use crate::contact::half_space::kernel::{
+use crate::contact::body::half_space::kernel::{
     add_term_hat_averages_with, half_second_diff_k2logk, second_diff_klogk, split_from, Kernel,
 };
+use crate::contact::body::layer::compliance::layer_defect;
 use crate::special::gauss_legendre::gauss_legendre;
 use crate::special::{kernel_bracket, EULER_GAMMA};
 
@@ -291,7 +291,7 @@ const MIDDLE_DEGREE: usize = 32;
 /// One term between the classes (H3): `Kernel::hat_averages`' split form with h(x) at
 /// 3H ≤ |x| ≤ (m+1)H (and beyond the series' range |x| ≥ 2) from its Chebyshev interpolants in
 /// u = ln|x| on each side, the rest evaluated.
-fn add_middle_term(t: &crate::contact::CreepTerm, m: usize, delta: f64, a: &mut [f64]) {
+fn add_middle_term(t: &crate::contact::problem::CreepTerm, m: usize, delta: f64, a: &mut [f64]) {
     let big_h = t.b * delta;
     let from = (split_from(big_h) - 1).max(3) as f64 * big_h;
     let to = (m as f64 + 1.0) * big_h;
@@ -443,7 +443,7 @@ fn half_sinc(k: f64, delta: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
 
     #[test]
     fn half_space_part_matches_the_exact_averages() {
@@ -493,7 +493,7 @@ mod tests {
     /// (`LayerKernel::hat_averages`, the collocation's rule): the reference of the checks' rule.
     fn gaps_on_exact_kernel(
         kernel: &LayerKernel,
-        sol: &crate::contact::DimensionlessSolution,
+        sol: &crate::contact::problem::DimensionlessSolution,
     ) -> f64 {
         let n = sol.n;
         let ext = n / 2;

@@ -340,7 +340,7 @@ mod tests {
         solve_at_lambda as hs_solve, QuadratureSettings,
     };
     use crate::contact::body::half_space::modes::Modes;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
 
     #[test]
     fn thick_layer_is_the_half_space() {
@@ -404,7 +404,8 @@ mod tests {
             let k = LayerKernel::new(&terms, h, nu).unwrap();
             let a = collocation::solve_at_lambda(&k, 1.0, 512).unwrap();
             let b = collocation::solve_at_lambda(&k, 1.0, 1024).unwrap();
-            let rich = |f: fn(&crate::contact::DimensionlessSolution) -> f64| 2.0 * f(&b) - f(&a);
+            let rich =
+                |f: fn(&crate::contact::problem::DimensionlessSolution) -> f64| 2.0 * f(&b) - f(&a);
             eprintln!(
                 "hat: N' {} β {} F {} (n=1024: {} {} {})",
                 rich(|s| s.load),

@@ -10,7 +10,7 @@
 
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{calibration_mode, lump_weight, Reduction};
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 
 /// Degree p for a contact of half-length L on a cover h′ at `tol`: the measured convergence of the
 /// layer term (tests: the error falls like 10^{−2.5·p·h′/L}), rounded up to a multiple of 4, ≥ 8.

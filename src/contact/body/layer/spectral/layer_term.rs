@@ -727,7 +727,7 @@ mod tests {
 #[cfg(test)]
 mod reference_tests {
     use super::*;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
 
     #[test]
     fn unit_sin_cos_matches_the_library() {
@@ -794,7 +794,7 @@ mod reference_tests {
 #[cfg(test)]
 mod quadrature_tests {
     use super::*;
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
 
     #[test]
     fn log_rule_matches_a_denser_rule() {
@@ -843,7 +843,7 @@ mod dct_tests {
     #[test]
     fn layer_term_interpolant_matches_the_shared_dct() {
         // the inlined DCT must give `lobatto_coefficients` of the same values (to rounding)
-        let m = Modes::new(&[crate::contact::CreepTerm { f: 3.0, b: 0.5 }]);
+        let m = Modes::new(&[crate::contact::problem::CreepTerm { f: 3.0, b: 0.5 }]);
         let lt = LayerTerm::new(&m, 0.5, 0.3, 0.3, 12);
         // values of the interpolant of order k at the Lobatto points, back from the coefficients
         for k in [0usize, 3, 7] {

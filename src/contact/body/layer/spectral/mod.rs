@@ -106,11 +106,11 @@ pub use at_load::{solve_spectral_at_load, SpectralSettings};
 /// Test spectra: `n` creep terms with rates b log-spaced from 1e−12 over `decades` decades and
 /// J∞/J_g = 1e3 shared equally (f = 999·b/n).
 #[cfg(test)]
-pub(crate) fn spread_terms(n: usize, decades: f64) -> Vec<crate::contact::CreepTerm> {
+pub(crate) fn spread_terms(n: usize, decades: f64) -> Vec<crate::contact::problem::CreepTerm> {
     (0..n)
         .map(|k| {
             let b = 10f64.powf(-12.0 + decades * k as f64 / (n - 1) as f64);
-            crate::contact::CreepTerm {
+            crate::contact::problem::CreepTerm {
                 f: 999.0 / n as f64 * b,
                 b,
             }

@@ -40,7 +40,7 @@ use crate::contact::body::layer::collocation::lambda_guess;
 use crate::contact::body::layer::compliance::layer_factor;
 use crate::contact::error::ContactError;
 use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Turn, Verdict};
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 
 /// Where a loop starts.
 pub enum Start {

@@ -38,7 +38,7 @@ use super::degree::{
 };
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
 use crate::contact::body::half_space::auto::reduction::{select, Reduction};
-use crate::contact::CreepTerm;
+use crate::contact::problem::CreepTerm;
 
 /// Half the largest relative curvature |y″/y| in u = ln λ of the outputs carried to the root
 /// (ln N′, ρF/N, β/λ; module doc), with a margin: measured by second differences of three solves
@@ -187,7 +187,7 @@ mod tests {
     use crate::contact::body::half_space::modes::Modes;
     use crate::contact::body::layer::spectral::at_lambda::solve_at_lambda;
     use crate::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
-    use crate::contact::CreepTerm;
+    use crate::contact::problem::CreepTerm;
 
     #[test]
     fn carry_curvature_is_bounded() {

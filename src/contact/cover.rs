@@ -23,12 +23,16 @@
 //! indentation, estimated as the roll's depth below the higher contact edge, max(β, λ−β)²/(2ρ)·VT
 //! (a lower bound of the true one), below about 30 % of the cover.
 
-use super::{layer_at_load, winkler_at_load, BodyAnswer, BodyModel, LayerSettings, WinklerColumns};
 use crate::contact::body::half_space;
+pub use crate::contact::body::layer::LAYER_TOL_FLOOR;
+use crate::contact::body::layer::{
+    layer_at_load, winkler_at_load, BodyAnswer, BodyModel, LayerSettings, WinklerColumns,
+};
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::LoadSettings;
+use crate::contact::problem::CreepTerm;
 use crate::contact::scene::{RollSolution, Scene};
-use crate::contact::{roll, Body, ContactSettings, CreepTerm};
+use crate::contact::{roll, Body, ContactSettings};
 use crate::CreepSpectrum;
 
 /// Half-space law of approach: relative difference from the layer ≤ C_HS·(L/h)² (module doc;
@@ -41,10 +45,6 @@ pub const C_HALF_SPACE: f64 = 3.0;
 /// the spectral solver reaches the linear range (`tests::criterion_nu049`: C → 0.11 below h/λ ≈ 0.04,
 /// down to h/λ = 0.009), so the rule holds there with a margin of 3.6.
 pub const C_WINKLER: f64 = 0.4;
-/// The hat collocation (the fallback for very thin covers) converges to first order in λ
-/// (Richardson-extrapolated); below this tolerance its cost grows past a second per point, so it is
-/// solved to at least this.
-pub const LAYER_TOL_FLOOR: f64 = 1e-4;
 
 /// Which body to solve.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -135,7 +135,7 @@ pub fn auto_choice(
 /// The half-space answer of the `auto` scheme at `tol` as a [`BodyAnswer`].
 fn half_space_answer(terms: &[CreepTerm], load: f64, tol: f64) -> Result<BodyAnswer, ContactError> {
     let sol = half_space::solve_at_load(terms, load, &ContactSettings::auto(tol))?;
-    let diag = sol.auto.clone();
+    let diag = sol.diagnostics.clone();
     Ok(BodyAnswer {
         model: BodyModel::HalfSpace,
         error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
@@ -264,6 +264,114 @@ pub fn solve_cover_with(
     })
 }
 
+/// Solve the dimensionless problem at given contact length λ on a cover of dimensionless thickness
+/// `thickness` = h/(VT) with the body `choice` (`viscoroll contact --cover --lambda`): the half-space by
+/// the scheme of `settings`; the bonded layer by the hat collocation with `settings.n` intervals, its
+/// error estimated from the same solve at n/2 (largest relative change of β, N′ and ρF/N); the Winkler
+/// foundations in closed form; `auto` applies the criterion of [`auto_choice`] at the given λ with `tol`.
+pub fn solve_cover_at_lambda(
+    terms: &[CreepTerm],
+    lambda: f64,
+    thickness: f64,
+    poisson: f64,
+    choice: ModelChoice,
+    tol: f64,
+    settings: &ContactSettings,
+) -> Result<CoverAnswer, ContactError> {
+    positive("cover thickness h/(VT)", thickness)?;
+    let (h, nu) = (thickness, poisson);
+    let (model, reason, model_err) = match choice {
+        ModelChoice::HalfSpace => (BodyModel::HalfSpace, "half-space asked for (--model half-space)".to_string(), None),
+        ModelChoice::Layer => (BodyModel::Layer, "bonded layer asked for (--model layer)".to_string(), None),
+        ModelChoice::Winkler => (
+            BodyModel::Winkler,
+            "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)".to_string(),
+            None,
+        ),
+        ModelChoice::Auto => match auto_choice(terms, lambda, h, nu, tol) {
+            Some((m, e)) => (
+                m,
+                format!(
+                    "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {e:.1e})",
+                    h / lambda,
+                    m.name(),
+                    tol
+                ),
+                Some(e),
+            ),
+            None => (
+                BodyModel::Layer,
+                "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".to_string(),
+                None,
+            ),
+        },
+    };
+    let answer = match model {
+        BodyModel::HalfSpace => {
+            let sol = half_space::solve_at_lambda(terms, lambda, settings)?;
+            BodyAnswer {
+                model,
+                error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
+                min_pressure_ratio: sol
+                    .diagnostics
+                    .as_ref()
+                    .map_or(f64::NAN, |d| d.min_pressure_ratio),
+                min_gap_ratio: sol
+                    .diagnostics
+                    .as_ref()
+                    .map_or(f64::NAN, |d| d.min_gap_ratio),
+                warnings: sol.warnings.clone(),
+                solution: sol,
+            }
+        }
+        BodyModel::Layer => {
+            let k = crate::contact::body::layer::LayerKernel::new(terms, h, nu)?;
+            let n = settings.n.max(4) / 2 * 2;
+            let fine = crate::contact::body::layer::collocation::solve_at_lambda(&k, lambda, n)?;
+            let coarse =
+                crate::contact::body::layer::collocation::solve_at_lambda(&k, lambda, n / 2)?;
+            let rel = |a: f64, b: f64| (a - b).abs() / a.abs().max(b.abs()).max(f64::MIN_POSITIVE);
+            let est = rel(fine.beta, coarse.beta)
+                .max(rel(fine.load, coarse.load))
+                .max(rel(fine.friction_rho, coarse.friction_rho));
+            let (min_pressure_ratio, min_gap_ratio) =
+                crate::contact::body::layer::collocation::contact_checks(&k, &fine)?;
+            BodyAnswer {
+                model,
+                error_estimate: est,
+                min_pressure_ratio,
+                min_gap_ratio,
+                warnings: Vec::new(),
+                solution: fine,
+            }
+        }
+        BodyModel::Winkler | BodyModel::WinklerConstrained => {
+            let columns = if model == BodyModel::Winkler {
+                crate::contact::body::layer::WinklerColumns::Uniaxial
+            } else {
+                crate::contact::body::layer::WinklerColumns::Constrained
+            };
+            let w = crate::contact::body::layer::Winkler::new(terms, columns, h, nu)?
+                .at_lambda(lambda)?;
+            let mut solution = w.solution;
+            solution.warnings.extend(w.warnings.iter().cloned());
+            BodyAnswer {
+                model,
+                error_estimate: 0.0,
+                min_pressure_ratio: w.min_pressure_ratio,
+                min_gap_ratio: w.min_gap_ratio,
+                warnings: w.warnings,
+                solution,
+            }
+        }
+    };
+    Ok(CoverAnswer {
+        answer,
+        reason,
+        model_error_estimate: model_err,
+    })
+}
+
 /// Solve `scene` on a cover of `cover_m` (None: half-space) with the body `choice`, to `tol`.
 pub fn roll_cover(
     scene: &Scene,
@@ -313,7 +421,7 @@ pub fn roll_cover_with(
             ..*scene
         };
         let r = roll(&hs_scene, spectrum, &ContactSettings::auto(tol))?;
-        let diag = r.dimensionless.auto.clone();
+        let diag = r.dimensionless.diagnostics.clone();
         return Ok(CoverRoll {
             error_estimate: r.dimensionless.error_estimate.unwrap_or(f64::NAN),
             model: BodyModel::HalfSpace,

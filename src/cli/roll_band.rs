@@ -1,0 +1,115 @@
+//! The friction band of `viscoroll roll` (crate::bands), shared by its half-space and covered paths:
+//! the band of one point with the notes the main job gives it ([`band`]) and its JSON fields and text
+//! line ([`band_fields`]).
+//!
+//! Input: the command's [`Args`], the creep source, the scene and the friction; output: a [`RollBand`].
+
+use super::roll_args::Args;
+use crate::contact::Scene;
+use crate::pipeline::roll_fit::CreepSource;
+
+/// The band's JSON fields (`friction_p05`, `friction_p50`, `friction_p95`, null without one,
+/// `bands_note` why there is none, and `bands_notes` what the band carries) into `json`, and its
+/// text lines.
+pub(super) fn band_fields(
+    rb: &RollBand,
+    json: &mut serde_json::Map<String, serde_json::Value>,
+) -> String {
+    let band = &rb.band;
+    for (k, v) in [
+        ("friction_p05", band.as_ref().ok().map(|b| b.p05)),
+        ("friction_p50", band.as_ref().ok().map(|b| b.p50)),
+        ("friction_p95", band.as_ref().ok().map(|b| b.p95)),
+    ] {
+        json.insert(k.into(), serde_json::json!(v));
+    }
+    json.insert("bands_note".into(), serde_json::json!(band.as_ref().err()));
+    json.insert("bands_notes".into(), serde_json::json!(rb.notes));
+    match band {
+        Ok(b) => {
+            let mut line = format!(
+                "friction 90 % band  = {:.6e} … {:.6e} (median {:.6e})",
+                b.p05, b.p95, b.p50
+            );
+            for n in &rb.notes {
+                line.push_str(&format!("\n  band note: {n}"));
+            }
+            line
+        }
+        Err(why) => format!("friction band: none: {why}"),
+    }
+}
+
+/// A friction band with the notes the main job gives the same point (widened beyond the measured
+/// temperatures, eq. 15.8, or frequencies, eq. 15.9; replicates that failed), or why there is none.
+pub(super) struct RollBand {
+    /// The 90 % band, or why there is none.
+    pub band: Result<crate::results::FrictionBand, String>,
+    /// The band's notes, as in friction.csv's note column.
+    pub notes: Vec<String>,
+}
+
+impl From<Result<crate::results::FrictionBand, String>> for RollBand {
+    fn from(band: Result<crate::results::FrictionBand, String>) -> Self {
+        Self {
+            band,
+            notes: Vec::new(),
+        }
+    }
+}
+
+/// The 90 % band of the friction `friction` of `scene` at `--temp-c` (crate::bands), on a cover of
+/// `cover_m` bonded to a rigid carcass (solved as the main job solves a covered scene, eq. 15.6) or
+/// on the half-space (`None`), with its notes, or why there is none.
+pub(super) fn band(
+    args: &Args,
+    source: &CreepSource,
+    scene: &Scene,
+    cover_m: Option<f64>,
+    friction: f64,
+) -> RollBand {
+    band_or_why(args, source, scene, cover_m, friction).unwrap_or_else(|why| Err(why).into())
+}
+
+fn band_or_why(
+    args: &Args,
+    source: &CreepSource,
+    scene: &Scene,
+    cover_m: Option<f64>,
+    friction: f64,
+) -> Result<RollBand, String> {
+    if args.no_bands {
+        return Err("skipped (--no-bands)".into());
+    }
+    let (CreepSource::Fit(fit), Some(t)) = (source, args.temp_c) else {
+        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file (`viscoroll fit` or `run`)".into());
+    };
+    let settings = crate::bands::BandSettings::default();
+    // A fit file without an ensemble gets one made from the fit file alone (its note says what
+    // that leaves out).
+    let made;
+    let ensemble = match fit.bands.as_ref() {
+        Some(e) => e,
+        None => {
+            made = crate::bands::ensemble_from_fit(fit, &settings)
+                .map_err(|e| format!("no ensemble could be made from the fit file: {e}"))?;
+            &made
+        }
+    };
+    let bands = crate::bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
+    let (band, mut notes) = bands.point_band(0, friction);
+    // The between-specimen term as `run` adds it (docs/MATH.md §16): a fit file does not carry its
+    // specimens' own frictions, so the default spread of one specimen applies, and the note says so.
+    let band = band.map(|b| crate::bands::widen(b, crate::bands::between_sd_ln(&[]), 1));
+    notes.push(crate::bands::specimens_note(1, crate::bands::PRIOR_SD_LN));
+    if fit.bands.is_none() {
+        notes.push(crate::bands::FROM_FIT_FILE_NOTE.to_string());
+    }
+    Ok(match band {
+        Some(b) => RollBand { band: Ok(b), notes },
+        None if notes.is_empty() => {
+            Err("too few replicate solves succeeded for a band".to_string()).into()
+        }
+        None => Err(notes.join("; ")).into(),
+    })
+}
