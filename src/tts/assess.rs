@@ -114,6 +114,7 @@ pub(super) fn assess(
         point_temperature_passes: 0,
         flags: flags_all,
         left_out_c: Vec::new(),
+        shift_covariance_log10: Vec::new(),
         shift_not_determined_c: (0..n)
             .filter(|&i| !h.determined[i])
             .map(|i| iso[i].temp)

@@ -124,6 +124,11 @@ pub struct MasterQuality {
     /// overlap and out of order (docs/MATH.md §6.6); named in the warnings.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub left_out_c: Vec<f64>,
+    /// Covariance of the isotherms' log10 a_T (docs/MATH.md eq. 6.2), indexed like
+    /// `MasterCurve::isotherms`, zero in the reference's row and column; empty for given shifts.
+    /// The bands draw their replicates' shifts from it (§15, eq. 15.2).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub shift_covariance_log10: Vec<Vec<f64>>,
 }
 
 /// A master curve with its shift law and quality figures.
@@ -305,6 +310,7 @@ fn build_once(
     warnings.extend(degenerate_wlf_warning(&laws.wlf));
     let (isotherms, mut quality) = assess(&iso, &ch, &h, &log_b, settings, measurement.kind);
     quality.left_out_c = left_out_c;
+    quality.shift_covariance_log10 = std::mem::take(&mut h.covariance);
     let points = reduced_points(&iso, &h.shifts, &log_b);
     let mut resolved = settings.clone();
     resolved.tref_c = Some(t_ref);
@@ -698,6 +704,7 @@ mod left_out_tests {
         Horizontal {
             shifts: shifts.to_vec(),
             std_err: vec![0.0; shifts.len()],
+            covariance: Vec::new(),
             iterations: 0,
             given: None,
             determined: determined.to_vec(),

@@ -305,6 +305,9 @@ pub(crate) struct GlobalShifts {
     pub shifts: Vec<f64>,
     /// Standard error of each shift (0 for the reference).
     pub std_err: Vec<f64>,
+    /// Covariance of the shifts (eq. 6.2), n×n, zero in the reference's row and column; empty
+    /// when JᵀJ is singular.
+    pub covariance: Vec<Vec<f64>>,
     /// Outer iterations used.
     pub iterations: usize,
 }
@@ -417,8 +420,19 @@ pub(crate) fn refine_global(
     }
     normal_equations(iso, &s, &sets, &param, &mut jtj);
     let mut std_err = vec![0.0; n];
+    let mut covariance = Vec::new();
     if let Some(inv) = jtj.clone().try_inverse() {
         let cov = &inv * point_noise_covariance(iso, &s, &sets, &param) * &inv;
+        covariance = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| match (param[i], param[j]) {
+                        (Some(pi), Some(pj)) => cov[(pi, pj)],
+                        _ => 0.0,
+                    })
+                    .collect()
+            })
+            .collect();
         for i in 0..n {
             if let Some(pi) = param[i] {
                 std_err[i] = cov[(pi, pi)].max(0.0).sqrt();
@@ -428,6 +442,7 @@ pub(crate) fn refine_global(
     GlobalShifts {
         shifts: s,
         std_err,
+        covariance,
         iterations,
     }
 }
