@@ -99,6 +99,9 @@ struct Point {
     /// of the measured ones). Points that are not are printed as "not determined" or "not
     /// trusted", never ranked.
     claimed: bool,
+    /// ln(F with the fit's spectrum on the true shift law / true F): the Prony fit's share of the
+    /// error (the rest, ln(F/true F) less this, is the shifts' share); `None` where not computed.
+    prony_share: Option<f64>,
 }
 
 /// Mean and standard deviation of the finite ln ratios (as crate::bands::band_of reads them).
@@ -197,6 +200,8 @@ fn points_of_case(case: &Case) -> Vec<Point> {
         spec.temps_c = TEMPS_C.to_vec();
         let scene = spec.scene();
         let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
+        let on_true_law =
+            friction_vs_temperature(&with_true_law(&fit, compound), &spec, &settings).unwrap();
         let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
         let bands = scene_bands_on(&fit, ensemble, &scene, cover_m, &spec.temps_c, &bs);
         let bands_before = before
@@ -247,11 +252,32 @@ fn points_of_case(case: &Case) -> Vec<Point> {
                     (b.p05, b.p95)
                 }),
                 claimed,
+                prony_share: Some((on_true_law[i].friction / truth).ln()),
             });
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
     out
+}
+
+/// `fit` with the compound's true shift law, referred to the fit's own reference temperature
+/// (WLF re-referenced exactly, docs/MATH.md §6.4): the fitted spectrum read at the true shifts.
+fn with_true_law(
+    fit: &viscoroll::results::CompoundFit,
+    c: &RealisticCompound,
+) -> viscoroll::results::CompoundFit {
+    let t_new = fit.shift_law.t_ref_c();
+    let viscoroll::ShiftLaw::Wlf { t_ref_c, c1, c2_k } = c.law else {
+        panic!("the held-out laws are WLF");
+    };
+    let d = c2_k + t_new - t_ref_c;
+    let mut f = fit.clone();
+    f.shift_law = viscoroll::ShiftLaw::Wlf {
+        t_ref_c: t_new,
+        c1: c1 * c2_k / d,
+        c2_k: d,
+    };
+    f
 }
 
 /// Every (compound, scene, temperature) point of one noise seed of the tuning compounds
@@ -423,7 +449,8 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
     );
     for (seed, p) in all.iter().filter(|(_, p)| !covered(p)).take(40) {
         println!(
-            "missed: seed {seed} {} {} {} °C ({}): true {:.4e}, F/N {:.4e}, band {:.4e} … {:.4e}",
+            "missed: seed {seed} {} {} {} °C ({}): true {:.4e}, F/N {:.4e}, band {:.4e} … {:.4e}; \
+             error {:+.2} % = shifts {:+.2} % + Prony {:+.2} %",
             p.compound,
             p.scene,
             p.temp_c,
@@ -431,7 +458,34 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
             p.truth,
             p.friction,
             p.p05,
-            p.p95
+            p.p95,
+            100.0 * (p.friction / p.truth).ln(),
+            100.0 * ((p.friction / p.truth).ln() - p.prony_share.unwrap_or(f64::NAN)),
+            100.0 * p.prony_share.unwrap_or(f64::NAN)
+        );
+    }
+    println!("\nError budget inside the window (every such point; rms of ln F/F_true, per cent):");
+    println!("| compound | points | total | shifts | Prony fit |\n| --- | --- | --- | --- | --- |");
+    let mut names: Vec<&str> = all.iter().map(|(_, p)| p.compound.as_str()).collect();
+    names.sort();
+    names.dedup();
+    for name in names {
+        let of: Vec<&Point> = all
+            .iter()
+            .map(|(_, p)| p)
+            .filter(|p| p.compound == name && class(p) == "inside the window, no term")
+            .collect();
+        let rms = |f: &dyn Fn(&Point) -> f64| {
+            100.0 * (of.iter().map(|p| f(p).powi(2)).sum::<f64>() / of.len().max(1) as f64).sqrt()
+        };
+        let total = |p: &Point| (p.friction / p.truth).ln();
+        let prony = |p: &Point| p.prony_share.unwrap_or(f64::NAN);
+        println!(
+            "| {name} | {} | {:.2} | {:.2} | {:.2} |",
+            of.len(),
+            rms(&total),
+            rms(&|p| total(p) - prony(p)),
+            rms(&prony)
         );
     }
     let n = all.len() as f64;

@@ -125,3 +125,22 @@ fn dmasuite_shifts_monotonic_within_bounds() {
         mc.quality.overlap_rms_max_log10
     );
 }
+
+/// The glass of the shipped EMS-CA set stays with E′ (docs/MATH.md §6.2): its E″ there holds a
+/// secondary relaxation whose neighbouring isotherms mismatch by several times their own scatter,
+/// so the rule that lets E″ carry a glass that superposes (tests/master_plateau.rs
+/// `a_glass_whose_loss_superposes_is_shifted_by_it`) must refuse it. Were E″ let in, the glassy
+/// shifts would collapse by up to 8 decades (the joint criterion's 6.7 against 14.9 at −50 °C).
+#[test]
+fn ems_ca_glass_is_carried_by_storage_not_by_its_secondary_loss() {
+    let mc = build_master_curve(&ems(), &MasterSettings::default()).unwrap();
+    let glassy: Vec<_> = mc
+        .isotherms
+        .iter()
+        .filter(|i| !i.shift_determined)
+        .collect();
+    assert!(glassy.len() >= 5, "{}", glassy.len());
+    for i in glassy {
+        assert_eq!(i.shift_channel.as_deref(), Some("E′"), "{:.1} °C", i.temp_c);
+    }
+}

@@ -31,7 +31,37 @@ struct Scatter {
     chain: Vec<(usize, f64, f64, f64, f64)>,
     /// Position of the reference isotherm in `chain`.
     reference: usize,
+    /// Lower Cholesky factor of the shifts' covariance (docs/MATH.md eq. 6.2), indexed like
+    /// `MasterCurve::isotherms`; `None` where the master curve has none (given shifts, an older
+    /// file) or it is not positive semi-definite: then the random walk of eq. 15.2.
+    shift_factor: Option<nalgebra::DMatrix<f64>>,
     summary: ScatterEstimate,
+}
+
+/// The lower Cholesky factor of a shift covariance (zero rows and columns, the reference's, kept
+/// as zero): `None` unless it is square over `n` isotherms, finite and positive semi-definite
+/// (a diagonal jitter of 1e-12 of its largest variance allowed for round-off).
+fn shift_factor(cov: &[Vec<f64>], n: usize) -> Option<nalgebra::DMatrix<f64>> {
+    if cov.len() != n
+        || cov
+            .iter()
+            .any(|r| r.len() != n || r.iter().any(|v| !v.is_finite()))
+    {
+        return None;
+    }
+    let live: Vec<usize> = (0..n).filter(|&i| cov[i][i] > 0.0).collect();
+    let top = live.iter().map(|&i| cov[i][i]).fold(0.0, f64::max);
+    let m = nalgebra::DMatrix::from_fn(live.len(), live.len(), |a, b| {
+        cov[live[a]][live[b]] + if a == b { 1e-12 * top } else { 0.0 }
+    });
+    let l = m.cholesky()?.l();
+    let mut full = nalgebra::DMatrix::zeros(n, n);
+    for (a, &i) in live.iter().enumerate() {
+        for (b, &j) in live.iter().enumerate() {
+            full[(i, j)] = l[(a, b)];
+        }
+    }
+    Some(full)
 }
 
 fn rms(v: impl Iterator<Item = f64>) -> f64 {
@@ -43,8 +73,14 @@ fn rms(v: impl Iterator<Item = f64>) -> f64 {
     }
 }
 
-/// Standard error of the mean of an isotherm's point temperatures (its drift), K; 0 without them.
-fn temperature_std_k(measurement: &Measurement, index: usize) -> f64 {
+/// Standard error of an isotherm's temperature from its point temperatures, K; 0 without them.
+/// With `along_trend` (the master curve moved every point to its isotherm's temperature along the
+/// drift, crate::tts::point_temps) the scatter about the least-squares line through the sweep,
+/// over n − 2: the drift itself is measured and corrected, so only the readings' jitter leaves the
+/// isotherm's temperature uncertain (on the synthetic exports, ±1 K of drift per sweep but 0.05 K of
+/// jitter: sd/√n of the raw readings, 0.08–0.16 K, put 0.01–0.05 decade of spurious shift error on
+/// the cold isotherms). Without it, the scatter about the mean (the drift uncorrected).
+fn temperature_std_k(measurement: &Measurement, index: usize, along_trend: bool) -> f64 {
     let Some(iso) = measurement.isotherms.get(index) else {
         return 0.0;
     };
@@ -54,13 +90,28 @@ fn temperature_std_k(measurement: &Measurement, index: usize) -> f64 {
         .filter_map(|p| p.temp_c)
         .filter(|t| t.is_finite())
         .collect();
-    if t.len() < 2 {
+    let n = t.len() as f64;
+    if t.len() < if along_trend { 3 } else { 2 } {
         return 0.0;
     }
-    let n = t.len() as f64;
     let m = t.iter().sum::<f64>() / n;
-    let var = t.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1.0);
-    (var / n).sqrt()
+    if !along_trend {
+        let var = t.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1.0);
+        return (var / n).sqrt();
+    }
+    let mk = (n - 1.0) / 2.0;
+    let (mut sxy, mut sxx) = (0.0, 0.0);
+    for (k, x) in t.iter().enumerate() {
+        sxy += (k as f64 - mk) * (x - m);
+        sxx += (k as f64 - mk).powi(2);
+    }
+    let b = sxy / sxx;
+    let rss: f64 = t
+        .iter()
+        .enumerate()
+        .map(|(k, x)| (x - m - b * (k as f64 - mk)).powi(2))
+        .sum();
+    (rss / (n - 2.0) / n).sqrt()
 }
 
 fn scatter(
@@ -113,7 +164,11 @@ fn scatter(
             let inc = incs[k];
             let t = master.isotherms[i].temp_c;
             let slope = (law.log10_a_t(t + 0.5) - law.log10_a_t(t - 0.5)) / 1.0;
-            let t_std = temperature_std_k(measurement, master.isotherms[i].measurement_index);
+            let t_std = temperature_std_k(
+                measurement,
+                master.isotherms[i].measurement_index,
+                master.settings.correct_point_temperatures,
+            );
             (
                 i,
                 t,
@@ -140,6 +195,10 @@ fn scatter(
         fitted,
         chain,
         reference,
+        shift_factor: shift_factor(
+            &master.quality.shift_covariance_log10,
+            master.isotherms.len(),
+        ),
         summary,
     })
 }
@@ -177,8 +236,8 @@ fn increments_of(sigma: &[f64], reference: usize) -> Vec<f64> {
     inc
 }
 
-/// One replicate (eqs. 15.2–15.4, 15.10–15.12): shifts by a random walk out from the reference
-/// isotherm plus one other criterion's difference, the law's interpolation error at the middle of
+/// One replicate (eqs. 15.2–15.4, 15.10–15.12): shifts drawn from their covariance (or by a
+/// random walk out from the reference isotherm) plus one other criterion's difference, the law's interpolation error at the middle of
 /// each interval, moduli the fitted ones times a wild-bootstrap residual, refitted at a λ and on a
 /// relaxation-time grid of its own.
 fn replicate(
@@ -194,8 +253,18 @@ fn replicate(
     // Shift error of each isotherm (indexed like MasterCurve::isotherms) and law offset at its T.
     let mut delta = vec![0.0; master.isotherms.len()];
     let mut offsets = Vec::with_capacity(2 * n);
-    let increments: Vec<f64> = sc.chain.iter().map(|c| c.2).collect();
-    let walk = shift_walk(&increments, sc.reference, rng);
+    // Eq. 15.2: the shifts' errors drawn from their covariance (eq. 6.2), else by the walk.
+    let walk: Vec<f64> = match &sc.shift_factor {
+        Some(l) => {
+            let z = nalgebra::DVector::from_fn(l.ncols(), |_, _| rng.normal());
+            let d = l * z;
+            sc.chain.iter().map(|c| d[c.0]).collect()
+        }
+        None => {
+            let increments: Vec<f64> = sc.chain.iter().map(|c| c.2).collect();
+            shift_walk(&increments, sc.reference, rng)
+        }
+    };
     // Eq. 15.10: one other criterion, weighted by a standard normal.
     let criterion = match choices.criteria.len() {
         0 => None,
@@ -332,7 +401,7 @@ pub fn build_ensemble(
     let notes = refit_verdict(&failed, settings.replicates)?;
     Ok(BandEnsemble {
         method: format!(
-            "residual bootstrap of the master curve (wild, Gaussian weights) with isotherm shifts drawn as a random walk from the shift stage's standard errors and isotherm temperatures from their drift; the fit's choices drawn too: another shift criterion's shifts, the shift table's interpolation error, λ within a decade of {:e} and the relaxation-time grid moved within its step; Prony refit, exact creep conversion",
+            "residual bootstrap of the master curve (wild, Gaussian weights) with isotherm shifts drawn from the shift stage's covariance (a random walk from its standard errors where it has none) and isotherm temperatures from their drift; the fit's choices drawn too: another shift criterion's shifts, the shift table's interpolation error, λ within a decade of {:e} and the relaxation-time grid moved within its step; Prony refit, exact creep conversion",
             fit.prony_info.lambda
         ),
         model_error: settings.model_error.then(|| ModelErrorSummary {

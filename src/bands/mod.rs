@@ -14,12 +14,11 @@
 //! 1. Scatter from the data. The residual of master point p against the fitted Prony series,
 //!    r_p = ln(E′_p/Ê′(ω_p)) and likewise for E″ (eq. 15.1), holds the isotherm overlap mismatch and
 //!    the fit residual together. The shift stage's least squares over the isotherm overlaps gives
-//!    each isotherm's standard error σ_k of log a_T relative to the reference isotherm; the drift of
+//!    the covariance of the isotherms' log a_T relative to the reference isotherm (eq. 6.2); the drift of
 //!    an isotherm's point temperatures gives σ_T,k = sd(T_points)/√n (0 when the file has none).
-//! 2. Shifts (eq. 15.2). The shifts are found pairwise outwards from the reference, so their errors
-//!    add up along the chain: replicate shifts are a random walk δ_k = δ_(k∓1) + √(σ_k² − M_k²)·z
-//!    from the reference (δ = 0) to either end (M_k the largest σ inside k), which keeps each σ_k
-//!    and the correlation of neighbours. The law at T_k gets δ_k + (d log a_T/dT)·σ_T,k·z.
+//! 2. Shifts (eq. 15.2): replicate shift errors δ = L z, L the Cholesky factor of that covariance
+//!    (a master curve without one, an older file's: a random walk from the reference on the
+//!    standard errors). The law at T_k gets δ_k + (d log a_T/dT)·σ_T,k·z.
 //! 3. Moduli (eq. 15.3, wild residual bootstrap): E′*_p = Ê′(ω_p)·exp(z_p r_p), E″ alike, placed at
 //!    the reduced frequency ω_p·10^δ_k of its isotherm k. Each replicate is refitted (eq. 15.4): the
 //!    Prony QP near the fit's own λ (the λ search is not redone: one QP instead of twelve), then the

@@ -113,6 +113,8 @@ pub(super) fn assess(
         point_temperature_correction_max_log10: 0.0,
         point_temperature_passes: 0,
         flags: flags_all,
+        left_out_c: Vec::new(),
+        shift_covariance_log10: Vec::new(),
         shift_not_determined_c: (0..n)
             .filter(|&i| !h.determined[i])
             .map(|i| iso[i].temp)

@@ -14,11 +14,13 @@
 //!   rubbery side of the transition (median log E′ below the middle of its range over the
 //!   isotherms): below T_g, E″ holds secondary relaxations that do not superpose (on the shipped
 //!   EMS-CA set, E″ carrying the glassy isotherms collapsed their shifts to within 0.6 decade over
-//!   55 K), so there E′ alone carries the shift, as with the `storage` criterion.
+//!   55 K), so there E′ alone carries the shift, as with the `storage` criterion; except as far
+//!   as E″ superposes in the glass within its points' own scatter ([`superposing_glass`],
+//!   docs/MATH.md eq. 6.1), where the glass is treated as the rubbery side is.
 
 use super::clean::Clean;
 use super::settings::{MasterSettings, ShiftCriterion, ShiftSource, VerticalShift};
-use super::shift::{channel_scatter, Prepared};
+use super::shift::{channel_scatter, pair_shift, Prepared};
 
 /// The prepared channels of every isotherm.
 pub(super) struct Channels {
@@ -98,7 +100,10 @@ impl Channels {
                         .max(floor)
                     })
                     .collect();
-                let rubbery = rubbery_side(&joint);
+                let mut rubbery = rubbery_side(&joint);
+                if settings.criterion == ShiftCriterion::SlopeWeighted {
+                    superposing_glass(&joint, &mut rubbery, settings);
+                }
                 joint
                     .iter()
                     .zip(&rubbery)
@@ -179,6 +184,67 @@ fn information_shares(p: &Prepared, scatter: &[f64]) -> Vec<f64> {
     } else {
         vec![1.0 / scatter.len() as f64; scatter.len()]
     }
+}
+
+/// Extend the slope-weighted shares from the rubbery side into the glass as far as E″ superposes
+/// there within the points' own scatter (docs/MATH.md §6.2): from the warmest glassy isotherm down,
+/// each neighbour pair's E″ alone, at its best pairwise shift, must mismatch by at most
+/// [`GLASSY_LOSS_SCATTER_FACTOR`] times the RMS the points' noise alone gives, √(σ_a² + σ_b²) (σ of
+/// each isotherm from its second differences, [`point_scatter`]); the colder isotherm of a pair that
+/// passes is treated as the rubbery ones are (E″ then carries it where its E′ is flat), and the
+/// first pair that fails ends the run: below it E′ alone carries the glass as before. On real
+/// glassy E″ with a secondary relaxation (the shipped EMS-CA sets) the first pair already fails;
+/// on a thermorheologically simple synthetic glass every pair passes except where the
+/// temperature's drift within a sweep, on a steep shift law, spreads the isotherm itself.
+fn superposing_glass(joint: &[Prepared], rubbery: &mut [bool], settings: &MasterSettings) {
+    let loss = |p: &Prepared| Prepared::new(p.x.clone(), vec![p.channels[1].0.clone()]);
+    for i in (0..joint.len().saturating_sub(1)).rev() {
+        if rubbery[i] {
+            continue;
+        }
+        if !rubbery[i + 1] {
+            return;
+        }
+        let (a, b) = (loss(&joint[i]), loss(&joint[i + 1]));
+        let Some(pair) = pair_shift(
+            &a,
+            &b,
+            settings.grid_step_decades,
+            settings.min_overlap_points,
+        ) else {
+            return;
+        };
+        let (sa, sb) = (
+            point_scatter(&a.channels[0].0),
+            point_scatter(&b.channels[0].0),
+        );
+        if !(pair.rms <= GLASSY_LOSS_SCATTER_FACTOR * (sa * sa + sb * sb).sqrt()) {
+            return;
+        }
+        rubbery[i] = true;
+    }
+}
+
+/// How far above the noise's own RMS a glassy E″ pair may mismatch and still count as superposing:
+/// twice. The RMS of a pair's 6–26 residuals scatters by 15–30 % about the noise's, and a spline
+/// through noisy points adds a little; a secondary relaxation that does not superpose mismatches
+/// by ten times the noise or more (EMS-CA).
+const GLASSY_LOSS_SCATTER_FACTOR: f64 = 2.0;
+
+/// The scatter σ of one isotherm's points about a smooth curve, from second differences (robust,
+/// log10 units): σ = 1.4826·median|y₋ − 2y + y₊|/√6 (white noise gives var(y₋ − 2y + y₊) = 6σ²);
+/// infinite with fewer than three points (no evidence of superposition).
+fn point_scatter(y: &[f64]) -> f64 {
+    let mut d: Vec<f64> = y
+        .windows(3)
+        .map(|w| (w[0] - 2.0 * w[1] + w[2]).abs())
+        .filter(|v| v.is_finite())
+        .collect();
+    if d.is_empty() {
+        return f64::INFINITY;
+    }
+    d.sort_by(f64::total_cmp);
+    1.4826 * d[d.len() / 2] / 6f64.sqrt()
 }
 
 /// Whether each isotherm lies on the rubbery side of the transition: its median log10 E′ below the

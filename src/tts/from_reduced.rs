@@ -88,7 +88,9 @@ pub fn master_curve_from_reduced(
             point_temperature_correction_max_log10: 0.0,
             point_temperature_passes: 0,
             flags: Vec::new(),
-            shift_not_determined_c: Vec::new(),
+            left_out_c: Vec::new(),
+        shift_covariance_log10: Vec::new(),
+        shift_not_determined_c: Vec::new(),
         },
         settings,
         warnings: vec![format!(

@@ -27,6 +27,8 @@ pub(super) struct Horizontal {
     pub shifts: Vec<f64>,
     /// Standard errors of the shifts (0 for a given law).
     pub std_err: Vec<f64>,
+    /// Covariance of the shifts (docs/MATH.md eq. 6.2; empty for a given law).
+    pub covariance: Vec<Vec<f64>>,
     /// Outer iterations of the global refinement (0 for a given law).
     pub iterations: usize,
     /// The given law, if the shifts come from one.
@@ -68,6 +70,7 @@ pub(super) fn horizontal_shifts(
             Ok(Horizontal {
                 shifts: g.shifts,
                 std_err: g.std_err,
+                covariance: g.covariance,
                 iterations: g.iterations,
                 given: None,
                 determined: (0..n).map(|i| lo <= i && i <= hi).collect(),
@@ -89,6 +92,7 @@ pub(super) fn horizontal_shifts(
             Ok(Horizontal {
                 shifts: s,
                 std_err: vec![0.0; n],
+                covariance: Vec::new(),
                 iterations: 0,
                 given: Some(law.clone()),
                 determined: vec![true; n],

@@ -13,7 +13,7 @@ use super::channels::Channels;
 use super::clean::{clean, Clean};
 use super::error::TtsError;
 use super::fit_laws::{ArrheniusFit, WlfFit};
-use super::horizontal::horizontal_shifts;
+use super::horizontal::{horizontal_shifts, Horizontal};
 use super::law_choice::{degenerate_wlf_warning, fit_and_choose};
 use super::point_temps::{correct_point_temperatures, slopes_from_shifts};
 pub use super::quality_types::{IsothermShift, MasterQuality};
@@ -157,28 +157,33 @@ fn build_once(
 ) -> Result<MasterCurve, TtsError> {
     settings.validate()?;
     let mut warnings = Vec::new();
-    let iso = clean(measurement, settings.temperature, &mut warnings)?;
+    let mut iso = clean(measurement, settings.temperature, &mut warnings)?;
+    let t_ref = settings.tref_c.unwrap_or(iso[(iso.len() - 1) / 2].temp);
+    let mut shifted = shift_isotherms(&iso, t_ref, settings, measurement.kind)?;
+    let left_out = out_of_order(&shifted.1);
+    let mut left_out_c = Vec::new();
+    if !left_out.is_empty() {
+        left_out_c = left_out.iter().map(|&i| iso[i].temp).collect();
+        warnings.push(format!(
+            "isotherms at {} °C left out of the master curve: their shifts are not determined by \
+             overlap and fall out of order (a_T must fall as the temperature rises), so no reading \
+             of them is consistent (docs/MATH.md §6.6); their data stay in the measurement",
+            left_out_c
+                .iter()
+                .map(|t| format!("{t:.1}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+        let mut k = 0;
+        iso.retain(|_| {
+            k += 1;
+            !left_out.contains(&(k - 1))
+        });
+        shifted = shift_isotherms(&iso, t_ref, settings, measurement.kind)?;
+    }
+    let (ch, mut h, mut log_b, k0) = shifted;
     let n = iso.len();
     let temps: Vec<f64> = iso.iter().map(|c| c.temp).collect();
-    let t_ref = settings.tref_c.unwrap_or(temps[(n - 1) / 2]);
-    let k0 = (0..n)
-        .min_by(|&a, &b| {
-            (temps[a] - t_ref)
-                .abs()
-                .total_cmp(&(temps[b] - t_ref).abs())
-        })
-        .unwrap_or(0);
-
-    // Vertical factor from temperature (known before shifting).
-    let mut log_b: Vec<f64> = match settings.vertical {
-        VerticalShift::Temperature => temps
-            .iter()
-            .map(|&t| log10_b_t_temperature(t, t_ref))
-            .collect(),
-        _ => vec![0.0; n],
-    };
-    let ch = Channels::prepare(&iso, &log_b, settings, measurement.kind);
-    let mut h = horizontal_shifts(&ch, &temps, k0, t_ref, settings)?;
     if settings.vertical == VerticalShift::Fitted {
         log_b = fit_vertical(
             &ch.joint,
@@ -210,7 +215,9 @@ fn build_once(
         &mut warnings,
     )?;
     warnings.extend(degenerate_wlf_warning(&laws.wlf));
-    let (isotherms, quality) = assess(&iso, &ch, &h, &log_b, settings, measurement.kind);
+    let (isotherms, mut quality) = assess(&iso, &ch, &h, &log_b, settings, measurement.kind);
+    quality.left_out_c = left_out_c;
+    quality.shift_covariance_log10 = std::mem::take(&mut h.covariance);
     let points = reduced_points(&iso, &h.shifts, &log_b);
     let mut resolved = settings.clone();
     resolved.tref_c = Some(t_ref);
@@ -227,6 +234,58 @@ fn build_once(
         settings: resolved,
         warnings,
     })
+}
+
+/// The channels and horizontal shifts of `iso` at reference temperature `t_ref`: the channels, the
+/// shifts, the vertical factors known before shifting and the reference isotherm's index.
+fn shift_isotherms(
+    iso: &[Clean],
+    t_ref: f64,
+    settings: &MasterSettings,
+    kind: ModulusKind,
+) -> Result<(Channels, Horizontal, Vec<f64>, usize), TtsError> {
+    let n = iso.len();
+    let temps: Vec<f64> = iso.iter().map(|c| c.temp).collect();
+    let k0 = (0..n)
+        .min_by(|&a, &b| {
+            (temps[a] - t_ref)
+                .abs()
+                .total_cmp(&(temps[b] - t_ref).abs())
+        })
+        .unwrap_or(0);
+    // Vertical factor from temperature (known before shifting).
+    let log_b: Vec<f64> = match settings.vertical {
+        VerticalShift::Temperature => temps
+            .iter()
+            .map(|&t| log10_b_t_temperature(t, t_ref))
+            .collect(),
+        _ => vec![0.0; n],
+    };
+    let ch = Channels::prepare(iso, &log_b, settings, kind);
+    let h = horizontal_shifts(&ch, &temps, k0, t_ref, settings)?;
+    Ok((ch, h, log_b, k0))
+}
+
+/// The isotherms to leave out of the master curve (docs/MATH.md §6.6): walking out from the run
+/// of determined shifts, the first isotherm whose shift is not determined and breaks the order
+/// (log10 a_T must fall strictly as the temperature rises) and every isotherm beyond it. Such
+/// shifts are wherever the overlap scan ran out; a Prony fit of the points they place would fit
+/// a master curve no material has.
+fn out_of_order(h: &Horizontal) -> Vec<usize> {
+    let (s, det) = (&h.shifts, &h.determined);
+    let n = s.len();
+    let Some(lo) = det.iter().position(|&d| d) else {
+        return Vec::new();
+    };
+    let hi = det.iter().rposition(|&d| d).unwrap_or(lo);
+    let mut out = Vec::new();
+    if let Some(i) = (0..lo).rev().find(|&i| s[i] <= s[i + 1]) {
+        out.extend(0..=i);
+    }
+    if let Some(i) = (hi + 1..n).find(|&i| s[i] >= s[i - 1]) {
+        out.extend(i..n);
+    }
+    out
 }
 
 /// The reduced points ω_r = a_T ω, E_r = E / b_T of every isotherm, sorted by reduced frequency.
@@ -541,5 +600,37 @@ mod roundtrip_tests {
             build_master_curve(&m, &st),
             Err(TtsError::BadTemperature { .. })
         ));
+    }
+}
+
+#[cfg(test)]
+mod left_out_tests {
+    use super::*;
+
+    fn h(shifts: &[f64], determined: &[bool]) -> Horizontal {
+        Horizontal {
+            shifts: shifts.to_vec(),
+            std_err: vec![0.0; shifts.len()],
+            covariance: Vec::new(),
+            iterations: 0,
+            given: None,
+            determined: determined.to_vec(),
+        }
+    }
+
+    #[test]
+    fn an_undetermined_shift_out_of_order_is_left_out_with_everything_beyond_it() {
+        // cold end: 10.9, then 8.2 at the coldest, breaking the order (a_T must fall with T);
+        // warm end: −0.5 after −1.0
+        let (t, f) = (true, false);
+        let got = out_of_order(&h(
+            &[8.2, 10.9, 7.9, 5.5, 3.3, 2.0, 0.0, -1.0, -0.5],
+            &[f, f, f, f, t, t, t, t, f],
+        ));
+        assert_eq!(got, vec![0, 8]);
+        // in order, determined or not: nothing left out
+        assert!(out_of_order(&h(&[9.0, 7.0, 3.3, 2.0, 0.0], &[f, f, t, t, t])).is_empty());
+        // a determined run out of order is not this rule's business (§6.6 calls it determined)
+        assert!(out_of_order(&h(&[1.0, 2.0, 0.0], &[t, t, t])).is_empty());
     }
 }

@@ -18,8 +18,8 @@ pub struct IsothermShift {
     pub temp_c: f64,
     /// log10 a_T relative to T_ref.
     pub log10_a_t: f64,
-    /// Standard error of log10 a_T from the global least squares (0 for the reference isotherm
-    /// and for a given law).
+    /// Standard error of log10 a_T from the global least squares, docs/MATH.md eq. 6.2 (0 for the
+    /// reference isotherm and for a given law).
     pub log10_a_t_std: f64,
     /// log10 b_T (0 without vertical shift).
     pub log10_b_t: f64,
@@ -89,4 +89,13 @@ pub struct MasterQuality {
     /// moved, docs/MATH.md §6.6): later stages mark results that rest on them.
     #[serde(default)]
     pub shift_not_determined_c: Vec<f64>,
+    /// Temperatures (°C) of the isotherms left out of the master curve: shifts not determined by
+    /// overlap and out of order (docs/MATH.md §6.6); named in the warnings.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub left_out_c: Vec<f64>,
+    /// Covariance of the isotherms' log10 a_T (docs/MATH.md eq. 6.2), indexed like
+    /// `MasterCurve::isotherms`, zero in the reference's row and column; empty for given shifts.
+    /// The bands draw their replicates' shifts from it (§15, eq. 15.2).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub shift_covariance_log10: Vec<Vec<f64>>,
 }

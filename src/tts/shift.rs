@@ -12,7 +12,8 @@
 //! 2. **Global.** All shifts at once: Levenberg–Marquardt least squares on the same residuals over
 //!    all pairs up to `pair_reach` apart in temperature (next-neighbours tie down a pair that barely
 //!    overlaps), with the overlap sets frozen within an outer iteration and recomputed between them.
-//!    The reference isotherm's shift is fixed at 0. Standard errors from σ²(JᵀJ)⁻¹.
+//!    The reference isotherm's shift is fixed at 0. Standard errors from the sandwich covariance
+//!    (docs/MATH.md eq. 6.2: each point's noise carried through every residual it enters).
 
 use super::interp::Spline;
 use nalgebra::{DMatrix, DVector};
@@ -304,6 +305,9 @@ pub(crate) struct GlobalShifts {
     pub shifts: Vec<f64>,
     /// Standard error of each shift (0 for the reference).
     pub std_err: Vec<f64>,
+    /// Covariance of the shifts (eq. 6.2), n×n, zero in the reference's row and column; empty
+    /// when JᵀJ is singular.
+    pub covariance: Vec<Vec<f64>>,
     /// Outer iterations used.
     pub iterations: usize,
 }
@@ -376,7 +380,6 @@ pub(crate) fn refine_global(
     min_points: usize,
 ) -> GlobalShifts {
     let n = iso.len();
-    let nch = iso[0].channels.len();
     let mut s: Vec<f64> = start.iter().map(|v| v - start[reference]).collect();
     // Parameter index of each isotherm (the reference has none).
     let param: Vec<Option<usize>> = (0..n)
@@ -415,22 +418,124 @@ pub(crate) fn refine_global(
             break;
         }
     }
-    // Standard errors: σ² (JᵀJ)⁻¹ with σ² = cost / (residuals − parameters).
-    let n_res: usize = sets.iter().map(|(_, _, o)| o.len() * nch).sum();
-    let sigma2 = cost(iso, &s, &sets) / (n_res.saturating_sub(np).max(1)) as f64;
+    normal_equations(iso, &s, &sets, &param, &mut jtj);
     let mut std_err = vec![0.0; n];
+    let mut covariance = Vec::new();
     if let Some(inv) = jtj.clone().try_inverse() {
+        let cov = &inv * point_noise_covariance(iso, &s, &sets, &param) * &inv;
+        covariance = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| match (param[i], param[j]) {
+                        (Some(pi), Some(pj)) => cov[(pi, pj)],
+                        _ => 0.0,
+                    })
+                    .collect()
+            })
+            .collect();
         for i in 0..n {
             if let Some(pi) = param[i] {
-                std_err[i] = (sigma2 * inv[(pi, pi)]).max(0.0).sqrt();
+                std_err[i] = cov[(pi, pi)].max(0.0).sqrt();
             }
         }
     }
     GlobalShifts {
         shifts: s,
         std_err,
+        covariance,
         iterations,
     }
+}
+
+/// The middle of the shifts' sandwich covariance (docs/MATH.md §6.2, eq. 6.2): Σ_c σ_c² G_c G_cᵀ,
+/// G_c = Jᵀ ∂r/∂y over the measured points y of channel c. Every point enters several residuals,
+/// as a point compared with a neighbour's spline and through its own isotherm's spline where the
+/// neighbours' points are compared with it, up to `reach` pairs each way; σ²(JᵀJ)⁻¹ counts those
+/// residuals as independent and understated the shifts' error 2–4× on synthetic exports of known
+/// law (tests/master_plateau.rs `shift_standard_errors_cover_the_truth`). The residuals are linear
+/// in the points (a spline is linear in its values: ∂S/∂y_j = β_j, the spline through the unit
+/// vector e_j); σ_c² is the points' variance that accounts for the residuals found,
+/// σ_c² = Σ r² / Σ ‖∂r/∂y‖² over channel c's residuals, × m/(m − p) for the p shifts fitted.
+fn point_noise_covariance(
+    iso: &[Prepared],
+    s: &[f64],
+    sets: &PairSet,
+    param: &[Option<usize>],
+) -> DMatrix<f64> {
+    let np = param.iter().flatten().count();
+    let nch = iso[0].channels.len();
+    // β_j of every isotherm: the spline through the unit vector e_j at its own abscissae.
+    let basis: Vec<Vec<super::interp::Spline>> = iso
+        .iter()
+        .map(|p| {
+            (0..p.x.len())
+                .map(|j| {
+                    let mut e = vec![0.0; p.x.len()];
+                    e[j] = 1.0;
+                    super::interp::Spline::new(&p.x, &e)
+                })
+                .collect()
+        })
+        .collect();
+    // g[c][i][j]: Jᵀ ∂r/∂y for point j of isotherm i in channel c.
+    let mut g: Vec<Vec<Vec<DVector<f64>>>> = (0..nch)
+        .map(|_| {
+            iso.iter()
+                .map(|p| vec![DVector::zeros(np); p.x.len()])
+                .collect()
+        })
+        .collect();
+    let (mut rr, mut dd, mut m) = (vec![0.0; nch], vec![0.0; nch], 0usize);
+    for (a, b, ops) in sets {
+        let d = s[*b] - s[*a];
+        for &op in ops {
+            // the compared point (isotherm, index) and the spline's isotherm and abscissa
+            let (own, other, t) = if op.from_a {
+                ((*a, op.point), *b, iso[*a].x[op.point] - d)
+            } else {
+                ((*b, op.point), *a, iso[*b].x[op.point] + d)
+            };
+            for c in 0..nch {
+                let (r, drdd) = residual(&iso[*a], &iso[*b], d, op, c);
+                let w = if iso[*a].weights.is_empty() || iso[*b].weights.is_empty() {
+                    1.0
+                } else {
+                    (iso[*a].weights[c] * iso[*b].weights[c]).sqrt()
+                };
+                let mut jrow = DVector::<f64>::zeros(np);
+                if let Some(pa) = param[*a] {
+                    jrow[pa] -= drdd;
+                }
+                if let Some(pb) = param[*b] {
+                    jrow[pb] += drdd;
+                }
+                g[c][own.0][own.1] += w * &jrow;
+                let mut norm2 = w * w;
+                for (j, beta) in basis[other].iter().enumerate() {
+                    let bj = w * beta.eval(t).0;
+                    if bj != 0.0 {
+                        g[c][other][j] -= bj * &jrow;
+                        norm2 += bj * bj;
+                    }
+                }
+                rr[c] += r * r;
+                dd[c] += norm2;
+                m += 1;
+            }
+        }
+    }
+    let dof = m as f64 / (m.saturating_sub(np).max(1)) as f64;
+    let mut mid = DMatrix::<f64>::zeros(np, np);
+    for c in 0..nch {
+        if dd[c] <= 0.0 {
+            continue;
+        }
+        let var = rr[c] / dd[c] * dof;
+        for gi in g[c].iter().flatten() {
+            mid += var * gi * gi.transpose();
+        }
+    }
+    mid
 }
 
 /// The Gauss–Newton normal equations of the overlap residuals at shifts `s`: JᵀJ into `jtj`
