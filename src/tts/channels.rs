@@ -21,6 +21,7 @@
 use super::clean::Clean;
 use super::settings::{MasterSettings, ShiftCriterion, ShiftSource, VerticalShift};
 use super::shift::{channel_scatter, pair_shift, Prepared};
+use std::cmp::Ordering::{Equal, Less};
 
 /// The prepared channels of every isotherm.
 pub(super) struct Channels {
@@ -218,7 +219,9 @@ fn superposing_glass(joint: &[Prepared], rubbery: &mut [bool], settings: &Master
             point_scatter(&a.channels[0].0),
             point_scatter(&b.channels[0].0),
         );
-        if !(pair.rms <= GLASSY_LOSS_SCATTER_FACTOR * (sa * sa + sb * sb).sqrt()) {
+        // (a NaN mismatch or scatter passes no test: the run ends)
+        let bound = GLASSY_LOSS_SCATTER_FACTOR * (sa * sa + sb * sb).sqrt();
+        if !matches!(pair.rms.partial_cmp(&bound), Some(Less | Equal)) {
             return;
         }
         rubbery[i] = true;
