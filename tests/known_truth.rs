@@ -35,9 +35,8 @@
 //! high-tg-tread's −40 °C points were 4.84 % off (its glassy master curve placed by a flat E′, the
 //! Prony fit's E″ 0.086 decade off at the glassy edge). The worst points are still the Prony fit
 //! at that edge (1.99/1.96/1.88 %, shifts −0.001 %); next nr-br-idler conveyor-idler 50 °C −1.32 %
-//! (shifts −0.50, Prony −0.82). Over seeds 1–10 (`known_truth_other_seeds`) the median stays
-//! 0.10–0.46 % and the worst reaches 2.39 % (high-tg-tread, seed 3) and 2.13 % (nr-br-idler, seed
-//! 4); the fifth, stress compound (`known_truth_narrow_transition`, T_g 30 K above −40 °C,
+//! (shifts −0.50, Prony −0.82). Over seeds 1–10 (`known_truth_other_seeds`) the per-compound
+//! median is 0.10–0.55 % and the worst 2.39 % (high-tg-tread, seed 3; nr-br-idler 2.13 %, seed 4); the fifth, stress compound (`known_truth_narrow_transition`, T_g 30 K above −40 °C,
 //! isotherms 2–6 decades apart) misses by 48 % at −40 °C, deep in a glass its data barely reach.
 
 use crate::reference::{friction_at_length, SceneSi};
