@@ -1,7 +1,7 @@
 //! The stages after the fit, each the library call the CLI makes: `roll` (one dimensional scene on a
 //! fit or a creep spectrum: crate::pipeline::roll_fit::roll_source_at and the band of
 //! src/cli/roll.rs; with `cover_mm` or `model`, the covered body of src/cli/roll_cover.rs:
-//! crate::contact::body::layer::roll_cover on the spectrum at the temperature), `maps` (crate::pipeline::scenes::friction_maps, as the main job makes a
+//! crate::contact::cover::roll_cover on the spectrum at the temperature), `maps` (crate::pipeline::scenes::friction_maps, as the main job makes a
 //! scene's maps), `run` (crate::pipeline::run_all, as src/cli/run.rs), and the shipped scenes.
 //!
 //! In: JSON text of the library's serde types and an options object (crate::opts); out: JSON text.
@@ -9,7 +9,7 @@
 use crate::opts::Opts;
 use crate::{stage_err, to_json, Stage};
 use pyo3::prelude::*;
-use viscoroll::contact::body::layer::{roll_cover, ModelChoice};
+use viscoroll::contact::cover::{roll_cover, ModelChoice};
 use viscoroll::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
 use viscoroll::pipeline::roll_fit::{roll_source_at, CreepSource};
 use viscoroll::results::{CompoundFit, SceneSet};
@@ -249,7 +249,7 @@ fn cover_options(o: &Opts, radius_mm: f64) -> PyResult<Option<(Option<f64>, Mode
 }
 
 /// One scene on a cover at `t` (src/cli/roll_cover.rs): the spectrum at the temperature, the body
-/// chosen and solved by crate::contact::body::layer::roll_cover, and the band solved on the body
+/// chosen and solved by crate::contact::cover::roll_cover, and the band solved on the body
 /// the main job's bands solve. The fields of `viscoroll roll --cover-mm --json`.
 fn roll_covered(
     source: &CreepSource,
