@@ -25,11 +25,7 @@ fn ems_ca_master() -> Vec<MasterPoint> {
                 .split(',')
                 .map(|s| s.trim().parse().expect("number"))
                 .collect();
-            MasterPoint {
-                reduced_freq_hz: v[0],
-                storage_pa: v[1] * 1e6,
-                loss_pa: v[2] * 1e6,
-            }
+            MasterPoint::new(v[0], v[1] * 1e6, v[2] * 1e6)
         })
         .collect()
 }

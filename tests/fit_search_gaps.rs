@@ -69,11 +69,11 @@ fn prony_weight_search_reports_the_norms_of_its_solutions() {
         .map(|k| {
             let f = 10f64.powf(-2.0 + 8.0 * k as f64 / 60.0);
             let (e1, e2) = cole_cole(2.0 * PI * f);
-            MasterPoint {
-                reduced_freq_hz: f,
-                storage_pa: e1 * (1.0 + 0.01 * rng.next()),
-                loss_pa: e2 * (1.0 + 0.01 * rng.next()),
-            }
+            MasterPoint::new(
+                f,
+                e1 * (1.0 + 0.01 * rng.next()),
+                e2 * (1.0 + 0.01 * rng.next()),
+            )
         })
         .collect();
     for rule in [WeightRule::LCurve, WeightRule::Gcv] {

@@ -20,24 +20,26 @@
 //! `cargo test --test tests known_truth -- --nocapture`.
 //!
 //! Measured with the default settings of `run` (slope-weighted shifts, E″ carrying a glass that
-//! superposes, docs/MATH.md eq. 6.1; default seed, `cargo test --test tests known_truth::friction_from
-//! -- --nocapture`), 132 points (4 compounds × 3 scenes × 11 temperatures):
+//! superposes, docs/MATH.md eq. 6.1; the shift table joined by a monotone cubic, eq. 6.3; default
+//! seed, `cargo test --test tests known_truth::friction_from -- --nocapture`), 132 points
+//! (4 compounds × 3 scenes × 11 temperatures):
 //!
 //! | compound      | median % | worst % | shift dec | Prony (spec) % |
 //! |---------------|---------:|--------:|----------:|---------------:|
-//! | nr-br-idler   |    0.412 |   1.318 |    0.0140 |          1.178 |
-//! | nr-tread      |    0.307 |   1.009 |    0.0157 |          1.065 |
-//! | sbr-tread     |    0.179 |   0.721 |    0.0181 |          0.814 |
-//! | high-tg-tread |    0.168 |   1.988 |    0.0110 |          1.989 |
-//! | all           |    0.289 |   1.988 |           |                |
+//! | nr-br-idler   |    0.452 |   1.351 |    0.0149 |          1.178 |
+//! | nr-tread      |    0.257 |   1.011 |    0.0103 |          1.065 |
+//! | sbr-tread     |    0.235 |   0.795 |    0.0196 |          0.814 |
+//! | high-tg-tread |    0.177 |   2.614 |    0.0106 |          1.989 |
+//! | all           |    0.265 |   2.614 |           |                |
 //!
-//! Issue 32's goal (median ≤ 0.5 %, worst ≤ 2 %) is met on this seed; before E″ carried the glass,
-//! high-tg-tread's −40 °C points were 4.84 % off (its glassy master curve placed by a flat E′, the
-//! Prony fit's E″ 0.086 decade off at the glassy edge). The worst points are still the Prony fit
-//! at that edge (1.99/1.96/1.88 %, shifts −0.001 %); next nr-br-idler conveyor-idler 50 °C −1.32 %
-//! (shifts −0.50, Prony −0.82). Over seeds 1–10 (`known_truth_other_seeds`) the per-compound
-//! median is 0.10–0.55 % and the worst 2.39 % (high-tg-tread, seed 3; nr-br-idler 2.13 %, seed 4); the fifth, stress compound (`known_truth_narrow_transition`, T_g 30 K above −40 °C,
-//! isotherms 2–6 decades apart) misses by 48 % at −40 °C, deep in a glass its data barely reach.
+//! (With straight segments between the shifts: all 0.289 / 1.988 %.) The worst points are the
+//! Prony fit at the glassy edge of the window, high-tg-tread at −40 °C (Prony 1.99 %, shifts
+//! +0.63 %); next nr-br-idler conveyor-idler 50 °C −1.35 % (shifts −0.53, Prony −0.82). Over seeds
+//! 1–10 (`known_truth_other_seeds`) the per-compound median is 0.09–0.55 % and the worst 2.84 %
+//! (high-tg-tread, seed 3: Prony 2.07 %, shifts 0.78 %; with straight segments 2.39 %): issue 32's
+//! goal (median ≤ 0.5 %, worst ≤ 2 %) is not met over seeds, and the largest share left is the
+//! Prony fit at the glassy edge. The fifth, stress compound (`known_truth_narrow_transition`):
+//! median 0.69 %, worst 3.55 %.
 
 use crate::reference::{friction_at_length, SceneSi};
 use rayon::prelude::*;
@@ -146,10 +148,12 @@ fn evaluate(
     verbose: bool,
     independent: bool,
 ) -> Vec<Figures> {
+    // (one folder per test: tests of the same seed run in parallel)
     let dir = std::env::temp_dir().join(format!(
-        "viscoroll-truth-{}-{}",
+        "viscoroll-truth-{}-{}-{}",
         std::process::id(),
-        protocol.seed
+        protocol.seed,
+        compounds.first().map_or("none", |c| c.name.as_str())
     ));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -608,13 +612,16 @@ fn known_truth_other_seeds() {
     assert!(bad.is_empty(), "{bad:?}");
 }
 
-/// A fifth shape (issue 32): the narrow glass transition of `non_overlapping_compounds` (T_g ≈ −29 °C,
-/// steep WLF), whose coldest isotherms in the default protocol lie 4 decades apart and are placed by
-/// the law fitted to the overlapping ones (tests/master_plateau.rs). End to end over the three shipped
-/// scenes at −40 … +60 °C, with the error budget of its worst points:
-/// `cargo test --test tests known_truth_narrow -- --ignored --nocapture`.
+/// A fifth shape (issue 32): the narrow glass transition of `non_overlapping_compounds` (T_g = −40 °C,
+/// steep WLF 17.4/51.6 K), whose coldest isotherms in the default protocol lie 3–4 decades apart:
+/// −59 and −55 °C are left out (§6.6), −50 °C is not determined by overlap. End to end over the
+/// three shipped scenes at −40 … +60 °C, with the error budget of its worst points:
+/// `cargo test --test tests known_truth_narrow -- --nocapture`. Measured: median 0.69 %, worst
+/// 3.55 % (−40 °C, conveyor-idler: shifts −5.1 %, Prony +1.5 %); before the shift table's cubic
+/// (docs/MATH.md eq. 6.3) and the weights of undetermined isotherms' points (eq. 5.1) the worst was
+/// 47.7 % there (Prony −41 %: the −50 °C isotherm, 0.33 decade off, bent the fitted E″ by 0.3
+/// decade). Bounds: median 1 %, worst 5 % (the stress case's; the issue's 2 % is not met here).
 #[test]
-#[ignore = "a fifth compound, ~1 min; run on demand"]
 fn known_truth_narrow_transition() {
     let compounds = vec![viscoroll::testdata::realistic::non_overlapping_compounds()[0].clone()];
     let summary = evaluate(
@@ -628,9 +635,8 @@ fn known_truth_narrow_transition() {
     print_budget(&summary, 10);
     let f = &summary[0];
     assert!(f.interconversion < 1e-9, "{:.1e}", f.interconversion);
-    // The stress case's acceptance bounds (see `bounds`).
     assert!(
-        f.median <= 0.02 && f.worst <= 0.10,
+        f.median <= 0.01 && f.worst <= 0.05,
         "median {:.2} %, worst {:.2} %",
         100.0 * f.median,
         100.0 * f.worst

@@ -28,11 +28,7 @@ pub fn ems_ca_master() -> Vec<MasterPoint> {
             continue;
         }
         let v: Vec<f64> = rec.iter().map(|s| s.parse().expect("number")).collect();
-        out.push(MasterPoint {
-            reduced_freq_hz: v[0],
-            storage_pa: v[1] * 1e6,
-            loss_pa: v[2] * 1e6,
-        });
+        out.push(MasterPoint::new(v[0], v[1] * 1e6, v[2] * 1e6));
     }
     out
 }
@@ -124,11 +120,7 @@ fn pyvisco_master(file: &str) -> Vec<MasterPoint> {
     lines
         .map(|l| {
             let v: Vec<f64> = l.split(',').map(|x| x.trim().parse().unwrap()).collect();
-            MasterPoint {
-                reduced_freq_hz: v[0],
-                storage_pa: v[1] * 1e6,
-                loss_pa: v[2] * 1e6,
-            }
+            MasterPoint::new(v[0], v[1] * 1e6, v[2] * 1e6)
         })
         .collect()
 }

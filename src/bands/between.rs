@@ -22,7 +22,7 @@ use crate::results::FrictionBand;
 /// specimens, each fitted alone and rolled in the shipped scenes. Over its 27 scene points,
 /// s₀² = mean of (ln F₁/F₂)²/2 (each pair one degree of freedom; eq. 16.4), recomputed by
 /// `tests/replicates.rs`.
-pub const PRIOR_SD_LN: f64 = 0.53;
+pub const PRIOR_SD_LN: f64 = 0.55;
 
 /// Weight of [`PRIOR_SD_LN`] in degrees of freedom (eq. 16.2): one, since it comes from one pair
 /// of specimens (its 27 points are of the same two specimens, not independent).

@@ -35,6 +35,8 @@ struct Scatter {
     /// `MasterCurve::isotherms`; `None` where the master curve has none (given shifts, an older
     /// file) or it is not positive semi-definite: then the random walk of eq. 15.2.
     shift_factor: Option<nalgebra::DMatrix<f64>>,
+    /// The points' weights in the refits, as in the fit (docs/MATH.md eq. 5.1).
+    weights: Vec<[f64; 2]>,
     summary: ScatterEstimate,
 }
 
@@ -199,6 +201,7 @@ fn scatter(
             &master.quality.shift_covariance_log10,
             master.isotherms.len(),
         ),
+        weights: crate::tts::point_weights(master),
         summary,
     })
 }
@@ -298,10 +301,12 @@ fn replicate(
         .iter()
         .zip(&sc.residuals)
         .zip(&sc.fitted)
-        .map(|((p, r), f)| MasterPoint {
+        .zip(&sc.weights)
+        .map(|(((p, r), f), &weight)| MasterPoint {
             reduced_freq_hz: p.reduced_freq_hz * 10f64.powf(delta[p.isotherm]),
             storage_pa: f.0 * (r.0 * rng.normal()).exp(),
             loss_pa: f.1 * (r.1 * rng.normal()).exp(),
+            weight,
         })
         .collect();
     points.sort_by(|a, b| a.reduced_freq_hz.total_cmp(&b.reduced_freq_hz));

@@ -13,7 +13,8 @@
 //!    overlap and the alternative's is not: a criterion that cannot see a shift, E′ alone on a
 //!    flat rubbery plateau, has no say on it). A replicate takes one criterion c at
 //!    random and adds w·d_(c,k) to every isotherm's shift (w standard normal, one per replicate).
-//! 2. Shift-table interpolation (eq. 15.11): the law is linear in T between isotherms; its error at
+//! 2. Shift-table interpolation (eq. 15.11): the error straight segments between isotherms would make (the
+//!    law is a monotone cubic there, eq. 6.3, whose error is a fraction of it); its error at
 //!    the middle of an interval of width h is L″h²/8, L″ the second difference of the shifts there.
 //!    A replicate adds v·L″h²/8 at each midpoint (v standard normal, one per replicate).
 //! 3. Regularisation and term positions (eq. 15.12): each replicate is refitted at

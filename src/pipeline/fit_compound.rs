@@ -32,7 +32,8 @@ impl Default for FitOptions {
         Self {
             // The criterion `viscoroll master` uses by default (slope-weighted: per isotherm, the
             // channel that carries the shift there; crate::tts::ShiftCriterion::SlopeWeighted).
-            // The law used for friction is the table of the shifts found (interpolated, extrapolated
+            // The law used for friction is the table of the shifts found (a monotone cubic between
+            // them, docs/MATH.md eq. 6.3; extrapolated
             // linearly from the end segments): on the shipped EMS-CA and DMA-suite sets the fitted WLF
             // and Arrhenius laws miss the shifts by 0.77–1.7 decades RMS, which would move the
             // friction curves by as much in temperature terms; WLF and Arrhenius stay in the fit file
@@ -131,13 +132,15 @@ pub fn fit_master_curve(
     master: &crate::tts::MasterCurve,
     options: &FitOptions,
 ) -> Result<CompoundFit, PipelineError> {
+    // Points of an isotherm placed by the law, not by overlap, weighted by their shift's
+    // uncertainty (docs/MATH.md eq. 5.1).
     let points: Vec<PronyPoint> = master
         .points
         .iter()
-        .map(|p| PronyPoint {
-            reduced_freq_hz: p.reduced_freq_hz,
-            storage_pa: p.storage_pa,
-            loss_pa: p.loss_pa,
+        .zip(crate::tts::point_weights(master))
+        .map(|(p, weight)| PronyPoint {
+            weight,
+            ..PronyPoint::new(p.reduced_freq_hz, p.storage_pa, p.loss_pa)
         })
         .collect();
     let prony = fit_prony(&points, master.kind, master.poisson, &options.prony)?;

@@ -295,13 +295,15 @@ pub const THIN_ABOVE_POINTS: usize = 5000;
 /// differ by at most one (group g: points ⌊g·m/groups⌋ … ⌊(g+1)·m/groups⌋ − 1 after sorting);
 /// `points` unchanged (sorted) when there are no more than `groups`. Points must be positive.
 pub fn thin_points(points: &[MasterPoint], groups: usize) -> Vec<MasterPoint> {
-    let mut logs: Vec<[f64; 3]> = points
+    let mut logs: Vec<[f64; 5]> = points
         .iter()
         .map(|p| {
             [
                 p.reduced_freq_hz.log10(),
                 p.storage_pa.log10(),
                 p.loss_pa.log10(),
+                p.weight[0],
+                p.weight[1],
             ]
         })
         .collect();
@@ -317,6 +319,7 @@ pub fn thin_points(points: &[MasterPoint], groups: usize) -> Vec<MasterPoint> {
                 reduced_freq_hz: 10f64.powf(mean(0)),
                 storage_pa: 10f64.powf(mean(1)),
                 loss_pa: 10f64.powf(mean(2)),
+                weight: [mean(3), mean(4)],
             })
         })
         .collect()
@@ -387,8 +390,9 @@ impl Problem {
         let mut a = DMatrix::<f64>::zeros(2 * m, n + 1);
         for (k, p) in points.iter().enumerate() {
             let omega = 2.0 * PI * p.reduced_freq_hz;
-            let s1 = scale / p.storage_pa;
-            let s2 = loss_weight * scale / p.loss_pa;
+            // Eq. 5.3: each row times its point's weight (b too, below).
+            let s1 = p.weight[0] * scale / p.storage_pa;
+            let s2 = p.weight[1] * loss_weight * scale / p.loss_pa;
             a[(k, 0)] = s1;
             for (j, &tau) in taus.iter().enumerate() {
                 let w_rho = omega * tau;
@@ -400,7 +404,10 @@ impl Problem {
             .map(|j| a.column(j).iter().fold(0.0f64, |acc, v| acc.max(v.abs())))
             .collect();
         let mut b = DVector::<f64>::from_element(2 * m, 1.0);
-        b.rows_mut(m, m).fill(loss_weight);
+        for (k, p) in points.iter().enumerate() {
+            b[k] = p.weight[0];
+            b[m + k] = loss_weight * p.weight[1];
+        }
         let qr = a.clone().qr();
         let qtb = qr.q().transpose() * &b;
         let r = qr.r();
@@ -783,11 +790,7 @@ mod tests {
     fn thin_points_averages_equal_count_groups_in_log() {
         let pts: Vec<MasterPoint> = (0..10)
             .rev()
-            .map(|k| MasterPoint {
-                reduced_freq_hz: 10f64.powi(k),
-                storage_pa: 10f64.powi(k + 1),
-                loss_pa: 10f64.powi(2 * k),
-            })
+            .map(|k| MasterPoint::new(10f64.powi(k), 10f64.powi(k + 1), 10f64.powi(2 * k)))
             .collect();
         let t = thin_points(&pts, 3);
         let logs: Vec<[f64; 3]> = t
@@ -898,11 +901,7 @@ mod tests {
     #[test]
     fn bad_input_is_refused_with_the_field_named() {
         let s = PronySettings::default();
-        let p = |f, e1, e2| MasterPoint {
-            reduced_freq_hz: f,
-            storage_pa: e1,
-            loss_pa: e2,
-        };
+        let p = |f, e1, e2| MasterPoint::new(f, e1, e2);
         let err = fit_prony(&[p(1.0, 1e6, 1e5)], ModulusKind::Tensile, 0.5, &s).unwrap_err();
         assert_eq!(
             err,

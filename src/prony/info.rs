@@ -21,9 +21,9 @@ pub struct LambdaCandidate {
 /// Diagnostics of a Prony fit.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PronyInfo {
-    /// RMS over the points of log10(E′_fit / E′_data).
+    /// RMS over the points of log10(E′_fit / E′_data), each weighted as in the fit (docs/MATH.md eq. 5.1).
     pub rms_log10_storage: f64,
-    /// RMS over the points of log10(E″_fit / E″_data).
+    /// RMS over the points of log10(E″_fit / E″_data), each weighted as in the fit (docs/MATH.md eq. 5.1).
     pub rms_log10_loss: f64,
     /// Largest |log10(E′_fit / E′_data)|.
     pub max_abs_log10_storage: f64,

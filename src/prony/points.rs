@@ -21,24 +21,36 @@ pub struct Log10Errors {
     pub max_loss: f64,
 }
 
-/// log10 errors of `spectrum` against master-curve points (independent of how it was fitted).
+/// log10 errors of `spectrum` against master-curve points (independent of how it was fitted). The
+/// RMS values weight each point's squared error by its weight squared, as the fit does (docs/MATH.md
+/// eq. 5.1: the misfit measured against what the point is known to within), and equal the plain
+/// RMS when every weight is 1; the largest errors are over the points of full weight in both moduli
+/// (over all points if there are none).
 pub fn log10_errors(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Log10Errors {
-    let (mut ss, mut sl, mut ms, mut ml) = (0.0, 0.0, 0.0f64, 0.0f64);
+    let (mut ss, mut sl, mut ws, mut wl) = (0.0, 0.0, 0.0, 0.0);
+    let (mut ms, mut ml, mut ms_all, mut ml_all) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for p in points {
         let (e1, e2) = dynamic_moduli_pa(spectrum, 2.0 * PI * p.reduced_freq_hz);
         let d1 = (e1 / p.storage_pa).log10();
         let d2 = (e2 / p.loss_pa).log10();
-        ss += d1 * d1;
-        sl += d2 * d2;
-        ms = ms.max(d1.abs());
-        ml = ml.max(d2.abs());
+        let (w1, w2) = (p.weight[0] * p.weight[0], p.weight[1] * p.weight[1]);
+        ss += w1 * d1 * d1;
+        sl += w2 * d2 * d2;
+        ws += w1;
+        wl += w2;
+        ms_all = ms_all.max(d1.abs());
+        ml_all = ml_all.max(d2.abs());
+        if is_unit_weight(&p.weight) {
+            ms = ms.max(d1.abs());
+            ml = ml.max(d2.abs());
+        }
     }
-    let m = points.len().max(1) as f64;
+    let full = points.iter().any(|p| is_unit_weight(&p.weight));
     Log10Errors {
-        rms_storage: (ss / m).sqrt(),
-        rms_loss: (sl / m).sqrt(),
-        max_storage: ms,
-        max_loss: ml,
+        rms_storage: (ss / ws.max(f64::MIN_POSITIVE)).sqrt(),
+        rms_loss: (sl / wl.max(f64::MIN_POSITIVE)).sqrt(),
+        max_storage: if full { ms } else { ms_all },
+        max_loss: if full { ml } else { ml_all },
     }
 }
 
@@ -53,4 +65,28 @@ pub struct MasterPoint {
     pub storage_pa: f64,
     /// Loss modulus E″ (or G″) in Pa.
     pub loss_pa: f64,
+    /// Weights of this point's E′ and E″ residuals in the fit (1, 1 unless the point's reduced
+    /// frequency is uncertain: [`crate::tts::point_weights`], docs/MATH.md eq. 5.1).
+    #[serde(default = "unit_weight", skip_serializing_if = "is_unit_weight")]
+    pub weight: [f64; 2],
+}
+
+impl MasterPoint {
+    /// A point with unit weights.
+    pub fn new(reduced_freq_hz: f64, storage_pa: f64, loss_pa: f64) -> Self {
+        Self {
+            reduced_freq_hz,
+            storage_pa,
+            loss_pa,
+            weight: unit_weight(),
+        }
+    }
+}
+
+fn unit_weight() -> [f64; 2] {
+    [1.0, 1.0]
+}
+
+fn is_unit_weight(w: &[f64; 2]) -> bool {
+    *w == unit_weight()
 }

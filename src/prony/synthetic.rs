@@ -52,11 +52,11 @@ pub fn master_points(
         .map(|k| {
             let f = 10f64.powf(l0 + (l1 - l0) * k as f64 / (n - 1) as f64);
             let (e1, e2) = dynamic_moduli_pa(spectrum, 2.0 * PI * f);
-            MasterPoint {
-                reduced_freq_hz: f,
-                storage_pa: e1 * (1.0 + noise_rel * rng.next()),
-                loss_pa: e2 * (1.0 + noise_rel * rng.next()),
-            }
+            MasterPoint::new(
+                f,
+                e1 * (1.0 + noise_rel * rng.next()),
+                e2 * (1.0 + noise_rel * rng.next()),
+            )
         })
         .collect()
 }

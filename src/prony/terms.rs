@@ -299,7 +299,7 @@ struct Separable {
     s1: Vec<f64>,
     /// S/E″_k.
     s2: Vec<f64>,
-    /// Row weights c: 1 on the E′ rows, loss_weight on the E″ rows.
+    /// Row weights c: the points' weights, times loss_weight on the E″ rows.
     c: DVector<f64>,
     /// Modulus scale S in Pa.
     scale: f64,
@@ -319,8 +319,12 @@ impl Separable {
         log: bool,
     ) -> Self {
         let m = points.len();
+        // The fit's row weights (eq. 5.1) times `loss_weight` on the E″ rows.
         let mut c = DVector::from_element(2 * m, 1.0);
-        c.rows_mut(m, m).fill(loss_weight);
+        for (k, p) in points.iter().enumerate() {
+            c[k] = p.weight[0];
+            c[m + k] = loss_weight * p.weight[1];
+        }
         let (lo, hi) = grid_s
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), t| {

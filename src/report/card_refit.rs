@@ -77,11 +77,7 @@ fn own_moduli(spectrum: &RelaxationSpectrum) -> Vec<MasterPoint> {
         .map(|k| {
             let f = f0 * (f1 / f0).powf(k as f64 / n as f64);
             let (e1, e2) = spectrum.complex_modulus(2.0 * PI * f);
-            MasterPoint {
-                reduced_freq_hz: f,
-                storage_pa: e1,
-                loss_pa: e2,
-            }
+            MasterPoint::new(f, e1, e2)
         })
         .collect()
 }

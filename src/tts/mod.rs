@@ -13,6 +13,7 @@ mod interp;
 mod law_choice;
 mod master;
 pub mod point_temps;
+mod point_weights;
 pub mod quality;
 mod quality_types;
 mod settings;
@@ -23,6 +24,7 @@ pub use error::TtsError;
 pub use fit_laws::{rereference_wlf, ArrheniusFit, ShiftResidual, WlfFit};
 pub use from_reduced::master_curve_from_reduced;
 pub use master::{build_master_curve, IsothermShift, MasterCurve, MasterPoint, MasterQuality};
+pub use point_weights::point_weights;
 pub use quality::QualityBounds;
 pub use settings::{
     LawChoice, MasterSettings, ShiftCriterion, ShiftSource, TemperatureBasis, VerticalShift,
