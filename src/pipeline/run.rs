@@ -377,7 +377,7 @@ fn scene_bands(
         Some((_, r)) => r.clone(),
         None => {
             let hs_scene = crate::contact::Scene {
-                body: crate::contact::Body::HalfSpace,
+                body: crate::contact::Body::HALF_SPACE,
                 ..key.0
             };
             if !half_space
@@ -417,16 +417,18 @@ fn scene_bands(
     r.ratios
 }
 
-/// The body a friction point names (its `model`, `BodyModel::name`); `None` for another name (a
-/// failed point's empty one): its band replicates are then solved by `auto`
-/// (crate::bands::replicate_choice).
-fn body_of(model: &str) -> Option<crate::contact::body::layer::BodyModel> {
-    use crate::contact::body::layer::BodyModel;
+/// The body a friction point names (its `model`, [`Body::name`](crate::contact::Body::name)); `None`
+/// for another name (a failed point's empty one): its band replicates are then solved by `auto`
+/// (crate::bands::replicate_choice), which puts the body on the scene's cover.
+fn body_of(model: &str) -> Option<crate::contact::Body> {
+    use crate::contact::Body;
     [
-        BodyModel::HalfSpace,
-        BodyModel::Layer,
-        BodyModel::Winkler,
-        BodyModel::WinklerConstrained,
+        Body::HALF_SPACE,
+        Body::Layer {
+            thickness_m: f64::NAN,
+        },
+        Body::Winkler { height_m: f64::NAN },
+        Body::WinklerConstrained { height_m: f64::NAN },
     ]
     .into_iter()
     .find(|m| m.name() == model)

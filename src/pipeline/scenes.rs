@@ -6,7 +6,7 @@
 
 use super::error::PipelineError;
 use super::roll_fit::fit_spectrum_at;
-use crate::contact::cover::{roll_cover, ModelChoice};
+use crate::contact::cover::roll_cover;
 use crate::contact::maps::{
     covered_map, friction_map, CoveredProblem, MapQuery, MapSettings, MapValue, ReducedProblem,
 };
@@ -96,13 +96,13 @@ pub fn friction_vs_temperature(
             };
             if let Some(h_mm) = spec.cover_thickness_mm {
                 // A cover: the body chosen and solved by contact::body::layer (auto, at COVER_TOL).
-                return match roll_cover(
-                    &scene,
-                    &at.spectrum,
-                    Some(h_mm * 1e-3),
-                    ModelChoice::Auto,
-                    tol,
-                ) {
+                let on_cover = crate::contact::Scene {
+                    body: crate::contact::Body::Auto {
+                        thickness_m: h_mm * 1e-3,
+                    },
+                    ..scene
+                };
+                return match roll_cover(&on_cover, &at.spectrum, tol) {
                     Ok(r) => FrictionPoint {
                         temp_c: t,
                         log10_a_t: at.log10_a_t,

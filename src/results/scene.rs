@@ -84,7 +84,7 @@ impl SceneSpec {
             load_n_per_m: self.load_n_per_m,
             speed_m_s: self.speed_m_s,
             poisson: self.poisson,
-            body: Body::HalfSpace,
+            body: Body::HALF_SPACE,
         }
     }
 }
