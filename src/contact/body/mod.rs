@@ -18,9 +18,11 @@
 //!    and the settings; it imports the ground (`problem`, `settings`, `error`), `load` and shared
 //!    numerics, never this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
-//!    `Layer { thickness_m }`), validated in [`Body::validate`], and its arm in [`solve_at_load`] and
+//!    `Layer { thickness_m }`), named in [`Body::name`] (the serde name too), with its arms in
+//!    [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in [`solve_at_load`] and
 //!    [`solve_at_lambda`] below, the single dispatch point (lengths go in units of
-//!    `problem.length_scale_m`);
+//!    `problem.length_scale_m`); to be chosen by `auto` or by name, also in [`Body::auto_choice`] /
+//!    [`Body::choice`] and `contact::cover`'s answer;
 //! 3. its tests, through [`crate::contact::roll`] where they can.
 //!
 //! The scene carries the body (`Scene::body`, serde default = half-space, so existing JSON keeps
