@@ -9,7 +9,8 @@ use viscoroll::bands::friction::band_contact_settings;
 use viscoroll::bands::{build_ensemble, BandSettings};
 use viscoroll::contact::body::layer::collocation::contact_checks;
 use viscoroll::contact::body::layer::{layer_at_load, LayerKernel, LayerSettings};
-use viscoroll::contact::cover::{roll_cover_from, ModelChoice};
+use viscoroll::contact::cover::roll_cover_from;
+use viscoroll::contact::Body;
 use viscoroll::contact::{roll, Scene};
 use viscoroll::pipeline::RunOptions;
 use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
@@ -71,16 +72,21 @@ fn main() {
         .expect("a covered scene")
         .clone();
     let scene = Scene {
-        body: viscoroll::contact::Body::HalfSpace,
+        body: viscoroll::contact::Body::HALF_SPACE,
         ..spec.scene()
     };
     let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
     // (name, tol, warm): covered variants; (name, tol): half-space variants
-    let cov_variants: [(f64, bool, ModelChoice); 4] = [
-        (1e-3, false, ModelChoice::Auto),
-        (1e-3, true, ModelChoice::Auto),
-        (1e-3, false, ModelChoice::Layer),
-        (1e-3, true, ModelChoice::Layer),
+    let h_m = cover_m.expect("a cover");
+    let (auto, layer) = (
+        Body::Auto { thickness_m: h_m },
+        Body::Layer { thickness_m: h_m },
+    );
+    let cov_variants: [(f64, bool, Body); 4] = [
+        (1e-3, false, auto),
+        (1e-3, true, auto),
+        (1e-3, false, layer),
+        (1e-3, true, layer),
     ];
     let hs_variants = [(1e-4, 200), (1e-4, 8), (1e-3, 8), (3e-3, 8), (1e-2, 8)];
     let mut cov_cpu = vec![0.0; cov_variants.len()];
@@ -102,15 +108,21 @@ fn main() {
             let law = &fit.shift_law;
             for &t in &spec.temps_c {
                 let nominal = shifted(&creep, law.log10_a_t(t));
-                let cov_with = |c: &CreepSpectrum,
-                                tol: f64,
-                                start: Option<(f64, f64)>,
-                                choice: ModelChoice| {
-                    roll_cover_from(&scene, c, cover_m, choice, tol, start)
+                let cov_with =
+                    |c: &CreepSpectrum, tol: f64, start: Option<(f64, f64)>, choice: Body| {
+                        roll_cover_from(
+                            &Scene {
+                                body: choice,
+                                ..scene
+                            },
+                            c,
+                            tol,
+                            start,
+                        )
                         .map(|r| (r.roll.friction, r.roll.contact_length_m, r.error_estimate))
-                };
+                    };
                 let cov = |c: &CreepSpectrum, tol: f64, start: Option<(f64, f64)>| {
-                    cov_with(c, tol, start, ModelChoice::Auto)
+                    cov_with(c, tol, start, auto)
                 };
                 let hs = |c: &CreepSpectrum, (tol, points): (f64, usize)| {
                     let mut cs = band_contact_settings(&BandSettings {

@@ -13,7 +13,6 @@
 
 use std::path::Path;
 use std::time::Instant;
-use viscoroll::contact::body::layer::BodyModel;
 use viscoroll::pipeline::scenes::{
     friction_maps, friction_vs_temperature, pipeline_contact_settings, pipeline_map_settings,
 };
@@ -154,7 +153,7 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                 );
                 if let Some(e) = fit.bands.as_ref() {
                     let hs_scene = viscoroll::contact::Scene {
-                        body: viscoroll::contact::Body::HalfSpace,
+                        body: viscoroll::contact::Body::HALF_SPACE,
                         ..spec.scene()
                     };
                     let shared = |h: &viscoroll::bands::HalfSpaceRatios| {
@@ -173,9 +172,15 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                     let nominal: Vec<viscoroll::bands::CoverSolve> = points
                         .iter()
                         .map(|p| {
-                            let body = [BodyModel::HalfSpace, BodyModel::Layer, BodyModel::Winkler]
-                                .into_iter()
-                                .find(|m| m.name() == p.model);
+                            let body = [
+                                viscoroll::contact::Body::HALF_SPACE,
+                                viscoroll::contact::Body::Layer {
+                                    thickness_m: f64::NAN,
+                                },
+                                viscoroll::contact::Body::Winkler { height_m: f64::NAN },
+                            ]
+                            .into_iter()
+                            .find(|m| m.name() == p.model);
                             (p.friction, p.contact_length_mm * 1e-3, body)
                         })
                         .collect();

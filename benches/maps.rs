@@ -80,7 +80,7 @@ fn main() {
             load_n_per_m: 1e4,
             speed_m_s: 4.0,
             poisson: None,
-            body: Body::HalfSpace,
+            body: Body::HALF_SPACE,
         };
         let t0 = Instant::now();
         for _ in 0..5 {

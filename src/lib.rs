@@ -41,7 +41,7 @@
 //!     load_n_per_m: 2000.0,
 //!     speed_m_s: 1.0,
 //!     poisson: None,
-//!     body: Body::HalfSpace,
+//!     body: Body::HALF_SPACE,
 //! };
 //! // The default scheme is `auto` (error-controlled, tolerance 1e-6).
 //! let r = roll(&scene, &creep, &ContactSettings::default()).unwrap();

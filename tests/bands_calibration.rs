@@ -44,8 +44,8 @@
 
 use std::path::PathBuf;
 use viscoroll::bands::{band_of, build_ensemble, scene_bands_on, BandSettings};
-use viscoroll::contact::cover::{roll_cover, ModelChoice};
-use viscoroll::contact::roll;
+use viscoroll::contact::cover::roll_cover;
+use viscoroll::contact::{roll, Body, Scene};
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::dma::{read_files, IngestOptions};
 use viscoroll::pipeline::fit_compound::fit_measurement_master;
@@ -214,10 +214,13 @@ fn points_of_case(case: &Case) -> Vec<Point> {
             let truth = match spec.cover_thickness_mm {
                 Some(h_mm) => {
                     roll_cover(
-                        &scene,
+                        &Scene {
+                            body: Body::Auto {
+                                thickness_m: h_mm * 1e-3,
+                            },
+                            ..scene
+                        },
                         &true_at_t,
-                        Some(h_mm * 1e-3),
-                        ModelChoice::Auto,
                         settings.auto.tol.max(COVER_TOL),
                     )
                     .unwrap()

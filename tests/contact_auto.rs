@@ -160,7 +160,7 @@ fn random_spectra_and_scenes_estimate_confirmed_by_tighter_solve() {
             load_n_per_m: 10f64.powf(6.0 * rng.next()),
             speed_m_s: 10f64.powf(-6.0 + 9.0 * rng.next()),
             poisson: None,
-            body: Body::HalfSpace,
+            body: Body::HALF_SPACE,
         };
         let a = roll(&scene, &spec, &settings(1e-6)).unwrap();
         let b = roll(&scene, &spec, &settings(1e-9)).unwrap();
@@ -191,7 +191,7 @@ fn friction_vanishes_at_both_speed_limits() {
             load_n_per_m: 1e3,
             speed_m_s: v,
             poisson: None,
-            body: Body::HalfSpace,
+            body: Body::HALF_SPACE,
         };
         roll(&scene, &spec, &settings(1e-6)).unwrap().friction
     };
@@ -314,7 +314,7 @@ fn whole_range_of_scenes_converges_without_nan() {
                     load_n_per_m: n,
                     speed_m_s: v,
                     poisson: None,
-                    body: Body::HalfSpace,
+                    body: Body::HALF_SPACE,
                 };
                 let a = roll(&scene, &spec, &settings(1e-4))
                     .unwrap_or_else(|e| panic!("V {v} N {n} R {r}: {e}"));

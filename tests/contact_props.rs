@@ -92,7 +92,7 @@ fn random_scene(rng: &mut Rng) -> Scene {
         load_n_per_m: rng.log_uniform(1.0, 1e6),
         speed_m_s: rng.log_uniform(1e-6, 1e3),
         poisson: None,
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     }
 }
 

@@ -281,7 +281,7 @@ fn scan() {
                 load_n_per_m: 10f64.powf(6.0 * rng.next()),
                 speed_m_s: v,
                 poisson: None,
-                body: Body::HalfSpace,
+                body: Body::HALF_SPACE,
             };
             let a = roll(&scene, &spec, &settings(1e-6)).unwrap();
             scenes.add(
@@ -312,7 +312,7 @@ fn scan() {
                         load_n_per_m: n,
                         speed_m_s: v,
                         poisson: None,
-                        body: Body::HalfSpace,
+                        body: Body::HALF_SPACE,
                     };
                     let a = roll(&scene, &spec, &settings(1e-6)).unwrap();
                     real.add(

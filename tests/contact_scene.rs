@@ -46,7 +46,7 @@ fn elastic_scene_is_hertz() {
         load_n_per_m: 2000.0,
         speed_m_s: 5.0,
         poisson: Some(0.3),
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     let n = 160;
     let s = roll(&scene, &spectrum, &settings(n)).unwrap();
@@ -85,7 +85,7 @@ fn shear_and_tensile_spectra_agree() {
         load_n_per_m: 1000.0,
         speed_m_s: 0.3,
         poisson: Some(nu),
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     let a = roll(&scene, &t, &settings(60)).unwrap();
     let b = roll(&scene, &s, &settings(60)).unwrap();
@@ -113,7 +113,7 @@ fn speed_limits_of_a_standard_linear_solid() {
                     load_n_per_m: 2000.0,
                     speed_m_s: v,
                     poisson: None,
-                    body: Body::HalfSpace,
+                    body: Body::HALF_SPACE,
                 },
                 &spectrum,
                 &settings(n),
@@ -175,7 +175,7 @@ fn bad_scenes_name_the_field() {
         load_n_per_m: 10.0,
         speed_m_s: 1.0,
         poisson: None,
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     match roll(&bad, &spectrum, &settings(20)) {
         Err(ContactError::BadValue { field, .. }) => assert_eq!(field, "radius_m"),
@@ -186,7 +186,7 @@ fn bad_scenes_name_the_field() {
         load_n_per_m: 10.0,
         speed_m_s: 1.0,
         poisson: Some(0.7),
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     assert!(matches!(
         roll(&bad, &spectrum, &settings(20)),
@@ -199,7 +199,7 @@ fn bad_scenes_name_the_field() {
         load_n_per_m: 10.0,
         speed_m_s: 1.0,
         poisson: None,
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     assert!(roll(&ok, &s, &settings(20))
         .unwrap_err()

@@ -6,7 +6,7 @@
 //! friction_map_2d.csv (the covered map: a 2-D interpolant of bonded-layer solves in s = l_g/(V·a_T)
 //! and η = h/l_g, converted back to F*/N* = φ·l_g/R and l = λ·l_g).
 //!
-//! Reference, per point: the library's `roll_cover` on the bonded layer (`ModelChoice::Layer`) at
+//! Reference, per point: the library's `roll_cover` on the bonded layer (`Body::Layer`) at
 //! tol 1e−6 for the same scene in SI units with the spectrum shifted by that point's a_T — a direct
 //! solve through the scene conversion of `contact::scene`, none of the map's interpolation or its
 //! conversion. Tolerances from the stated ones: friction.csv 2·COVER_TOL (the solver's estimate ≤ 1e−3
@@ -16,7 +16,7 @@
 
 use crate::reference::{csv_rows, job_on_sls, rel, Kind, Sls};
 use std::collections::HashMap;
-use viscoroll::contact::cover::{roll_cover, ModelChoice};
+use viscoroll::contact::cover::roll_cover;
 use viscoroll::contact::{Body, Scene};
 use viscoroll::CreepSpectrum;
 
@@ -45,10 +45,11 @@ fn direct(load_n_per_m: f64, speed_m_s: f64, a_t: f64) -> (f64, f64) {
         load_n_per_m,
         speed_m_s,
         poisson: Some(0.3),
-        body: Body::HalfSpace,
+        body: Body::Layer {
+            thickness_m: COVER_M,
+        },
     };
-    let r = roll_cover(&scene, &spectrum, Some(COVER_M), ModelChoice::Layer, 1e-6)
-        .expect("direct layer solve");
+    let r = roll_cover(&scene, &spectrum, 1e-6).expect("direct layer solve");
     assert!(
         r.error_estimate <= 1e-6,
         "reference estimate {}",

@@ -44,8 +44,8 @@
 use crate::reference::{friction_at_length, SceneSi};
 use rayon::prelude::*;
 use std::path::PathBuf;
-use viscoroll::contact::cover::{roll_cover, ModelChoice};
-use viscoroll::contact::{roll, AutoSettings, ContactSettings, Scheme};
+use viscoroll::contact::cover::roll_cover;
+use viscoroll::contact::{roll, AutoSettings, Body, ContactSettings, Scene, Scheme};
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet, COVER_TOL};
 use viscoroll::pipeline::{fit_files, FitOptions};
@@ -284,10 +284,13 @@ fn evaluate(
                 let on_body = |sp: &CreepSpectrum| match spec.cover_thickness_mm {
                     Some(h_mm) => {
                         roll_cover(
-                            &scene,
+                            &Scene {
+                                body: Body::Auto {
+                                    thickness_m: h_mm * 1e-3,
+                                },
+                                ..scene
+                            },
                             sp,
-                            Some(h_mm * 1e-3),
-                            ModelChoice::Auto,
                             settings.auto.tol.max(COVER_TOL),
                         )
                         .unwrap()

@@ -23,9 +23,10 @@
 //! `#[ignore]`d: `cargo test --release --test tests layer_props::sweep -- --ignored --nocapture`.
 
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
-use viscoroll::contact::body::layer::{layer_at_load, BodyModel, LayerSettings};
-use viscoroll::contact::cover::{solve_cover, ModelChoice};
+use viscoroll::contact::body::layer::{layer_at_load, LayerSettings};
+use viscoroll::contact::cover::solve_cover;
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+use viscoroll::contact::Body;
 use viscoroll::contact::CreepTerm;
 
 /// Cases in CI (each: a half-space solve, the `auto` answer and a layer reference at tol 2e−5).
@@ -91,7 +92,7 @@ fn run(seed: u64, cases: usize) -> (usize, usize) {
         .unwrap();
         let h = hr * hs.lambda;
         let label = format!("case {case}: {m} terms, J∞/J_g {ratio:.3e}, h/λ {hr:.3e}, ν {nu:.3}");
-        let a = solve_cover(&terms, load, h, nu, ModelChoice::Auto, TOL)
+        let a = solve_cover(&terms, load, nu, &Body::Auto { thickness_m: h }, TOL)
             .unwrap_or_else(|e| panic!("{label}: {e}"));
         let s = &a.answer.solution;
         // 1. finite, λ > 0; a cheaper body only within tol
@@ -99,13 +100,9 @@ fn run(seed: u64, cases: usize) -> (usize, usize) {
             s.lambda.is_finite() && s.lambda > 0.0 && s.friction_rho.is_finite(),
             "{label}"
         );
-        if a.answer.model != BodyModel::Layer {
+        if !matches!(a.model, Body::Layer { .. }) {
             let e = a.model_error_estimate.expect("model error estimate");
-            assert!(
-                e <= TOL,
-                "{label}: {} with model error {e}",
-                a.answer.model.name()
-            );
+            assert!(e <= TOL, "{label}: {} with model error {e}", a.model.name());
         }
         // 2. a missed tolerance is said
         let flagged = a
@@ -122,10 +119,10 @@ fn run(seed: u64, cases: usize) -> (usize, usize) {
         }
         // 3. honoured estimate against the layer reference
         let h_over_l = h / s.lambda;
-        if flagged || h_over_l < 0.02 || a.answer.model == BodyModel::WinklerConstrained {
+        if flagged || h_over_l < 0.02 || matches!(a.model, Body::WinklerConstrained { .. }) {
             println!(
                 "{label}: {} (h/λ {h_over_l:.2e}, estimate {:.1e}{}): no reference",
-                a.answer.model.name(),
+                a.model.name(),
                 a.answer.error_estimate,
                 if flagged { ", flagged" } else { "" }
             );
@@ -158,7 +155,7 @@ fn run(seed: u64, cases: usize) -> (usize, usize) {
         let el = rel(s.lambda, r.solution.lambda);
         println!(
             "{label}: {} n {}: error ρF/N {ef:.1e}, λ {el:.1e} ≤ {allowed:.1e} (estimate {:.1e}, model {:.1e}, reference {:.1e})",
-            a.answer.model.name(),
+            a.model.name(),
             s.n,
             a.answer.error_estimate,
             a.model_error_estimate.unwrap_or(0.0),

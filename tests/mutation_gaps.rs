@@ -3,8 +3,7 @@
 //! against a reference computed here by a different route (geometry, limits, exact solutions).
 
 use crate::reference::{Kind, Sls};
-use viscoroll::contact::body::layer::BodyModel;
-use viscoroll::contact::cover::{roll_cover, ModelChoice};
+use viscoroll::contact::cover::roll_cover;
 use viscoroll::contact::{Body, Scene};
 use viscoroll::CreepSpectrum;
 
@@ -32,17 +31,16 @@ fn cover_indentation_warning_follows_the_roll_geometry() {
         load_n_per_m: 1_000.0,
         speed_m_s: 0.05,
         poisson: Some(0.3),
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     let solve = |cover_m: f64| {
-        roll_cover(
-            &scene,
-            &spectrum,
-            Some(cover_m),
-            ModelChoice::HalfSpace,
-            1e-6,
-        )
-        .expect("solves")
+        let on_cover = Scene {
+            body: Body::HalfSpace {
+                cover_m: Some(cover_m),
+            },
+            ..scene
+        };
+        roll_cover(&on_cover, &spectrum, 1e-6).expect("solves")
     };
     let warned = |w: &[String]| w.iter().any(|s| s.contains("indentation"));
     // A thick cover: the half-space answer, no warning.
@@ -115,7 +113,7 @@ fn auto_keeps_a_slow_mode_holding_over_one_percent_of_the_compliance() {
         load_n_per_m: 1000.0,
         speed_m_s: 0.01,
         poisson: Some(0.3),
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     // T = l_g/V and l_g depend only on J_g (docs/MATH.md §1): read them from any spectrum with that J_g.
     let p = scene
@@ -126,13 +124,22 @@ fn auto_keeps_a_slow_mode_holding_over_one_percent_of_the_compliance() {
     let tol = 1e-2;
     let fast_only = spectrum(&[(1.0, 0.1 * t)]);
     let with_slow = spectrum(&[(1.0, 0.1 * t), (0.05, 20.0 * t)]);
-    let hs = roll_cover(&scene, &fast_only, Some(cover_m), ModelChoice::Auto, tol).expect("solves");
+    let scene = Scene {
+        body: Body::Auto {
+            thickness_m: cover_m,
+        },
+        ..scene
+    };
+    let hs = roll_cover(&scene, &fast_only, tol).expect("solves");
     let lambda = hs.roll.dimensionless.lambda;
     assert!(lambda > 1.0 && lambda < 2.5, "λ = {lambda}");
-    assert_eq!(hs.model, BodyModel::HalfSpace, "{}", hs.reason);
-    let slow =
-        roll_cover(&scene, &with_slow, Some(cover_m), ModelChoice::Auto, tol).expect("solves");
-    assert_ne!(slow.model, BodyModel::HalfSpace, "{}", slow.reason);
+    assert!(matches!(hs.model, Body::HalfSpace { .. }), "{}", hs.reason);
+    let slow = roll_cover(&scene, &with_slow, tol).expect("solves");
+    assert!(
+        !matches!(slow.model, Body::HalfSpace { .. }),
+        "{}",
+        slow.reason
+    );
 }
 
 /// The gap ratio's minimum over ξ ∈ [−6λ, 0) by brute force: 3 000 points, then 2 000 points across

@@ -9,7 +9,7 @@
 use crate::opts::Opts;
 use crate::{stage_err, to_json, Stage};
 use pyo3::prelude::*;
-use viscoroll::contact::cover::{roll_cover, ModelChoice};
+use viscoroll::contact::cover::roll_cover;
 use viscoroll::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
 use viscoroll::pipeline::roll_fit::{roll_source_at, CreepSource};
 use viscoroll::results::{CompoundFit, SceneSet};
@@ -166,7 +166,7 @@ fn roll(
         load_n_per_m: load,
         speed_m_s: speed,
         poisson: o.f64("poisson")?,
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     let temps: Vec<Option<f64>> = match temps_c {
         Some(ts) => ts.into_iter().map(Some).collect(),
@@ -175,13 +175,13 @@ fn roll(
     let answers = py.detach(|| -> Result<Vec<serde_json::Value>, anyhow::Error> {
         let mut out = Vec::new();
         for t in temps {
-            if let Some((cover_m, choice)) = cover {
+            if let Some((cover_m, body)) = cover {
                 out.push(roll_covered(
                     &source,
                     t,
                     &scene,
                     cover_m,
-                    choice,
+                    body,
                     settings.auto.tol,
                     no_bands,
                 )?);
@@ -227,25 +227,29 @@ fn roll(
 
 /// The cover of `roll`'s options, as `viscoroll roll --cover-mm H --model M` checks them: `None`
 /// without `cover_mm` and `model` (the half-space path), else (thickness in m or none, the body).
-fn cover_options(o: &Opts, radius_mm: f64) -> PyResult<Option<(Option<f64>, ModelChoice)>> {
+fn cover_options(o: &Opts, radius_mm: f64) -> PyResult<Option<(Option<f64>, Body)>> {
     let err = |m: String| stage_err(Stage::Roll)(anyhow::anyhow!(m));
     let (h, model) = (o.f64("cover_mm")?, o.str("model")?);
     if h.is_none() && model.is_none() {
         return Ok(None);
     }
     let name = model.unwrap_or_else(|| "auto".into());
-    let choice = ModelChoice::parse(&name).ok_or_else(|| {
-        err(format!(
+    if !matches!(Body::choice(&name, Some(1.0)), Ok(Some(_))) {
+        return Err(err(format!(
             "model `{name}` is not known (auto, half-space, layer, winkler)"
-        ))
-    })?;
+        )));
+    }
     if let Some(h) = h {
         if !(h.is_finite() && h > 0.0) {
             return Err(err(format!("cover_mm must be finite and > 0, got {h}")));
         }
         viscoroll::limits::cover("cover_mm", h, radius_mm).map_err(|e| err(e.to_string()))?;
     }
-    Ok(Some((h.map(|h| h * 1e-3), choice)))
+    let cover_m = h.map(|h| h * 1e-3);
+    let body = Body::choice(&name, cover_m)
+        .map_err(|e| err(e.to_string()))?
+        .ok_or_else(|| err(format!("model `{name}` is not known")))?;
+    Ok(Some((cover_m, body)))
 }
 
 /// One scene on a cover at `t` (src/cli/roll_cover.rs): the spectrum at the temperature, the body
@@ -256,7 +260,7 @@ fn roll_covered(
     t: Option<f64>,
     scene: &Scene,
     cover_m: Option<f64>,
-    choice: ModelChoice,
+    body: Body,
     tol: f64,
     no_bands: bool,
 ) -> Result<serde_json::Value, anyhow::Error> {
@@ -275,13 +279,13 @@ fn roll_covered(
             anyhow::bail!("temp_c needs a fit (a bare creep spectrum has no shift law)")
         }
     };
-    let r = roll_cover(scene, &spectrum, cover_m, choice, tol)?;
+    let r = roll_cover(&Scene { body, ..*scene }, &spectrum, tol)?;
     warnings.extend(r.warnings.iter().cloned());
-    let (b, notes) = match choice {
+    let (b, notes) = match body {
         _ if no_bands => (Err("skipped (--no-bands)".to_string()), vec![]),
-        ModelChoice::Winkler => (Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()), vec![]),
-        ModelChoice::HalfSpace => band(source, scene, None, t, r.roll.friction),
-        ModelChoice::Auto | ModelChoice::Layer => band(source, scene, cover_m, t, r.roll.friction),
+        Body::Winkler { .. } => (Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()), vec![]),
+        Body::HalfSpace { .. } => band(source, scene, None, t, r.roll.friction),
+        _ => band(source, scene, cover_m, t, r.roll.friction),
     };
     let sol = &r.roll;
     Ok(serde_json::json!({

@@ -8,9 +8,8 @@
 //! ([`band_of`], [`mean_band`]).
 
 use super::BandSettings;
-use crate::contact::body::layer::BodyModel;
-use crate::contact::cover::{roll_cover_with, ModelChoice};
-use crate::contact::{roll, AutoSettings, ContactSettings, RollSolution, Scene, Scheme};
+use crate::contact::cover::roll_cover_with;
+use crate::contact::{roll, AutoSettings, Body, ContactSettings, RollSolution, Scene, Scheme};
 use crate::results::{CompoundFit, FrictionBand, FrictionPoint};
 use crate::CreepSpectrum;
 
@@ -57,13 +56,13 @@ pub fn solver<'a>(
     settings: &BandSettings,
 ) -> impl Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a {
     let scene = Scene {
-        body: crate::contact::Body::HalfSpace,
+        body: crate::contact::Body::HALF_SPACE,
         ..*scene
     };
     let cs = band_contact_settings(settings);
     let on_cover = cover_m.map(|h_m| cover_solver(&scene, h_m, settings));
     move |c: &CreepSpectrum, log10_a_t: f64| match &on_cover {
-        Some(solve) => solve(c, log10_a_t, None, ModelChoice::Auto).map(|r| r.0),
+        Some(solve) => solve(c, log10_a_t, None, AUTO).map(|r| r.0),
         None => {
             if !log10_a_t.is_finite() {
                 return Err(format!("log10 a_T is not finite ({log10_a_t})"));
@@ -89,27 +88,29 @@ fn positive_friction(f: f64) -> Result<f64, String> {
 /// `auto` choice (its half-space solve with the gap check costs about a third of a replicate's layer
 /// solve; measured by `cargo bench --bench bands_levers`); `auto` when the fit's body is not known
 /// or is one `roll_cover` cannot be asked for by name (the constrained Winkler foundation).
-pub fn replicate_choice(model: Option<BodyModel>) -> ModelChoice {
+pub fn replicate_choice(model: Option<Body>) -> Body {
     match model {
-        Some(BodyModel::Layer) => ModelChoice::Layer,
-        Some(BodyModel::HalfSpace) => ModelChoice::HalfSpace,
-        Some(BodyModel::Winkler) => ModelChoice::Winkler,
-        Some(BodyModel::WinklerConstrained) | None => ModelChoice::Auto,
+        Some(b @ (Body::Layer { .. } | Body::HalfSpace { .. } | Body::Winkler { .. })) => b,
+        _ => AUTO,
     }
 }
 
+/// `auto` as the body of a covered solve ([`cover_solver`] puts it on its cover).
+pub const AUTO: Body = Body::Auto {
+    thickness_m: f64::NAN,
+};
+
 /// One covered solve of the bands: F/N, contact length in m, the body solved (`None`: not known).
-pub type CoverSolve = (f64, f64, Option<BodyModel>);
+pub type CoverSolve = (f64, f64, Option<Body>);
 
 /// A covered solve of the bands ([`cover_solver`]): creep spectrum, log10 a_T, start, body.
 pub trait CoverSolver:
-    Fn(&CreepSpectrum, f64, Option<(f64, f64)>, ModelChoice) -> Result<CoverSolve, String> + Sync
+    Fn(&CreepSpectrum, f64, Option<(f64, f64)>, Body) -> Result<CoverSolve, String> + Sync
 {
 }
 
 impl<F> CoverSolver for F where
-    F: Fn(&CreepSpectrum, f64, Option<(f64, f64)>, ModelChoice) -> Result<CoverSolve, String>
-        + Sync
+    F: Fn(&CreepSpectrum, f64, Option<(f64, f64)>, Body) -> Result<CoverSolve, String> + Sync
 {
 }
 
@@ -125,17 +126,20 @@ impl<F> CoverSolver for F where
 /// (its friction point's warnings).
 pub fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl CoverSolver {
     let scene = Scene {
-        body: crate::contact::Body::HalfSpace,
+        body: crate::contact::Body::HALF_SPACE,
         ..*scene
     };
     let cover_tol = settings.contact_tol.max(COVER_BAND_TOL);
-    move |c: &CreepSpectrum, log10_a_t: f64, start: Option<(f64, f64)>, choice: ModelChoice| {
+    move |c: &CreepSpectrum, log10_a_t: f64, start: Option<(f64, f64)>, choice: Body| {
         if !log10_a_t.is_finite() {
             return Err(format!("log10 a_T is not finite ({log10_a_t})"));
         }
         let at = shifted(c, log10_a_t);
-        let r = roll_cover_with(&scene, &at, Some(h_m), choice, cover_tol, start, false)
-            .map_err(|e| e.to_string())?;
+        let on = Scene {
+            body: choice.with_cover(h_m),
+            ..scene
+        };
+        let r = roll_cover_with(&on, &at, cover_tol, start, false).map_err(|e| e.to_string())?;
         Ok((
             positive_friction(r.roll.friction)?,
             r.roll.contact_length_m,
@@ -153,7 +157,7 @@ pub fn half_space_solve(
     settings: &BandSettings,
 ) -> Result<RollSolution, String> {
     let scene = Scene {
-        body: crate::contact::Body::HalfSpace,
+        body: crate::contact::Body::HALF_SPACE,
         ..*scene
     };
     if !log10_a_t.is_finite() {
@@ -576,22 +580,28 @@ mod tests {
             load_n_per_m: 10_000.0,
             speed_m_s: 4.0,
             poisson: None,
-            body: crate::contact::Body::HalfSpace,
+            body: crate::contact::Body::HALF_SPACE,
         };
         let bs = BandSettings::default();
         let tol = bs.contact_tol.max(COVER_BAND_TOL);
         for h_m in [5e-3, 10e-3] {
             let solve = cover_solver(&scene, h_m, &bs);
-            for choice in [ModelChoice::Layer, ModelChoice::Auto] {
-                let cold = roll_cover_from(&scene, &spec, Some(h_m), choice, tol, None).unwrap();
+            for choice in [
+                Body::Layer { thickness_m: h_m },
+                Body::Auto { thickness_m: h_m },
+            ] {
+                let on = Scene {
+                    body: choice,
+                    ..scene
+                };
+                let cold = roll_cover_from(&on, &spec, tol, None).unwrap();
                 assert!(
                     cold.min_gap_ratio.is_finite(),
                     "the reference ran its checks"
                 );
                 let l = cold.roll.contact_length_m;
                 for start in [None, Some((1.03 * l, f64::NAN))] {
-                    let with =
-                        roll_cover_from(&scene, &spec, Some(h_m), choice, tol, start).unwrap();
+                    let with = roll_cover_from(&on, &spec, tol, start).unwrap();
                     let (f, l_m, model) = solve(&spec, 0.0, start, choice).unwrap();
                     assert_eq!(
                         f.to_bits(),

@@ -16,8 +16,7 @@ use super::window::{
     window_note, WindowExcess, WindowSide,
 };
 use super::BandSettings;
-use crate::contact::body::layer::BodyModel;
-use crate::contact::cover::ModelChoice;
+use crate::contact::Body;
 use crate::contact::Scene;
 use crate::results::{BandEnsemble, CompoundFit, FrictionBand};
 use crate::CreepSpectrum;
@@ -280,7 +279,7 @@ pub fn half_space_ratios(
 ) -> Option<HalfSpaceRatios> {
     let creep = fit.creep.as_ref()?;
     let scene = Scene {
-        body: crate::contact::Body::HalfSpace,
+        body: crate::contact::Body::HALF_SPACE,
         ..*scene
     };
     let law = &fit.shift_law;
@@ -665,7 +664,7 @@ fn bands_with(
         return SceneRatios::empty(temps_c.len());
     };
     let hs_scene = Scene {
-        body: crate::contact::Body::HalfSpace,
+        body: crate::contact::Body::HALF_SPACE,
         ..*scene
     };
     // the half-space solves: the fit's F̂ and contact length (the rolling frequency V/l of eq.
@@ -692,7 +691,7 @@ fn bands_with(
         None => hs
             .fit
             .iter()
-            .map(|r| r.clone().map(|(f, l)| (f, l, Some(BodyModel::HalfSpace))))
+            .map(|r| r.clone().map(|(f, l)| (f, l, Some(Body::HALF_SPACE))))
             .collect(),
         Some(h_m) => {
             let on_cover = cover_solver(scene, h_m, settings);
@@ -701,7 +700,7 @@ fn bands_with(
                 .enumerate()
                 .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
                     Some(&x) if x.0.is_finite() && x.0 > 0.0 => Ok(x),
-                    _ => on_cover(creep, law.log10_a_t(t), None, ModelChoice::Auto),
+                    _ => on_cover(creep, law.log10_a_t(t), None, super::friction::AUTO),
                 })
                 .collect()
         }

@@ -11,8 +11,8 @@
 //! (h′), `cover_over_contact` (h′/λ), `poisson`, `error_estimate`, `tol`, `min_pressure_ratio`,
 //! `min_gap_ratio`, `warnings`.
 
-use crate::contact::cover::{push_length_warning, solve_cover, solve_cover_at_lambda, ModelChoice};
-use crate::contact::{self, AutoSettings, ContactSettings, CreepTerm, Scheme};
+use crate::contact::cover::{push_length_warning, solve_cover, solve_cover_at_lambda};
+use crate::contact::{self, AutoSettings, Body, ContactSettings, CreepTerm, Scheme};
 use anyhow::{bail, Context};
 
 /// Arguments of `viscoroll contact`.
@@ -216,9 +216,11 @@ fn run_auto(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> any
 /// half-space by `--scheme`; `auto` takes the criterion at the given λ).
 fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> anyhow::Result<()> {
     let name = args.model.as_deref().unwrap_or("auto");
-    let Some(choice) = ModelChoice::parse(name) else {
+    // the body asked for on a cover of h′ (its lengths in units of V·T)
+    let body_on = |h: f64| Body::choice(name, Some(h)).ok().flatten();
+    if body_on(1.0).is_none() {
         bail!("--model `{name}` is not known (auto, half-space, layer, winkler)");
-    };
+    }
     let Some(h) = args.cover else {
         bail!("--model {name} needs --cover H' (the cover thickness h/(VT))");
     };
@@ -232,18 +234,19 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
     if !(args.tol.is_finite() && (1e-12..=0.1).contains(&args.tol)) {
         bail!("--tol must be in [1e-12, 0.1], got {}", args.tol);
     }
+    let body = body_on(h).context("--model with --cover")?;
     let c = match (args.lambda, args.load) {
         (None, Some(load)) => {
             if !(load.is_finite() && load > 0.0) {
                 bail!("--load must be finite and > 0, got {load}");
             }
-            solve_cover(terms, load, h, nu, choice, args.tol)?
+            solve_cover(terms, load, nu, &body, args.tol)?
         }
         (Some(lambda), None) => {
             if !(lambda.is_finite() && lambda > 0.0) {
                 bail!("--lambda must be finite and > 0, got {lambda}");
             }
-            solve_cover_at_lambda(terms, lambda, h, nu, choice, args.tol, settings)?
+            solve_cover_at_lambda(terms, lambda, nu, &body, args.tol, settings)?
         }
         (Some(_), Some(_)) => bail!("give only one of --lambda and --load, not both"),
         (None, None) => bail!("give one of --lambda L (contact length) or --load N' (load)"),
@@ -269,7 +272,7 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
             "cover": h,
             "cover_over_contact": h / d.lambda,
             "poisson": nu,
-            "model": a.model.name(),
+            "model": c.model.name(),
             "model_reason": c.reason,
             "model_error_estimate": c.model_error_estimate,
             "error_estimate": a.error_estimate,
@@ -287,7 +290,7 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
             "cover h' = {h}  nu = {nu}  creep terms (f, b): {}",
             args.creep
         );
-        errln!("body             = {} ({})", a.model.name(), c.reason);
+        errln!("body             = {} ({})", c.model.name(), c.reason);
         errln!("lambda           = {:.9}", d.lambda);
         errln!("beta             = {:.9}", d.beta);
         errln!("load N'          = {:.9}", d.load);

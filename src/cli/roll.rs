@@ -57,7 +57,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         load_n_per_m: args.load_n_per_m,
         speed_m_s: args.speed_m_s,
         poisson: args.poisson,
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     if args.cover_mm.is_some() || args.model.is_some() {
         // A cover: the body is chosen and solved by contact::body::layer (super::roll_cover).

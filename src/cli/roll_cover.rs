@@ -11,7 +11,8 @@
 use super::roll_args::Args;
 use super::roll_band::{band, band_fields};
 use super::roll_print::{Answer, Shift};
-use crate::contact::cover::{roll_cover, ModelChoice};
+use crate::contact::cover::roll_cover;
+use crate::contact::Body;
 use crate::contact::Scene;
 use crate::creep::AtTemperature;
 use crate::pipeline::roll_fit::CreepSource;
@@ -28,7 +29,10 @@ pub fn run(
     mut warnings: Vec<String>,
 ) -> anyhow::Result<()> {
     let name = args.model.as_deref().unwrap_or("auto");
-    let Some(choice) = ModelChoice::parse(name) else {
+    let cover_m = args.cover_mm.map(|h| h * 1e-3);
+    let Some(body) =
+        Body::choice(name, cover_m).with_context(|| format!("{}", args.spectrum.display()))?
+    else {
         bail!("--model `{name}` is not known (auto, half-space, layer, winkler)");
     };
     if let Some(h) = args.cover_mm {
@@ -39,27 +43,16 @@ pub fn run(
     if !(args.tol.is_finite() && (1e-12..=0.1).contains(&args.tol)) {
         bail!("--tol must be in [1e-12, 0.1], got {}", args.tol);
     }
-    let r = roll_cover(
-        scene,
-        spectrum,
-        args.cover_mm.map(|h| h * 1e-3),
-        choice,
-        args.tol,
-    )
-    .with_context(|| format!("{}", args.spectrum.display()))?;
+    let on_body = Scene { body, ..*scene };
+    let r = roll_cover(&on_body, spectrum, args.tol)
+        .with_context(|| format!("{}", args.spectrum.display()))?;
     warnings.extend(r.warnings.iter().cloned());
     // The band is solved on the body the main job's bands solve (`auto`, eq. 15.6): on the cover,
     // or on the half-space when one was asked for; the uniaxial Winkler model has none.
-    let band = match choice {
-        ModelChoice::Winkler => Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()).into(),
-        ModelChoice::HalfSpace => band(args, source, scene, None, r.roll.friction),
-        ModelChoice::Auto | ModelChoice::Layer => band(
-            args,
-            source,
-            scene,
-            args.cover_mm.map(|h| h * 1e-3),
-            r.roll.friction,
-        ),
+    let band = match body {
+        Body::Winkler { .. } => Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()).into(),
+        Body::HalfSpace { .. } => band(args, source, scene, None, r.roll.friction),
+        _ => band(args, source, scene, cover_m, r.roll.friction),
     };
     let json_extra = serde_json::json!({
         "cover_mm": args.cover_mm,

@@ -1,12 +1,12 @@
 //! A dimensional scene on a covered roll track: the body chosen (half-space, bonded layer, Winkler) and
 //! solved, in SI units, with the validity warnings of issue 14.
 //!
-//! Input: [`Scene`], [`CreepSpectrum`], the cover thickness in m (None: half-space) and a
-//! [`ModelChoice`]; output: [`CoverRoll`] (the [`RollSolution`] of the body solved, which body and
+//! Input: [`Scene`] (its [`Body`]: the cover's thickness and the model asked for, `auto` the
+//! cheapest accurate enough) and [`CreepSpectrum`]; output: [`CoverRoll`] (the [`RollSolution`] of the body solved, which body and
 //! why, its error estimate and, when `auto` chose a cheaper body than the layer, the estimated
 //! difference from the layer's answer).
 //!
-//! `auto` (criterion measured in `tests::criterion_table`, table in docs/DEVLOG.md): with λ the half-space
+//! `auto` ([`Body::auto_choice`], criterion measured in `tests::criterion_table`, table in docs/DEVLOG.md): with λ the half-space
 //! contact length (solved first, it is cheap), L = max(λ, 1/bᵢ over the modes holding ≥ 1 % of the
 //! compliance, rᵢ = fᵢ/bᵢ ≥ 0.01·S) the longest length the body's memory reaches, and h′ the cover,
 //! - when the half-space law [`C_HALF_SPACE`]·(L/h′)² ≤ tol: the half-space (measured: relative
@@ -26,8 +26,9 @@
 use crate::contact::body::half_space;
 pub use crate::contact::body::layer::LAYER_TOL_FLOOR;
 use crate::contact::body::layer::{
-    layer_at_load, winkler_at_load, BodyAnswer, BodyModel, LayerSettings, WinklerColumns,
+    layer_at_load, winkler_at_load, BodyAnswer, LayerSettings, WinklerColumns,
 };
+pub use crate::contact::body::{C_HALF_SPACE, C_WINKLER};
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::LoadSettings;
 use crate::contact::problem::CreepTerm;
@@ -35,50 +36,13 @@ use crate::contact::scene::{RollSolution, Scene};
 use crate::contact::{roll, Body, ContactSettings};
 use crate::CreepSpectrum;
 
-/// Half-space law of approach: relative difference from the layer ≤ C_HS·(L/h)² (module doc;
-/// the largest measured constant is 2.5 with L = λ, here with L ≥ λ).
-pub const C_HALF_SPACE: f64 = 3.0;
-/// Thin compressible layer vs constrained Winkler: relative difference ≤ C_W·(h/λ)/(1−2ν). Measured
-/// (`tests::criterion_table`, docs/DEVLOG.md) over ν = 0, 0.2, 0.3, 0.45, 0.49 at h/λ ≈ 0.01–1: the ratio
-/// difference·(1−2ν)/(h/λ) is 0.35–0.38 at ν = 0, 0.20–0.22 at ν = 0.2, 0.09–0.12 at ν = 0.3 and 0.45,
-/// ≤ 0.10 at ν = 0.49; one constant for all ν, the largest measured with a little margin. At ν = 0.49
-/// the spectral solver reaches the linear range (`tests::criterion_nu049`: C → 0.11 below h/λ ≈ 0.04,
-/// down to h/λ = 0.009), so the rule holds there with a margin of 3.6.
-pub const C_WINKLER: f64 = 0.4;
-
-/// Which body to solve.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ModelChoice {
-    /// The cheapest body within the tolerance of the layer (default with a cover).
-    Auto,
-    /// Always the half-space.
-    HalfSpace,
-    /// Always the bonded layer.
-    Layer,
-    /// The conveyor tools' Winkler foundation (uniaxial columns).
-    Winkler,
-}
-
-impl ModelChoice {
-    /// Parse `auto|half-space|layer|winkler`.
-    pub fn parse(s: &str) -> Option<Self> {
-        Some(match s {
-            "auto" => ModelChoice::Auto,
-            "half-space" => ModelChoice::HalfSpace,
-            "layer" => ModelChoice::Layer,
-            "winkler" => ModelChoice::Winkler,
-            _ => return None,
-        })
-    }
-}
-
 /// A scene's answer on the chosen body.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoverRoll {
     /// SI answer (friction, contact length, offset, pressure) and the dimensionless problem.
     pub roll: RollSolution,
-    /// The body solved.
-    pub model: BodyModel,
+    /// The body solved (on the scene's cover; never [`Body::Auto`]).
+    pub model: Body,
     /// Why this body (one line for the datasheet).
     pub reason: String,
     /// The solver's own relative error estimate.
@@ -98,7 +62,9 @@ pub struct CoverRoll {
 /// A dimensionless answer on the body chosen (the core of [`roll_cover`], used by `viscoroll contact`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoverAnswer {
-    /// The body solved, its solution, error estimate, contact checks and solver warnings.
+    /// The body solved (lengths in units of V·T, as given; never [`Body::Auto`]).
+    pub model: Body,
+    /// Its solution, error estimate, contact checks and solver warnings.
     pub answer: BodyAnswer,
     /// Why this body (one line for the datasheet).
     pub reason: String,
@@ -106,38 +72,11 @@ pub struct CoverAnswer {
     pub model_error_estimate: Option<f64>,
 }
 
-/// The `auto` criterion (module doc): given the half-space contact length `lambda`, the cover h′ and
-/// ν, the cheaper body within `tol` of the layer and its estimated difference from the layer, or
-/// `None` (solve the layer).
-pub fn auto_choice(
-    terms: &[CreepTerm],
-    lambda: f64,
-    thickness: f64,
-    poisson: f64,
-    tol: f64,
-) -> Option<(BodyModel, f64)> {
-    let s_total = 1.0 + terms.iter().map(|t| t.f / t.b).sum::<f64>();
-    let memory = terms
-        .iter()
-        .filter(|t| t.f / t.b >= 0.01 * s_total)
-        .map(|t| 1.0 / t.b)
-        .fold(lambda, f64::max);
-    let e_hs = C_HALF_SPACE * (memory / thickness).powi(2);
-    let e_w = (poisson < 0.5).then(|| C_WINKLER * (thickness / lambda) / (1.0 - 2.0 * poisson));
-    if e_hs <= tol {
-        Some((BodyModel::HalfSpace, e_hs))
-    } else {
-        e_w.filter(|&e| e <= tol)
-            .map(|e| (BodyModel::WinklerConstrained, e))
-    }
-}
-
 /// The half-space answer of the `auto` scheme at `tol` as a [`BodyAnswer`].
 fn half_space_answer(terms: &[CreepTerm], load: f64, tol: f64) -> Result<BodyAnswer, ContactError> {
     let sol = half_space::solve_at_load(terms, load, &ContactSettings::auto(tol))?;
     let diag = sol.diagnostics.clone();
     Ok(BodyAnswer {
-        model: BodyModel::HalfSpace,
         error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
         min_pressure_ratio: diag.as_ref().map_or(f64::NAN, |d| d.min_pressure_ratio),
         min_gap_ratio: diag.as_ref().map_or(f64::NAN, |d| d.min_gap_ratio),
@@ -146,18 +85,17 @@ fn half_space_answer(terms: &[CreepTerm], load: f64, tol: f64) -> Result<BodyAns
     })
 }
 
-/// Solve the dimensionless problem (creep terms, load N′) on a cover of dimensionless thickness
-/// `thickness` = h/(VT) with the body `choice`, to `tol` (module doc: the layer's hat fallback to at
-/// least [`LAYER_TOL_FLOOR`]).
+/// Solve the dimensionless problem (creep terms, load N′) on the cover `body` (its lengths in units
+/// of V·T: the thickness is h′ = h/(VT); `auto` the cheapest body accurate enough), to `tol` (module
+/// doc: the layer's hat fallback to at least [`LAYER_TOL_FLOOR`]).
 pub fn solve_cover(
     terms: &[CreepTerm],
     load: f64,
-    thickness: f64,
     poisson: f64,
-    choice: ModelChoice,
+    body: &Body,
     tol: f64,
 ) -> Result<CoverAnswer, ContactError> {
-    solve_cover_from(terms, load, thickness, poisson, choice, tol, None)
+    solve_cover_from(terms, load, poisson, body, tol, None)
 }
 
 /// [`solve_cover`] with the layer solve started from `start` = (λ guess, d ln N′/d ln λ), e.g. a
@@ -167,128 +105,131 @@ pub fn solve_cover(
 pub fn solve_cover_from(
     terms: &[CreepTerm],
     load: f64,
-    thickness: f64,
     poisson: f64,
-    choice: ModelChoice,
+    body: &Body,
     tol: f64,
     start: Option<(f64, f64)>,
 ) -> Result<CoverAnswer, ContactError> {
-    solve_cover_with(terms, load, thickness, poisson, choice, tol, start, true)
+    solve_cover_with(terms, load, poisson, body, tol, start, true)
+}
+
+/// The cover's thickness h′ of `body` (in units of V·T), checked.
+fn cover_of(body: &Body) -> Result<f64, ContactError> {
+    positive("cover thickness h/(VT)", body.cover_m().unwrap_or(f64::NAN))
 }
 
 /// [`solve_cover_from`] with the bonded layer's closing contact checks run or not (`checks`,
 /// [`LayerSettings::checks`]: the same answer; without them its check ratios are NaN and no check
 /// warning is raised).
-#[allow(clippy::too_many_arguments)]
 pub fn solve_cover_with(
     terms: &[CreepTerm],
     load: f64,
-    thickness: f64,
     poisson: f64,
-    choice: ModelChoice,
+    body: &Body,
     tol: f64,
     start: Option<(f64, f64)>,
     checks: bool,
 ) -> Result<CoverAnswer, ContactError> {
-    positive("cover thickness h/(VT)", thickness)?;
-    let h = thickness;
+    let h = cover_of(body)?;
     let nu = poisson;
     let winkler = |columns| winkler_at_load(terms, load, columns, h, nu, &LoadSettings::default());
-    let (answer, reason, model_error_estimate) = match choice {
-        ModelChoice::HalfSpace => (
+    let asked = |what: &str, name: &str| format!("{what} asked for (--model {name})");
+    let layer = || {
+        let layer_settings = LayerSettings {
+            tol,
+            n_max: 512,
+            start,
+            checks,
+            ..Default::default()
+        };
+        layer_at_load(terms, load, h, nu, &layer_settings)
+    };
+    let (model, answer, reason, model_error_estimate) = match *body {
+        Body::HalfSpace { .. } => (
+            *body,
             half_space_answer(terms, load, tol)?,
-            "half-space asked for (--model half-space)".to_string(),
+            asked("half-space", "half-space"),
             None,
         ),
-        ModelChoice::Winkler => (
+        Body::Winkler { .. } => (
+            *body,
             winkler(WinklerColumns::Uniaxial)?,
             "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)"
                 .to_string(),
             None,
         ),
-        ModelChoice::Layer | ModelChoice::Auto => {
-            let mut chosen = None;
-            if choice == ModelChoice::Auto {
-                let hs = half_space_answer(terms, load, tol)?;
-                let lambda = hs.solution.lambda;
-                let r = h / lambda;
-                match auto_choice(terms, lambda, h, nu, tol) {
-                    Some((BodyModel::HalfSpace, e)) => {
-                        chosen = Some((
-                            hs,
-                            format!(
-                                "auto: cover/contact length = {r:.3} is thick enough for the half-space \
-                                 (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
-                            ),
-                            Some(e),
-                        ))
-                    }
-                    Some((_, e)) => {
-                        chosen = Some((
-                            winkler(WinklerColumns::Constrained)?,
-                            format!(
-                                "auto: cover/contact length = {r:.3} is thin enough for a Winkler foundation \
-                                 with the constrained modulus (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
-                            ),
-                            Some(e),
-                        ))
-                    }
-                    None => {}
-                }
-            }
-            match chosen {
-                Some(c) => c,
-                None => {
-                    let layer_settings = LayerSettings {
-                        tol,
-                        n_max: 512,
-                        start,
-                        checks,
-                        ..Default::default()
-                    };
-                    let a = layer_at_load(terms, load, h, nu, &layer_settings)?;
-                    let reason = if choice == ModelChoice::Auto {
-                        "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".into()
-                    } else {
-                        "bonded layer asked for (--model layer)".into()
-                    };
-                    (a, reason, None)
-                }
+        Body::WinklerConstrained { .. } => (
+            *body,
+            winkler(WinklerColumns::Constrained)?,
+            "constrained Winkler foundation asked for".to_string(),
+            None,
+        ),
+        Body::Layer { .. } => (*body, layer()?, asked("bonded layer", "layer"), None),
+        Body::Auto { .. } => {
+            let hs = half_space_answer(terms, load, tol)?;
+            let lambda = hs.solution.lambda;
+            let r = h / lambda;
+            match Body::auto_choice(terms, lambda, h, nu, tol) {
+                Some((chosen @ Body::HalfSpace { .. }, e)) => (
+                    chosen,
+                    hs,
+                    format!(
+                        "auto: cover/contact length = {r:.3} is thick enough for the half-space \
+                         (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
+                    ),
+                    Some(e),
+                ),
+                Some((chosen, e)) => (
+                    chosen,
+                    winkler(WinklerColumns::Constrained)?,
+                    format!(
+                        "auto: cover/contact length = {r:.3} is thin enough for a Winkler foundation \
+                         with the constrained modulus (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
+                    ),
+                    Some(e),
+                ),
+                None => (
+                    Body::Layer { thickness_m: h },
+                    layer()?,
+                    "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".into(),
+                    None,
+                ),
             }
         }
     };
     Ok(CoverAnswer {
+        model,
         answer,
         reason,
         model_error_estimate,
     })
 }
 
-/// Solve the dimensionless problem at given contact length λ on a cover of dimensionless thickness
-/// `thickness` = h/(VT) with the body `choice` (`viscoroll contact --cover --lambda`): the half-space by
-/// the scheme of `settings`; the bonded layer by the hat collocation with `settings.n` intervals, its
-/// error estimated from the same solve at n/2 (largest relative change of β, N′ and ρF/N); the Winkler
-/// foundations in closed form; `auto` applies the criterion of [`auto_choice`] at the given λ with `tol`.
+/// Solve the dimensionless problem at given contact length λ on the cover `body` (lengths in units
+/// of V·T; `viscoroll contact --cover --lambda`): the half-space by the scheme of `settings`; the
+/// bonded layer by the hat collocation with `settings.n` intervals, its error estimated from the same
+/// solve at n/2 (largest relative change of β, N′ and ρF/N); the Winkler foundations in closed form;
+/// `auto` applies the criterion of [`Body::auto_choice`] at the given λ with `tol`.
 pub fn solve_cover_at_lambda(
     terms: &[CreepTerm],
     lambda: f64,
-    thickness: f64,
     poisson: f64,
-    choice: ModelChoice,
+    body: &Body,
     tol: f64,
     settings: &ContactSettings,
 ) -> Result<CoverAnswer, ContactError> {
-    positive("cover thickness h/(VT)", thickness)?;
-    let (h, nu) = (thickness, poisson);
-    let (model, reason, model_err) = match choice {
-        ModelChoice::HalfSpace => (BodyModel::HalfSpace, "half-space asked for (--model half-space)".to_string(), None),
-        ModelChoice::Layer => (BodyModel::Layer, "bonded layer asked for (--model layer)".to_string(), None),
-        ModelChoice::Winkler => (
-            BodyModel::Winkler,
+    let h = cover_of(body)?;
+    let nu = poisson;
+    let (model, reason, model_err) = match *body {
+        Body::HalfSpace { .. } => (*body, "half-space asked for (--model half-space)".to_string(), None),
+        Body::Layer { .. } => (*body, "bonded layer asked for (--model layer)".to_string(), None),
+        Body::Winkler { .. } => (
+            *body,
             "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)".to_string(),
             None,
         ),
-        ModelChoice::Auto => match auto_choice(terms, lambda, h, nu, tol) {
+        Body::WinklerConstrained { .. } => (*body, "constrained Winkler foundation asked for".to_string(), None),
+        Body::Auto { .. } => match Body::auto_choice(terms, lambda, h, nu, tol) {
             Some((m, e)) => (
                 m,
                 format!(
@@ -300,17 +241,16 @@ pub fn solve_cover_at_lambda(
                 Some(e),
             ),
             None => (
-                BodyModel::Layer,
+                Body::Layer { thickness_m: h },
                 "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".to_string(),
                 None,
             ),
         },
     };
     let answer = match model {
-        BodyModel::HalfSpace => {
+        Body::HalfSpace { .. } => {
             let sol = half_space::solve_at_lambda(terms, lambda, settings)?;
             BodyAnswer {
-                model,
                 error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
                 min_pressure_ratio: sol
                     .diagnostics
@@ -324,7 +264,25 @@ pub fn solve_cover_at_lambda(
                 solution: sol,
             }
         }
-        BodyModel::Layer => {
+        Body::Winkler { .. } | Body::WinklerConstrained { .. } => {
+            let columns = if matches!(model, Body::Winkler { .. }) {
+                crate::contact::body::layer::WinklerColumns::Uniaxial
+            } else {
+                crate::contact::body::layer::WinklerColumns::Constrained
+            };
+            let w = crate::contact::body::layer::Winkler::new(terms, columns, h, nu)?
+                .at_lambda(lambda)?;
+            let mut solution = w.solution;
+            solution.warnings.extend(w.warnings.iter().cloned());
+            BodyAnswer {
+                error_estimate: 0.0,
+                min_pressure_ratio: w.min_pressure_ratio,
+                min_gap_ratio: w.min_gap_ratio,
+                warnings: w.warnings,
+                solution,
+            }
+        }
+        _ => {
             let k = crate::contact::body::layer::LayerKernel::new(terms, h, nu)?;
             let n = settings.n.max(4) / 2 * 2;
             let fine = crate::contact::body::layer::collocation::solve_at_lambda(&k, lambda, n)?;
@@ -337,7 +295,6 @@ pub fn solve_cover_at_lambda(
             let (min_pressure_ratio, min_gap_ratio) =
                 crate::contact::body::layer::collocation::contact_checks(&k, &fine)?;
             BodyAnswer {
-                model,
                 error_estimate: est,
                 min_pressure_ratio,
                 min_gap_ratio,
@@ -345,42 +302,23 @@ pub fn solve_cover_at_lambda(
                 solution: fine,
             }
         }
-        BodyModel::Winkler | BodyModel::WinklerConstrained => {
-            let columns = if model == BodyModel::Winkler {
-                crate::contact::body::layer::WinklerColumns::Uniaxial
-            } else {
-                crate::contact::body::layer::WinklerColumns::Constrained
-            };
-            let w = crate::contact::body::layer::Winkler::new(terms, columns, h, nu)?
-                .at_lambda(lambda)?;
-            let mut solution = w.solution;
-            solution.warnings.extend(w.warnings.iter().cloned());
-            BodyAnswer {
-                model,
-                error_estimate: 0.0,
-                min_pressure_ratio: w.min_pressure_ratio,
-                min_gap_ratio: w.min_gap_ratio,
-                warnings: w.warnings,
-                solution,
-            }
-        }
     };
     Ok(CoverAnswer {
+        model,
         answer,
         reason,
         model_error_estimate: model_err,
     })
 }
 
-/// Solve `scene` on a cover of `cover_m` (None: half-space) with the body `choice`, to `tol`.
+/// Solve `scene` on its body (`scene.body`: a half-space without a cover, or a cover and the model
+/// asked for, `auto` the cheapest accurate enough) to `tol`.
 pub fn roll_cover(
     scene: &Scene,
     spectrum: &CreepSpectrum,
-    cover_m: Option<f64>,
-    choice: ModelChoice,
     tol: f64,
 ) -> Result<CoverRoll, ContactError> {
-    roll_cover_from(scene, spectrum, cover_m, choice, tol, None)
+    roll_cover_from(scene, spectrum, tol, None)
 }
 
 /// [`roll_cover`] with the layer solve started from `start` = (contact length in m, d ln N′/d ln λ),
@@ -389,12 +327,10 @@ pub fn roll_cover(
 pub fn roll_cover_from(
     scene: &Scene,
     spectrum: &CreepSpectrum,
-    cover_m: Option<f64>,
-    choice: ModelChoice,
     tol: f64,
     start: Option<(f64, f64)>,
 ) -> Result<CoverRoll, ContactError> {
-    roll_cover_with(scene, spectrum, cover_m, choice, tol, start, true)
+    roll_cover_with(scene, spectrum, tol, start, true)
 }
 
 /// [`roll_cover_from`] with the bonded layer's closing contact checks run or not (`checks`,
@@ -402,29 +338,17 @@ pub fn roll_cover_from(
 pub fn roll_cover_with(
     scene: &Scene,
     spectrum: &CreepSpectrum,
-    cover_m: Option<f64>,
-    choice: ModelChoice,
     tol: f64,
     start: Option<(f64, f64)>,
     checks: bool,
 ) -> Result<CoverRoll, ContactError> {
     let p = scene.dimensionless(spectrum)?;
-    let Some(h_m) = cover_m else {
-        if !matches!(choice, ModelChoice::Auto | ModelChoice::HalfSpace) {
-            return Err(ContactError::Unsupported(
-                "the layer and Winkler bodies need a cover thickness (--cover-mm / cover_thickness_mm)"
-                    .into(),
-            ));
-        }
-        let hs_scene = Scene {
-            body: Body::HalfSpace,
-            ..*scene
-        };
-        let r = roll(&hs_scene, spectrum, &ContactSettings::auto(tol))?;
+    let Some(h_m) = scene.body.cover_m() else {
+        let r = roll(scene, spectrum, &ContactSettings::auto(tol))?;
         let diag = r.dimensionless.diagnostics.clone();
         return Ok(CoverRoll {
             error_estimate: r.dimensionless.error_estimate.unwrap_or(f64::NAN),
-            model: BodyModel::HalfSpace,
+            model: Body::HALF_SPACE,
             reason: "no cover given: half-space".into(),
             model_error_estimate: None,
             cover_over_contact: None,
@@ -445,17 +369,17 @@ pub fn roll_cover_with(
     let c = solve_cover_with(
         &p.terms,
         p.load,
-        h_m / p.length_scale_m,
         p.poisson,
-        choice,
+        &scene.body.with_cover(h_m / p.length_scale_m),
         tol,
         start,
         checks,
     )?;
     let a = c.answer;
+    let model = c.model.with_cover(h_m);
     let mut warnings = a.warnings;
     let mut roll = p.to_dimensional(scene.load_n_per_m, a.solution);
-    if a.model == BodyModel::HalfSpace {
+    if matches!(model, Body::HalfSpace { .. }) {
         // the half-space's own validity check, as `contact::roll` makes it
         let l_over_r = roll.contact_length_m / scene.radius_m;
         if l_over_r > 0.126 {
@@ -469,7 +393,7 @@ pub fn roll_cover_with(
     }
     let mut out = CoverRoll {
         roll,
-        model: a.model,
+        model,
         reason: c.reason,
         error_estimate: a.error_estimate,
         model_error_estimate: c.model_error_estimate,
@@ -489,7 +413,7 @@ pub fn roll_cover_with(
             h_m * 1e3
         ));
     }
-    if out.model != BodyModel::HalfSpace {
+    if !matches!(out.model, Body::HalfSpace { .. }) {
         push_length_warning(&mut out.warnings, out.roll.contact_length_m, scene.radius_m);
     }
     Ok(out)

@@ -10,7 +10,7 @@
 use super::compounds::{discover, CompoundInput};
 use super::error::{io, PipelineError};
 use super::fit_compound::{fit_or_reuse_master, fit_or_reuse_with_bands, FitAction, FitOptions};
-use super::scenes::{friction_vs_temperature, pipeline_contact_settings};
+use super::scenes::{friction_on_body, friction_vs_temperature, pipeline_contact_settings};
 use crate::bands::BandSettings;
 use crate::dma::read_files;
 use crate::report::{write_index, write_ranking, write_report, write_workbook, TanDeltaProxy};
@@ -361,23 +361,33 @@ fn fit_shifted(
 /// The friction ratios of each replicate in a scene, and each point's band from them. The ratios are
 /// solved on the scene's body (a cover: eq. 15.6); scenes with the same roll, temperatures and cover
 /// share them (`solved`), and scenes with the same roll and temperatures share their half-space
-/// solves (`half_space`: a covered scene's regression, eq. 15.6b, and its half-space twin).
+/// solves (`half_space`: a covered scene's regression, eq. 15.6b, and its half-space twin). The
+/// replicates of a covered point are solved on `bodies`, the body each point was solved on
+/// (`friction_on_body`; `None`: `auto`).
+#[allow(clippy::too_many_arguments)]
 fn scene_bands(
     fit: &CompoundFit,
     ensemble: &crate::results::BandEnsemble,
     spec: &SceneSpec,
     bs: &BandSettings,
     points: &mut [FrictionPoint],
+    bodies: &[Option<crate::contact::Body>],
     solved: &mut Vec<SolvedRatios>,
     half_space: &mut Vec<crate::bands::HalfSpaceRatios>,
 ) -> Vec<Vec<f64>> {
-    let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
-    let key = (spec.scene(), spec.temps_c.clone(), cover_m);
+    let scene = spec.scene();
+    let cover_m = scene.body.cover_m();
+    // the bands take the roll and the cover apart (crate::bands::scene_bands_given)
+    let roll_only = crate::contact::Scene {
+        body: crate::contact::Body::HALF_SPACE,
+        ..scene
+    };
+    let key = (roll_only, spec.temps_c.clone(), cover_m);
     let r = match solved.iter().find(|(k, _)| *k == key) {
         Some((_, r)) => r.clone(),
         None => {
             let hs_scene = crate::contact::Scene {
-                body: crate::contact::Body::HalfSpace,
+                body: crate::contact::Body::HALF_SPACE,
                 ..key.0
             };
             if !half_space
@@ -396,7 +406,8 @@ fn scene_bands(
             // (same body, tol)
             let nominal: Vec<crate::bands::CoverSolve> = points
                 .iter()
-                .map(|p| (p.friction, p.contact_length_mm * 1e-3, body_of(&p.model)))
+                .zip(bodies)
+                .map(|(p, &body)| (p.friction, p.contact_length_mm * 1e-3, body))
                 .collect();
             let r = crate::bands::scene_bands_given(
                 fit, ensemble, &key.0, cover_m, &key.1, bs, &nominal, hs,
@@ -415,21 +426,6 @@ fn scene_bands(
         }
     }
     r.ratios
-}
-
-/// The body a friction point names (its `model`, `BodyModel::name`); `None` for another name (a
-/// failed point's empty one): its band replicates are then solved by `auto`
-/// (crate::bands::replicate_choice).
-fn body_of(model: &str) -> Option<crate::contact::body::layer::BodyModel> {
-    use crate::contact::body::layer::BodyModel;
-    [
-        BodyModel::HalfSpace,
-        BodyModel::Layer,
-        BodyModel::Winkler,
-        BodyModel::WinklerConstrained,
-    ]
-    .into_iter()
-    .find(|m| m.name() == model)
 }
 
 fn one_compound(
@@ -456,7 +452,7 @@ fn one_compound(
     let mut solved: Vec<SolvedRatios> = Vec::new();
     let mut half_space = Vec::new();
     for spec in &opts.scenes.scene {
-        let mut points = friction_vs_temperature(&fit, spec, &settings)?;
+        let (mut points, bodies) = friction_on_body(&fit, spec, &settings)?;
         if let (Some(bs), Some(ensemble)) = (opts.bands.as_ref(), fit.bands.as_ref()) {
             ratios.push(scene_bands(
                 &fit,
@@ -464,6 +460,7 @@ fn one_compound(
                 spec,
                 bs,
                 &mut points,
+                &bodies,
                 &mut solved,
                 &mut half_space,
             ));
@@ -915,15 +912,22 @@ pub fn rank_fits(
     let settings = pipeline_contact_settings();
     let mut v: Vec<_> = fits
         .par_iter()
-        .map(|f| match friction_vs_temperature(f, spec, &settings) {
-            Ok(mut p) => {
+        .map(|f| match friction_on_body(f, spec, &settings) {
+            Ok((mut p, bodies)) => {
                 for q in p.iter_mut() {
                     q.determine(f.measured_range_c());
                 }
                 let ratios = match (bands, f.bands.as_ref()) {
-                    (Some(bs), Some(ensemble)) => {
-                        scene_bands(f, ensemble, spec, bs, &mut p, &mut vec![], &mut vec![])
-                    }
+                    (Some(bs), Some(ensemble)) => scene_bands(
+                        f,
+                        ensemble,
+                        spec,
+                        bs,
+                        &mut p,
+                        &bodies,
+                        &mut vec![],
+                        &mut vec![],
+                    ),
                     _ => vec![],
                 };
                 let mut s = standing(

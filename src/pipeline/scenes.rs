@@ -6,11 +6,11 @@
 
 use super::error::PipelineError;
 use super::roll_fit::fit_spectrum_at;
-use crate::contact::cover::{roll_cover, ModelChoice};
+use crate::contact::cover::roll_cover;
 use crate::contact::maps::{
     covered_map, friction_map, CoveredProblem, MapQuery, MapSettings, MapValue, ReducedProblem,
 };
-use crate::contact::{roll, AutoSettings, ContactSettings, Scheme};
+use crate::contact::{roll, AutoSettings, Body, ContactSettings, Scheme};
 use crate::results::CompoundFit;
 use rayon::prelude::*;
 
@@ -44,9 +44,9 @@ pub const COVER_TOL: f64 = 1e-3;
 /// The tolerance of a scene's direct contact solves: its own `tol` if set, else `default` on a
 /// half-space and at least [`COVER_TOL`] on a cover.
 pub fn scene_tol(spec: &SceneSpec, default: f64) -> f64 {
-    spec.tol.unwrap_or(match spec.cover_thickness_mm {
-        Some(_) => default.max(COVER_TOL),
-        None => default,
+    spec.tol.unwrap_or(match spec.scene().body {
+        Body::HalfSpace { cover_m: None } => default,
+        _ => default.max(COVER_TOL),
     })
 }
 
@@ -59,6 +59,16 @@ pub fn friction_vs_temperature(
     spec: &SceneSpec,
     settings: &ContactSettings,
 ) -> Result<Vec<FrictionPoint>, PipelineError> {
+    Ok(friction_on_body(fit, spec, settings)?.0)
+}
+
+/// [`friction_vs_temperature`] and, per point, the body solved (`None` where the solve failed): a
+/// covered scene's bands solve each replicate on it (crate::bands::replicate_choice).
+pub fn friction_on_body(
+    fit: &CompoundFit,
+    spec: &SceneSpec,
+    settings: &ContactSettings,
+) -> Result<(Vec<FrictionPoint>, Vec<Option<Body>>), PipelineError> {
     fit.creep.as_ref().ok_or_else(|| PipelineError::NoCreep {
         compound: fit.compound.clone(),
     })?;
@@ -71,21 +81,25 @@ pub fn friction_vs_temperature(
         .temps_c
         .par_iter()
         .map(|&t| {
-            let failed = |e: String, log10_a_t: f64, extrapolated: bool| FrictionPoint {
-                temp_c: t,
-                log10_a_t,
-                friction: f64::NAN,
-                resistance_n_per_m: f64::NAN,
-                contact_length_mm: f64::NAN,
-                extrapolated,
-                error: Some(crate::results::cap_line(&e)),
-                model: String::new(),
-                model_reason: String::new(),
-                band: None,
-                warnings: vec![],
-                specimens: vec![],
-                undetermined: None,
-                error_estimate: None,
+            let failed_point =
+                |t: f64, e: String, log10_a_t: f64, extrapolated: bool| FrictionPoint {
+                    temp_c: t,
+                    log10_a_t,
+                    friction: f64::NAN,
+                    resistance_n_per_m: f64::NAN,
+                    contact_length_mm: f64::NAN,
+                    extrapolated,
+                    error: Some(crate::results::cap_line(&e)),
+                    model: String::new(),
+                    model_reason: String::new(),
+                    band: None,
+                    warnings: vec![],
+                    specimens: vec![],
+                    undetermined: None,
+                    error_estimate: None,
+                };
+            let failed = |e: String, log10_a_t: f64, extrapolated: bool| {
+                (failed_point(t, e, log10_a_t, extrapolated), None)
             };
             // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
             let at = match fit_spectrum_at(fit, t) {
@@ -94,30 +108,53 @@ pub fn friction_vs_temperature(
                 Err(PipelineError::Creep(e)) => return failed(e.to_string(), f64::NAN, true),
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
-            if let Some(h_mm) = spec.cover_thickness_mm {
-                // A cover: the body chosen and solved by contact::body::layer (auto, at COVER_TOL).
-                return match roll_cover(
-                    &scene,
-                    &at.spectrum,
-                    Some(h_mm * 1e-3),
-                    ModelChoice::Auto,
-                    tol,
-                ) {
-                    Ok(r) => FrictionPoint {
+            if !matches!(scene.body, Body::HalfSpace { cover_m: None }) {
+                // A cover: the body chosen and solved by contact::cover (auto, at COVER_TOL).
+                return match roll_cover(&scene, &at.spectrum, tol) {
+                    Ok(r) => (
+                        FrictionPoint {
+                            temp_c: t,
+                            log10_a_t: at.log10_a_t,
+                            friction: r.roll.friction,
+                            resistance_n_per_m: r.roll.resistance_n_per_m,
+                            contact_length_mm: r.roll.contact_length_m * 1e3,
+                            extrapolated: at.extrapolated,
+                            error: None,
+                            model: r.model.name().to_string(),
+                            model_reason: r.reason,
+                            band: None,
+                            error_estimate: Some(
+                                r.error_estimate + r.model_error_estimate.unwrap_or(0.0),
+                            ),
+                            warnings: r
+                                .warnings
+                                .iter()
+                                .map(|w| crate::results::cap_line(w))
+                                .collect(),
+                            specimens: vec![],
+                            undetermined: None,
+                        },
+                        Some(r.model),
+                    ),
+                    Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
+                };
+            }
+            match roll(&scene, &at.spectrum, settings) {
+                Ok(r) => (
+                    FrictionPoint {
                         temp_c: t,
                         log10_a_t: at.log10_a_t,
-                        friction: r.roll.friction,
-                        resistance_n_per_m: r.roll.resistance_n_per_m,
-                        contact_length_mm: r.roll.contact_length_m * 1e3,
+                        friction: r.friction,
+                        resistance_n_per_m: r.resistance_n_per_m,
+                        contact_length_mm: r.contact_length_m * 1e3,
                         extrapolated: at.extrapolated,
                         error: None,
-                        model: r.model.name().to_string(),
-                        model_reason: r.reason,
+                        model: "half-space".into(),
+                        model_reason: String::new(),
                         band: None,
-                        error_estimate: Some(
-                            r.error_estimate + r.model_error_estimate.unwrap_or(0.0),
-                        ),
+                        error_estimate: r.dimensionless.error_estimate,
                         warnings: r
+                            .dimensionless
                             .warnings
                             .iter()
                             .map(|w| crate::results::cap_line(w))
@@ -125,35 +162,12 @@ pub fn friction_vs_temperature(
                         specimens: vec![],
                         undetermined: None,
                     },
-                    Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
-                };
-            }
-            match roll(&scene, &at.spectrum, settings) {
-                Ok(r) => FrictionPoint {
-                    temp_c: t,
-                    log10_a_t: at.log10_a_t,
-                    friction: r.friction,
-                    resistance_n_per_m: r.resistance_n_per_m,
-                    contact_length_mm: r.contact_length_m * 1e3,
-                    extrapolated: at.extrapolated,
-                    error: None,
-                    model: "half-space".into(),
-                    model_reason: String::new(),
-                    band: None,
-                    error_estimate: r.dimensionless.error_estimate,
-                    warnings: r
-                        .dimensionless
-                        .warnings
-                        .iter()
-                        .map(|w| crate::results::cap_line(w))
-                        .collect(),
-                    specimens: vec![],
-                    undetermined: None,
-                },
+                    Some(Body::HALF_SPACE),
+                ),
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }
         })
-        .collect())
+        .unzip())
 }
 
 /// Map settings of the main job: relative tolerance 1e−6 on F/N and contact length at every map
@@ -275,11 +289,11 @@ pub fn friction_maps(
         warnings: Vec::new(),
     };
     if !queries.is_empty() {
-        solved = match spec.cover_thickness_mm {
-            Some(h_mm) => covered_values(
+        solved = match spec.scene().body.cover_m() {
+            Some(h_m) => covered_values(
                 creep,
                 spec.poisson,
-                h_mm,
+                h_m * 1e3,
                 &queries,
                 scene_tol(spec, settings.tol),
             ),
@@ -397,7 +411,7 @@ fn sort_map_points(
             friction: value.map_or(f64::NAN, |m| m.friction),
             contact_length_mm: value.map_or(f64::NAN, |m| m.contact_length_m * 1e3),
         };
-        if kind == 0 && spec.cover_thickness_mm.is_some() {
+        if kind == 0 && spec.scene().body.cover_m().is_some() {
             long = long.max(p.contact_length_mm / spec.roll_radius_mm);
         }
         match kind {

@@ -56,8 +56,9 @@ pub struct SceneSpec {
     /// Poisson's ratio (default: the spectrum's).
     #[serde(default)]
     pub poisson: Option<f64>,
-    /// Thickness in mm of a rubber cover bonded to a rigid carcass; absent: a half-space. The body
-    /// solved is chosen by `contact::cover::roll_cover` (`auto`: the cheapest within tolerance).
+    /// Thickness in mm of a rubber cover bonded to a rigid carcass; absent: a half-space. Read, it
+    /// becomes the scene's body ([`SceneSpec::scene`]: `Body::Auto`, the cheapest body within
+    /// tolerance, chosen by `contact::cover::roll_cover`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cover_thickness_mm: Option<f64>,
     /// Temperatures in °C of the friction maps (each solve costs; keep it short).
@@ -77,14 +78,20 @@ pub struct SceneSpec {
 }
 
 impl SceneSpec {
-    /// The contact scene (SI).
+    /// The contact scene (SI), its body from `cover_thickness_mm`: the half-space without one, else
+    /// the cover with the body chosen by `auto` (`Body::Auto`).
     pub fn scene(&self) -> Scene {
         Scene {
             radius_m: self.roll_radius_mm * 1e-3,
             load_n_per_m: self.load_n_per_m,
             speed_m_s: self.speed_m_s,
             poisson: self.poisson,
-            body: Body::HalfSpace,
+            body: match self.cover_thickness_mm {
+                Some(h_mm) => Body::Auto {
+                    thickness_m: h_mm * 1e-3,
+                },
+                None => Body::HALF_SPACE,
+            },
         }
     }
 }
@@ -471,6 +478,21 @@ mod tests {
             .fold(f64::NEG_INFINITY, f64::max);
         assert_eq!((lo, hi), (-40.0, 40.0));
         assert!(set.scene.len() >= 2);
+    }
+
+    #[test]
+    fn cover_thickness_mm_becomes_the_scenes_body() {
+        // scenes.toml keeps its key: a cover is read into the scene's body (`auto` on it), its
+        // absence is the half-space
+        let text =
+            "[[scene]]\nname = \"c\"\nroll_radius_mm = 66.5\nload_n_per_m = 1e4\nspeed_m_s = 4\n\
+                    temps_c = [20]\ncover_thickness_mm = 5.0\n\n[[scene]]\nname = \"h\"\n\
+                    roll_radius_mm = 66.5\nload_n_per_m = 1e4\nspeed_m_s = 4\ntemps_c = [20]\n";
+        let set = SceneSet::parse(text, Path::new("s.toml")).unwrap();
+        assert_eq!(set.scene[0].scene().body, Body::Auto { thickness_m: 5e-3 });
+        assert_eq!(set.scene[0].scene().body.cover_m(), Some(5e-3));
+        assert_eq!(set.scene[1].scene().body, Body::HALF_SPACE);
+        assert_eq!(set.scene[0].scene().radius_m, 0.0665);
     }
 
     #[test]

@@ -5,8 +5,11 @@
 //! [`ContactSettings`]; output: the [`DimensionlessSolution`] (λ, β, N′, ρF/N, pressure), or a
 //! [`ContactError`].
 //!
-//! Today there is one body, the viscoelastic half-space of the thesis ([`half_space`]: its kernel,
-//! eq. 3.19, the three schemes that solve eq. 3.25 on it, and everything they hard-wire about it).
+//! One enum, [`Body`], names the body, its model and, for a cover, the choice of model: the
+//! viscoelastic half-space of the thesis ([`half_space`]: its kernel, eq. 3.19, the three schemes that
+//! solve eq. 3.25 on it), the bonded layer and the Winkler foundations ([`layer`]), and `auto` (the
+//! cheapest of them accurate enough, [`Body::auto_choice`]; its reasons and estimates are
+//! `contact::cover`'s). The dispatch below resolves `auto` and calls the body's folder.
 //!
 //! # Adding a body
 //! (docs/ARCHITECTURE.md, "Add a contact body", says the same and what is still outside the seam.)
@@ -15,9 +18,11 @@
 //!    and the settings; it imports the ground (`problem`, `settings`, `error`), `load` and shared
 //!    numerics, never this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
-//!    `Layer { thickness_m }`), validated in [`Body::validate`], and its arm in [`solve_at_load`] and
+//!    `Layer { thickness_m }`), named in [`Body::name`] (the serde name too), with its arms in
+//!    [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in [`solve_at_load`] and
 //!    [`solve_at_lambda`] below, the single dispatch point (lengths go in units of
-//!    `problem.length_scale_m`);
+//!    `problem.length_scale_m`); to be chosen by `auto` or by name, also in [`Body::auto_choice`] /
+//!    [`Body::choice`] and `contact::cover`'s answer;
 //! 3. its tests, through [`crate::contact::roll`] where they can.
 //!
 //! The scene carries the body (`Scene::body`, serde default = half-space, so existing JSON keeps
@@ -30,18 +35,31 @@ pub mod half_space;
 pub mod layer;
 
 use super::error::ContactError;
-use super::problem::{DimensionlessScene, DimensionlessSolution};
+use super::problem::{CreepTerm, DimensionlessScene, DimensionlessSolution};
 use super::settings::ContactSettings;
 use serde::{Deserialize, Serialize};
 
-/// What the roll rolls on (dimensional parameters, SI). JSON: `{"kind": "half_space"}`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
-#[serde(tag = "kind", rename_all = "snake_case")]
+/// What the roll rolls on — the body, its model and, for a cover, the choice of model (dimensional
+/// parameters, SI). The one enum for all three: a scene's body (`Scene::body`), the model asked for
+/// by name (`--model`, [`Body::choice`]) and the model a cover was solved on
+/// (`contact::cover::CoverRoll::model`).
+///
+/// JSON: `{"kind": "half-space"}`, `{"kind": "layer", "thickness_m": 0.005}`, …; the names are
+/// [`Body::name`] (kebab-case, as in CSV tables and on the command line). The old snake-case
+/// spellings of scene JSON (`half_space`, `winkler_constrained`) still load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
 #[non_exhaustive]
 pub enum Body {
-    /// A viscoelastic half-space (thesis ch. 3): kernel eq. 3.19.
-    #[default]
-    HalfSpace,
+    /// A viscoelastic half-space (thesis ch. 3): kernel eq. 3.19. With `cover_m`, a cover of that
+    /// thickness solved as a half-space (a cover thick against the contact; the thickness serves the
+    /// validity checks only, `contact::cover`).
+    #[serde(alias = "half_space")]
+    HalfSpace {
+        /// Thickness in m of the cover this half-space stands for (None: no cover).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        cover_m: Option<f64>,
+    },
     /// A viscoelastic cover of thickness `thickness_m` bonded to a rigid carcass (plane strain,
     /// [`layer`]). Every scheme is served at given load by the layer's own error-controlled solver
     /// ([`layer::layer_at_load`]: spectral to `settings.auto.tol`, the hat collocation for covers
@@ -57,32 +75,150 @@ pub enum Body {
         height_m: f64,
     },
     /// A Winkler foundation of laterally constrained columns (the thin compressible layer's limit).
+    #[serde(alias = "winkler_constrained")]
     WinklerConstrained {
         /// Column height in m (> 0).
         height_m: f64,
     },
+    /// A cover of thickness `thickness_m` bonded to a rigid carcass, solved on the cheapest body
+    /// accurate enough: the half-space, the constrained Winkler foundation or the layer, by the
+    /// criterion of [`Body::auto_choice`] (the choice and its reasons: `contact::cover`).
+    Auto {
+        /// Cover thickness in m (> 0).
+        thickness_m: f64,
+    },
 }
 
+impl Default for Body {
+    /// The half-space without a cover (also when `body` is absent from scene JSON).
+    fn default() -> Self {
+        Body::HALF_SPACE
+    }
+}
+
+/// Half-space law of approach: relative difference from the layer ≤ C_HS·(L/h)² (`contact::cover`'s
+/// module doc; the largest measured constant is 2.5 with L = λ, here with L ≥ λ).
+pub const C_HALF_SPACE: f64 = 3.0;
+/// Thin compressible layer vs constrained Winkler: relative difference ≤ C_W·(h/λ)/(1−2ν). Measured
+/// (`contact::cover`'s `tests::criterion_table`, docs/DEVLOG.md) over ν = 0, 0.2, 0.3, 0.45, 0.49 at
+/// h/λ ≈ 0.01–1: the ratio difference·(1−2ν)/(h/λ) is 0.35–0.38 at ν = 0, 0.20–0.22 at ν = 0.2,
+/// 0.09–0.12 at ν = 0.3 and 0.45, ≤ 0.10 at ν = 0.49; one constant for all ν, the largest measured with
+/// a little margin. At ν = 0.49 the spectral solver reaches the linear range
+/// (`tests::criterion_nu049`: C → 0.11 below h/λ ≈ 0.04, down to h/λ = 0.009), so the rule holds there
+/// with a margin of 3.6.
+pub const C_WINKLER: f64 = 0.4;
+
 impl Body {
-    /// Name used in JSON, tables and messages.
+    /// The half-space without a cover.
+    pub const HALF_SPACE: Body = Body::HalfSpace { cover_m: None };
+
+    /// Name in JSON, CSV tables, messages and on the command line.
     pub fn name(&self) -> &'static str {
         match self {
-            Body::HalfSpace => "half_space",
+            Body::HalfSpace { .. } => "half-space",
             Body::Layer { .. } => "layer",
             Body::Winkler { .. } => "winkler",
-            Body::WinklerConstrained { .. } => "winkler_constrained",
+            Body::WinklerConstrained { .. } => "winkler-constrained",
+            Body::Auto { .. } => "auto",
+        }
+    }
+
+    /// The body asked for by `name` (`auto|half-space|layer|winkler`, `--model`) on a cover of
+    /// `cover_m` (None: no cover): `Ok(None)` for an unknown name; without a cover `auto` and
+    /// `half-space` are the half-space, and the layer and Winkler bodies are refused.
+    pub fn choice(name: &str, cover_m: Option<f64>) -> Result<Option<Body>, ContactError> {
+        let needs_cover = || {
+            ContactError::Unsupported(
+                "the layer and Winkler bodies need a cover thickness (--cover-mm / cover_thickness_mm)"
+                    .into(),
+            )
+        };
+        Ok(Some(match (name, cover_m) {
+            ("auto", Some(h)) => Body::Auto { thickness_m: h },
+            ("auto" | "half-space", None) => Body::HALF_SPACE,
+            ("half-space", Some(h)) => Body::HalfSpace { cover_m: Some(h) },
+            ("layer", Some(h)) => Body::Layer { thickness_m: h },
+            ("winkler", Some(h)) => Body::Winkler { height_m: h },
+            ("layer" | "winkler", None) => return Err(needs_cover()),
+            _ => return Ok(None),
+        }))
+    }
+
+    /// The thickness in m of the cover the body stands for (None: a half-space without a cover).
+    pub fn cover_m(&self) -> Option<f64> {
+        match *self {
+            Body::HalfSpace { cover_m } => cover_m,
+            Body::Layer { thickness_m } | Body::Auto { thickness_m } => Some(thickness_m),
+            Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => Some(height_m),
+        }
+    }
+
+    /// The same kind of body on a cover of `cover_m` (the half-space keeps `cover_m` for its checks).
+    pub fn with_cover(&self, cover_m: f64) -> Body {
+        match self {
+            Body::HalfSpace { .. } => Body::HalfSpace {
+                cover_m: Some(cover_m),
+            },
+            Body::Layer { .. } => Body::Layer {
+                thickness_m: cover_m,
+            },
+            Body::Winkler { .. } => Body::Winkler { height_m: cover_m },
+            Body::WinklerConstrained { .. } => Body::WinklerConstrained { height_m: cover_m },
+            Body::Auto { .. } => Body::Auto {
+                thickness_m: cover_m,
+            },
         }
     }
 
     /// Check the body's own parameters (finite, in range).
     pub fn validate(&self) -> Result<(), ContactError> {
         match self {
-            Body::HalfSpace => Ok(()),
-            Body::Layer { thickness_m: h }
+            Body::HalfSpace { cover_m: None } => Ok(()),
+            Body::HalfSpace { cover_m: Some(h) }
+            | Body::Layer { thickness_m: h }
+            | Body::Auto { thickness_m: h }
             | Body::Winkler { height_m: h }
             | Body::WinklerConstrained { height_m: h } => {
                 super::error::positive("body thickness in m", *h).map(|_| ())
             }
+        }
+    }
+
+    /// The `auto` criterion (`contact::cover`'s module doc): given the half-space contact length
+    /// `lambda`, the cover h′ = `thickness` (in units of V·T) and ν, the cheaper body within `tol` of
+    /// the layer (on a cover of h′) and its estimated difference from the layer, or `None` (solve the
+    /// layer).
+    pub fn auto_choice(
+        terms: &[CreepTerm],
+        lambda: f64,
+        thickness: f64,
+        poisson: f64,
+        tol: f64,
+    ) -> Option<(Body, f64)> {
+        let s_total = 1.0 + terms.iter().map(|t| t.f / t.b).sum::<f64>();
+        let memory = terms
+            .iter()
+            .filter(|t| t.f / t.b >= 0.01 * s_total)
+            .map(|t| 1.0 / t.b)
+            .fold(lambda, f64::max);
+        let e_hs = C_HALF_SPACE * (memory / thickness).powi(2);
+        let e_w = (poisson < 0.5).then(|| C_WINKLER * (thickness / lambda) / (1.0 - 2.0 * poisson));
+        if e_hs <= tol {
+            Some((
+                Body::HalfSpace {
+                    cover_m: Some(thickness),
+                },
+                e_hs,
+            ))
+        } else {
+            e_w.filter(|&e| e <= tol).map(|e| {
+                (
+                    Body::WinklerConstrained {
+                        height_m: thickness,
+                    },
+                    e,
+                )
+            })
         }
     }
 }
@@ -95,7 +231,13 @@ pub fn solve_at_load(
 ) -> Result<DimensionlessSolution, ContactError> {
     body.validate()?;
     match body {
-        Body::HalfSpace => half_space::solve_at_load(&problem.terms, problem.load, settings),
+        Body::HalfSpace { .. } => half_space::solve_at_load(&problem.terms, problem.load, settings),
+        Body::Auto { thickness_m } => {
+            let chosen = auto_at(problem, *thickness_m, settings, |b| {
+                solve_at_load(b, problem, settings).map(|s| s.lambda)
+            })?;
+            solve_at_load(&chosen, problem, settings)
+        }
         Body::Layer { thickness_m } => layer::layer_at_load(
             &problem.terms,
             problem.load,
@@ -131,7 +273,11 @@ pub fn solve_at_lambda(
 ) -> Result<DimensionlessSolution, ContactError> {
     body.validate()?;
     match body {
-        Body::HalfSpace => half_space::solve_at_lambda(&problem.terms, lambda, settings),
+        Body::HalfSpace { .. } => half_space::solve_at_lambda(&problem.terms, lambda, settings),
+        Body::Auto { thickness_m } => {
+            let chosen = auto_at(problem, *thickness_m, settings, |_| Ok(lambda))?;
+            solve_at_lambda(&chosen, problem, lambda, settings)
+        }
         Body::Layer { thickness_m } => {
             let k = layer::LayerKernel::new(
                 &problem.terms,
@@ -150,6 +296,31 @@ pub fn solve_at_lambda(
             Ok(w.at_lambda(lambda)?.solution)
         }
     }
+}
+
+/// The body `auto` chooses on a cover of `thickness_m` ([`Body::auto_choice`] at `settings.auto.tol`),
+/// given the half-space contact length `lambda_hs` (of a solve on `Body::HALF_SPACE`, in units of
+/// V·T): the half-space or the constrained Winkler foundation on the cover, else the layer.
+fn auto_at(
+    problem: &DimensionlessScene,
+    thickness_m: f64,
+    settings: &ContactSettings,
+    lambda_hs: impl FnOnce(&Body) -> Result<f64, ContactError>,
+) -> Result<Body, ContactError> {
+    let lambda = lambda_hs(&Body::HALF_SPACE)?;
+    let h = thickness_m / problem.length_scale_m;
+    Ok(
+        match Body::auto_choice(
+            &problem.terms,
+            lambda,
+            h,
+            problem.poisson,
+            settings.auto.tol,
+        ) {
+            Some((chosen, _)) => chosen.with_cover(thickness_m),
+            None => Body::Layer { thickness_m },
+        },
+    )
 }
 
 /// The columns of a Winkler body.
@@ -214,7 +385,7 @@ mod tests {
             assert_eq!(got, want.solution, "tol {tol}");
             assert_eq!(got.scheme, "layer-spectral");
             // and it is not the half-space's answer (the cover matters at h′ = 0.6)
-            let hs = solve_at_load(&Body::HalfSpace, &p, &ContactSettings::auto(tol)).unwrap();
+            let hs = solve_at_load(&Body::HALF_SPACE, &p, &ContactSettings::auto(tol)).unwrap();
             assert!((hs.lambda - got.lambda).abs() > 0.1 * got.lambda);
         }
     }
@@ -282,5 +453,117 @@ mod tests {
         // constrained columns are rigid at ν = ½: refused, not solved
         let e = solve_at_load(&Body::WinklerConstrained { height_m: 1e-3 }, &p, &s);
         assert!(e.is_err());
+    }
+
+    #[test]
+    fn one_spelling_and_the_old_ones_still_load() {
+        // the names written are `Body::name` (kebab-case, as in CSV and on the command line) …
+        let all = [
+            Body::HALF_SPACE,
+            Body::HalfSpace {
+                cover_m: Some(4e-3),
+            },
+            Body::Layer { thickness_m: 5e-3 },
+            Body::Winkler { height_m: 2e-3 },
+            Body::WinklerConstrained { height_m: 2e-3 },
+            Body::Auto { thickness_m: 6e-3 },
+        ];
+        for body in all {
+            let v = serde_json::to_value(body).unwrap();
+            assert_eq!(v["kind"], body.name(), "{v}");
+            assert_eq!(serde_json::from_value::<Body>(v).unwrap(), body);
+        }
+        assert_eq!(
+            serde_json::to_string(&Body::HALF_SPACE).unwrap(),
+            r#"{"kind":"half-space"}"#
+        );
+        // … and the snake-case spellings of older scene files load as the same bodies
+        let old: Body = serde_json::from_str(r#"{"kind": "half_space"}"#).unwrap();
+        assert_eq!(old, Body::HALF_SPACE);
+        let old: Body =
+            serde_json::from_str(r#"{"kind": "winkler_constrained", "height_m": 0.002}"#).unwrap();
+        assert_eq!(old, Body::WinklerConstrained { height_m: 2e-3 });
+        // a scene without `body` is on the half-space
+        let scene: crate::contact::Scene =
+            serde_json::from_str(r#"{"radius_m": 0.1, "load_n_per_m": 1000.0, "speed_m_s": 1.0}"#)
+                .unwrap();
+        assert_eq!(scene.body, Body::HALF_SPACE);
+        let scene: crate::contact::Scene = serde_json::from_str(
+            r#"{"radius_m": 0.1, "load_n_per_m": 1000.0, "speed_m_s": 1.0, "body": {"kind": "half_space"}}"#,
+        )
+        .unwrap();
+        assert_eq!(scene.body, Body::HALF_SPACE);
+    }
+
+    #[test]
+    fn the_choice_by_name_puts_the_body_on_the_cover() {
+        let h = Some(5e-3);
+        assert_eq!(
+            Body::choice("auto", h).unwrap(),
+            Some(Body::Auto { thickness_m: 5e-3 })
+        );
+        assert_eq!(
+            Body::choice("layer", h).unwrap(),
+            Some(Body::Layer { thickness_m: 5e-3 })
+        );
+        assert_eq!(
+            Body::choice("half-space", h).unwrap(),
+            Some(Body::HalfSpace { cover_m: h })
+        );
+        assert_eq!(
+            Body::choice("winkler", h).unwrap(),
+            Some(Body::Winkler { height_m: 5e-3 })
+        );
+        assert_eq!(Body::choice("auto", None).unwrap(), Some(Body::HALF_SPACE));
+        assert_eq!(
+            Body::choice("half-space", None).unwrap(),
+            Some(Body::HALF_SPACE)
+        );
+        assert!(Body::choice("layer", None).is_err());
+        assert!(Body::choice("winkler", None).is_err());
+        assert_eq!(Body::choice("half_spacey", h).unwrap(), None);
+        for b in [
+            Body::HALF_SPACE,
+            Body::Layer { thickness_m: 1.0 },
+            Body::Auto { thickness_m: 1.0 },
+        ] {
+            assert_eq!(b.with_cover(2.0).cover_m(), Some(2.0));
+            assert_eq!(b.with_cover(2.0).name(), b.name());
+        }
+    }
+
+    #[test]
+    fn auto_at_given_load_is_the_body_the_criterion_names() {
+        // through the dispatch: `auto` on a thick cover is the half-space, on a thin compressible one
+        // the constrained Winkler foundation, in between the layer (each bit-identical to the
+        // dispatch on that body)
+        let p = problem(0.3);
+        let s = ContactSettings::auto(1e-3);
+        let hs = solve_at_load(&Body::HALF_SPACE, &p, &s).unwrap();
+        for h_m in [
+            1e-4 * LENGTH_SCALE_M,
+            0.5 * LENGTH_SCALE_M,
+            1e4 * LENGTH_SCALE_M,
+        ] {
+            let want =
+                match Body::auto_choice(&p.terms, hs.lambda, h_m / LENGTH_SCALE_M, p.poisson, 1e-3)
+                {
+                    Some((b, _)) => b.with_cover(h_m),
+                    None => Body::Layer { thickness_m: h_m },
+                };
+            let got = solve_at_load(&Body::Auto { thickness_m: h_m }, &p, &s).unwrap();
+            assert_eq!(got, solve_at_load(&want, &p, &s).unwrap(), "{want:?}");
+        }
+        let thick = Body::auto_choice(&p.terms, hs.lambda, 1e4, 0.3, 1e-3);
+        assert!(
+            matches!(thick, Some((Body::HalfSpace { .. }, _))),
+            "{thick:?}"
+        );
+        let thin = Body::auto_choice(&p.terms, hs.lambda, 1e-4, 0.3, 1e-3);
+        assert!(
+            matches!(thin, Some((Body::WinklerConstrained { .. }, _))),
+            "{thin:?}"
+        );
+        assert_eq!(Body::auto_choice(&p.terms, hs.lambda, 0.5, 0.3, 1e-3), None);
     }
 }

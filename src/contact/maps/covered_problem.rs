@@ -84,7 +84,7 @@ impl CoveredProblem {
         start: Option<(f64, f64)>,
     ) -> Result<CoveredNode, FrictionMapError> {
         let s_s = x.exp();
-        // the bonded layer as `solve_cover(…, ModelChoice::Layer, tol)` solves it
+        // the bonded layer as `solve_cover(…, &Body::Layer { .. }, tol)` solves it
         let settings = LayerSettings {
             tol,
             n_max: 512,

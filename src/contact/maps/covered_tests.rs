@@ -4,7 +4,7 @@
 
 use super::surface::{clenshaw_2d, coefficients_2d, eta_start_degree, lebesgue, tails_2d};
 use super::*;
-use crate::contact::cover::{roll_cover, ModelChoice};
+use crate::contact::cover::roll_cover;
 use crate::contact::{Body, Scene};
 use crate::testdata::{broad_spectrum, SplitMix64};
 use crate::{CreepSpectrum, ShiftLaw};
@@ -43,9 +43,9 @@ fn direct(
         load_n_per_m: n,
         speed_m_s: v,
         poisson: None,
-        body: Body::HalfSpace,
+        body: Body::Layer { thickness_m: h_m },
     };
-    roll_cover(&scene, &at.spectrum, Some(h_m), ModelChoice::Layer, tol).unwrap()
+    roll_cover(&scene, &at.spectrum, tol).unwrap()
 }
 
 #[test]

@@ -337,7 +337,7 @@ mod tests {
                 load_n_per_m: n,
                 speed_m_s: v,
                 poisson: None,
-                body: Body::HalfSpace,
+                body: Body::HALF_SPACE,
             };
             let sol = roll(&scene, &at.spectrum, &reference_roll()).unwrap();
             let d = &sol.dimensionless;
@@ -380,7 +380,7 @@ mod tests {
                 load_n_per_m: n,
                 speed_m_s: v,
                 poisson: None,
-                body: Body::HalfSpace,
+                body: Body::HALF_SPACE,
             };
             let direct = roll(&scene, &at.spectrum, &reference_roll()).unwrap();
             let s = p.reduced_time_s(r, n, v, 10f64.powf(at.log10_a_t));
@@ -436,7 +436,7 @@ mod tests {
                     load_n_per_m: n,
                     speed_m_s: v,
                     poisson: None,
-                    body: Body::HalfSpace,
+                    body: Body::HALF_SPACE,
                 };
                 let d = roll(&scene, &at.spectrum, &reference_roll()).unwrap();
                 (k, d.friction, d.contact_length_m)

@@ -1,12 +1,14 @@
 //! The reduced problem of the friction maps: a spectrum's scenes depend on the reduced time
 //! s = l_g/(V·a_T) only (module doc of [`super`]); its dimensionless creep terms at s and the
-//! `auto` solve at N′ = 1/4 there.
+//! `auto` solve at N′ = 1/4 there, on the half-space through the body dispatch
+//! ([`crate::contact::body::solve_at_load`]).
 //!
 //! Input: a [`CreepSpectrum`] (+ Poisson's ratio), s; output: [`ReducedSolution`] / [`Node`].
 
 use super::FrictionMapError;
-use crate::contact::body::half_space::auto::{solve_auto_at_load, AutoSettings};
-use crate::contact::problem::CreepTerm;
+use crate::contact::body::{solve_at_load, Body};
+use crate::contact::problem::{CreepTerm, DimensionlessScene};
+use crate::contact::settings::{AutoSettings, ContactSettings, Scheme};
 use crate::{CreepSpectrum, ModulusKind};
 use std::f64::consts::PI;
 
@@ -121,7 +123,23 @@ impl ReducedProblem {
         settings: &AutoSettings,
     ) -> Result<ReducedSolution, FrictionMapError> {
         let s_s = x.exp();
-        let sol = solve_auto_at_load(&self.terms(s_s), 0.25, settings)
+        // lengths in units of l_g (= V·T): only the terms and N′ enter the half-space's solve
+        let problem = DimensionlessScene {
+            terms: self.terms(s_s),
+            load: 0.25,
+            rho: f64::NAN,
+            time_scale_s: f64::NAN,
+            length_scale_m: 1.0,
+            pressure_scale_pa: f64::NAN,
+            poisson: f64::NAN,
+            compliance_factor_per_pa: self.compliance_factor_per_pa,
+        };
+        let contact = ContactSettings {
+            scheme: Scheme::Auto,
+            auto: *settings,
+            ..ContactSettings::default()
+        };
+        let sol = solve_at_load(&Body::HALF_SPACE, &problem, &contact)
             .map_err(|source| FrictionMapError::Solve { s_s, source })?;
         let d = &sol;
         Ok(ReducedSolution {

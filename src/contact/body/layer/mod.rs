@@ -28,44 +28,16 @@ pub use winkler::{Winkler, WinklerAnswer};
 use crate::contact::error::ContactError;
 use crate::contact::load::LoadSettings;
 use crate::contact::problem::{CreepTerm, DimensionlessSolution};
-use serde::{Deserialize, Serialize};
 
 /// The hat collocation (the fallback for very thin covers) converges to first order in λ
 /// (Richardson-extrapolated); below this tolerance its cost grows past a second per point, so it is
 /// solved to at least this.
 pub const LAYER_TOL_FLOOR: f64 = 1e-4;
 
-/// The body a scene is solved on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum BodyModel {
-    /// Viscoelastic half-space (thesis ch. 3).
-    HalfSpace,
-    /// Viscoelastic layer bonded to a rigid base.
-    Layer,
-    /// Winkler foundation of uniaxial columns (conveyor design tools).
-    Winkler,
-    /// Winkler foundation of laterally constrained columns (the thin compressible layer's limit).
-    WinklerConstrained,
-}
-
-impl BodyModel {
-    /// Name in JSON, CSV and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            BodyModel::HalfSpace => "half-space",
-            BodyModel::Layer => "layer",
-            BodyModel::Winkler => "winkler",
-            BodyModel::WinklerConstrained => "winkler-constrained",
-        }
-    }
-}
-
-/// A solution on one of the bodies, with its diagnostics.
+/// A solution on one of the bodies, with its diagnostics (which body: the caller's
+/// [`crate::contact::Body`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyAnswer {
-    /// The body solved.
-    pub model: BodyModel,
     /// λ, β, N′, ρF/N, pressure.
     pub solution: DimensionlessSolution,
     /// Estimated relative error of ρF/N and λ (of the body's own model).
@@ -136,7 +108,6 @@ fn package_layer(a: collocation::LayerAnswer, mut warnings: Vec<String>) -> Body
     let mut solution = a.solution;
     solution.warnings.extend(warnings.iter().cloned());
     BodyAnswer {
-        model: BodyModel::Layer,
         solution,
         error_estimate: a.error_estimate,
         min_pressure_ratio: a.min_pressure_ratio,
@@ -158,10 +129,6 @@ pub fn winkler_at_load(
     let mut a = w.at_load(load, settings)?;
     a.solution.warnings.extend(a.warnings.iter().cloned());
     Ok(BodyAnswer {
-        model: match columns {
-            WinklerColumns::Uniaxial => BodyModel::Winkler,
-            WinklerColumns::Constrained => BodyModel::WinklerConstrained,
-        },
         error_estimate: 0.0,
         min_pressure_ratio: a.min_pressure_ratio,
         min_gap_ratio: a.min_gap_ratio,

@@ -263,7 +263,7 @@ fn issue_figures_conveyor_idler() {
         load_n_per_m: 10_000.0,
         speed_m_s: 4.0,
         poisson: None,
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     let p = scene.dimensionless(&spec).unwrap();
     let hs = solve_auto_at_load(&p.terms, p.load, &AutoSettings::default()).unwrap();
@@ -338,7 +338,7 @@ fn criterion_table() {
                 load_n_per_m: 10_000.0,
                 speed_m_s: 4.0,
                 poisson: None,
-                body: Body::HalfSpace,
+                body: Body::HALF_SPACE,
             };
             scene.dimensionless(&spec).unwrap().terms
         }),
@@ -489,7 +489,7 @@ fn criterion_nu049() {
         load_n_per_m: 10_000.0,
         speed_m_s: 4.0,
         poisson: None,
-        body: Body::HalfSpace,
+        body: Body::HALF_SPACE,
     };
     let cases: Vec<(&str, Vec<CreepTerm>)> = vec![
         ("1 term b=1 f/b=100", vec![CreepTerm { f: 100.0, b: 1.0 }]),
