@@ -11,7 +11,9 @@
 
 use super::{creep_to_relaxation, CreepError, CreepSpectrum, RetardationTerm};
 use crate::material::ModulusKind;
-use crate::prony::time_fit::{fit_series_in_time, time_errors, time_info, TimeBasis, TimeDatum};
+use crate::prony::time_fit::{
+    fit_series_in_time, time_errors, time_info, TimeBasis, TimeDatum, TimeFitInfo,
+};
 use crate::prony::{PronyError, PronyFit, PronySettings};
 
 /// End slope d log J / d log t above which the creep data look like flow (a fluid's is 1).
@@ -66,17 +68,29 @@ pub fn fit_creep_in_time(
         spectrum.terms.len()
     ));
     let errs = time_errors(points, |t| creep.creep_compliance(t));
-    let info = time_info(
-        points,
-        &series,
-        settings,
-        function,
-        errs,
-        spectrum.terms.len(),
-        slope,
-        notes,
-    );
+    let td = TimeFitInfo::new(function, points, &series, errs, slope, notes);
+    let info = time_info(&series, settings, spectrum.terms.len(), td);
     Ok((PronyFit { spectrum, info }, creep))
+}
+
+/// d log J / d log t over the last decade of `points` (least squares), if it holds 3 points.
+fn end_slope(points: &[TimeDatum]) -> Option<f64> {
+    let t_max = points.iter().map(|p| p.time_s).fold(0.0, f64::max);
+    let last: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| p.time_s >= t_max / 10.0)
+        .map(|p| (p.time_s.log10(), p.value.log10()))
+        .collect();
+    if last.len() < 3 {
+        return None;
+    }
+    let n = last.len() as f64;
+    let (mx, my) = last
+        .iter()
+        .fold((0.0, 0.0), |a, p| (a.0 + p.0 / n, a.1 + p.1 / n));
+    let sxy: f64 = last.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = last.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    (sxx > 0.0).then(|| sxy / sxx)
 }
 
 #[cfg(test)]
@@ -150,24 +164,4 @@ mod tests {
         assert!(info.end_slope.unwrap() > 0.9, "{info:?}");
         assert!(info.notes.iter().any(|n| n.contains("flow")), "{info:?}");
     }
-}
-
-/// d log J / d log t over the last decade of `points` (least squares), if it holds 3 points.
-fn end_slope(points: &[TimeDatum]) -> Option<f64> {
-    let t_max = points.iter().map(|p| p.time_s).fold(0.0, f64::max);
-    let last: Vec<(f64, f64)> = points
-        .iter()
-        .filter(|p| p.time_s >= t_max / 10.0)
-        .map(|p| (p.time_s.log10(), p.value.log10()))
-        .collect();
-    if last.len() < 3 {
-        return None;
-    }
-    let n = last.len() as f64;
-    let (mx, my) = last
-        .iter()
-        .fold((0.0, 0.0), |a, p| (a.0 + p.0 / n, a.1 + p.1 / n));
-    let sxy: f64 = last.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = last.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    (sxx > 0.0).then(|| sxy / sxx)
 }

@@ -92,6 +92,8 @@ pub struct TimeSeries {
     pub taus: Vec<f64>,
     /// The scale S.
     pub scale: f64,
+    /// Points fitted.
+    pub n_points: usize,
 }
 
 impl TimeSeries {
@@ -165,6 +167,7 @@ pub fn fit_series_in_time(
         lambda_search: search,
         taus,
         scale,
+        n_points: m,
     })
 }
 
@@ -188,40 +191,52 @@ pub fn fit_relaxation_in_time(
             .map(|&(tau_s, modulus_pa)| RelaxationTerm { modulus_pa, tau_s })
             .collect(),
     };
-    let (rms, max) = time_errors(points, |t| spectrum.relaxation_modulus(t));
-    let info = time_info(
-        points,
-        &series,
-        settings,
-        function,
-        (rms, max),
-        spectrum.terms.len(),
-        None,
-        Vec::new(),
-    );
+    let errs = time_errors(points, |t| spectrum.relaxation_modulus(t));
+    let td = TimeFitInfo::new(function, points, &series, errs, None, Vec::new());
+    let info = time_info(&series, settings, spectrum.terms.len(), td);
     Ok(PronyFit { spectrum, info })
 }
 
-/// The [`PronyInfo`] of a time-domain fit: its E′ and E″ error fields hold the time function's
-/// errors (there are no E′, E″ data), `freq_window_hz` the window the data determine (eq. 18.3), and
-/// `time_domain` the rest.
+impl TimeFitInfo {
+    /// The info of a fit of `series` to `points`, with the errors `(rms, max)` of `function`.
+    pub fn new(
+        function: &str,
+        points: &[TimeDatum],
+        series: &TimeSeries,
+        (rms, max): (f64, f64),
+        end_slope: Option<f64>,
+        notes: Vec<String>,
+    ) -> Self {
+        let (t_min, t_max) = window(points).unwrap_or((f64::NAN, f64::NAN));
+        Self {
+            function: function.to_string(),
+            rms_log10: rms,
+            max_abs_log10: max,
+            time_window_s: [t_min, t_max],
+            n_terms_grid: series.taus.len(),
+            n_terms_kept: series.terms.len(),
+            end_slope,
+            notes,
+        }
+    }
+}
+
+/// The [`PronyInfo`] of a time-domain fit with `n_terms_kept` relaxation terms: its E′ and E″ error
+/// fields hold the time function's errors (there are no E′, E″ data), `freq_window_hz` the window the
+/// data determine (eq. 18.3), and `time_domain` the rest.
 pub fn time_info(
-    points: &[TimeDatum],
     series: &TimeSeries,
     settings: &PronySettings,
-    function: &str,
-    (rms, max): (f64, f64),
     n_terms_kept: usize,
-    end_slope: Option<f64>,
-    notes: Vec<String>,
+    td: TimeFitInfo,
 ) -> PronyInfo {
-    let (t_min, t_max) = window(points).unwrap_or((f64::NAN, f64::NAN));
+    let [t_min, t_max] = td.time_window_s;
     PronyInfo {
-        rms_log10_storage: rms,
-        rms_log10_loss: rms,
-        max_abs_log10_storage: max,
-        max_abs_log10_loss: max,
-        n_points: points.len(),
+        rms_log10_storage: td.rms_log10,
+        rms_log10_loss: td.rms_log10,
+        max_abs_log10_storage: td.max_abs_log10,
+        max_abs_log10_loss: td.max_abs_log10,
+        n_points: series.n_points,
         thinned_from_points: None,
         n_terms_grid: series.taus.len(),
         n_terms_kept,
@@ -240,16 +255,7 @@ pub fn time_info(
         term_target_rms_log10: None,
         term_target_met: None,
         term_trade: Vec::new(),
-        time_domain: Some(TimeFitInfo {
-            function: function.to_string(),
-            rms_log10: rms,
-            max_abs_log10: max,
-            time_window_s: [t_min, t_max],
-            n_terms_grid: series.taus.len(),
-            n_terms_kept: series.terms.len(),
-            end_slope,
-            notes,
-        }),
+        time_domain: Some(td),
     }
 }
 
