@@ -94,6 +94,12 @@ pub enum PipelineError {
         /// The panic's message.
         message: String,
     },
+    /// Time-domain data could not be read (crate::dma::time_domain).
+    #[error(transparent)]
+    TimeData(#[from] crate::dma::time_domain::TimeDataError),
+    /// Creep data could not be fitted (crate::creep::time_fit).
+    #[error(transparent)]
+    CreepFit(#[from] crate::creep::time_fit::CreepFitError),
     /// A fit file has no creep spectrum.
     #[error("{compound}: the fit has no creep spectrum")]
     NoCreep {

@@ -23,6 +23,9 @@ use serde::{Deserialize, Serialize};
 
 /// Overlapping points a pair needs for its shift.
 pub const MIN_OVERLAP_POINTS: usize = 3;
+/// A pair's shift is determined when its standard error is at most this, decades: the frequency
+/// path's bound (`crate::tts::horizontal`, about the 0.03-decade accuracy asked of the shifts).
+pub const MAX_PAIR_STD_DECADES: f64 = 0.04;
 /// Step of the scan over shifts before the golden section, decades.
 pub const SCAN_STEP_DECADES: f64 = 0.02;
 
@@ -37,6 +40,12 @@ pub struct TimeShift {
     pub overlap_rms_log10: f64,
     /// Points in that overlap (0 for the coldest).
     pub overlap_points: usize,
+    /// Standard error of the shift relative to the colder neighbour from that pair alone, decades
+    /// (eq. 18.5; 0 for the coldest).
+    pub std_err_log10: f64,
+    /// Whether the overlap determines the shift: `std_err_log10` ≤ [`MAX_PAIR_STD_DECADES`]. A shift
+    /// that is not (flat E(t) on a plateau: no slope to shift by) is kept and said in the warnings.
+    pub determined: bool,
 }
 
 /// One reduced point.
@@ -115,19 +124,24 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
         log10_a_t: 0.0,
         overlap_rms_log10: f64::NAN,
         overlap_points: 0,
+        std_err_log10: 0.0,
+        determined: true,
     }];
     for i in 1..curves.len() {
-        let (d, rms, n) = pair_shift(&curves[i - 1], &curves[i]).ok_or(TtsError::NoOverlap {
-            temp_a_c: temps[i - 1],
-            temp_b_c: temps[i],
-            min_points: MIN_OVERLAP_POINTS,
-        })?;
+        let (d, rms, n, std) =
+            pair_shift(&curves[i - 1], &curves[i]).ok_or(TtsError::NoOverlap {
+                temp_a_c: temps[i - 1],
+                temp_b_c: temps[i],
+                min_points: MIN_OVERLAP_POINTS,
+            })?;
         chain.push(chain[i - 1] + d);
         shifts.push(TimeShift {
             temp_c: temps[i],
             log10_a_t: 0.0,
             overlap_rms_log10: rms,
             overlap_points: n,
+            std_err_log10: std,
+            determined: std <= MAX_PAIR_STD_DECADES,
         });
     }
     let t_ref = t_ref_c.unwrap_or_else(|| middle_temperature(&temps));
@@ -145,6 +159,12 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
     warnings.extend(data.evidence.iter().map(|e| format!("mode: {e}")));
     for (s, c) in shifts.iter_mut().zip(&chain) {
         s.log10_a_t = c - at_ref;
+    }
+    for (i, s) in shifts.iter().enumerate().filter(|(_, s)| !s.determined) {
+        warnings.push(format!(
+            "the shift between {} °C and {} °C is not determined by their overlap (standard error {:.2} decade > {MAX_PAIR_STD_DECADES}: the curves are nearly flat there); the shift found is kept, and friction at temperatures that use it is uncertain by as much",
+            shifts[i - 1].temp_c, s.temp_c, s.std_err_log10
+        ));
     }
     let law_points: Vec<(f64, f64)> = shifts.iter().map(|s| (s.temp_c, s.log10_a_t)).collect();
     let wlf = fit_law(fit_wlf(&law_points, t_ref), "WLF", &mut warnings);
@@ -245,9 +265,10 @@ fn distance(cold: &Curve, warm: &Curve, cold_in: &Curve, warm_in: &Curve, d: f64
     sum / (warm_in.len() + cold_in.len()) as f64
 }
 
-/// log10 a_T(warm) − log10 a_T(cold), the overlap RMS there and its point count; None without an
+/// log10 a_T(warm) − log10 a_T(cold), the overlap RMS there, its point count and the shift's
+/// standard error (eq. 18.5); None without an
 /// overlap of [`MIN_OVERLAP_POINTS`] (counted over both isotherms' points).
-fn pair_shift(cold: &Curve, warm: &Curve) -> Option<(f64, f64, usize)> {
+fn pair_shift(cold: &Curve, warm: &Curve) -> Option<(f64, f64, usize, f64)> {
     if cold.len() < 2 || warm.len() < 2 {
         return None;
     }
@@ -272,7 +293,16 @@ fn pair_shift(cold: &Curve, warm: &Curve) -> Option<(f64, f64, usize)> {
         1e-6,
     );
     let d = if cost(d) <= best.1 { d } else { best.0 };
-    Some((d, cost(d).sqrt(), n))
+    // eq. 18.5: cost ≈ s² + (d − d̂)² Σ slope²/n near the minimum, so var d̂ = s²/Σ slope² =
+    // 2 s²/(n · cost″).
+    let h = 0.05;
+    let curv = (cost(d + h) - 2.0 * cost(d) + cost(d - h)) / (h * h);
+    let std = if curv > 0.0 {
+        (2.0 * cost(d) / (n as f64 * curv)).sqrt()
+    } else {
+        f64::INFINITY
+    };
+    Some((d, cost(d).sqrt(), n, std))
 }
 
 #[cfg(test)]
