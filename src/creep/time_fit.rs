@@ -1,4 +1,4 @@
-//! Creep data to the relaxation spectrum (docs/MATH.md §18.2): the non-negative retardation series
+//! Creep data to the relaxation spectrum (docs/MATH.md §18, eq. 18.2): the non-negative retardation series
 //! J(t) = J_g + Σ Jⱼ(1 − e^(−t/λⱼ)) + t/η₀ fitted to reduced creep points
 //! ([`crate::prony::time_fit::fit_series_in_time`]), then converted exactly to the relaxation
 //! spectrum ([`super::creep_to_relaxation`], MATH §4), so the chain after it is the frequency path's.

@@ -1,4 +1,4 @@
-//! Time–temperature superposition of relaxation or creep isotherms (docs/MATH.md §18.4):
+//! Time–temperature superposition of relaxation or creep isotherms (docs/MATH.md §18, eqs. 18.4–18.5):
 //! [`TimeData`] → [`TimeMaster`] (reduced points t/a_T, the shift of each isotherm, the WLF and
 //! Arrhenius fits of [`super::fit_laws`], the shift law).
 //!
