@@ -12,6 +12,7 @@
 //! multiplicative Gaussian noise and a seeded offset of the actual temperature from the nominal one.
 
 pub mod realistic;
+pub mod time_domain;
 
 use crate::dma::{DataPoint, Isotherm, Measurement, SourceFile};
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};

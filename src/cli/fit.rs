@@ -17,6 +17,10 @@
 //! with its shift-factor CSV (`--master-curve M.csv --shift-factors S.csv`, read by
 //! [`crate::dma::pyvisco`]); its shift table is the fit's shift law, and the WLF and Arrhenius fits
 //! of that table go into the fit file for the cards.
+//!
+//! Or relaxation or creep isotherms (`--time-domain FILE…`, docs/MATH.md §18): shifted in log t,
+//! fitted in time (crate::pipeline::fit_time); the fit file is the same, so `roll` and `run` go on
+//! from it. Such a fit is always made anew (`--force` to replace an existing file).
 
 use crate::bands::BandSettings;
 use crate::pipeline::fit_compound::{
@@ -29,8 +33,14 @@ use std::path::PathBuf;
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// Measurement JSON written by `viscoroll ingest -o M.json` (or give --master-curve).
-    #[arg(required_unless_present = "master_curve")]
+    #[arg(required_unless_present_any = ["master_curve", "time_domain"])]
     pub measurement: Option<PathBuf>,
+    /// Relaxation E(t)/G(t) or creep D(t)/J(t) isotherms, fitted in time instead of a measurement
+    /// (docs/MATH.md §18): a CSV with temperature, time and modulus or compliance columns whose
+    /// headers carry their units (`T [°C], time [s], E(t) [MPa]`), or a TRIOS text export with
+    /// stress-relaxation or creep steps.
+    #[arg(long, value_name = "FILE", num_args = 1.., conflicts_with_all = ["measurement", "master_curve"])]
+    pub time_domain: Vec<PathBuf>,
     /// A master curve already shifted, in pyvisco's CSV layout (`f, E_stor, E_loss` over `Hz, MPa,
     /// MPa`; `G_…` for shear), fitted instead of a measurement; needs --shift-factors.
     #[arg(
@@ -44,8 +54,8 @@ pub struct Args {
     /// log_aT = 0 is the reference temperature (else give --tref).
     #[arg(long, value_name = "CSV", requires = "master_curve")]
     pub shift_factors: Option<PathBuf>,
-    /// Poisson's ratio of the master curve's material (with --master-curve), for tensile ↔ shear.
-    #[arg(long, default_value_t = 0.5, requires = "master_curve")]
+    /// Poisson's ratio of the material (with --master-curve or --time-domain), for tensile ↔ shear.
+    #[arg(long, default_value_t = 0.5)]
     pub poisson: f64,
     /// Fit file to write, e.g. `fits/NAME.json` (written atomically).
     #[arg(short = 'o', long = "output")]
@@ -85,6 +95,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         .measurement
         .as_ref()
         .or(args.master_curve.as_ref())
+        .or(args.time_domain.first())
         .map(|p| p.display().to_string())
         .unwrap_or_default();
     let name = match &args.name {
@@ -136,6 +147,27 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             };
             (fit, action, why)
         }
+        Source::Time(data) => {
+            let mut fit = crate::pipeline::fit_time::fit_time_data(&name, data, &options)
+                .with_context(|| input.clone())?;
+            let why = bands
+                .as_ref()
+                .and_then(|s| match crate::bands::ensemble_from_fit(&fit, s) {
+                    Ok(e) => {
+                        fit.bands = Some(e);
+                        None
+                    }
+                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+                });
+            fit.write(&args.output, args.force)
+                .with_context(|| args.output.display().to_string())?;
+            let action = if args.force {
+                FitAction::Replaced
+            } else {
+                FitAction::Fitted
+            };
+            (fit, action, why)
+        }
     };
     print_fit(&args, &fit, action, no_bands.as_deref());
     Ok(())
@@ -147,6 +179,9 @@ fn source(args: &Args) -> anyhow::Result<Source> {
     Ok(
         match (&args.measurement, &args.master_curve, &args.shift_factors) {
             (Some(m), _, _) => Source::Measurement(read_measurement(m)?),
+            (None, None, _) if !args.time_domain.is_empty() => Source::Time(
+                crate::dma::time_domain::read_time_files(&args.time_domain, args.poisson)?,
+            ),
             (None, Some(mc), Some(sf)) => {
                 let pv = crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?;
                 let master = crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
@@ -270,6 +305,7 @@ fn bands_note(
 enum Source {
     Measurement(crate::Measurement),
     Master(crate::Measurement, Box<crate::tts::MasterCurve>),
+    Time(crate::dma::time_domain::TimeData),
 }
 
 /// A measurement JSON: the bare serde of Measurement, or an object holding it under "measurement".

@@ -52,6 +52,7 @@ pub mod error;
 pub mod exact;
 pub mod park_schapery;
 pub mod spectrum;
+pub mod time_fit;
 
 pub use crate::material::AtTemperature;
 pub use error::CreepError;

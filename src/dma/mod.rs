@@ -24,6 +24,8 @@ pub mod shiftfactors;
 pub mod steps;
 pub mod table;
 pub mod text;
+pub mod time_domain;
+mod time_domain_error;
 pub mod trios;
 pub mod units;
 pub mod xls_guard;

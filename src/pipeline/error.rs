@@ -94,12 +94,30 @@ pub enum PipelineError {
         /// The panic's message.
         message: String,
     },
+    /// Time-domain data could not be read (crate::dma::time_domain).
+    #[error(transparent)]
+    TimeData(Box<crate::dma::time_domain::TimeDataError>),
+    /// Creep data could not be fitted (crate::creep::time_fit).
+    #[error(transparent)]
+    CreepFit(Box<crate::creep::time_fit::CreepFitError>),
     /// A fit file has no creep spectrum.
     #[error("{compound}: the fit has no creep spectrum")]
     NoCreep {
         /// The compound.
         compound: String,
     },
+}
+
+impl From<crate::dma::time_domain::TimeDataError> for PipelineError {
+    fn from(e: crate::dma::time_domain::TimeDataError) -> Self {
+        PipelineError::TimeData(Box::new(e))
+    }
+}
+
+impl From<crate::creep::time_fit::CreepFitError> for PipelineError {
+    fn from(e: crate::creep::time_fit::CreepFitError) -> Self {
+        PipelineError::CreepFit(Box::new(e))
+    }
 }
 
 /// Wrap an I/O error with its path.

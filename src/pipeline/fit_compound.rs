@@ -53,7 +53,7 @@ impl Default for FitOptions {
 
 impl FitOptions {
     /// The settings as stored under `settings.stages` of a fit file.
-    fn stages(&self) -> std::collections::BTreeMap<String, serde_json::Value> {
+    pub(crate) fn stages(&self) -> std::collections::BTreeMap<String, serde_json::Value> {
         let mut m = std::collections::BTreeMap::new();
         m.insert(
             "tts".to_string(),

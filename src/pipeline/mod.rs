@@ -8,6 +8,7 @@ mod compare;
 pub mod compounds;
 pub mod error;
 pub mod fit_compound;
+pub mod fit_time;
 mod folder;
 pub mod roll_fit;
 pub mod run;

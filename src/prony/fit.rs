@@ -181,6 +181,7 @@ pub fn fit_prony(
         term_target_rms_log10: term_target,
         term_target_met: target_met,
         term_trade: trade,
+        time_domain: None,
     };
     Ok(PronyFit { spectrum, info })
 }
@@ -200,7 +201,7 @@ fn freq_window_hz(points: &[MasterPoint]) -> Result<(f64, f64), PronyError> {
 
 /// The λ search (or the fixed λ): λ, the QP solution there, the candidates tried and the total
 /// solver iterations. A solution not (almost) solved is an error.
-fn solve_weights(
+pub(super) fn solve_weights(
     problem: &Problem,
     settings: &PronySettings,
 ) -> Result<(f64, Solution, Vec<LambdaCandidate>, u32), PronyError> {
@@ -352,10 +353,10 @@ fn check_points(points: &[MasterPoint]) -> Result<(), PronyError> {
 }
 
 /// One QP solution.
-struct Solution {
-    x: Vec<f64>,
-    status: SolverStatus,
-    iterations: u32,
+pub(super) struct Solution {
+    pub(super) x: Vec<f64>,
+    pub(super) status: SolverStatus,
+    pub(super) iterations: u32,
 }
 
 /// Grid steps the GCV search may go on below `lambda_min` while its score falls (12 decades at the
@@ -364,7 +365,7 @@ struct Solution {
 const GCV_EXTEND_MAX: usize = 12;
 
 /// The scaled least-squares problem, factored once for all λ.
-struct Problem {
+pub(super) struct Problem {
     /// Design matrix A (2m × (n+1)) of relative residuals, scaled unknowns.
     a: DMatrix<f64>,
     /// R of the thin QR of A ((n+1) × (n+1)).
@@ -378,7 +379,7 @@ struct Problem {
     /// Second-difference operator L ((n−2) × (n+1), zero first column).
     l: DMatrix<f64>,
     /// Largest |entry| of each column of A (the most a unit of x_j can move any datum, relatively).
-    col_max: Vec<f64>,
+    pub(super) col_max: Vec<f64>,
     /// 1/‖A_j‖ of each column (the QP's column scaling D, module docs; 1 for a zero column).
     col_scale: Vec<f64>,
 }
@@ -390,7 +391,7 @@ impl Problem {
         let mut a = DMatrix::<f64>::zeros(2 * m, n + 1);
         for (k, p) in points.iter().enumerate() {
             let omega = 2.0 * PI * p.reduced_freq_hz;
-            // Eq. 5.3: each row times its point's weight (b too, below).
+            // Eq. 5.1: each row times its point's weight (b too, below).
             let s1 = p.weight[0] * scale / p.storage_pa;
             let s2 = p.weight[1] * loss_weight * scale / p.loss_pa;
             a[(k, 0)] = s1;
@@ -400,18 +401,27 @@ impl Problem {
                 a[(m + k, j + 1)] = loss_kernel(w_rho) * s2;
             }
         }
-        let col_max = (0..=n)
-            .map(|j| a.column(j).iter().fold(0.0f64, |acc, v| acc.max(v.abs())))
-            .collect();
         let mut b = DVector::<f64>::from_element(2 * m, 1.0);
         for (k, p) in points.iter().enumerate() {
             b[k] = p.weight[0];
             b[m + k] = loss_weight * p.weight[1];
         }
+        Self::from_design(a, b, n)
+    }
+
+    /// The problem of any design matrix `a` and target `b` whose columns 1…`n_terms` are the terms
+    /// on a log-uniform time grid (the second differences act on them; column 0 and any columns
+    /// after the terms are free of the smoothing): the frequency fit above and the time-domain fits
+    /// of [`super::time_fit`] (docs/MATH.md §18).
+    pub(super) fn from_design(a: DMatrix<f64>, b: DVector<f64>, n_terms: usize) -> Self {
+        let n = a.ncols() - 1;
+        let col_max = (0..=n)
+            .map(|j| a.column(j).iter().fold(0.0f64, |acc, v| acc.max(v.abs())))
+            .collect();
         let qr = a.clone().qr();
         let qtb = qr.q().transpose() * &b;
         let r = qr.r();
-        let nl = n.saturating_sub(2);
+        let nl = n_terms.saturating_sub(2);
         let mut l = DMatrix::<f64>::zeros(nl, n + 1);
         for i in 0..nl {
             l[(i, i + 1)] = 1.0;

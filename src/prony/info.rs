@@ -76,4 +76,8 @@ pub struct PronyInfo {
     /// The trade of terms against errors found by the reduction (most terms first).
     #[serde(default)]
     pub term_trade: Vec<super::TermTrade>,
+    /// A fit in time (docs/MATH.md §18): the time function fitted and its errors. Then the E′ and E″
+    /// error fields above hold that function's errors, and `freq_window_hz` the window it determines.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_domain: Option<super::time_fit::TimeFitInfo>,
 }

@@ -15,6 +15,7 @@ pub mod pyvisco_csv;
 mod settings;
 pub mod synthetic;
 pub mod terms;
+pub mod time_fit;
 
 pub use error::PronyError;
 pub use fit::{fit_prony, log10_errors, relaxation_times_s, MasterPoint, PronyFit};

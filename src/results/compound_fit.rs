@@ -317,7 +317,8 @@ impl CompoundFit {
 
     /// Why the fit is not trusted: each quality figure out of its bound (empty when trusted).
     pub fn untrusted_reasons(&self) -> Vec<String> {
-        self.quality
+        let mut reasons: Vec<String> = self
+            .quality
             .iter()
             .filter(|q| q.flagged)
             .map(|q| match q.bound {
@@ -327,7 +328,19 @@ impl CompoundFit {
                 ),
                 None => format!("{} = {:.4} {} is flagged", q.name, q.value, q.unit),
             })
-            .collect()
+            .collect();
+        // A fit to relaxation or creep data: its E(t), shifts and E′ match the frequency path's
+        // accuracy, but E″ (and so the friction) comes from deviations of E(t) that the noise
+        // hides (docs/USER_GUIDE.md, "Time-domain data": friction up to 179 % off on synthetic data).
+        if self.prony_info.time_domain.is_some() {
+            reasons.push(
+                "fitted to time-domain data (relaxation or creep): its E″ and the friction from it \
+                 are not yet accurate (up to 179 % off on synthetic data; docs/USER_GUIDE.md, \
+                 \"Time-domain data\")"
+                    .to_string(),
+            );
+        }
+        reasons
     }
 
     /// The SHA-256 (hex) of the fit's content: its compact JSON without `content_sha256`. Numbers

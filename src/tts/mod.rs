@@ -18,6 +18,7 @@ pub mod quality;
 mod quality_types;
 mod settings;
 mod shift;
+pub mod time_shift;
 pub mod vertical;
 
 pub use error::TtsError;
