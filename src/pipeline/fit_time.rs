@@ -69,11 +69,7 @@ pub fn fit_time_data(
         .iter()
         .map(|p| {
             let (e1, e2) = prony.spectrum.complex_modulus(1.0 / p.time_s);
-            PronyPoint {
-                reduced_freq_hz: 1.0 / (2.0 * PI * p.time_s),
-                storage_pa: e1,
-                loss_pa: e2,
-            }
+            PronyPoint::new(1.0 / (2.0 * PI * p.time_s), e1, e2)
         })
         .rev()
         .collect();
