@@ -340,16 +340,24 @@ fn check_points(points: &[MasterPoint]) -> Result<(), PronyError> {
             ("storage_pa", p.storage_pa),
             ("loss_pa", p.loss_pa),
         ] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(PronyError::BadPoint {
-                    index,
-                    field,
-                    value,
-                });
-            }
+            positive(index, field, value)?;
         }
     }
     Ok(())
+}
+
+/// `value` of point `index` must be finite and > 0 (else [`PronyError::BadPoint`] naming it); the
+/// check of every point of the frequency and the time-domain fits.
+pub(super) fn positive(index: usize, field: &'static str, value: f64) -> Result<(), PronyError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(PronyError::BadPoint {
+            index,
+            field,
+            value,
+        })
+    }
 }
 
 /// One QP solution.

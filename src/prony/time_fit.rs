@@ -283,13 +283,7 @@ fn check(points: &[TimeDatum]) -> Result<(), PronyError> {
     }
     for (index, p) in points.iter().enumerate() {
         for (field, value) in [("time_s", p.time_s), ("value", p.value)] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(PronyError::BadPoint {
-                    index,
-                    field,
-                    value,
-                });
-            }
+            super::fit::positive(index, field, value)?;
         }
     }
     Ok(())
