@@ -63,6 +63,28 @@ fn stray_line(
     data(next) && fields[next].len() == width && filled(k) != width
 }
 
+/// A table's block with its column names from `name_row` and their units from `unit_row` (where it
+/// has one for the column) or from the name itself (`E' [MPa]`); no rows yet.
+fn header_block(fields: &[Vec<String>], name_row: usize, unit_row: Option<usize>) -> Block {
+    let mut names = Vec::new();
+    let mut unit_list = Vec::new();
+    for (c, name) in fields[name_row].iter().enumerate() {
+        let (nm, u_in_name) = units::split_name_unit(name);
+        let u_row = unit_row
+            .and_then(|r| fields[r].get(c))
+            .map(|s| strip_brackets(s))
+            .filter(|s| !s.is_empty());
+        names.push(nm);
+        unit_list.push(u_row.or(u_in_name));
+    }
+    Block {
+        names,
+        units: unit_list,
+        header_loc: Some(Loc::Line(name_row + 1)),
+        ..Block::default()
+    }
+}
+
 /// Parse lines already known to be delimited by `delim` with decimal mark `dec`.
 pub fn read_with(
     file: &str,
@@ -99,23 +121,7 @@ pub fn read_with(
         for l in &lines[i..name_row] {
             metadata_line(l, &mut raw.metadata);
         }
-        let mut names = Vec::new();
-        let mut unit_list = Vec::new();
-        for (c, name) in fields[name_row].iter().enumerate() {
-            let (nm, u_in_name) = units::split_name_unit(name);
-            let u_row = unit_row
-                .and_then(|r| fields[r].get(c))
-                .map(|s| strip_brackets(s))
-                .filter(|s| !s.is_empty());
-            names.push(nm);
-            unit_list.push(u_row.or(u_in_name));
-        }
-        let mut block = Block {
-            names,
-            units: unit_list,
-            header_loc: Some(Loc::Line(name_row + 1)),
-            ..Block::default()
-        };
+        let mut block = header_block(&fields, name_row, unit_row);
         let mut k = d;
         while k < n {
             if blank(k) {

@@ -37,37 +37,8 @@ pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
             if let Some((k, v)) = rest.split_once(':') {
                 let (k, v) = (k.trim(), v.trim());
                 match k.to_uppercase().as_str() {
-                    "DECIMAL" => {
-                        dec = match v.to_uppercase().as_str() {
-                            "POINT" | "." => Some(Decimal::Point),
-                            "COMMA" | "," => Some(Decimal::Comma),
-                            _ => {
-                                return Err(DmaError::Structure {
-                                    file: file.into(),
-                                    location: Loc::Line(i + 1).to_string(),
-                                    message: format!(
-                                        "#DECIMAL must be POINT or COMMA, found `{v}`"
-                                    ),
-                                })
-                            }
-                        }
-                    }
-                    "SEPARATOR" => {
-                        delim = match v.to_uppercase().as_str() {
-                            "SEMICOLON" | ";" => Some(Delimiter::Semicolon),
-                            "TAB" | "\\T" => Some(Delimiter::Tab),
-                            "COMMA" | "," => Some(Delimiter::Comma),
-                            _ => {
-                                return Err(DmaError::Structure {
-                                    file: file.into(),
-                                    location: Loc::Line(i + 1).to_string(),
-                                    message: format!(
-                                        "#SEPARATOR must be SEMICOLON, TAB or COMMA, found `{v}`"
-                                    ),
-                                })
-                            }
-                        }
-                    }
+                    "DECIMAL" => dec = Some(decimal_of(file, i, v)?),
+                    "SEPARATOR" => delim = Some(delimiter_of(file, i, v)?),
                     _ => {}
                 }
                 if !v.is_empty() {
@@ -109,19 +80,49 @@ pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
         });
     }
     raw.blocks.push(block);
-    if let Some(mode) = raw.metadata.get("MODE") {
-        let l = mode.to_lowercase();
-        let kind = if l.contains("shear") {
-            Some(crate::material::ModulusKind::Shear)
-        } else if ["tension", "tensile", "bending", "compression", "cantilever"]
-            .iter()
-            .any(|w| l.contains(w))
-        {
-            Some(crate::material::ModulusKind::Tensile)
-        } else {
-            None
-        };
-        raw.mode_hint = kind.map(|k| (k, format!("#MODE:{mode}")));
-    }
+    raw.mode_hint = raw.metadata.get("MODE").and_then(|mode| mode_hint(mode));
     Ok(raw)
+}
+
+/// The modulus kind a `#MODE:` line names (shear, or a tensile geometry), with its evidence.
+fn mode_hint(mode: &str) -> Option<(crate::material::ModulusKind, String)> {
+    let l = mode.to_lowercase();
+    let kind = if l.contains("shear") {
+        crate::material::ModulusKind::Shear
+    } else if ["tension", "tensile", "bending", "compression", "cantilever"]
+        .iter()
+        .any(|w| l.contains(w))
+    {
+        crate::material::ModulusKind::Tensile
+    } else {
+        return None;
+    };
+    Some((kind, format!("#MODE:{mode}")))
+}
+
+/// The decimal mark a `#DECIMAL:` value names, or the error at line `i` (0-based).
+fn decimal_of(file: &str, i: usize, v: &str) -> Result<Decimal, DmaError> {
+    match v.to_uppercase().as_str() {
+        "POINT" | "." => Ok(Decimal::Point),
+        "COMMA" | "," => Ok(Decimal::Comma),
+        _ => Err(DmaError::Structure {
+            file: file.into(),
+            location: Loc::Line(i + 1).to_string(),
+            message: format!("#DECIMAL must be POINT or COMMA, found `{v}`"),
+        }),
+    }
+}
+
+/// The delimiter a `#SEPARATOR:` value names, or the error at line `i` (0-based).
+fn delimiter_of(file: &str, i: usize, v: &str) -> Result<Delimiter, DmaError> {
+    match v.to_uppercase().as_str() {
+        "SEMICOLON" | ";" => Ok(Delimiter::Semicolon),
+        "TAB" | "\\T" => Ok(Delimiter::Tab),
+        "COMMA" | "," => Ok(Delimiter::Comma),
+        _ => Err(DmaError::Structure {
+            file: file.into(),
+            location: Loc::Line(i + 1).to_string(),
+            message: format!("#SEPARATOR must be SEMICOLON, TAB or COMMA, found `{v}`"),
+        }),
+    }
 }

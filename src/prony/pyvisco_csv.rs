@@ -66,6 +66,20 @@ fn header(file: &str, text: &str) -> Result<(Vec<String>, Vec<String>, ModulusKi
     Ok((names, units, kind))
 }
 
+/// Pa per unit of column `name`, whose unit row holds `unit` (Pa, kPa, MPa or GPa), or the error.
+fn unit_to_pa(file: &str, name: &str, unit: Option<&String>) -> Result<f64, PronyError> {
+    let u = unit.map(String::as_str).unwrap_or("");
+    ModulusUnit::parse(u)
+        .map(ModulusUnit::to_pa)
+        .ok_or_else(|| {
+            bad(
+                file,
+                2,
+                format!("{name}: unit {u:?} is not Pa, kPa, MPa or GPa"),
+            )
+        })
+}
+
 /// Read pyvisco's Prony-term CSV (see the module docs); `poisson` is stated by the caller (pyvisco
 /// does not write it).
 pub fn read_pyvisco_terms(
@@ -87,18 +101,7 @@ pub fn read_pyvisco_terms(
     if i_alpha.is_none() && i_ei.is_none() {
         return Err(bad(file, 1, format!("neither alpha_i nor {m}_i")));
     }
-    let unit = |i: usize| -> Result<f64, PronyError> {
-        let u = units.get(i).map(String::as_str).unwrap_or("");
-        ModulusUnit::parse(u)
-            .map(ModulusUnit::to_pa)
-            .ok_or_else(|| {
-                bad(
-                    file,
-                    2,
-                    format!("{}: unit {u:?} is not Pa, kPa, MPa or GPa", names[i]),
-                )
-            })
-    };
+    let unit = |i: usize| unit_to_pa(file, &names[i], units.get(i));
     if units.get(i_tau).map(String::as_str) != Some("s") {
         return Err(bad(file, 2, "tau_i: unit must be s".into()));
     }

@@ -153,93 +153,7 @@ impl SceneSet {
         )
         .map_err(budget)?;
         for (i, s) in set.scene.iter().enumerate() {
-            lim::name(&format!("scene[{i}]: name"), &s.name).map_err(budget)?;
-            let at = |key: &str| format!("scene[{i}] ({}): {key}", s.name);
-            if s.name.is_empty()
-                || !s
-                    .name
-                    .chars()
-                    .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
-            {
-                return Err(cfg(format!(
-                    "scene[{i}]: name {:?} must be non-empty letters, digits, '-' or '_'",
-                    s.name
-                )));
-            }
-            if set.scene[..i].iter().any(|o| o.name == s.name) {
-                return Err(cfg(format!("{}: duplicate name", at("name"))));
-            }
-            for (key, v) in [
-                ("roll_radius_mm", s.roll_radius_mm),
-                ("load_n_per_m", s.load_n_per_m),
-                ("speed_m_s", s.speed_m_s),
-            ] {
-                let (lo, hi) = range_of(key);
-                if !(v.is_finite() && v > lo && v <= hi) {
-                    return Err(cfg(format!(
-                        "{} must be finite, > {lo} and ≤ {hi:e}, got {v}",
-                        at(key)
-                    )));
-                }
-            }
-            for (key, list, max) in [
-                ("temps_c", &s.temps_c, lim::SCENE_TEMPS_MAX),
-                ("map_temps_c", &s.map_temps_c, lim::MAP_LIST_MAX),
-            ] {
-                lim::at_most(&at(key), list.len(), max).map_err(budget)?;
-                for t in list.iter() {
-                    lim::temperature_c(&at(key), *t).map_err(budget)?;
-                }
-            }
-            if s.temps_c.is_empty() {
-                return Err(cfg(format!("{} must not be empty", at("temps_c"))));
-            }
-            for (key, list) in [
-                ("map_speeds_m_s", &s.map_speeds_m_s),
-                ("map_loads_n_per_m", &s.map_loads_n_per_m),
-            ] {
-                if !list.is_empty() && s.map_temps_c.is_empty() {
-                    return Err(cfg(format!("{} needs map_temps_c", at(key))));
-                }
-                lim::at_most(&at(key), list.len(), lim::MAP_LIST_MAX).map_err(budget)?;
-                let (lo, hi) = range_of(key);
-                if let Some(v) = list
-                    .iter()
-                    .find(|v| !(v.is_finite() && **v > lo && **v <= hi))
-                {
-                    return Err(cfg(format!(
-                        "{} must hold finite values > {lo} and ≤ {hi:e}, got {v}",
-                        at(key)
-                    )));
-                }
-            }
-            if let Some(t) = s.tol {
-                if !(TOL_RANGE.0..=TOL_RANGE.1).contains(&t) {
-                    return Err(cfg(format!(
-                        "{} must lie in [{:e}, {:e}], got {t}",
-                        at("tol"),
-                        TOL_RANGE.0,
-                        TOL_RANGE.1
-                    )));
-                }
-            }
-            lim::map_cells(
-                &at("map_temps_c × (map_speeds_m_s + map_loads_n_per_m)"),
-                s.map_temps_c.len(),
-                s.map_speeds_m_s.len(),
-                s.map_loads_n_per_m.len(),
-            )
-            .map_err(budget)?;
-            if let Some(h) = s.cover_thickness_mm {
-                if !(h.is_finite() && h > 0.0) {
-                    return Err(cfg(format!(
-                        "{} must be finite and > 0 (omit it for a half-space), got {h}",
-                        at("cover_thickness_mm")
-                    )));
-                }
-                lim::cover(&at("cover_thickness_mm"), h, s.roll_radius_mm).map_err(budget)?;
-            }
-            s.scene().validate().map_err(|e| cfg(at(&e.to_string())))?;
+            s.check(i, &set.scene[..i]).map_err(cfg)?;
         }
         Ok(set)
     }
@@ -258,6 +172,104 @@ impl SceneSet {
     pub fn shipped() -> Self {
         Self::parse(DEFAULT_SCENES_TOML, Path::new("data/scenes.toml"))
             .expect("the shipped scenes file is valid (tested)")
+    }
+}
+
+impl SceneSpec {
+    /// Check scene `i` of a set (`earlier`: the scenes before it, for duplicate names): its name,
+    /// ranges, lists and budgets; the message names the scene and the key.
+    fn check(&self, i: usize, earlier: &[SceneSpec]) -> Result<(), String> {
+        use crate::limits as lim;
+        let s = self;
+        lim::name(&format!("scene[{i}]: name"), &s.name).map_err(|e| e.to_string())?;
+        let at = |key: &str| format!("scene[{i}] ({}): {key}", s.name);
+        if s.name.is_empty()
+            || !s
+                .name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+        {
+            return Err(format!(
+                "scene[{i}]: name {:?} must be non-empty letters, digits, '-' or '_'",
+                s.name
+            ));
+        }
+        if earlier.iter().any(|o| o.name == s.name) {
+            return Err(format!("{}: duplicate name", at("name")));
+        }
+        for (key, v) in [
+            ("roll_radius_mm", s.roll_radius_mm),
+            ("load_n_per_m", s.load_n_per_m),
+            ("speed_m_s", s.speed_m_s),
+        ] {
+            let (lo, hi) = range_of(key);
+            if !(v.is_finite() && v > lo && v <= hi) {
+                return Err(format!(
+                    "{} must be finite, > {lo} and ≤ {hi:e}, got {v}",
+                    at(key)
+                ));
+            }
+        }
+        for (key, list, max) in [
+            ("temps_c", &s.temps_c, lim::SCENE_TEMPS_MAX),
+            ("map_temps_c", &s.map_temps_c, lim::MAP_LIST_MAX),
+        ] {
+            lim::at_most(&at(key), list.len(), max).map_err(|e| e.to_string())?;
+            for t in list.iter() {
+                lim::temperature_c(&at(key), *t).map_err(|e| e.to_string())?;
+            }
+        }
+        if s.temps_c.is_empty() {
+            return Err(format!("{} must not be empty", at("temps_c")));
+        }
+        for (key, list) in [
+            ("map_speeds_m_s", &s.map_speeds_m_s),
+            ("map_loads_n_per_m", &s.map_loads_n_per_m),
+        ] {
+            if !list.is_empty() && s.map_temps_c.is_empty() {
+                return Err(format!("{} needs map_temps_c", at(key)));
+            }
+            lim::at_most(&at(key), list.len(), lim::MAP_LIST_MAX).map_err(|e| e.to_string())?;
+            let (lo, hi) = range_of(key);
+            if let Some(v) = list
+                .iter()
+                .find(|v| !(v.is_finite() && **v > lo && **v <= hi))
+            {
+                return Err(format!(
+                    "{} must hold finite values > {lo} and ≤ {hi:e}, got {v}",
+                    at(key)
+                ));
+            }
+        }
+        if let Some(t) = s.tol {
+            if !(TOL_RANGE.0..=TOL_RANGE.1).contains(&t) {
+                return Err(format!(
+                    "{} must lie in [{:e}, {:e}], got {t}",
+                    at("tol"),
+                    TOL_RANGE.0,
+                    TOL_RANGE.1
+                ));
+            }
+        }
+        lim::map_cells(
+            &at("map_temps_c × (map_speeds_m_s + map_loads_n_per_m)"),
+            s.map_temps_c.len(),
+            s.map_speeds_m_s.len(),
+            s.map_loads_n_per_m.len(),
+        )
+        .map_err(|e| e.to_string())?;
+        if let Some(h) = s.cover_thickness_mm {
+            if !(h.is_finite() && h > 0.0) {
+                return Err(format!(
+                    "{} must be finite and > 0 (omit it for a half-space), got {h}",
+                    at("cover_thickness_mm")
+                ));
+            }
+            lim::cover(&at("cover_thickness_mm"), h, s.roll_radius_mm)
+                .map_err(|e| e.to_string())?;
+        }
+        s.scene().validate().map_err(|e| at(&e.to_string()))?;
+        Ok(())
     }
 }
 
