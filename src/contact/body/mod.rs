@@ -19,10 +19,11 @@
 //!    numerics, never this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
 //!    `Layer { thickness_m }`), named in [`Body::name`] (the serde name too), with its arms in
-//!    [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in [`solve_at_load`] and
+//!    [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in [`answer_at_load`] and
 //!    [`solve_at_lambda`] below, the single dispatch point (lengths go in units of
-//!    `problem.length_scale_m`); to be chosen by `auto` or by name, also in [`Body::auto_choice`] /
-//!    [`Body::choice`] and `contact::cover`'s answer;
+//!    `problem.length_scale_m`; at given load the body answers a [`BodyAnswer`]); to be chosen by
+//!    `auto` or by name, also in [`Body::auto_choice`] / [`Body::choice`] and `contact::cover`'s
+//!    reason line and answer at given λ;
 //! 3. its tests, through [`crate::contact::roll`] where they can.
 //!
 //! The scene carries the body (`Scene::body`, serde default = half-space, so existing JSON keeps
@@ -35,7 +36,7 @@ pub mod half_space;
 pub mod layer;
 
 use super::error::ContactError;
-use super::problem::{CreepTerm, DimensionlessScene, DimensionlessSolution};
+use super::problem::{BodyAnswer, CreepTerm, DimensionlessScene, DimensionlessSolution};
 use super::settings::ContactSettings;
 use serde::{Deserialize, Serialize};
 
@@ -223,43 +224,118 @@ impl Body {
     }
 }
 
+/// How a body with a load loop of its own (the bonded layer) is started and closed; the other
+/// bodies ignore it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Warm {
+    /// Start of the load loop (λ guess in units of `problem.length_scale_m`, d ln N′/d ln λ), e.g. a
+    /// neighbouring problem's answer; `None`: the solver's closed-form start. The answer does not
+    /// depend on it beyond the load loop's stopping tolerance.
+    pub start: Option<(f64, f64)>,
+    /// Run the closing contact checks (the same answer; without them the check ratios are NaN and no
+    /// check warning is raised).
+    pub checks: bool,
+}
+
+impl Default for Warm {
+    /// A cold start, with the checks.
+    fn default() -> Self {
+        Warm {
+            start: None,
+            checks: true,
+        }
+    }
+}
+
+/// A body's answer at given load and the body that gave it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solved {
+    /// The body solved (never [`Body::Auto`]: the one `auto` chose, on the same cover).
+    pub body: Body,
+    /// Its solution, error estimate, contact checks and warnings.
+    pub answer: BodyAnswer,
+    /// When `auto` chose a cheaper body than the layer: why.
+    pub auto: Option<AutoPick>,
+}
+
+/// Why `auto` chose a cheaper body than the layer ([`Body::auto_choice`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AutoPick {
+    /// The estimated relative difference of the body chosen from the layer.
+    pub model_error_estimate: f64,
+    /// The half-space contact length λ the criterion was applied at (units of V·T).
+    pub lambda_half_space: f64,
+}
+
 /// Solve the dimensionless problem of a scene on `body` at its load `problem.load`.
 pub fn solve_at_load(
     body: &Body,
     problem: &DimensionlessScene,
     settings: &ContactSettings,
 ) -> Result<DimensionlessSolution, ContactError> {
+    answer_at_load(body, problem, settings, Warm::default()).map(|s| s.answer.solution)
+}
+
+/// [`solve_at_load`] with the body's error estimate, checks and warnings, the body solved (`auto`
+/// resolved) and a warm start: the single dispatch at given load. The bonded layer is solved to
+/// `settings.auto.tol` (its hat fallback to at least [`layer::LAYER_TOL_FLOOR`]), the Winkler
+/// foundations by the load loop `settings.load`, the half-space by the scheme of `settings`.
+pub fn answer_at_load(
+    body: &Body,
+    problem: &DimensionlessScene,
+    settings: &ContactSettings,
+    warm: Warm,
+) -> Result<Solved, ContactError> {
     body.validate()?;
-    match body {
-        Body::HalfSpace { .. } => half_space::solve_at_load(&problem.terms, problem.load, settings),
+    let solved = |answer| Solved {
+        body: *body,
+        answer,
+        auto: None,
+    };
+    let (terms, load, nu) = (&problem.terms, problem.load, problem.poisson);
+    match *body {
+        Body::HalfSpace { .. } => Ok(solved(BodyAnswer::from_solution(
+            half_space::solve_at_load(terms, load, settings)?,
+        ))),
         Body::Auto { thickness_m } => {
-            let chosen = auto_at(problem, *thickness_m, settings, |b| {
-                solve_at_load(b, problem, settings).map(|s| s.lambda)
-            })?;
-            solve_at_load(&chosen, problem, settings)
+            let hs = answer_at_load(&Body::HALF_SPACE, problem, settings, warm)?.answer;
+            let lambda = hs.solution.lambda;
+            let (chosen, estimate) = auto_at(problem, thickness_m, lambda, settings);
+            let mut s = match chosen {
+                Body::HalfSpace { .. } => solved(hs),
+                _ => answer_at_load(&chosen, problem, settings, warm)?,
+            };
+            s.body = chosen;
+            s.auto = estimate.map(|e| AutoPick {
+                model_error_estimate: e,
+                lambda_half_space: lambda,
+            });
+            Ok(s)
         }
         Body::Layer { thickness_m } => layer::layer_at_load(
-            &problem.terms,
-            problem.load,
+            terms,
+            load,
             thickness_m / problem.length_scale_m,
-            problem.poisson,
+            nu,
             &layer::LayerSettings {
                 tol: settings.auto.tol,
                 n_max: 512,
+                start: warm.start,
+                checks: warm.checks,
                 ..Default::default()
             },
         )
-        .map(|a| a.solution),
+        .map(solved),
         Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => {
             layer::winkler_at_load(
-                &problem.terms,
-                problem.load,
+                terms,
+                load,
                 winkler_columns(body),
                 height_m / problem.length_scale_m,
-                problem.poisson,
+                nu,
                 &settings.load,
             )
-            .map(|a| a.solution)
+            .map(solved)
         }
     }
 }
@@ -275,7 +351,7 @@ pub fn solve_at_lambda(
     match body {
         Body::HalfSpace { .. } => half_space::solve_at_lambda(&problem.terms, lambda, settings),
         Body::Auto { thickness_m } => {
-            let chosen = auto_at(problem, *thickness_m, settings, |_| Ok(lambda))?;
+            let (chosen, _) = auto_at(problem, *thickness_m, lambda, settings);
             solve_at_lambda(&chosen, problem, lambda, settings)
         }
         Body::Layer { thickness_m } => {
@@ -298,29 +374,27 @@ pub fn solve_at_lambda(
     }
 }
 
-/// The body `auto` chooses on a cover of `thickness_m` ([`Body::auto_choice`] at `settings.auto.tol`),
-/// given the half-space contact length `lambda_hs` (of a solve on `Body::HALF_SPACE`, in units of
-/// V·T): the half-space or the constrained Winkler foundation on the cover, else the layer.
+/// The body `auto` chooses on a cover of `thickness_m` ([`Body::auto_choice`] at `settings.auto.tol`)
+/// given the half-space contact length `lambda_hs` (in units of V·T): the half-space or the
+/// constrained Winkler foundation on the cover with its estimated difference from the layer, else
+/// the layer (`None`).
 fn auto_at(
     problem: &DimensionlessScene,
     thickness_m: f64,
+    lambda_hs: f64,
     settings: &ContactSettings,
-    lambda_hs: impl FnOnce(&Body) -> Result<f64, ContactError>,
-) -> Result<Body, ContactError> {
-    let lambda = lambda_hs(&Body::HALF_SPACE)?;
+) -> (Body, Option<f64>) {
     let h = thickness_m / problem.length_scale_m;
-    Ok(
-        match Body::auto_choice(
-            &problem.terms,
-            lambda,
-            h,
-            problem.poisson,
-            settings.auto.tol,
-        ) {
-            Some((chosen, _)) => chosen.with_cover(thickness_m),
-            None => Body::Layer { thickness_m },
-        },
-    )
+    match Body::auto_choice(
+        &problem.terms,
+        lambda_hs,
+        h,
+        problem.poisson,
+        settings.auto.tol,
+    ) {
+        Some((chosen, e)) => (chosen.with_cover(thickness_m), Some(e)),
+        None => (Body::Layer { thickness_m }, None),
+    }
 }
 
 /// The columns of a Winkler body.

@@ -27,28 +27,13 @@ pub use winkler::{Winkler, WinklerAnswer};
 
 use crate::contact::error::ContactError;
 use crate::contact::load::LoadSettings;
-use crate::contact::problem::{CreepTerm, DimensionlessSolution};
+pub use crate::contact::problem::BodyAnswer;
+use crate::contact::problem::CreepTerm;
 
 /// The hat collocation (the fallback for very thin covers) converges to first order in λ
 /// (Richardson-extrapolated); below this tolerance its cost grows past a second per point, so it is
 /// solved to at least this.
 pub const LAYER_TOL_FLOOR: f64 = 1e-4;
-
-/// A solution on one of the bodies, with its diagnostics (which body: the caller's
-/// [`crate::contact::Body`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct BodyAnswer {
-    /// λ, β, N′, ρF/N, pressure.
-    pub solution: DimensionlessSolution,
-    /// Estimated relative error of ρF/N and λ (of the body's own model).
-    pub error_estimate: f64,
-    /// min Q′ / max Q′.
-    pub min_pressure_ratio: f64,
-    /// Smallest gap outside the contact over the indentation depth.
-    pub min_gap_ratio: f64,
-    /// Warnings.
-    pub warnings: Vec<String>,
-}
 
 /// Solve the bonded layer of dimensionless thickness `thickness` at load N′: by the spectral solver
 /// ([`spectral`]) to `settings.tol`, or, where the cover is too thin against the contact for its
