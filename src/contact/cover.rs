@@ -112,7 +112,7 @@ fn cover_answer(
 ) -> Result<CoverAnswer, ContactError> {
     let h = cover_of(body)? / problem.length_scale_m;
     let solved = body::answer_at_load(body, problem, &ContactSettings::auto(tol), warm)?;
-    let reason = match (asked_reason(body), solved.auto) {
+    let reason = match (body.asked_for(), solved.auto) {
         (Some(reason), _) => reason,
         (None, Some(pick)) => {
             let (r, e) = (h / pick.lambda_half_space, pick.model_error_estimate);
@@ -141,21 +141,6 @@ fn cover_answer(
 const AUTO_LAYER: &str =
     "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer";
 
-/// Why a body asked for by name was solved (`None` for `auto`: its reason depends on the answer).
-fn asked_reason(body: &Body) -> Option<String> {
-    Some(match body {
-        Body::HalfSpace { .. } => "half-space asked for (--model half-space)".into(),
-        Body::Layer { .. } => "bonded layer asked for (--model layer)".into(),
-        Body::Winkler { .. } => {
-            "uniaxial Winkler foundation asked for (--model winkler, the conveyor \
-                                 design tools' model)"
-                .into()
-        }
-        Body::WinklerConstrained { .. } => "constrained Winkler foundation asked for".into(),
-        Body::Auto { .. } => return None,
-    })
-}
-
 /// Solve the dimensionless problem at given contact length λ on the cover `body` (lengths in units
 /// of V·T; `viscoroll contact --cover --lambda`): the half-space by the scheme of `settings`; the
 /// bonded layer by the hat collocation with `settings.n` intervals, its error estimated from the same
@@ -171,7 +156,7 @@ pub fn solve_cover_at_lambda(
 ) -> Result<CoverAnswer, ContactError> {
     let h = cover_of(body)?;
     let nu = poisson;
-    let (model, reason, model_err) = match (asked_reason(body), Body::auto_choice(terms, lambda, h, nu, tol)) {
+    let (model, reason, model_err) = match (body.asked_for(), Body::auto_choice(terms, lambda, h, nu, tol)) {
         (Some(reason), _) => (*body, reason, None),
         (None, Some((m, e))) => (
             m,

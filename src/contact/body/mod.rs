@@ -145,6 +145,22 @@ impl Body {
         }))
     }
 
+    /// Why this body was solved when asked for by name (the reason line of `contact::cover`'s answer
+    /// and the datasheet); `None` for `auto`, whose reason depends on the answer.
+    pub fn asked_for(&self) -> Option<String> {
+        Some(match self {
+            Body::HalfSpace { .. } => "half-space asked for (--model half-space)".into(),
+            Body::Layer { .. } => "bonded layer asked for (--model layer)".into(),
+            Body::Winkler { .. } => {
+                "uniaxial Winkler foundation asked for (--model winkler, the conveyor \
+                                     design tools' model)"
+                    .into()
+            }
+            Body::WinklerConstrained { .. } => "constrained Winkler foundation asked for".into(),
+            Body::Auto { .. } => return None,
+        })
+    }
+
     /// The thickness in m of the cover the body stands for (None: a half-space without a cover).
     pub fn cover_m(&self) -> Option<f64> {
         match *self {
