@@ -13,18 +13,22 @@
 //!
 //! # Adding a body
 //! (docs/ARCHITECTURE.md, "Add a contact body", says the same and what is still outside the seam.)
-//! 1. one new folder `body/NAME/` with `solve_at_load` and `solve_at_lambda` taking the
-//!    dimensionless problem ([`crate::contact::problem`]), the body's own (dimensionless) parameters
-//!    and the settings; it imports the ground (`problem`, `settings`, `error`), `load` and shared
-//!    numerics, never this file, `scene` or `cover`;
+//! 1. one new folder `body/NAME/` with `solve_at_load` (answering a [`BodyAnswer`]) and
+//!    `solve_at_lambda` taking the dimensionless problem's parts ([`crate::contact::problem`]), the
+//!    body's own dimensionless parameters and the settings, and the conversion of its SI parameters
+//!    to dimensionless ones (given the [`DimensionlessScene`]); it imports the ground (`problem`,
+//!    `settings`, `error`), `load` and shared numerics, never this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
-//!    `Layer { thickness_m }`), named in [`Body::name`] (the serde name too), with its arms in
-//!    [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in [`answer_at_load`] and
-//!    [`solve_at_lambda`] below, the single dispatch point (lengths go in units of
-//!    `problem.length_scale_m`; at given load the body answers a [`BodyAnswer`]); to be chosen by
-//!    `auto` or by name, also in [`Body::auto_choice`] / [`Body::choice`] and `contact::cover`'s
-//!    reason line and answer at given λ;
-//! 3. its tests, through [`crate::contact::roll`] where they can.
+//!    `Layer { thickness_m }`), with its arms in [`Body::name`] (the serde name too),
+//!    [`Body::asked_for`], [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in
+//!    [`answer_at_load`] and [`solve_at_lambda`] below, the single dispatch point (lengths go in
+//!    units of `problem.length_scale_m`); to be chosen by `auto` or by name, also in
+//!    [`Body::auto_choice`] / [`Body::choice`] and `contact::cover`'s answer at given λ;
+//! 3. its tests at the foot of its folder, through [`crate::contact::roll`] where they can.
+//!
+//! A body for tests only is the same with `#[cfg(test)]` on its `mod`, its variant and each of its
+//! arms (an arm of its own: a cfg cannot sit inside an or-pattern); `body/on_springs/` is one, and it
+//! took this file and its folder.
 //!
 //! The scene carries the body (`Scene::body`, serde default = half-space, so existing JSON keeps
 //! working), [`crate::contact::roll`] calls the dispatch, and the scheme is chosen by
@@ -34,6 +38,8 @@
 
 pub mod half_space;
 pub mod layer;
+#[cfg(test)]
+pub mod on_springs;
 
 use super::error::ContactError;
 use super::problem::{BodyAnswer, CreepTerm, DimensionlessScene, DimensionlessSolution};
@@ -88,6 +94,15 @@ pub enum Body {
         /// Cover thickness in m (> 0).
         thickness_m: f64,
     },
+    /// TEST ONLY: a cover of thickness `thickness_m` on springs of stiffness `stiffness_pa_per_m`
+    /// per unit area under it ([`on_springs`]).
+    #[cfg(test)]
+    OnSprings {
+        /// Cover thickness in m (> 0).
+        thickness_m: f64,
+        /// Springs' stiffness per unit area in Pa/m (> 0).
+        stiffness_pa_per_m: f64,
+    },
 }
 
 impl Default for Body {
@@ -121,6 +136,8 @@ impl Body {
             Body::Winkler { .. } => "winkler",
             Body::WinklerConstrained { .. } => "winkler-constrained",
             Body::Auto { .. } => "auto",
+            #[cfg(test)]
+            Body::OnSprings { .. } => "on-springs",
         }
     }
 
@@ -158,6 +175,8 @@ impl Body {
             }
             Body::WinklerConstrained { .. } => "constrained Winkler foundation asked for".into(),
             Body::Auto { .. } => return None,
+            #[cfg(test)]
+            Body::OnSprings { .. } => "cover on springs asked for".into(),
         })
     }
 
@@ -167,6 +186,8 @@ impl Body {
             Body::HalfSpace { cover_m } => cover_m,
             Body::Layer { thickness_m } | Body::Auto { thickness_m } => Some(thickness_m),
             Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => Some(height_m),
+            #[cfg(test)]
+            Body::OnSprings { thickness_m, .. } => Some(thickness_m),
         }
     }
 
@@ -184,6 +205,13 @@ impl Body {
             Body::Auto { .. } => Body::Auto {
                 thickness_m: cover_m,
             },
+            #[cfg(test)]
+            Body::OnSprings {
+                stiffness_pa_per_m, ..
+            } => Body::OnSprings {
+                thickness_m: cover_m,
+                stiffness_pa_per_m: *stiffness_pa_per_m,
+            },
         }
     }
 
@@ -197,6 +225,14 @@ impl Body {
             | Body::Winkler { height_m: h }
             | Body::WinklerConstrained { height_m: h } => {
                 super::error::positive("body thickness in m", *h).map(|_| ())
+            }
+            #[cfg(test)]
+            Body::OnSprings {
+                thickness_m,
+                stiffness_pa_per_m,
+            } => {
+                super::error::positive("body thickness in m", *thickness_m)?;
+                super::error::positive("spring stiffness in Pa/m", *stiffness_pa_per_m).map(|_| ())
             }
         }
     }
@@ -353,6 +389,19 @@ pub fn answer_at_load(
             )
             .map(solved)
         }
+        #[cfg(test)]
+        Body::OnSprings {
+            thickness_m,
+            stiffness_pa_per_m,
+        } => on_springs::solve_at_load(
+            terms,
+            load,
+            thickness_m / problem.length_scale_m,
+            on_springs::compliance(problem, stiffness_pa_per_m),
+            nu,
+            &settings.load,
+        )
+        .map(solved),
     }
 }
 
@@ -387,6 +436,17 @@ pub fn solve_at_lambda(
             )?;
             Ok(w.at_lambda(lambda)?.solution)
         }
+        #[cfg(test)]
+        Body::OnSprings {
+            thickness_m,
+            stiffness_pa_per_m,
+        } => on_springs::solve_at_lambda(
+            &problem.terms,
+            lambda,
+            thickness_m / problem.length_scale_m,
+            on_springs::compliance(problem, *stiffness_pa_per_m),
+            problem.poisson,
+        ),
     }
 }
 
