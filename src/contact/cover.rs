@@ -180,16 +180,9 @@ pub fn solve_cover_at_lambda(
             } else {
                 layer::WinklerColumns::Constrained
             };
-            let w = layer::Winkler::new(terms, columns, h, nu)?.at_lambda(lambda)?;
-            let mut solution = w.solution;
-            solution.warnings.extend(w.warnings.iter().cloned());
-            BodyAnswer {
-                error_estimate: 0.0,
-                min_pressure_ratio: w.min_pressure_ratio,
-                min_gap_ratio: w.min_gap_ratio,
-                warnings: w.warnings,
-                solution,
-            }
+            layer::Winkler::new(terms, columns, h, nu)?
+                .at_lambda(lambda)?
+                .into_body_answer()
         }
         _ => {
             let k = layer::LayerKernel::new(terms, h, nu)?;

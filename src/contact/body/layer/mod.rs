@@ -110,16 +110,9 @@ pub fn winkler_at_load(
     poisson: f64,
     settings: &LoadSettings,
 ) -> Result<BodyAnswer, ContactError> {
-    let w = Winkler::new(terms, columns, thickness, poisson)?;
-    let mut a = w.at_load(load, settings)?;
-    a.solution.warnings.extend(a.warnings.iter().cloned());
-    Ok(BodyAnswer {
-        error_estimate: 0.0,
-        min_pressure_ratio: a.min_pressure_ratio,
-        min_gap_ratio: a.min_gap_ratio,
-        warnings: a.warnings,
-        solution: a.solution,
-    })
+    Ok(Winkler::new(terms, columns, thickness, poisson)?
+        .at_load(load, settings)?
+        .into_body_answer())
 }
 
 #[cfg(test)]

@@ -67,14 +67,9 @@ pub fn solve_at_load(
     poisson: f64,
     settings: &LoadSettings,
 ) -> Result<BodyAnswer, ContactError> {
-    let a = on_springs(terms, thickness, spring, poisson)?.at_load(load, settings)?;
-    Ok(BodyAnswer {
-        error_estimate: 0.0,
-        min_pressure_ratio: a.min_pressure_ratio,
-        min_gap_ratio: a.min_gap_ratio,
-        warnings: a.warnings,
-        solution: a.solution,
-    })
+    Ok(on_springs(terms, thickness, spring, poisson)?
+        .at_load(load, settings)?
+        .into_body_answer())
 }
 
 /// Solve at contact length λ.
