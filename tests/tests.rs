@@ -4,6 +4,7 @@ mod auto_vs_richardson;
 mod bands_calibration;
 mod bands_cli;
 mod bands_window;
+mod body_seam;
 mod cards_vendor;
 mod cli_habits;
 mod contact_auto;

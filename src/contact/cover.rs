@@ -23,15 +23,11 @@
 //! indentation, estimated as the roll's depth below the higher contact edge, max(β, λ−β)²/(2ρ)·VT
 //! (a lower bound of the true one), below about 30 % of the cover.
 
-use crate::contact::body::half_space;
 pub use crate::contact::body::layer::LAYER_TOL_FLOOR;
-use crate::contact::body::layer::{
-    layer_at_load, winkler_at_load, BodyAnswer, LayerSettings, WinklerColumns,
-};
+use crate::contact::body::{self, half_space, layer, Warm};
 pub use crate::contact::body::{C_HALF_SPACE, C_WINKLER};
 use crate::contact::error::{positive, ContactError};
-use crate::contact::load::LoadSettings;
-use crate::contact::problem::CreepTerm;
+use crate::contact::problem::{BodyAnswer, CreepTerm, DimensionlessScene};
 use crate::contact::scene::{RollSolution, Scene};
 use crate::contact::{roll, Body, ContactSettings};
 use crate::CreepSpectrum;
@@ -72,19 +68,6 @@ pub struct CoverAnswer {
     pub model_error_estimate: Option<f64>,
 }
 
-/// The half-space answer of the `auto` scheme at `tol` as a [`BodyAnswer`].
-fn half_space_answer(terms: &[CreepTerm], load: f64, tol: f64) -> Result<BodyAnswer, ContactError> {
-    let sol = half_space::solve_at_load(terms, load, &ContactSettings::auto(tol))?;
-    let diag = sol.diagnostics.clone();
-    Ok(BodyAnswer {
-        error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
-        min_pressure_ratio: diag.as_ref().map_or(f64::NAN, |d| d.min_pressure_ratio),
-        min_gap_ratio: diag.as_ref().map_or(f64::NAN, |d| d.min_gap_ratio),
-        warnings: sol.warnings.clone(),
-        solution: sol,
-    })
-}
-
 /// Solve the dimensionless problem (creep terms, load N′) on the cover `body` (its lengths in units
 /// of V·T: the thickness is h′ = h/(VT); `auto` the cheapest body accurate enough), to `tol` (module
 /// doc: the layer's hat fallback to at least [`LAYER_TOL_FLOOR`]).
@@ -95,115 +78,68 @@ pub fn solve_cover(
     body: &Body,
     tol: f64,
 ) -> Result<CoverAnswer, ContactError> {
-    solve_cover_from(terms, load, poisson, body, tol, None)
+    solve_cover_with(terms, load, poisson, body, tol, Warm::default())
 }
 
-/// [`solve_cover`] with the layer solve started from `start` = (λ guess, d ln N′/d ln λ), e.g. a
-/// nearby problem's answer ([`LayerSettings::start`]; `None`: the solver's closed-form start). Only
-/// the bonded layer uses it; the answer does not depend on it beyond the load loop's stopping
-/// tolerance.
-pub fn solve_cover_from(
-    terms: &[CreepTerm],
-    load: f64,
-    poisson: f64,
-    body: &Body,
-    tol: f64,
-    start: Option<(f64, f64)>,
-) -> Result<CoverAnswer, ContactError> {
-    solve_cover_with(terms, load, poisson, body, tol, start, true)
-}
-
-/// The cover's thickness h′ of `body` (in units of V·T), checked.
-fn cover_of(body: &Body) -> Result<f64, ContactError> {
-    positive("cover thickness h/(VT)", body.cover_m().unwrap_or(f64::NAN))
-}
-
-/// [`solve_cover_from`] with the bonded layer's closing contact checks run or not (`checks`,
-/// [`LayerSettings::checks`]: the same answer; without them its check ratios are NaN and no check
-/// warning is raised).
+/// [`solve_cover`] with the bonded layer's load loop started from `warm.start` = (λ guess,
+/// d ln N′/d ln λ), e.g. a nearby problem's answer, and its closing contact checks run or not
+/// (`warm.checks`); [`Warm`]: the answer does not depend on either.
 pub fn solve_cover_with(
     terms: &[CreepTerm],
     load: f64,
     poisson: f64,
     body: &Body,
     tol: f64,
-    start: Option<(f64, f64)>,
-    checks: bool,
+    warm: Warm,
 ) -> Result<CoverAnswer, ContactError> {
-    let h = cover_of(body)?;
-    let nu = poisson;
-    let winkler = |columns| winkler_at_load(terms, load, columns, h, nu, &LoadSettings::default());
-    let asked = |what: &str, name: &str| format!("{what} asked for (--model {name})");
-    let layer = || {
-        let layer_settings = LayerSettings {
-            tol,
-            n_max: 512,
-            start,
-            checks,
-            ..Default::default()
-        };
-        layer_at_load(terms, load, h, nu, &layer_settings)
-    };
-    let (model, answer, reason, model_error_estimate) = match *body {
-        Body::HalfSpace { .. } => (
-            *body,
-            half_space_answer(terms, load, tol)?,
-            asked("half-space", "half-space"),
-            None,
-        ),
-        Body::Winkler { .. } => (
-            *body,
-            winkler(WinklerColumns::Uniaxial)?,
-            "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)"
-                .to_string(),
-            None,
-        ),
-        Body::WinklerConstrained { .. } => (
-            *body,
-            winkler(WinklerColumns::Constrained)?,
-            "constrained Winkler foundation asked for".to_string(),
-            None,
-        ),
-        Body::Layer { .. } => (*body, layer()?, asked("bonded layer", "layer"), None),
-        Body::Auto { .. } => {
-            let hs = half_space_answer(terms, load, tol)?;
-            let lambda = hs.solution.lambda;
-            let r = h / lambda;
-            match Body::auto_choice(terms, lambda, h, nu, tol) {
-                Some((chosen @ Body::HalfSpace { .. }, e)) => (
-                    chosen,
-                    hs,
-                    format!(
-                        "auto: cover/contact length = {r:.3} is thick enough for the half-space \
-                         (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
-                    ),
-                    Some(e),
+    let problem = DimensionlessScene::in_units_of_vt(terms.to_vec(), load, poisson);
+    cover_answer(&problem, body, tol, warm)
+}
+
+/// The cover's thickness of `body` (in units of V·T when the body's are), checked.
+fn cover_of(body: &Body) -> Result<f64, ContactError> {
+    positive("cover thickness h/(VT)", body.cover_m().unwrap_or(f64::NAN))
+}
+
+/// Solve `problem` on the cover `body` (lengths in units of `problem.length_scale_m`) through the body
+/// dispatch ([`body::answer_at_load`], the half-space by the `auto` scheme at `tol`) and say why this
+/// body; the model is in the units of the body given.
+fn cover_answer(
+    problem: &DimensionlessScene,
+    body: &Body,
+    tol: f64,
+    warm: Warm,
+) -> Result<CoverAnswer, ContactError> {
+    let h = cover_of(body)? / problem.length_scale_m;
+    let solved = body::answer_at_load(body, problem, &ContactSettings::auto(tol), warm)?;
+    let reason = match (body.asked_for(), solved.auto) {
+        (Some(reason), _) => reason,
+        (None, Some(pick)) => {
+            let (r, e) = (h / pick.lambda_half_space, pick.model_error_estimate);
+            match solved.body {
+                Body::HalfSpace { .. } => format!(
+                    "auto: cover/contact length = {r:.3} is thick enough for the half-space \
+                     (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
                 ),
-                Some((chosen, e)) => (
-                    chosen,
-                    winkler(WinklerColumns::Constrained)?,
-                    format!(
-                        "auto: cover/contact length = {r:.3} is thin enough for a Winkler foundation \
-                         with the constrained modulus (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
-                    ),
-                    Some(e),
-                ),
-                None => (
-                    Body::Layer { thickness_m: h },
-                    layer()?,
-                    "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".into(),
-                    None,
+                _ => format!(
+                    "auto: cover/contact length = {r:.3} is thin enough for a Winkler foundation \
+                     with the constrained modulus (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
                 ),
             }
         }
+        (None, None) => AUTO_LAYER.into(),
     };
     Ok(CoverAnswer {
-        model,
-        answer,
+        model: solved.body,
+        answer: solved.answer,
         reason,
-        model_error_estimate,
+        model_error_estimate: solved.auto.map(|a| a.model_error_estimate),
     })
 }
+
+/// Why `auto` solved the layer.
+const AUTO_LAYER: &str =
+    "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer";
 
 /// Solve the dimensionless problem at given contact length λ on the cover `body` (lengths in units
 /// of V·T; `viscoroll contact --cover --lambda`): the half-space by the scheme of `settings`; the
@@ -220,80 +156,45 @@ pub fn solve_cover_at_lambda(
 ) -> Result<CoverAnswer, ContactError> {
     let h = cover_of(body)?;
     let nu = poisson;
-    let (model, reason, model_err) = match *body {
-        Body::HalfSpace { .. } => (*body, "half-space asked for (--model half-space)".to_string(), None),
-        Body::Layer { .. } => (*body, "bonded layer asked for (--model layer)".to_string(), None),
-        Body::Winkler { .. } => (
-            *body,
-            "uniaxial Winkler foundation asked for (--model winkler, the conveyor design tools' model)".to_string(),
-            None,
+    let (model, reason, model_err) = match (body.asked_for(), Body::auto_choice(terms, lambda, h, nu, tol)) {
+        (Some(reason), _) => (*body, reason, None),
+        (None, Some((m, e))) => (
+            m,
+            format!(
+                "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {e:.1e})",
+                h / lambda,
+                m.name(),
+                tol
+            ),
+            Some(e),
         ),
-        Body::WinklerConstrained { .. } => (*body, "constrained Winkler foundation asked for".to_string(), None),
-        Body::Auto { .. } => match Body::auto_choice(terms, lambda, h, nu, tol) {
-            Some((m, e)) => (
-                m,
-                format!(
-                    "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {e:.1e})",
-                    h / lambda,
-                    m.name(),
-                    tol
-                ),
-                Some(e),
-            ),
-            None => (
-                Body::Layer { thickness_m: h },
-                "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer".to_string(),
-                None,
-            ),
-        },
+        (None, None) => (Body::Layer { thickness_m: h }, AUTO_LAYER.into(), None),
     };
     let answer = match model {
         Body::HalfSpace { .. } => {
-            let sol = half_space::solve_at_lambda(terms, lambda, settings)?;
-            BodyAnswer {
-                error_estimate: sol.error_estimate.unwrap_or(f64::NAN),
-                min_pressure_ratio: sol
-                    .diagnostics
-                    .as_ref()
-                    .map_or(f64::NAN, |d| d.min_pressure_ratio),
-                min_gap_ratio: sol
-                    .diagnostics
-                    .as_ref()
-                    .map_or(f64::NAN, |d| d.min_gap_ratio),
-                warnings: sol.warnings.clone(),
-                solution: sol,
-            }
+            BodyAnswer::from_solution(half_space::solve_at_lambda(terms, lambda, settings)?)
         }
         Body::Winkler { .. } | Body::WinklerConstrained { .. } => {
             let columns = if matches!(model, Body::Winkler { .. }) {
-                crate::contact::body::layer::WinklerColumns::Uniaxial
+                layer::WinklerColumns::Uniaxial
             } else {
-                crate::contact::body::layer::WinklerColumns::Constrained
+                layer::WinklerColumns::Constrained
             };
-            let w = crate::contact::body::layer::Winkler::new(terms, columns, h, nu)?
-                .at_lambda(lambda)?;
-            let mut solution = w.solution;
-            solution.warnings.extend(w.warnings.iter().cloned());
-            BodyAnswer {
-                error_estimate: 0.0,
-                min_pressure_ratio: w.min_pressure_ratio,
-                min_gap_ratio: w.min_gap_ratio,
-                warnings: w.warnings,
-                solution,
-            }
+            layer::Winkler::new(terms, columns, h, nu)?
+                .at_lambda(lambda)?
+                .into_body_answer()
         }
         _ => {
-            let k = crate::contact::body::layer::LayerKernel::new(terms, h, nu)?;
+            let k = layer::LayerKernel::new(terms, h, nu)?;
             let n = settings.n.max(4) / 2 * 2;
-            let fine = crate::contact::body::layer::collocation::solve_at_lambda(&k, lambda, n)?;
-            let coarse =
-                crate::contact::body::layer::collocation::solve_at_lambda(&k, lambda, n / 2)?;
+            let fine = layer::collocation::solve_at_lambda(&k, lambda, n)?;
+            let coarse = layer::collocation::solve_at_lambda(&k, lambda, n / 2)?;
             let rel = |a: f64, b: f64| (a - b).abs() / a.abs().max(b.abs()).max(f64::MIN_POSITIVE);
             let est = rel(fine.beta, coarse.beta)
                 .max(rel(fine.load, coarse.load))
                 .max(rel(fine.friction_rho, coarse.friction_rho));
             let (min_pressure_ratio, min_gap_ratio) =
-                crate::contact::body::layer::collocation::contact_checks(&k, &fine)?;
+                layer::collocation::contact_checks(&k, &fine)?;
             BodyAnswer {
                 error_estimate: est,
                 min_pressure_ratio,
@@ -322,7 +223,7 @@ pub fn roll_cover(
 }
 
 /// [`roll_cover`] with the layer solve started from `start` = (contact length in m, d ln N′/d ln λ),
-/// e.g. the answer of a nearby spectrum on the same scene ([`solve_cover_from`]; the length is made
+/// e.g. the answer of a nearby spectrum on the same scene ([`Warm`]; the length is made
 /// dimensionless by this spectrum's own scale VT).
 pub fn roll_cover_from(
     scene: &Scene,
@@ -334,7 +235,7 @@ pub fn roll_cover_from(
 }
 
 /// [`roll_cover_from`] with the bonded layer's closing contact checks run or not (`checks`,
-/// [`solve_cover_with`]).
+/// [`Warm`]).
 pub fn roll_cover_with(
     scene: &Scene,
     spectrum: &CreepSpectrum,
@@ -366,17 +267,9 @@ pub fn roll_cover_with(
         });
     }
     let start = start.map(|(l_m, slope)| (l_m / p.length_scale_m, slope));
-    let c = solve_cover_with(
-        &p.terms,
-        p.load,
-        p.poisson,
-        &scene.body.with_cover(h_m / p.length_scale_m),
-        tol,
-        start,
-        checks,
-    )?;
+    let c = cover_answer(&p, &scene.body, tol, Warm { start, checks })?;
     let a = c.answer;
-    let model = c.model.with_cover(h_m);
+    let model = c.model;
     let mut warnings = a.warnings;
     let mut roll = p.to_dimensional(scene.load_n_per_m, a.solution);
     if matches!(model, Body::HalfSpace { .. }) {

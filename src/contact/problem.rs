@@ -3,8 +3,9 @@
 //!
 //! Input: nothing (plain serde data); output: [`CreepTerm`] (one term of γ(ζ), eq. 3.7),
 //! [`DimensionlessScene`] (a scene made dimensionless, built by `scene`), [`DimensionlessSolution`]
-//! (λ, β, N′, ρF/N, pressure, error estimate, warnings) and the [`Diagnostics`] of the
-//! error-controlled solvers (mode counts of the shared reduction, error parts, contact checks).
+//! (λ, β, N′, ρF/N, pressure, error estimate, warnings), the [`Diagnostics`] of the
+//! error-controlled solvers (mode counts of the shared reduction, error parts, contact checks) and
+//! a body's [`BodyAnswer`] (the solution with its error estimate, contact checks and warnings).
 
 use serde::{Deserialize, Serialize};
 
@@ -72,6 +73,24 @@ pub struct DimensionlessScene {
     pub compliance_factor_per_pa: f64,
 }
 
+impl DimensionlessScene {
+    /// A problem given in units of V·T already (the maps' reduced problem, `viscoroll contact`):
+    /// `length_scale_m` = 1, so a body's lengths are passed dimensionless; the SI scales are NaN (not
+    /// a scene: not for `to_dimensional`).
+    pub fn in_units_of_vt(terms: Vec<CreepTerm>, load: f64, poisson: f64) -> Self {
+        DimensionlessScene {
+            terms,
+            load,
+            rho: f64::NAN,
+            time_scale_s: f64::NAN,
+            length_scale_m: 1.0,
+            pressure_scale_pa: f64::NAN,
+            poisson,
+            compliance_factor_per_pa: f64::NAN,
+        }
+    }
+}
+
 /// The diagnostics of an error-controlled answer (the half-space's `auto` scheme, the layer's spectral
 /// solver; in [`DimensionlessSolution::diagnostics`], its warnings in
 /// [`DimensionlessSolution::warnings`]).
@@ -102,4 +121,35 @@ pub struct Diagnostics {
     pub min_gap_xi: f64,
     /// The tolerance asked for.
     pub tol: f64,
+}
+
+/// A solution on one of the bodies, with its diagnostics (which body: the caller's
+/// `contact::body::Body`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyAnswer {
+    /// λ, β, N′, ρF/N, pressure.
+    pub solution: DimensionlessSolution,
+    /// Estimated relative error of ρF/N and λ (of the body's own model).
+    pub error_estimate: f64,
+    /// min Q′ / max Q′.
+    pub min_pressure_ratio: f64,
+    /// Smallest gap outside the contact over the indentation depth.
+    pub min_gap_ratio: f64,
+    /// Warnings.
+    pub warnings: Vec<String>,
+}
+
+impl BodyAnswer {
+    /// The answer of a solution that carries its own estimate and checks (the half-space's: NaN
+    /// where the scheme gives none).
+    pub fn from_solution(solution: DimensionlessSolution) -> Self {
+        let diag = solution.diagnostics.as_ref();
+        BodyAnswer {
+            error_estimate: solution.error_estimate.unwrap_or(f64::NAN),
+            min_pressure_ratio: diag.map_or(f64::NAN, |d| d.min_pressure_ratio),
+            min_gap_ratio: diag.map_or(f64::NAN, |d| d.min_gap_ratio),
+            warnings: solution.warnings.clone(),
+            solution,
+        }
+    }
 }

@@ -10,7 +10,7 @@ use crate::contact::cover::roll_cover;
 use crate::contact::maps::{
     covered_map, friction_map, CoveredProblem, MapQuery, MapSettings, MapValue, ReducedProblem,
 };
-use crate::contact::{roll, AutoSettings, Body, ContactSettings, Scheme};
+use crate::contact::{roll, AutoSettings, Body, ContactSettings, RollSolution, Scheme};
 use crate::results::CompoundFit;
 use rayon::prelude::*;
 
@@ -81,25 +81,32 @@ pub fn friction_on_body(
         .temps_c
         .par_iter()
         .map(|&t| {
-            let failed_point =
-                |t: f64, e: String, log10_a_t: f64, extrapolated: bool| FrictionPoint {
-                    temp_c: t,
-                    log10_a_t,
-                    friction: f64::NAN,
-                    resistance_n_per_m: f64::NAN,
-                    contact_length_mm: f64::NAN,
-                    extrapolated,
-                    error: Some(crate::results::cap_line(&e)),
-                    model: String::new(),
-                    model_reason: String::new(),
-                    band: None,
-                    warnings: vec![],
-                    specimens: vec![],
-                    undetermined: None,
-                    error_estimate: None,
-                };
+            // a point at this temperature: unsolved, then filled in by `failed` or `solved`
+            let point = |log10_a_t: f64, extrapolated: bool| FrictionPoint {
+                temp_c: t,
+                log10_a_t,
+                friction: f64::NAN,
+                resistance_n_per_m: f64::NAN,
+                contact_length_mm: f64::NAN,
+                extrapolated,
+                error: None,
+                model: String::new(),
+                model_reason: String::new(),
+                band: None,
+                warnings: vec![],
+                specimens: vec![],
+                undetermined: None,
+                error_estimate: None,
+            };
             let failed = |e: String, log10_a_t: f64, extrapolated: bool| {
-                (failed_point(t, e, log10_a_t, extrapolated), None)
+                let error = Some(crate::results::cap_line(&e));
+                (
+                    FrictionPoint {
+                        error,
+                        ..point(log10_a_t, extrapolated)
+                    },
+                    None,
+                )
             };
             // the same shift as `viscoroll roll FIT --temp-c T` (super::roll_fit)
             let at = match fit_spectrum_at(fit, t) {
@@ -108,61 +115,48 @@ pub fn friction_on_body(
                 Err(PipelineError::Creep(e)) => return failed(e.to_string(), f64::NAN, true),
                 Err(e) => return failed(e.to_string(), f64::NAN, true),
             };
+            let solved = |r: &RollSolution,
+                          model: Body,
+                          model_reason: String,
+                          error_estimate: Option<f64>,
+                          warnings: &[String]| {
+                (
+                    FrictionPoint {
+                        friction: r.friction,
+                        resistance_n_per_m: r.resistance_n_per_m,
+                        contact_length_mm: r.contact_length_m * 1e3,
+                        model: model.name().to_string(),
+                        model_reason,
+                        error_estimate,
+                        warnings: warnings
+                            .iter()
+                            .map(|w| crate::results::cap_line(w))
+                            .collect(),
+                        ..point(at.log10_a_t, at.extrapolated)
+                    },
+                    Some(model),
+                )
+            };
             if !matches!(scene.body, Body::HalfSpace { cover_m: None }) {
                 // A cover: the body chosen and solved by contact::cover (auto, at COVER_TOL).
                 return match roll_cover(&scene, &at.spectrum, tol) {
-                    Ok(r) => (
-                        FrictionPoint {
-                            temp_c: t,
-                            log10_a_t: at.log10_a_t,
-                            friction: r.roll.friction,
-                            resistance_n_per_m: r.roll.resistance_n_per_m,
-                            contact_length_mm: r.roll.contact_length_m * 1e3,
-                            extrapolated: at.extrapolated,
-                            error: None,
-                            model: r.model.name().to_string(),
-                            model_reason: r.reason,
-                            band: None,
-                            error_estimate: Some(
-                                r.error_estimate + r.model_error_estimate.unwrap_or(0.0),
-                            ),
-                            warnings: r
-                                .warnings
-                                .iter()
-                                .map(|w| crate::results::cap_line(w))
-                                .collect(),
-                            specimens: vec![],
-                            undetermined: None,
-                        },
-                        Some(r.model),
+                    Ok(r) => solved(
+                        &r.roll,
+                        r.model,
+                        r.reason,
+                        Some(r.error_estimate + r.model_error_estimate.unwrap_or(0.0)),
+                        &r.warnings,
                     ),
                     Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
                 };
             }
             match roll(&scene, &at.spectrum, settings) {
-                Ok(r) => (
-                    FrictionPoint {
-                        temp_c: t,
-                        log10_a_t: at.log10_a_t,
-                        friction: r.friction,
-                        resistance_n_per_m: r.resistance_n_per_m,
-                        contact_length_mm: r.contact_length_m * 1e3,
-                        extrapolated: at.extrapolated,
-                        error: None,
-                        model: "half-space".into(),
-                        model_reason: String::new(),
-                        band: None,
-                        error_estimate: r.dimensionless.error_estimate,
-                        warnings: r
-                            .dimensionless
-                            .warnings
-                            .iter()
-                            .map(|w| crate::results::cap_line(w))
-                            .collect(),
-                        specimens: vec![],
-                        undetermined: None,
-                    },
-                    Some(Body::HALF_SPACE),
+                Ok(r) => solved(
+                    &r,
+                    Body::HALF_SPACE,
+                    String::new(),
+                    r.dimensionless.error_estimate,
+                    &r.dimensionless.warnings,
                 ),
                 Err(e) => failed(e.to_string(), at.log10_a_t, at.extrapolated),
             }

@@ -13,17 +13,22 @@
 //!
 //! # Adding a body
 //! (docs/ARCHITECTURE.md, "Add a contact body", says the same and what is still outside the seam.)
-//! 1. one new folder `body/NAME/` with `solve_at_load` and `solve_at_lambda` taking the
-//!    dimensionless problem ([`crate::contact::problem`]), the body's own (dimensionless) parameters
-//!    and the settings; it imports the ground (`problem`, `settings`, `error`), `load` and shared
-//!    numerics, never this file, `scene` or `cover`;
+//! 1. one new folder `body/NAME/` with `solve_at_load` (answering a [`BodyAnswer`]) and
+//!    `solve_at_lambda` taking the dimensionless problem's parts ([`crate::contact::problem`]), the
+//!    body's own dimensionless parameters and the settings, and the conversion of its SI parameters
+//!    to dimensionless ones (given the [`DimensionlessScene`]); it imports the ground (`problem`,
+//!    `settings`, `error`), `load` and shared numerics, never this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
-//!    `Layer { thickness_m }`), named in [`Body::name`] (the serde name too), with its arms in
-//!    [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in [`solve_at_load`] and
-//!    [`solve_at_lambda`] below, the single dispatch point (lengths go in units of
-//!    `problem.length_scale_m`); to be chosen by `auto` or by name, also in [`Body::auto_choice`] /
-//!    [`Body::choice`] and `contact::cover`'s answer;
-//! 3. its tests, through [`crate::contact::roll`] where they can.
+//!    `Layer { thickness_m }`), with its arms in [`Body::name`] (the serde name too),
+//!    [`Body::asked_for`], [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in
+//!    [`answer_at_load`] and [`solve_at_lambda`] below, the single dispatch point (lengths go in
+//!    units of `problem.length_scale_m`); to be chosen by `auto` or by name, also in
+//!    [`Body::auto_choice`] / [`Body::choice`] and `contact::cover`'s answer at given λ;
+//! 3. its tests at the foot of its folder, through [`crate::contact::roll`] where they can.
+//!
+//! A body for tests only is the same with `#[cfg(test)]` on its `mod`, its variant and each of its
+//! arms (an arm of its own: a cfg cannot sit inside an or-pattern); `body/on_springs/` is one, and it
+//! took this file and its folder.
 //!
 //! The scene carries the body (`Scene::body`, serde default = half-space, so existing JSON keeps
 //! working), [`crate::contact::roll`] calls the dispatch, and the scheme is chosen by
@@ -33,9 +38,11 @@
 
 pub mod half_space;
 pub mod layer;
+#[cfg(test)]
+pub mod on_springs;
 
 use super::error::ContactError;
-use super::problem::{CreepTerm, DimensionlessScene, DimensionlessSolution};
+use super::problem::{BodyAnswer, CreepTerm, DimensionlessScene, DimensionlessSolution};
 use super::settings::ContactSettings;
 use serde::{Deserialize, Serialize};
 
@@ -87,6 +94,15 @@ pub enum Body {
         /// Cover thickness in m (> 0).
         thickness_m: f64,
     },
+    /// TEST ONLY: a cover of thickness `thickness_m` on springs of stiffness `stiffness_pa_per_m`
+    /// per unit area under it ([`on_springs`]).
+    #[cfg(test)]
+    OnSprings {
+        /// Cover thickness in m (> 0).
+        thickness_m: f64,
+        /// Springs' stiffness per unit area in Pa/m (> 0).
+        stiffness_pa_per_m: f64,
+    },
 }
 
 impl Default for Body {
@@ -120,6 +136,8 @@ impl Body {
             Body::Winkler { .. } => "winkler",
             Body::WinklerConstrained { .. } => "winkler-constrained",
             Body::Auto { .. } => "auto",
+            #[cfg(test)]
+            Body::OnSprings { .. } => "on-springs",
         }
     }
 
@@ -144,12 +162,32 @@ impl Body {
         }))
     }
 
+    /// Why this body was solved when asked for by name (the reason line of `contact::cover`'s answer
+    /// and the datasheet); `None` for `auto`, whose reason depends on the answer.
+    pub fn asked_for(&self) -> Option<String> {
+        Some(match self {
+            Body::HalfSpace { .. } => "half-space asked for (--model half-space)".into(),
+            Body::Layer { .. } => "bonded layer asked for (--model layer)".into(),
+            Body::Winkler { .. } => {
+                "uniaxial Winkler foundation asked for (--model winkler, the conveyor \
+                                     design tools' model)"
+                    .into()
+            }
+            Body::WinklerConstrained { .. } => "constrained Winkler foundation asked for".into(),
+            Body::Auto { .. } => return None,
+            #[cfg(test)]
+            Body::OnSprings { .. } => "cover on springs asked for".into(),
+        })
+    }
+
     /// The thickness in m of the cover the body stands for (None: a half-space without a cover).
     pub fn cover_m(&self) -> Option<f64> {
         match *self {
             Body::HalfSpace { cover_m } => cover_m,
             Body::Layer { thickness_m } | Body::Auto { thickness_m } => Some(thickness_m),
             Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => Some(height_m),
+            #[cfg(test)]
+            Body::OnSprings { thickness_m, .. } => Some(thickness_m),
         }
     }
 
@@ -167,6 +205,13 @@ impl Body {
             Body::Auto { .. } => Body::Auto {
                 thickness_m: cover_m,
             },
+            #[cfg(test)]
+            Body::OnSprings {
+                stiffness_pa_per_m, ..
+            } => Body::OnSprings {
+                thickness_m: cover_m,
+                stiffness_pa_per_m: *stiffness_pa_per_m,
+            },
         }
     }
 
@@ -180,6 +225,14 @@ impl Body {
             | Body::Winkler { height_m: h }
             | Body::WinklerConstrained { height_m: h } => {
                 super::error::positive("body thickness in m", *h).map(|_| ())
+            }
+            #[cfg(test)]
+            Body::OnSprings {
+                thickness_m,
+                stiffness_pa_per_m,
+            } => {
+                super::error::positive("body thickness in m", *thickness_m)?;
+                super::error::positive("spring stiffness in Pa/m", *stiffness_pa_per_m).map(|_| ())
             }
         }
     }
@@ -223,44 +276,132 @@ impl Body {
     }
 }
 
+/// How a body with a load loop of its own (the bonded layer) is started and closed; the other
+/// bodies ignore it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Warm {
+    /// Start of the load loop (λ guess in units of `problem.length_scale_m`, d ln N′/d ln λ), e.g. a
+    /// neighbouring problem's answer; `None`: the solver's closed-form start. The answer does not
+    /// depend on it beyond the load loop's stopping tolerance.
+    pub start: Option<(f64, f64)>,
+    /// Run the closing contact checks (the same answer; without them the check ratios are NaN and no
+    /// check warning is raised).
+    pub checks: bool,
+}
+
+impl Default for Warm {
+    /// A cold start, with the checks.
+    fn default() -> Self {
+        Warm {
+            start: None,
+            checks: true,
+        }
+    }
+}
+
+/// A body's answer at given load and the body that gave it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solved {
+    /// The body solved (never [`Body::Auto`]: the one `auto` chose, on the same cover).
+    pub body: Body,
+    /// Its solution, error estimate, contact checks and warnings.
+    pub answer: BodyAnswer,
+    /// When `auto` chose a cheaper body than the layer: why.
+    pub auto: Option<AutoPick>,
+}
+
+/// Why `auto` chose a cheaper body than the layer ([`Body::auto_choice`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AutoPick {
+    /// The estimated relative difference of the body chosen from the layer.
+    pub model_error_estimate: f64,
+    /// The half-space contact length λ the criterion was applied at (units of V·T).
+    pub lambda_half_space: f64,
+}
+
 /// Solve the dimensionless problem of a scene on `body` at its load `problem.load`.
 pub fn solve_at_load(
     body: &Body,
     problem: &DimensionlessScene,
     settings: &ContactSettings,
 ) -> Result<DimensionlessSolution, ContactError> {
+    answer_at_load(body, problem, settings, Warm::default()).map(|s| s.answer.solution)
+}
+
+/// [`solve_at_load`] with the body's error estimate, checks and warnings, the body solved (`auto`
+/// resolved) and a warm start: the single dispatch at given load. The bonded layer is solved to
+/// `settings.auto.tol` (its hat fallback to at least [`layer::LAYER_TOL_FLOOR`]), the Winkler
+/// foundations by the load loop `settings.load`, the half-space by the scheme of `settings`.
+pub fn answer_at_load(
+    body: &Body,
+    problem: &DimensionlessScene,
+    settings: &ContactSettings,
+    warm: Warm,
+) -> Result<Solved, ContactError> {
     body.validate()?;
-    match body {
-        Body::HalfSpace { .. } => half_space::solve_at_load(&problem.terms, problem.load, settings),
+    let solved = |answer| Solved {
+        body: *body,
+        answer,
+        auto: None,
+    };
+    let (terms, load, nu) = (&problem.terms, problem.load, problem.poisson);
+    match *body {
+        Body::HalfSpace { .. } => Ok(solved(BodyAnswer::from_solution(
+            half_space::solve_at_load(terms, load, settings)?,
+        ))),
         Body::Auto { thickness_m } => {
-            let chosen = auto_at(problem, *thickness_m, settings, |b| {
-                solve_at_load(b, problem, settings).map(|s| s.lambda)
-            })?;
-            solve_at_load(&chosen, problem, settings)
+            let hs = answer_at_load(&Body::HALF_SPACE, problem, settings, warm)?.answer;
+            let lambda = hs.solution.lambda;
+            let (chosen, estimate) = auto_at(problem, thickness_m, lambda, settings);
+            let mut s = match chosen {
+                Body::HalfSpace { .. } => solved(hs),
+                _ => answer_at_load(&chosen, problem, settings, warm)?,
+            };
+            s.body = chosen;
+            s.auto = estimate.map(|e| AutoPick {
+                model_error_estimate: e,
+                lambda_half_space: lambda,
+            });
+            Ok(s)
         }
         Body::Layer { thickness_m } => layer::layer_at_load(
-            &problem.terms,
-            problem.load,
+            terms,
+            load,
             thickness_m / problem.length_scale_m,
-            problem.poisson,
+            nu,
             &layer::LayerSettings {
                 tol: settings.auto.tol,
                 n_max: 512,
+                start: warm.start,
+                checks: warm.checks,
                 ..Default::default()
             },
         )
-        .map(|a| a.solution),
+        .map(solved),
         Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => {
             layer::winkler_at_load(
-                &problem.terms,
-                problem.load,
+                terms,
+                load,
                 winkler_columns(body),
                 height_m / problem.length_scale_m,
-                problem.poisson,
+                nu,
                 &settings.load,
             )
-            .map(|a| a.solution)
+            .map(solved)
         }
+        #[cfg(test)]
+        Body::OnSprings {
+            thickness_m,
+            stiffness_pa_per_m,
+        } => on_springs::solve_at_load(
+            terms,
+            load,
+            thickness_m / problem.length_scale_m,
+            on_springs::compliance(problem, stiffness_pa_per_m),
+            nu,
+            &settings.load,
+        )
+        .map(solved),
     }
 }
 
@@ -275,7 +416,7 @@ pub fn solve_at_lambda(
     match body {
         Body::HalfSpace { .. } => half_space::solve_at_lambda(&problem.terms, lambda, settings),
         Body::Auto { thickness_m } => {
-            let chosen = auto_at(problem, *thickness_m, settings, |_| Ok(lambda))?;
+            let (chosen, _) = auto_at(problem, *thickness_m, lambda, settings);
             solve_at_lambda(&chosen, problem, lambda, settings)
         }
         Body::Layer { thickness_m } => {
@@ -295,32 +436,41 @@ pub fn solve_at_lambda(
             )?;
             Ok(w.at_lambda(lambda)?.solution)
         }
+        #[cfg(test)]
+        Body::OnSprings {
+            thickness_m,
+            stiffness_pa_per_m,
+        } => on_springs::solve_at_lambda(
+            &problem.terms,
+            lambda,
+            thickness_m / problem.length_scale_m,
+            on_springs::compliance(problem, *stiffness_pa_per_m),
+            problem.poisson,
+        ),
     }
 }
 
-/// The body `auto` chooses on a cover of `thickness_m` ([`Body::auto_choice`] at `settings.auto.tol`),
-/// given the half-space contact length `lambda_hs` (of a solve on `Body::HALF_SPACE`, in units of
-/// V·T): the half-space or the constrained Winkler foundation on the cover, else the layer.
+/// The body `auto` chooses on a cover of `thickness_m` ([`Body::auto_choice`] at `settings.auto.tol`)
+/// given the half-space contact length `lambda_hs` (in units of V·T): the half-space or the
+/// constrained Winkler foundation on the cover with its estimated difference from the layer, else
+/// the layer (`None`).
 fn auto_at(
     problem: &DimensionlessScene,
     thickness_m: f64,
+    lambda_hs: f64,
     settings: &ContactSettings,
-    lambda_hs: impl FnOnce(&Body) -> Result<f64, ContactError>,
-) -> Result<Body, ContactError> {
-    let lambda = lambda_hs(&Body::HALF_SPACE)?;
+) -> (Body, Option<f64>) {
     let h = thickness_m / problem.length_scale_m;
-    Ok(
-        match Body::auto_choice(
-            &problem.terms,
-            lambda,
-            h,
-            problem.poisson,
-            settings.auto.tol,
-        ) {
-            Some((chosen, _)) => chosen.with_cover(thickness_m),
-            None => Body::Layer { thickness_m },
-        },
-    )
+    match Body::auto_choice(
+        &problem.terms,
+        lambda_hs,
+        h,
+        problem.poisson,
+        settings.auto.tol,
+    ) {
+        Some((chosen, e)) => (chosen.with_cover(thickness_m), Some(e)),
+        None => (Body::Layer { thickness_m }, None),
+    }
 }
 
 /// The columns of a Winkler body.

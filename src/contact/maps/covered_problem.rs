@@ -10,7 +10,8 @@
 
 use super::reduced::ReducedProblem;
 use super::FrictionMapError;
-use crate::contact::body::layer::{layer_at_load, LayerSettings};
+use crate::contact::body::{answer_at_load, Body, Warm};
+use crate::contact::{ContactSettings, DimensionlessScene};
 use crate::CreepSpectrum;
 
 /// The compound's part of the covered problem: the half-space's [`ReducedProblem`] (Jᵢ/J_g, τᵢ, C),
@@ -84,21 +85,23 @@ impl CoveredProblem {
         start: Option<(f64, f64)>,
     ) -> Result<CoveredNode, FrictionMapError> {
         let s_s = x.exp();
-        // the bonded layer as `solve_cover(…, &Body::Layer { .. }, tol)` solves it
-        let settings = LayerSettings {
-            tol,
-            n_max: 512,
-            start,
-            ..LayerSettings::default()
-        };
-        let a = layer_at_load(
-            &self.reduced.terms(s_s),
-            0.25,
-            y.exp(),
-            self.poisson,
-            &settings,
+        // the bonded layer as `solve_cover(…, &Body::Layer { .. }, tol)` solves it: N′ = 1/4 and the
+        // cover h′ = η, lengths in units of l_g = V·T
+        let problem =
+            DimensionlessScene::in_units_of_vt(self.reduced.terms(s_s), 0.25, self.poisson);
+        let a = answer_at_load(
+            &Body::Layer {
+                thickness_m: y.exp(),
+            },
+            &problem,
+            &ContactSettings::auto(tol),
+            Warm {
+                start,
+                checks: true,
+            },
         )
-        .map_err(|source| FrictionMapError::Solve { s_s, source })?;
+        .map_err(|source| FrictionMapError::Solve { s_s, source })?
+        .answer;
         let (phi, lambda) = (a.solution.friction_rho, a.solution.lambda);
         if !(phi > 0.0 && phi.is_finite()) {
             return Err(FrictionMapError::NonPositive { s_s, phi });

@@ -27,28 +27,13 @@ pub use winkler::{Winkler, WinklerAnswer};
 
 use crate::contact::error::ContactError;
 use crate::contact::load::LoadSettings;
-use crate::contact::problem::{CreepTerm, DimensionlessSolution};
+pub use crate::contact::problem::BodyAnswer;
+use crate::contact::problem::CreepTerm;
 
 /// The hat collocation (the fallback for very thin covers) converges to first order in λ
 /// (Richardson-extrapolated); below this tolerance its cost grows past a second per point, so it is
 /// solved to at least this.
 pub const LAYER_TOL_FLOOR: f64 = 1e-4;
-
-/// A solution on one of the bodies, with its diagnostics (which body: the caller's
-/// [`crate::contact::Body`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct BodyAnswer {
-    /// λ, β, N′, ρF/N, pressure.
-    pub solution: DimensionlessSolution,
-    /// Estimated relative error of ρF/N and λ (of the body's own model).
-    pub error_estimate: f64,
-    /// min Q′ / max Q′.
-    pub min_pressure_ratio: f64,
-    /// Smallest gap outside the contact over the indentation depth.
-    pub min_gap_ratio: f64,
-    /// Warnings.
-    pub warnings: Vec<String>,
-}
 
 /// Solve the bonded layer of dimensionless thickness `thickness` at load N′: by the spectral solver
 /// ([`spectral`]) to `settings.tol`, or, where the cover is too thin against the contact for its
@@ -125,16 +110,9 @@ pub fn winkler_at_load(
     poisson: f64,
     settings: &LoadSettings,
 ) -> Result<BodyAnswer, ContactError> {
-    let w = Winkler::new(terms, columns, thickness, poisson)?;
-    let mut a = w.at_load(load, settings)?;
-    a.solution.warnings.extend(a.warnings.iter().cloned());
-    Ok(BodyAnswer {
-        error_estimate: 0.0,
-        min_pressure_ratio: a.min_pressure_ratio,
-        min_gap_ratio: a.min_gap_ratio,
-        warnings: a.warnings,
-        solution: a.solution,
-    })
+    Ok(Winkler::new(terms, columns, thickness, poisson)?
+        .at_load(load, settings)?
+        .into_body_answer())
 }
 
 #[cfg(test)]

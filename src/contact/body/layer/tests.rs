@@ -8,7 +8,7 @@ use crate::contact::body::half_space::auto::{solve_auto_at_load, AutoSettings};
 use crate::contact::body::half_space::kernel::Kernel;
 use crate::contact::body::half_space::thesis;
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::{Body, CreepTerm, Scene};
+use crate::contact::{Body, CreepTerm, DimensionlessSolution, Scene};
 use crate::CreepSpectrum;
 
 fn rel(a: f64, b: f64) -> f64 {

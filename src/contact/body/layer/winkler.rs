@@ -44,7 +44,7 @@ use super::compliance::{winkler_coefficient, WinklerColumns};
 use crate::contact::body::half_space::modes::Modes;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::problem::{CreepTerm, DimensionlessSolution};
+use crate::contact::problem::{BodyAnswer, CreepTerm, DimensionlessSolution};
 use crate::special::gauss_legendre::gauss_legendre;
 
 /// A Winkler foundation with its relaxation modes.
@@ -67,6 +67,21 @@ pub struct WinklerAnswer {
     pub min_gap_ratio: f64,
     /// Warnings (contact checks).
     pub warnings: Vec<String>,
+}
+
+impl WinklerAnswer {
+    /// As a body's answer: closed form, so no error estimate of its own (0); the contact checks'
+    /// warnings also in the solution's.
+    pub fn into_body_answer(mut self) -> BodyAnswer {
+        self.solution.warnings.extend(self.warnings.iter().cloned());
+        BodyAnswer {
+            error_estimate: 0.0,
+            min_pressure_ratio: self.min_pressure_ratio,
+            min_gap_ratio: self.min_gap_ratio,
+            warnings: self.warnings,
+            solution: self.solution,
+        }
+    }
 }
 
 impl Winkler {
