@@ -356,3 +356,151 @@ mod tests {
         assert!((lo / f0 - 1.0).abs() < 1e-9 && (hi / f1 - 1.0).abs() < 1e-9);
     }
 }
+
+#[cfg(test)]
+mod diagnose {
+    //! Scratch: the friction error split by stage (issue 29 item 3).
+    use super::*;
+    use crate::dma::time_domain::time_data_from_bytes;
+    use crate::prony::time_fit::TimeDatum;
+    use crate::testdata::time_domain::{time_domain_csv, TimeSettings};
+    use crate::testdata::broad_spectrum;
+    use crate::{CreepSpectrum, RelaxationSpectrum, ShiftLaw};
+
+    fn law() -> ShiftLaw {
+        ShiftLaw::Wlf {
+            t_ref_c: 20.0,
+            c1: 8.86,
+            c2_k: 101.6,
+        }
+    }
+
+    fn data(mode: TimeMode, noise: f64) -> TimeData {
+        let s = TimeSettings {
+            temps_c: (0..=20).map(|k| -40.0 + 5.0 * k as f64).collect(),
+            window_s: (1.0, 1e4),
+            per_decade: 10,
+            noise_rel: noise,
+            seed: 11,
+        };
+        let csv = time_domain_csv(&broad_spectrum(), mode, &law(), &s);
+        time_data_from_bytes(&[("s.csv".into(), csv.into_bytes())], 0.5).unwrap()
+    }
+
+    fn true_points(d: &TimeData) -> Vec<TimeDatum> {
+        let mut v: Vec<TimeDatum> = d
+            .isotherms
+            .iter()
+            .flat_map(|i| {
+                let a = 10f64.powf(law().log10_a_t(i.temp_c));
+                i.points.iter().map(move |p| TimeDatum {
+                    time_s: p.time_s / a,
+                    value: p.value,
+                })
+            })
+            .collect();
+        v.sort_by(|a, b| a.time_s.total_cmp(&b.time_s));
+        v
+    }
+
+    fn fit_points(pts: &[TimeDatum], mode: TimeMode) -> (RelaxationSpectrum, CreepSpectrum) {
+        let s = crate::prony::PronySettings::default();
+        match mode {
+            TimeMode::Relaxation => {
+                let f = fit_relaxation_in_time(pts, crate::ModulusKind::Tensile, 0.5, &s, "E(t)")
+                    .unwrap();
+                let c = crate::creep::relaxation_to_creep(&f.spectrum).unwrap().0;
+                (f.spectrum, c)
+            }
+            TimeMode::Creep => {
+                let (f, c) = crate::creep::time_fit::fit_creep_in_time(
+                    pts,
+                    crate::ModulusKind::Tensile,
+                    0.5,
+                    &s,
+                    "D(t)",
+                )
+                .unwrap();
+                (f.spectrum, c)
+            }
+        }
+    }
+
+    #[test]
+    fn breakdown() {
+        let set = crate::results::SceneSet::shipped();
+        let spec = set
+            .scene
+            .iter()
+            .find(|s| s.name == "conveyor-idler-half-space")
+            .unwrap();
+        let scene = spec.scene();
+        let settings = crate::pipeline::scenes::pipeline_contact_settings();
+        let truth = broad_spectrum();
+        let (truth_creep, _) = crate::creep::relaxation_to_creep(&truth).unwrap();
+        let roll = |c: &CreepSpectrum, l: &ShiftLaw, t: f64| {
+            let at = c.at_temperature(l, t, None).unwrap();
+            crate::contact::roll(&scene, &at.spectrum, &settings).unwrap()
+        };
+        for mode in [TimeMode::Relaxation, TimeMode::Creep] {
+            let noisy = data(mode, 0.01);
+            let clean = data(mode, 0.0);
+            let full = fit_time_data("t", &noisy, &{
+                let mut o = FitOptions::default();
+                o.master.tref_c = Some(20.0);
+                o
+            })
+            .unwrap();
+            let tw = full.prony_info.time_domain.as_ref().unwrap().time_window_s;
+            eprintln!("{mode:?}: reduced time window {:.2e} … {:.2e} s; ω window {:.2e} … {:.2e}", tw[0], tw[1], 1.0/tw[1], 1.0/tw[0]);
+            let (r_ts, c_ts) = fit_points(&true_points(&noisy), mode);
+            let (r_cl, c_cl) = fit_points(&true_points(&clean), mode);
+            // creep: the fitted retardation series itself, before the round trip
+            let direct = match mode {
+                TimeMode::Creep => {
+                    let s = crate::prony::PronySettings::default();
+                    Some(crate::creep::time_fit::fit_creep_in_time(&true_points(&clean), crate::ModulusKind::Tensile, 0.5, &s, "D(t)").unwrap().1)
+                }
+                _ => None,
+            };
+            let _ = &direct;
+            let (full_creep, _) = crate::creep::relaxation_to_creep(&full.relaxation).unwrap();
+            eprintln!("| T °C | log aT | l mm | ω_red rad/s | Δdec beyond ω window | E″ err full / trueshift / clean | F truth | full | true shifts | clean | clean direct creep |");
+            for &t in &spec.temps_c {
+                let tr = roll(&truth_creep, &law(), t);
+                let w = scene.speed_m_s / tr.contact_length_m * 10f64.powf(law().log10_a_t(t));
+                let beyond = (w * tw[0]).log10().max((1.0 / (w * tw[1])).log10());
+                let e2 = |s: &RelaxationSpectrum| s.complex_modulus(w).1 / truth.complex_modulus(w).1 - 1.0;
+                let rel = |f: f64| 100.0 * (f / tr.friction - 1.0);
+                let f_full = roll(&full_creep, &full.shift_law, t).friction;
+                let f_ts = roll(&c_ts, &law(), t).friction;
+                let f_cl = roll(&c_cl, &law(), t).friction;
+                let f_dir = direct.as_ref().map(|c| rel(roll(c, &law(), t).friction));
+                // resolution of tan δ from the fit file alone
+                let td = full.prony_info.time_domain.as_ref().unwrap();
+                let sigma = td.rms_log10 * std::f64::consts::LN_10;
+                let n_dec = full.master_curve.iter().filter(|p| ((2.0 * PI * p.reduced_freq_hz) / w).log10().abs() <= 0.5).count();
+                let s_m = sigma / (std::f64::consts::LN_10 * (n_dec as f64 / 12.0).sqrt());
+                let (e1, e2v) = full.relaxation.complex_modulus(w);
+                let (b1, b2) = truth.complex_modulus(w);
+                let u = 0.5 * PI * s_m / (e2v / e1);
+                let dshift = full.shift_law.log10_a_t(t) - law().log10_a_t(t);
+                eprintln!("   T {t}: n_dec {n_dec}, σ {sigma:.4}, tanδ fit {:.4} truth {:.4}, u = {:.3}, shift err {dshift:.3}", e2v / e1, b2 / b1, u);
+                eprintln!(
+                    "| {t} | {:.2} | {:.2} | {w:.2e} | {beyond:.2} | {:.0} % / {:.0} % / {:.0} % | {:.3e} | {:.1} % | {:.1} % | {:.1} % | {:?} |",
+                    law().log10_a_t(t), tr.contact_length_m * 1e3,
+                    100.0 * e2(&full.relaxation), 100.0 * e2(&r_ts), 100.0 * e2(&r_cl),
+                    tr.friction, rel(f_full), rel(f_ts), rel(f_cl), f_dir
+                );
+            }
+            // E″ error across ω
+            eprint!("E″ log10 err (ω = 1e-6…1e14, per decade) full:");
+            for k in 0..=20 { let w = 10f64.powi(k - 6); eprint!(" {:.2}", (full.relaxation.complex_modulus(w).1 / truth.complex_modulus(w).1).log10()); }
+            eprint!("\n  trueshift:");
+            for k in 0..=20 { let w = 10f64.powi(k - 6); eprint!(" {:.2}", (r_ts.complex_modulus(w).1 / truth.complex_modulus(w).1).log10()); }
+            eprint!("\n  clean:");
+            for k in 0..=20 { let w = 10f64.powi(k - 6); eprint!(" {:.2}", (r_cl.complex_modulus(w).1 / truth.complex_modulus(w).1).log10()); }
+            eprintln!("\n  full λ = {:e}, terms {}", full.prony_info.lambda, full.relaxation.terms.len());
+        }
+    }
+}
