@@ -478,6 +478,7 @@ fn one_compound(
             })
             .collect();
         super::trust::finish_points(&mut points, &specimen_points, fit.measured_range_c());
+        super::fit_time::mark_time_domain_points(&fit, spec.scene().speed_m_s, &mut points);
         friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         let m = super::scenes::friction_maps(&fit, spec, &super::scenes::pipeline_map_settings())?;
@@ -917,6 +918,7 @@ pub fn rank_fits(
                 for q in p.iter_mut() {
                     q.determine(f.measured_range_c());
                 }
+                super::fit_time::mark_time_domain_points(f, spec.scene().speed_m_s, &mut p);
                 let ratios = match (bands, f.bands.as_ref()) {
                     (Some(bs), Some(ensemble)) => scene_bands(
                         f,
