@@ -131,6 +131,34 @@ pub fn fit_time_data(
     Ok(fit)
 }
 
+/// Whether a compound's files are all time-domain data, by the evidence `fit --time-domain` reads
+/// ([`crate::dma::time_domain::looks_like_time_data`]: a TRIOS relaxation or creep step, or a
+/// header naming a time column and a modulus or compliance column); `run` then fits them so
+/// ([`fit_time_files`]). A file that cannot be read is not evidence (the DMA path reports it).
+pub fn files_are_time_data(files: &[PathBuf]) -> bool {
+    !files.is_empty()
+        && files.iter().all(|f| {
+            crate::fsutil::read_regular(f, crate::limits::INPUT_BYTES_MAX).is_ok_and(|b| {
+                crate::dma::time_domain::looks_like_time_data(&String::from_utf8_lossy(&b))
+            })
+        })
+}
+
+/// [`fit_time_files`] with the measurement record of the data (for the reports: it holds their
+/// sources, kind and ν, no isotherms of E′, E″).
+pub fn fit_time_files_with_measurement(
+    compound: &str,
+    files: &[PathBuf],
+    poisson: f64,
+    options: &FitOptions,
+) -> Result<(CompoundFit, crate::Measurement), PipelineError> {
+    let data = read_time_files(files, poisson)?;
+    let fit = fit_time_data(compound, &data, options)?;
+    let mut m = stub_measurement(&data);
+    m.warnings = fit.measurement.warnings.clone();
+    Ok((fit, m))
+}
+
 /// The largest relative standard error of tan δ at a point's rolling frequency with which a
 /// time-domain fit's friction counts as determined (eq. 18.6).
 pub const TAN_DELTA_REL_SE_MAX: f64 = 0.1;
