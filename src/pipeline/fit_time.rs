@@ -597,6 +597,27 @@ mod tests {
     }
 
     #[test]
+    fn roll_on_a_time_domain_fit_warns_where_its_friction_is_not_determined() {
+        let source =
+            crate::pipeline::roll_fit::CreepSource::Fit(Box::new(time_fit(TimeMode::Relaxation)));
+        let settings = crate::pipeline::scenes::pipeline_contact_settings();
+        let warned = |t: f64| {
+            crate::pipeline::roll_fit::roll_source_at(
+                &source,
+                Some(t),
+                &scene_spec().scene(),
+                &settings,
+            )
+            .unwrap()
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("friction not determined"))
+        };
+        // as `rank` marks them (the accuracy test): −40 °C beyond the window, 20 °C determined
+        assert!(warned(-40.0) && !warned(20.0));
+    }
+
+    #[test]
     fn a_frequency_domain_fits_points_are_left_alone() {
         let fit = freq_fit();
         assert_eq!(time_domain_undetermined(&fit, 4.0, 1e-3, 0.0), None);
