@@ -65,45 +65,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     relax
         .validate()
         .with_context(|| format!("{}", args.spectrum.display()))?;
-    // A fluid (E∞ = 0) converts exactly with its flow term t/η₀ (docs/MATH.md §17).
-    let fluid = relax.modulus_inf_pa == 0.0 && args.method == Method::Exact;
-    let mut viscosity_pa_s = None;
-    let (creep, variant, info) = match args.method {
-        Method::Exact if fluid => {
-            let (f, info) = fluid_to_creep(&relax)?;
-            viscosity_pa_s = Some(f.viscosity_pa_s);
-            (f.solid, None, serde_json::to_value(info)?)
-        }
-        Method::Exact => {
-            let (c, info) = relaxation_to_creep(&relax)?;
-            (c, None, serde_json::to_value(info)?)
-        }
-        Method::ParkSchapery => {
-            let variant = match args.park_schapery_variant {
-                Variant::Collocation1 => ParkSchaperyVariant::CollocationOne,
-                Variant::CollocationHalf => ParkSchaperyVariant::CollocationHalf,
-                Variant::LeastSquares => ParkSchaperyVariant::LeastSquares,
-            };
-            let settings = ParkSchaperySettings {
-                variant,
-                ..Default::default()
-            };
-            let (c, info) = park_schapery(&relax, &settings)?;
-            (c, Some(variant.name()), serde_json::to_value(info)?)
-        }
-    };
-    // Checks over the spectrum's own window ± 4 decades, 8 points per decade.
-    let taus = relax.terms.iter().map(|t| t.tau_s);
-    let (tmin, tmax) = taus.fold((f64::INFINITY, 0f64), |(a, b), t| (a.min(t), b.max(t)));
-    let (wmin, wmax) = if tmax > 0.0 {
-        (1e-4 / tmax, 1e4 / tmin)
-    } else {
-        (1.0, 1.0)
-    };
-    let n = ((wmax / wmin).log10() * 8.0).ceil().max(1.0) as usize;
-    let omegas: Vec<f64> = (0..=n)
-        .map(|k| wmin * (wmax / wmin).powf(k as f64 / n as f64))
-        .collect();
+    let (creep, variant, info, viscosity_pa_s) = convert(&relax, &args)?;
+    let (wmin, wmax, omegas) = check_frequencies(&relax);
     let product = match viscosity_pa_s {
         Some(viscosity_pa_s) => crate::creep::FluidCreep {
             solid: creep.clone(),
@@ -181,4 +144,62 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         );
     }
     Ok(())
+}
+
+/// The creep spectrum of `relax` by the method `args` asks for: (spectrum, Park–Schapery variant,
+/// the method's info, a fluid's viscosity η₀ in Pa·s).
+fn convert(
+    relax: &crate::RelaxationSpectrum,
+    args: &Args,
+) -> anyhow::Result<(
+    crate::CreepSpectrum,
+    Option<&'static str>,
+    serde_json::Value,
+    Option<f64>,
+)> {
+    // A fluid (E∞ = 0) converts exactly with its flow term t/η₀ (docs/MATH.md §17).
+    let fluid = relax.modulus_inf_pa == 0.0 && args.method == Method::Exact;
+    let mut viscosity_pa_s = None;
+    let (creep, variant, info) = match args.method {
+        Method::Exact if fluid => {
+            let (f, info) = fluid_to_creep(relax)?;
+            viscosity_pa_s = Some(f.viscosity_pa_s);
+            (f.solid, None, serde_json::to_value(info)?)
+        }
+        Method::Exact => {
+            let (c, info) = relaxation_to_creep(relax)?;
+            (c, None, serde_json::to_value(info)?)
+        }
+        Method::ParkSchapery => {
+            let variant = match args.park_schapery_variant {
+                Variant::Collocation1 => ParkSchaperyVariant::CollocationOne,
+                Variant::CollocationHalf => ParkSchaperyVariant::CollocationHalf,
+                Variant::LeastSquares => ParkSchaperyVariant::LeastSquares,
+            };
+            let settings = ParkSchaperySettings {
+                variant,
+                ..Default::default()
+            };
+            let (c, info) = park_schapery(relax, &settings)?;
+            (c, Some(variant.name()), serde_json::to_value(info)?)
+        }
+    };
+    Ok((creep, variant, info, viscosity_pa_s))
+}
+
+/// The frequencies of the checks: the spectrum's own window ± 4 decades, 8 points per decade, as
+/// (ω_min, ω_max, the ω's) in rad/s.
+fn check_frequencies(relax: &crate::RelaxationSpectrum) -> (f64, f64, Vec<f64>) {
+    let taus = relax.terms.iter().map(|t| t.tau_s);
+    let (tmin, tmax) = taus.fold((f64::INFINITY, 0f64), |(a, b), t| (a.min(t), b.max(t)));
+    let (wmin, wmax) = if tmax > 0.0 {
+        (1e-4 / tmax, 1e4 / tmin)
+    } else {
+        (1.0, 1.0)
+    };
+    let n = ((wmax / wmin).log10() * 8.0).ceil().max(1.0) as usize;
+    let omegas: Vec<f64> = (0..=n)
+        .map(|k| wmin * (wmax / wmin).powf(k as f64 / n as f64))
+        .collect();
+    (wmin, wmax, omegas)
 }

@@ -90,9 +90,28 @@ pub(super) fn assess(
             shift_determined: h.determined[i],
         });
     }
-    let max_of = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, f64::max);
-    let ov: Vec<f64> = overlap.iter().flatten().copied().collect();
+    let quality = summary(&isotherms, ch, h.iterations, bounds);
     let quality = MasterQuality {
+        flags: flags_all,
+        ..quality
+    };
+    (isotherms, quality)
+}
+
+/// The master curve's summary of its isotherms' figures (flags left to the caller).
+fn summary(
+    isotherms: &[IsothermShift],
+    ch: &Channels,
+    iterations: usize,
+    bounds: QualityBounds,
+) -> MasterQuality {
+    let max_of = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, f64::max);
+    let ov: Vec<f64> = isotherms
+        .iter()
+        .filter_map(|s| s.overlap_rms_log10)
+        .collect();
+    let vgp = || isotherms.iter().filter_map(|s| s.vgp_rms_deg);
+    MasterQuality {
         bounds,
         overlap_rms_max_log10: max_of(&mut ov.iter().copied()),
         overlap_rms_log10: if ov.is_empty() {
@@ -100,27 +119,29 @@ pub(super) fn assess(
         } else {
             (ov.iter().map(|v| v * v).sum::<f64>() / ov.len() as f64).sqrt()
         },
-        loss_overlap_rms_max_log10: max_of(&mut loss_overlap.iter().flatten().copied()),
-        vgp_rms_max_deg: max_of(&mut vgp.iter().flatten().copied()),
+        loss_overlap_rms_max_log10: max_of(
+            &mut isotherms.iter().filter_map(|s| s.loss_overlap_rms_log10),
+        ),
+        vgp_rms_max_deg: max_of(&mut vgp()),
         kk_max_abs_log10_ratio: max_of(
             &mut isotherms
                 .iter()
                 .filter_map(|s| s.kk_median_log10_ratio.map(f64::abs)),
         ),
-        thermorheologically_simple: vgp.iter().flatten().all(|&v| v <= bounds.vgp_rms_max_deg),
-        global_iterations: h.iterations,
+        thermorheologically_simple: vgp().all(|v| v <= bounds.vgp_rms_max_deg),
+        global_iterations: iterations,
         channel_scatter_log10: ch.channel_scatter_log10.clone(),
         point_temperature_correction_max_log10: 0.0,
         point_temperature_passes: 0,
-        flags: flags_all,
+        flags: Vec::new(),
         left_out_c: Vec::new(),
         shift_covariance_log10: Vec::new(),
-        shift_not_determined_c: (0..n)
-            .filter(|&i| !h.determined[i])
-            .map(|i| iso[i].temp)
+        shift_not_determined_c: isotherms
+            .iter()
+            .filter(|s| !s.shift_determined)
+            .map(|s| s.temp_c)
             .collect(),
-    };
-    (isotherms, quality)
+    }
 }
 
 /// The flags of one isotherm against the bounds: its overlap RMS (or no overlap at all), E″ alone at

@@ -65,15 +65,8 @@ impl Channels {
             .collect();
         let use_tan = settings.criterion == ShiftCriterion::TanDelta
             || settings.vertical == VerticalShift::Fitted;
-        let tan: Vec<Prepared> = if use_tan {
-            iso.iter()
-                .map(|c| {
-                    Prepared::new(
-                        c.x.clone(),
-                        vec![c.log_l.iter().zip(&c.log_s).map(|(l, s)| l - s).collect()],
-                    )
-                })
-                .collect()
+        let tan = if use_tan {
+            tan_channels(iso)
         } else {
             Vec::new()
         };
@@ -85,69 +78,13 @@ impl Channels {
         } else {
             Vec::new()
         };
-        let mut channel_scatter_log10 = Vec::new();
-        let weighted: Vec<Prepared> =
+        let (weighted, channel_scatter_log10) =
             if !use_tan && storage.is_empty() && settings.shift == ShiftSource::Auto {
-                let floor = settings.channel_scatter_floor_log10;
-                channel_scatter_log10 = (0..2)
-                    .map(|c| {
-                        channel_scatter(
-                            &joint,
-                            c,
-                            settings.grid_step_decades,
-                            settings.min_overlap_points,
-                        )
-                        .unwrap_or(floor)
-                        .max(floor)
-                    })
-                    .collect();
-                let mut rubbery = rubbery_side(&joint);
-                if settings.criterion == ShiftCriterion::SlopeWeighted {
-                    superposing_glass(&joint, &mut rubbery, settings);
-                }
-                joint
-                    .iter()
-                    .zip(&rubbery)
-                    .map(|(p, &rubbery)| {
-                        let q = Prepared::new(
-                            p.x.clone(),
-                            (0..2)
-                                .map(|c| {
-                                    p.channels[c]
-                                        .0
-                                        .iter()
-                                        .map(|v| v / channel_scatter_log10[c])
-                                        .collect()
-                                })
-                                .collect(),
-                        );
-                        if settings.criterion == ShiftCriterion::SlopeWeighted {
-                            q.with_weights(if rubbery {
-                                information_shares(p, &channel_scatter_log10)
-                            } else {
-                                vec![1.0, 0.0]
-                            })
-                        } else {
-                            q
-                        }
-                    })
-                    .collect()
+                weighted_channels(&joint, settings)
             } else {
-                Vec::new()
+                (Vec::new(), Vec::new())
             };
-        let carried = weighted
-            .iter()
-            .map(|p| {
-                let w = &p.weights;
-                let (storage, loss, _) = kind.symbols();
-                (w.len() == 2).then(|| if w[0] >= w[1] { storage } else { loss }.to_string())
-            })
-            .collect::<Vec<_>>();
-        let carried = if carried.iter().any(Option::is_some) {
-            carried
-        } else {
-            vec![None; iso.len()]
-        };
+        let carried = carried_channels(&weighted, kind, iso.len());
         Channels {
             joint,
             tan,
@@ -184,6 +121,84 @@ fn information_shares(p: &Prepared, scatter: &[f64]) -> Vec<f64> {
         info.iter().map(|i| i / total).collect()
     } else {
         vec![1.0 / scatter.len() as f64; scatter.len()]
+    }
+}
+
+/// The tan δ channel of each isotherm: log10 E″ − log10 E′ (independent of any vertical factor).
+fn tan_channels(iso: &[Clean]) -> Vec<Prepared> {
+    iso.iter()
+        .map(|c| {
+            Prepared::new(
+                c.x.clone(),
+                vec![c.log_l.iter().zip(&c.log_s).map(|(l, s)| l - s).collect()],
+            )
+        })
+        .collect()
+}
+
+/// The joint channels scaled by each channel's scatter (its floor at least), and, with the
+/// slope-weighted criterion, weighted per isotherm by the information each channel carries there
+/// (E′ alone below T_g unless E″ superposes in the glass, eq. 6.1); with the scatters used.
+fn weighted_channels(joint: &[Prepared], settings: &MasterSettings) -> (Vec<Prepared>, Vec<f64>) {
+    let floor = settings.channel_scatter_floor_log10;
+    let scatter: Vec<f64> = (0..2)
+        .map(|c| {
+            channel_scatter(
+                joint,
+                c,
+                settings.grid_step_decades,
+                settings.min_overlap_points,
+            )
+            .unwrap_or(floor)
+            .max(floor)
+        })
+        .collect();
+    let slope_weighted = settings.criterion == ShiftCriterion::SlopeWeighted;
+    let mut rubbery = rubbery_side(joint);
+    if slope_weighted {
+        superposing_glass(joint, &mut rubbery, settings);
+    }
+    let weighted = joint
+        .iter()
+        .zip(&rubbery)
+        .map(|(p, &rubbery)| {
+            let q = Prepared::new(
+                p.x.clone(),
+                (0..2)
+                    .map(|c| p.channels[c].0.iter().map(|v| v / scatter[c]).collect())
+                    .collect(),
+            );
+            if !slope_weighted {
+                q
+            } else if rubbery {
+                q.with_weights(information_shares(p, &scatter))
+            } else {
+                q.with_weights(vec![1.0, 0.0])
+            }
+        })
+        .collect();
+    (weighted, scatter)
+}
+
+/// Per isotherm, the symbol of the channel that carried its shift (the larger weight), or `None`
+/// for all without per-isotherm weights.
+fn carried_channels(
+    weighted: &[Prepared],
+    kind: crate::ModulusKind,
+    n: usize,
+) -> Vec<Option<String>> {
+    let (storage, loss, _) = kind.symbols();
+    let carried: Vec<Option<String>> = weighted
+        .iter()
+        .map(|p| {
+            let w = &p.weights;
+            (w.len() == 2).then(|| if w[0] >= w[1] { storage } else { loss }.to_string())
+        })
+        .collect();
+    if carried.iter().any(Option::is_some) {
+        carried
+    } else {
+        vec![None; n]
     }
 }
 

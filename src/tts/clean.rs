@@ -91,6 +91,35 @@ pub(super) fn thin(
     })
 }
 
+/// The usable points (finite, positive f, E′, E″) as (log10 f, log10 E′, log10 E″) columns sorted by
+/// frequency, repeated frequencies merged into the mean of their logs.
+fn merged_logs(points: &[crate::dma::DataPoint]) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let mut pts: Vec<(f64, f64, f64)> = points
+        .iter()
+        .filter(|p| {
+            [p.freq_hz, p.storage_pa, p.loss_pa]
+                .iter()
+                .all(|v| v.is_finite() && *v > 0.0)
+        })
+        .map(|p| (p.freq_hz.log10(), p.storage_pa.log10(), p.loss_pa.log10()))
+        .collect();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (mut x, mut ls, mut ll) = (Vec::new(), Vec::new(), Vec::new());
+    let mut k = 0;
+    while k < pts.len() {
+        let mut j = k;
+        while j < pts.len() && pts[j].0 - pts[k].0 <= 1e-9 {
+            j += 1;
+        }
+        let c = (j - k) as f64;
+        x.push(pts[k..j].iter().map(|p| p.0).sum::<f64>() / c);
+        ls.push(pts[k..j].iter().map(|p| p.1).sum::<f64>() / c);
+        ll.push(pts[k..j].iter().map(|p| p.2).sum::<f64>() / c);
+        k = j;
+    }
+    (x, ls, ll)
+}
+
 /// Clean every isotherm of `m` (see the module docs).
 pub(super) fn clean(
     m: &Measurement,
@@ -113,33 +142,7 @@ pub(super) fn clean(
                 value: temp,
             });
         }
-        let mut pts: Vec<(f64, f64, f64)> = iso
-            .points
-            .iter()
-            .filter(|p| {
-                [p.freq_hz, p.storage_pa, p.loss_pa]
-                    .iter()
-                    .all(|v| v.is_finite() && *v > 0.0)
-            })
-            .map(|p| (p.freq_hz.log10(), p.storage_pa.log10(), p.loss_pa.log10()))
-            .collect();
-        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        // Merge repeated frequencies (mean of the logs).
-        let mut x: Vec<f64> = Vec::new();
-        let mut ls: Vec<f64> = Vec::new();
-        let mut ll: Vec<f64> = Vec::new();
-        let mut k = 0;
-        while k < pts.len() {
-            let mut j = k;
-            while j < pts.len() && pts[j].0 - pts[k].0 <= 1e-9 {
-                j += 1;
-            }
-            let c = (j - k) as f64;
-            x.push(pts[k..j].iter().map(|p| p.0).sum::<f64>() / c);
-            ls.push(pts[k..j].iter().map(|p| p.1).sum::<f64>() / c);
-            ll.push(pts[k..j].iter().map(|p| p.2).sum::<f64>() / c);
-            k = j;
-        }
+        let (mut x, mut ls, mut ll) = merged_logs(&iso.points);
         if let Some(t) = thin(&mut x, &mut ls, &mut ll, THIN_ABOVE_POINTS) {
             let (storage, loss, _) = m.kind.symbols();
             warnings.push(format!(
