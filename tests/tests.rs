@@ -60,4 +60,5 @@ mod spectra_cards;
 mod spectra_cli;
 mod spectra_exact;
 mod support;
+mod time_domain_run;
 mod unreadable_folder;

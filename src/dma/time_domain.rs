@@ -179,24 +179,22 @@ fn mixed(
 /// Whether decoded text looks like time-domain data: a TRIOS step or a generic header naming a time
 /// column and a relaxation modulus or creep compliance column (the pipeline's dispatch).
 pub fn looks_like_time_data(text: &str) -> bool {
-    let head: String = text
-        .lines()
-        .take(60)
-        .collect::<Vec<_>>()
-        .join("\n")
-        .to_lowercase();
+    let head: Vec<&str> = text.lines().take(60).collect();
+    let lower = head.join("\n").to_lowercase();
     let trios_step =
-        head.contains("[step]") && ["relaxation", "creep"].iter().any(|w| head.contains(w));
-    let generic = head.lines().any(|l| {
+        lower.contains("[step]") && ["relaxation", "creep"].iter().any(|w| lower.contains(w));
+    // the names as written: `T` is a temperature, `t` a time (is_time_name, is_temp_name)
+    let generic = head.iter().any(|l| {
         let fields: Vec<String> = l
             .split([',', ';', '\t'])
-            .map(|f| units::split_name_unit(f.trim().trim_matches('"')).0)
+            .map(|f| units::split_name_unit(f.trim().trim_matches(['"', '\u{feff}'])).0)
             .collect();
+        let lower: Vec<String> = fields.iter().map(|f| f.trim().to_lowercase()).collect();
         fields.iter().any(|f| is_time_name(f))
-            && fields
+            && lower.iter().any(|f| value_role(f).is_some())
+            && !lower
                 .iter()
-                .any(|f| value_role(&f.to_lowercase()).is_some())
-            && !fields.iter().any(|f| f.to_lowercase().contains("freq"))
+                .any(|f| f == "f" || f.contains("freq") || f.contains("omega"))
     });
     trios_step || generic
 }
@@ -736,6 +734,11 @@ mod tests {
         assert!(d.warnings.iter().any(|w| w.contains("Frequency sweep")));
         assert!(looks_like_time_data(text));
         assert!(!looks_like_time_data("f [Hz],E' [MPa],E'' [MPa]\n1,2,3\n"));
+        // pyvisco's raw frequency data: `T` is its temperature, not a time (`run` once read it so)
+        let pyvisco = "\u{feff}f,E_stor,E_loss,T,Set\nHz, MPa, MPa, C, -\n0.1,1,2,-50,0\n";
+        assert!(!looks_like_time_data(pyvisco));
+        assert!(looks_like_time_data("T [°C],time [s],E(t) [MPa]\n20,1,3\n"));
+        assert!(looks_like_time_data("T [°C],t [s],D(t) [1/MPa]\n20,1,3\n"));
     }
 
     #[test]

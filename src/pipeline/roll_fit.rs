@@ -135,6 +135,18 @@ pub fn roll_source_at(
         }
     };
     let roll = contact::roll(scene, &spectrum, settings)?;
+    // a time-domain fit's friction where its data do not determine it (docs/MATH.md eqs. 18.3, 18.6)
+    if let (CreepSource::Fit(fit), Some(s)) = (source, &shift) {
+        warnings.extend(
+            super::fit_time::time_domain_undetermined(
+                fit,
+                scene.speed_m_s,
+                roll.contact_length_m,
+                s.log10_a_t,
+            )
+            .map(|why| format!("friction not determined: {why}")),
+        );
+    }
     warnings.extend(roll.dimensionless.warnings.iter().cloned());
     Ok(SourceRoll {
         roll,

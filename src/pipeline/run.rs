@@ -358,6 +358,38 @@ fn fit_shifted(
     })
 }
 
+/// Fit a compound of relaxation or creep isotherms (docs/MATH.md §18, `super::fit_time`): always
+/// refitted from its data (a second or less) and its fit file written or replaced; it has no bands
+/// (they resample frequency sweeps).
+fn fit_time_domain(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError> {
+    let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
+    let (fit, measurement) = super::fit_time::fit_time_files_with_measurement(
+        &c.name,
+        &c.files,
+        poisson,
+        &fit_options(c, opts),
+    )?;
+    let path = fit_path(&opts.out_dir, &c.name);
+    let action = if path.exists() {
+        FitAction::Replaced
+    } else {
+        FitAction::Fitted
+    };
+    fit.write(&path, true)?;
+    let no_bands = opts.bands.as_ref().map(|_| {
+        "uncertainty bands not computed: time-domain data (the bands resample frequency sweeps)"
+            .to_string()
+    });
+    Ok(Fitted {
+        measurement,
+        fit,
+        action,
+        no_bands,
+        specimen_fits: Vec::new(),
+        specimens: Vec::new(),
+    })
+}
+
 /// The friction ratios of each replicate in a scene, and each point's band from them. The ratios are
 /// solved on the scene's body (a cover: eq. 15.6); scenes with the same roll, temperatures and cover
 /// share them (`solved`), and scenes with the same roll and temperatures share their half-space
@@ -441,6 +473,12 @@ fn one_compound(
         specimen_fits,
         specimens,
     } = match &c.settings.shift_factors {
+        None if c.unreadable.is_none()
+            && c.specimens.is_empty()
+            && super::fit_time::files_are_time_data(&c.files) =>
+        {
+            fit_time_domain(c, opts)?
+        }
         None => fit_measured(c, opts)?,
         Some(sf) => fit_shifted(c, sf, opts)?,
     };
@@ -478,6 +516,7 @@ fn one_compound(
             })
             .collect();
         super::trust::finish_points(&mut points, &specimen_points, fit.measured_range_c());
+        super::fit_time::mark_time_domain_points(&fit, spec.scene().speed_m_s, &mut points);
         friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         let m = super::scenes::friction_maps(&fit, spec, &super::scenes::pipeline_map_settings())?;
@@ -917,6 +956,7 @@ pub fn rank_fits(
                 for q in p.iter_mut() {
                     q.determine(f.measured_range_c());
                 }
+                super::fit_time::mark_time_domain_points(f, spec.scene().speed_m_s, &mut p);
                 let ratios = match (bands, f.bands.as_ref()) {
                     (Some(bs), Some(ensemble)) => scene_bands(
                         f,

@@ -317,8 +317,7 @@ impl CompoundFit {
 
     /// Why the fit is not trusted: each quality figure out of its bound (empty when trusted).
     pub fn untrusted_reasons(&self) -> Vec<String> {
-        let mut reasons: Vec<String> = self
-            .quality
+        self.quality
             .iter()
             .filter(|q| q.flagged)
             .map(|q| match q.bound {
@@ -328,19 +327,7 @@ impl CompoundFit {
                 ),
                 None => format!("{} = {:.4} {} is flagged", q.name, q.value, q.unit),
             })
-            .collect();
-        // A fit to relaxation or creep data: its E(t), shifts and E′ match the frequency path's
-        // accuracy, but E″ (and so the friction) comes from deviations of E(t) that the noise
-        // hides (docs/USER_GUIDE.md, "Time-domain data": friction up to 179 % off on synthetic data).
-        if self.prony_info.time_domain.is_some() {
-            reasons.push(
-                "fitted to time-domain data (relaxation or creep): its E″ and the friction from it \
-                 are not yet accurate (up to 179 % off on synthetic data; docs/USER_GUIDE.md, \
-                 \"Time-domain data\")"
-                    .to_string(),
-            );
-        }
-        reasons
+            .collect()
     }
 
     /// The SHA-256 (hex) of the fit's content: its compact JSON without `content_sha256`. Numbers
@@ -400,14 +387,25 @@ impl CompoundFit {
     /// Why results of this fit are to be used with care (issue 31): the master-curve checks that
     /// flagged something (isotherm overlap, Kramers–Kronig, van Gurp–Palmen), as one reason.
     pub fn care_reasons(&self) -> Vec<String> {
-        match &self.tts {
+        let mut care = match &self.tts {
             Some(t) if !t.flags.is_empty() => vec![super::outcome::cap_line(&format!(
                 "master curve: {} check(s) flagged: {}",
                 t.flags.len(),
                 t.flags.join("; ")
             ))],
             _ => vec![],
+        };
+        // A fit to relaxation or creep data: E″ is read from the slope of E(t) or J(t), so its
+        // friction counts only at the points the data determine (crate::pipeline::fit_time,
+        // docs/MATH.md eqs. 18.3 and 18.6); the others are marked, not ranked.
+        if self.prony_info.time_domain.is_some() {
+            care.push(
+                "fitted to time-domain data (relaxation or creep): friction only where the data \
+                 resolve E″ (docs/MATH.md §18); the other temperatures are marked not determined"
+                    .to_string(),
+            );
         }
+        care
     }
 
     /// Read a fit file, checking its format version, its content hash ([`Self::content_hash`]) and

@@ -1,4 +1,4 @@
-//! Time–temperature superposition of relaxation or creep isotherms (docs/MATH.md §18, eqs. 18.4–18.5):
+//! Time–temperature superposition of relaxation or creep isotherms (docs/MATH.md §18, eqs. 18.4–18.5b):
 //! [`TimeData`] → [`TimeMaster`] (reduced points t/a_T, the shift of each isotherm, the WLF and
 //! Arrhenius fits of [`super::fit_laws`], the shift law).
 //!
@@ -9,7 +9,10 @@
 //! isotherm and are referred to T_ref (given, or the isotherm nearest the middle of the range;
 //! between isotherms the chain is interpolated linearly). A pair with fewer than
 //! [`MIN_OVERLAP_POINTS`] overlapping points has no shift: an error naming both temperatures. No
-//! vertical shifts (the data are taken as measured).
+//! vertical shifts (the data are taken as measured). A pair whose overlap does not determine its
+//! shift (standard error eq. 18.5 above [`MAX_PAIR_STD_DECADES`]: nearly flat curves, as on the
+//! glassy plateau) cuts the chain: the isotherms beyond it, seen from T_ref, are placed by the WLF
+//! fit of the determined shifts (eq. 18.5b), and the warnings say so.
 //!
 //! The law handed on is the frequency path's default (`crate::pipeline::FitOptions`): the table of
 //! the shifts found; WLF and Arrhenius are fitted to it for the datasheet and the cards.
@@ -44,8 +47,12 @@ pub struct TimeShift {
     /// (eq. 18.5; 0 for the coldest).
     pub std_err_log10: f64,
     /// Whether the overlap determines the shift: `std_err_log10` ≤ [`MAX_PAIR_STD_DECADES`]. A shift
-    /// that is not (flat E(t) on a plateau: no slope to shift by) is kept and said in the warnings.
+    /// that is not (flat E(t) on a plateau: no slope to shift by) is said in the warnings.
     pub determined: bool,
+    /// The isotherm lies beyond an undetermined pair, seen from T_ref: its `log10_a_t` is the WLF
+    /// fit of the determined shifts there, not its overlap's (eq. 18.5b).
+    #[serde(default)]
+    pub placed_by_law: bool,
 }
 
 /// One reduced point.
@@ -126,6 +133,7 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
         overlap_points: 0,
         std_err_log10: 0.0,
         determined: true,
+        placed_by_law: false,
     }];
     for i in 1..curves.len() {
         let (d, rms, n, std) =
@@ -142,6 +150,7 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
             overlap_points: n,
             std_err_log10: std,
             determined: std <= MAX_PAIR_STD_DECADES,
+            placed_by_law: false,
         });
     }
     let t_ref = t_ref_c.unwrap_or_else(|| middle_temperature(&temps));
@@ -162,10 +171,11 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
     }
     for (i, s) in shifts.iter().enumerate().filter(|(_, s)| !s.determined) {
         warnings.push(format!(
-            "the shift between {} °C and {} °C is not determined by their overlap (standard error {:.2} decade > {MAX_PAIR_STD_DECADES}: the curves are nearly flat there); the shift found is kept, and friction at temperatures that use it is uncertain by as much",
+            "the shift between {} °C and {} °C is not determined by their overlap (standard error {:.2} decade > {MAX_PAIR_STD_DECADES}: the curves are nearly flat there)",
             shifts[i - 1].temp_c, s.temp_c, s.std_err_log10
         ));
     }
+    place_beyond_undetermined(&mut shifts, t_ref, &mut warnings);
     let law_points: Vec<(f64, f64)> = shifts.iter().map(|s| (s.temp_c, s.log10_a_t)).collect();
     let wlf = fit_law(fit_wlf(&law_points, t_ref), "WLF", &mut warnings);
     let arrhenius = fit_law(
@@ -215,6 +225,64 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
 fn fit_law<T>(r: Result<T, TtsError>, name: &str, warnings: &mut Vec<String>) -> Option<T> {
     r.map_err(|e| warnings.push(format!("{name} fit of the shifts failed: {e}")))
         .ok()
+}
+
+/// Isotherms beyond an undetermined pair, seen from the isotherm nearest `t_ref`, are not tied to
+/// T_ref by any overlap: they are placed by the WLF fit of the shifts that are (eq. 18.5b), and
+/// said so. Without 3 such shifts or a WLF fit the chain's shifts are kept, and that is said.
+fn place_beyond_undetermined(shifts: &mut [TimeShift], t_ref: f64, warnings: &mut Vec<String>) {
+    let temps: Vec<f64> = shifts.iter().map(|s| s.temp_c).collect();
+    let r = temps
+        .iter()
+        .enumerate()
+        .min_by(|a, b| (a.1 - t_ref).abs().total_cmp(&(b.1 - t_ref).abs()))
+        .map_or(0, |(i, _)| i);
+    // the run of isotherms tied to the one nearest T_ref by determined pairs: lo..=hi
+    let mut lo = r;
+    while lo > 0 && shifts[lo].determined {
+        lo -= 1;
+    }
+    let mut hi = r;
+    while hi + 1 < shifts.len() && shifts[hi + 1].determined {
+        hi += 1;
+    }
+    if lo == 0 && hi + 1 == shifts.len() {
+        return;
+    }
+    let tied: Vec<(f64, f64)> = shifts[lo..=hi]
+        .iter()
+        .map(|s| (s.temp_c, s.log10_a_t))
+        .collect();
+    let beyond = |v: &[TimeShift]| {
+        v.iter()
+            .enumerate()
+            .filter(|(i, _)| *i < lo || *i > hi)
+            .map(|(_, s)| format!("{} °C", s.temp_c))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let names = beyond(shifts);
+    let wlf = (tied.len() >= 3)
+        .then(|| fit_wlf(&tied, t_ref).ok())
+        .flatten();
+    let Some(wlf) = wlf else {
+        warnings.push(format!(
+            "the isotherms at {names} are tied to T_ref only through an undetermined pair, and the determined shifts ({} of them) allow no WLF fit to place them: the shifts found are kept, and what rests on them is uncertain",
+            tied.len()
+        ));
+        return;
+    };
+    let law = wlf.law();
+    for (i, s) in shifts.iter_mut().enumerate() {
+        if i < lo || i > hi {
+            s.log10_a_t = law.log10_a_t(s.temp_c);
+            s.placed_by_law = true;
+        }
+    }
+    warnings.push(format!(
+        "the isotherms at {names} are tied to T_ref only through an undetermined pair: they are placed by the WLF fit of the determined shifts ({} … {} °C; C₁ = {:.2}, C₂ = {:.1} K), extrapolated",
+        shifts[lo].temp_c, shifts[hi].temp_c, wlf.c1, wlf.c2_k
+    ));
 }
 
 /// The measured temperature nearest the middle of the range.
@@ -293,16 +361,32 @@ fn pair_shift(cold: &Curve, warm: &Curve) -> Option<(f64, f64, usize, f64)> {
         1e-6,
     );
     let d = if cost(d) <= best.1 { d } else { best.0 };
-    // eq. 18.5: cost ≈ s² + (d − d̂)² Σ slope²/n near the minimum, so var d̂ = s²/Σ slope² =
-    // 2 s²/(n · cost″).
-    let h = 0.05;
-    let curv = (cost(d + h) - 2.0 * cost(d) + cost(d - h)) / (h * h);
-    let std = if curv > 0.0 {
-        (2.0 * cost(d) / (n as f64 * curv)).sqrt()
+    // eq. 18.5: cost ≈ s² + (d − d̂)² Σ slope²/n near the minimum, so var d̂ = s²/Σ slope², with
+    // each point's slope the other curve's: the least-squares slope of its overlapping points (the
+    // slope of its noisy interpolant would count noise as slope, and a flat pair as determined).
+    let sum_sq = warm_in.len() as f64 * ls_slope(&cold_in).powi(2)
+        + cold_in.len() as f64 * ls_slope(&warm_in).powi(2);
+    let std = if sum_sq > 0.0 {
+        (cost(d) / sum_sq).sqrt()
     } else {
         f64::INFINITY
     };
     Some((d, cost(d).sqrt(), n, std))
+}
+
+/// The least-squares slope d log y / d log t of `c` (0 with fewer than 2 distinct times).
+fn ls_slope(c: &Curve) -> f64 {
+    let n = c.len() as f64;
+    let (mx, my) = c
+        .iter()
+        .fold((0.0, 0.0), |a, p| (a.0 + p.0 / n, a.1 + p.1 / n));
+    let sxy: f64 = c.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = c.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    if sxx > 0.0 {
+        sxy / sxx
+    } else {
+        0.0
+    }
 }
 
 #[cfg(test)]
@@ -350,6 +434,28 @@ mod tests {
                 (w.c1 - 8.86).abs() < 0.2 && (w.c2_k - 101.6).abs() < 3.0,
                 "{w:?}"
             );
+        }
+    }
+
+    #[test]
+    fn a_pair_on_the_glassy_plateau_is_not_determined_and_the_isotherm_beyond_it_is_placed_by_wlf()
+    {
+        for mode in [TimeMode::Relaxation, TimeMode::Creep] {
+            let m = shifted(mode, 0.01);
+            // −40/−35 °C lie on the glassy plateau: a log–log slope of ~1e-3 under 0.004 decade of
+            // noise per point, so σ_d ≈ 0.1 decade (eq. 18.5) > 0.04; every other pair has a
+            // slope of 0.01 or more and σ_d ≤ 0.03.
+            assert!(!m.shifts[1].determined, "{mode:?} {:?}", m.shifts[1]);
+            assert!(m.shifts[2..].iter().all(|s| s.determined), "{mode:?}");
+            assert!(m.shifts[0].placed_by_law && !m.shifts[1].placed_by_law);
+            assert!(m
+                .warnings
+                .iter()
+                .any(|w| w.contains("placed by the WLF fit")));
+            // WLF through the determined shifts, extrapolated 5 K below them (eq. 18.5b): within
+            // 0.1 decade, against the 0.39–0.58 decade the plateau's overlap gave.
+            let err = (m.shifts[0].log10_a_t - law().log10_a_t(-40.0)).abs();
+            assert!(err < 0.1, "{mode:?}: {err}");
         }
     }
 
