@@ -398,20 +398,7 @@ fn convert(relaxation_json: &str, method: &str, variant: &str) -> PyResult<Strin
             )))
         }
     };
-    let (tmin, tmax) = relax
-        .terms
-        .iter()
-        .map(|t| t.tau_s)
-        .fold((f64::INFINITY, 0f64), |(a, b), t| (a.min(t), b.max(t)));
-    let (wmin, wmax) = if tmax > 0.0 {
-        (1e-4 / tmax, 1e4 / tmin)
-    } else {
-        (1.0, 1.0)
-    };
-    let n = ((wmax / wmin).log10() * 8.0).ceil().max(1.0) as usize;
-    let omegas: Vec<f64> = (0..=n)
-        .map(|k| wmin * (wmax / wmin).powf(k as f64 / n as f64))
-        .collect();
+    let (wmin, wmax, omegas) = viscoroll::creep::exact::check_frequencies(&relax);
     let product = viscoroll::creep::exact::max_product_error(&relax, &creep, &omegas);
     let obj = serde_json::json!({
         "method": method,

@@ -66,7 +66,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         .validate()
         .with_context(|| format!("{}", args.spectrum.display()))?;
     let (creep, variant, info, viscosity_pa_s) = convert(&relax, &args)?;
-    let (wmin, wmax, omegas) = check_frequencies(&relax);
+    let (wmin, wmax, omegas) = crate::creep::exact::check_frequencies(&relax);
     let product = match viscosity_pa_s {
         Some(viscosity_pa_s) => crate::creep::FluidCreep {
             solid: creep.clone(),
@@ -185,21 +185,4 @@ fn convert(
         }
     };
     Ok((creep, variant, info, viscosity_pa_s))
-}
-
-/// The frequencies of the checks: the spectrum's own window ± 4 decades, 8 points per decade, as
-/// (ω_min, ω_max, the ω's) in rad/s.
-fn check_frequencies(relax: &crate::RelaxationSpectrum) -> (f64, f64, Vec<f64>) {
-    let taus = relax.terms.iter().map(|t| t.tau_s);
-    let (tmin, tmax) = taus.fold((f64::INFINITY, 0f64), |(a, b), t| (a.min(t), b.max(t)));
-    let (wmin, wmax) = if tmax > 0.0 {
-        (1e-4 / tmax, 1e4 / tmin)
-    } else {
-        (1.0, 1.0)
-    };
-    let n = ((wmax / wmin).log10() * 8.0).ceil().max(1.0) as usize;
-    let omegas: Vec<f64> = (0..=n)
-        .map(|k| wmin * (wmax / wmin).powf(k as f64 / n as f64))
-        .collect();
-    (wmin, wmax, omegas)
 }

@@ -291,6 +291,24 @@ pub fn max_product_error(
         .fold(0.0, f64::max)
 }
 
+/// The frequencies a conversion of `relax` is checked over ([`max_product_error`]): its own window
+/// of relaxation times ± 4 decades, 8 points per decade, as (ω_min, ω_max, the ω's) in rad/s
+/// (`convert` and the Python package report these).
+pub fn check_frequencies(relax: &RelaxationSpectrum) -> (f64, f64, Vec<f64>) {
+    let taus = relax.terms.iter().map(|t| t.tau_s);
+    let (tmin, tmax) = taus.fold((f64::INFINITY, 0f64), |(a, b), t| (a.min(t), b.max(t)));
+    let (wmin, wmax) = if tmax > 0.0 {
+        (1e-4 / tmax, 1e4 / tmin)
+    } else {
+        (1.0, 1.0)
+    };
+    let n = ((wmax / wmin).log10() * 8.0).ceil().max(1.0) as usize;
+    let omegas: Vec<f64> = (0..=n)
+        .map(|k| wmin * (wmax / wmin).powf(k as f64 / n as f64))
+        .collect();
+    (wmin, wmax, omegas)
+}
+
 /// (time, strength) pairs → (rate as a double-double hi + lo, strength): drop zero strengths, sort by
 /// rate, merge nearly equal rates (the first time of a merged group is kept, strengths summed).
 ///
