@@ -236,6 +236,29 @@ struct Fitted {
     specimens: Vec<Measurement>,
 }
 
+impl Fitted {
+    /// One specimen's fit that gets no bands, and why (said only when bands were asked for).
+    fn without_bands(
+        measurement: Measurement,
+        fit: CompoundFit,
+        action: FitAction,
+        opts: &RunOptions,
+        why: &str,
+    ) -> Self {
+        Fitted {
+            measurement,
+            fit,
+            action,
+            no_bands: opts
+                .bands
+                .as_ref()
+                .map(|_| format!("uncertainty bands not computed: {why}")),
+            specimen_fits: Vec::new(),
+            specimens: Vec::new(),
+        }
+    }
+}
+
 /// (scene, its temperatures, cover) → the friction ratios of each replicate.
 type SolvedRatios = (
     (crate::contact::Scene, Vec<f64>, Option<f64>),
@@ -343,19 +366,13 @@ fn fit_shifted(
         opts.force,
     )?;
     // The bands resample isotherms; a master curve read already shifted has none.
-    let no_bands = opts.bands.as_ref().map(|_| {
-        "uncertainty bands not computed: a master curve read already shifted has no \
-         isotherms to resample"
-            .to_string()
-    });
-    Ok(Fitted {
+    Ok(Fitted::without_bands(
         measurement,
         fit,
         action,
-        no_bands,
-        specimen_fits: Vec::new(),
-        specimens: Vec::new(),
-    })
+        opts,
+        "a master curve read already shifted has no isotherms to resample",
+    ))
 }
 
 /// Fit a compound of relaxation or creep isotherms (docs/MATH.md §18, `super::fit_time`): always
@@ -376,18 +393,13 @@ fn fit_time_domain(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, Pipel
         FitAction::Fitted
     };
     fit.write(&path, true)?;
-    let no_bands = opts.bands.as_ref().map(|_| {
-        "uncertainty bands not computed: time-domain data (the bands resample frequency sweeps)"
-            .to_string()
-    });
-    Ok(Fitted {
+    Ok(Fitted::without_bands(
         measurement,
         fit,
         action,
-        no_bands,
-        specimen_fits: Vec::new(),
-        specimens: Vec::new(),
-    })
+        opts,
+        "time-domain data (the bands resample frequency sweeps)",
+    ))
 }
 
 /// The friction ratios of each replicate in a scene, and each point's band from them. The ratios are

@@ -327,6 +327,21 @@ pub fn thin_points(points: &[MasterPoint], groups: usize) -> Vec<MasterPoint> {
 }
 
 fn check_points(points: &[MasterPoint]) -> Result<(), PronyError> {
+    check_each(points, |p| {
+        [
+            ("reduced_freq_hz", p.reduced_freq_hz),
+            ("storage_pa", p.storage_pa),
+            ("loss_pa", p.loss_pa),
+        ]
+    })
+}
+
+/// At least 3 points, and every named value of each finite and > 0 ([`positive`]): the check of
+/// the frequency and the time-domain fits' points.
+pub(super) fn check_each<P, const N: usize>(
+    points: &[P],
+    values: impl Fn(&P) -> [(&'static str, f64); N],
+) -> Result<(), PronyError> {
     const NEEDED: usize = 3;
     if points.len() < NEEDED {
         return Err(PronyError::TooFewPoints {
@@ -335,11 +350,7 @@ fn check_points(points: &[MasterPoint]) -> Result<(), PronyError> {
         });
     }
     for (index, p) in points.iter().enumerate() {
-        for (field, value) in [
-            ("reduced_freq_hz", p.reduced_freq_hz),
-            ("storage_pa", p.storage_pa),
-            ("loss_pa", p.loss_pa),
-        ] {
+        for (field, value) in values(p) {
             positive(index, field, value)?;
         }
     }
@@ -348,7 +359,7 @@ fn check_points(points: &[MasterPoint]) -> Result<(), PronyError> {
 
 /// `value` of point `index` must be finite and > 0 (else [`PronyError::BadPoint`] naming it); the
 /// check of every point of the frequency and the time-domain fits.
-pub(super) fn positive(index: usize, field: &'static str, value: f64) -> Result<(), PronyError> {
+fn positive(index: usize, field: &'static str, value: f64) -> Result<(), PronyError> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {

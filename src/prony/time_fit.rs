@@ -274,19 +274,7 @@ fn window(points: &[TimeDatum]) -> Result<(f64, f64), PronyError> {
 }
 
 fn check(points: &[TimeDatum]) -> Result<(), PronyError> {
-    const NEEDED: usize = 3;
-    if points.len() < NEEDED {
-        return Err(PronyError::TooFewPoints {
-            found: points.len(),
-            needed: NEEDED,
-        });
-    }
-    for (index, p) in points.iter().enumerate() {
-        for (field, value) in [("time_s", p.time_s), ("value", p.value)] {
-            super::fit::positive(index, field, value)?;
-        }
-    }
-    Ok(())
+    super::fit::check_each(points, |p| [("time_s", p.time_s), ("value", p.value)])
 }
 
 #[cfg(test)]
