@@ -49,13 +49,13 @@ pub const MAP_CELLS_PER_POINT: usize = 5;
 /// Characters of a compound or scene name (they become file and folder names and table cells).
 pub const NAME_CHARS_MAX: usize = 64;
 /// Bytes of a DMA export, measurement JSON or fit file read (a 1e6-row CSV is ~50 MB).
-pub const INPUT_BYTES_MAX: u64 = 256 << 20;
+pub(crate) const INPUT_BYTES_MAX: u64 = 256 << 20;
 /// Bytes of a settings file (scenes TOML, compounds.toml).
-pub const SETTINGS_BYTES_MAX: u64 = 4 << 20;
+pub(crate) const SETTINGS_BYTES_MAX: u64 = 4 << 20;
 /// Absolute zero in °C: no temperature below it is accepted anywhere.
-pub const ABSOLUTE_ZERO_C: f64 = -273.15;
+pub(crate) const ABSOLUTE_ZERO_C: f64 = -273.15;
 /// Highest temperature accepted, °C (no polymer is used above it).
-pub const TEMP_MAX_C: f64 = 1000.0;
+pub(crate) const TEMP_MAX_C: f64 = 1000.0;
 
 /// An input beyond the work budget or outside its domain.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -70,7 +70,7 @@ pub struct LimitError {
 }
 
 /// `value` ≤ `max`, else an error naming `key` and the limit.
-pub fn at_most(key: &str, value: usize, max: usize) -> Result<(), LimitError> {
+pub(crate) fn at_most(key: &str, value: usize, max: usize) -> Result<(), LimitError> {
     if value <= max {
         return Ok(());
     }
@@ -134,7 +134,12 @@ pub fn cover(key: &str, thickness: f64, radius: f64) -> Result<(), LimitError> {
 }
 
 /// A friction map's cells: temperatures × (speeds + loads).
-pub fn map_cells(key: &str, temps: usize, speeds: usize, loads: usize) -> Result<(), LimitError> {
+pub(crate) fn map_cells(
+    key: &str,
+    temps: usize,
+    speeds: usize,
+    loads: usize,
+) -> Result<(), LimitError> {
     let cells = temps.saturating_mul(speeds.saturating_add(loads));
     at_most(key, cells, MAP_CELLS_MAX).map_err(|mut e| {
         e.value =
@@ -145,7 +150,7 @@ pub fn map_cells(key: &str, temps: usize, speeds: usize, loads: usize) -> Result
 
 /// The work of a scene set: `points` friction points (Σ `temps_c`) and `cells` map cells, against
 /// [`SCENE_WORK_MAX`].
-pub fn scene_work(key: &str, points: usize, cells: usize) -> Result<(), LimitError> {
+pub(crate) fn scene_work(key: &str, points: usize, cells: usize) -> Result<(), LimitError> {
     let work = points.saturating_add(cells.div_ceil(MAP_CELLS_PER_POINT));
     at_most(key, work, SCENE_WORK_MAX).map_err(|mut e| {
         e.value = format!(

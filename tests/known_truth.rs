@@ -153,10 +153,12 @@ fn evaluate(
     verbose: bool,
     independent: bool,
 ) -> Vec<Figures> {
-    // (one folder per test: tests of the same seed run in parallel)
+    // (one folder per call: tests of the same seed and compounds run in parallel)
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let dir = std::env::temp_dir().join(format!(
-        "viscoroll-truth-{}-{}-{}",
+        "viscoroll-truth-{}-{}-{}-{}",
         std::process::id(),
+        CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
         protocol.seed,
         compounds.first().map_or("none", |c| c.name.as_str())
     ));

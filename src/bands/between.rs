@@ -9,7 +9,7 @@
 //! them, else the stated prior [`PRIOR_SD_LN`].
 //!
 //! Math (§16): with n specimens' ln F_i at a point, the sum of squares SS = Σ(ln F_i − mean)² has
-//! n − 1 degrees of freedom; the prior s₀ counts as ν₀ = [`PRIOR_DOF`] more (a scaled inverse-χ²
+//! n − 1 degrees of freedom; the prior s₀ counts as ν₀ = `PRIOR_DOF` more (a scaled inverse-χ²
 //! prior): s² = (ν₀ s₀² + SS)/(ν₀ + n − 1) (eq. 16.2). The fit pools the n specimens, so it
 //! estimates their mean, whose between-specimen variance is s²/n; each half of the band (in ln F)
 //! grows to √(h² + z₀.₉₅² s²/n) (eq. 16.3).
@@ -26,7 +26,7 @@ pub const PRIOR_SD_LN: f64 = 0.55;
 
 /// Weight of [`PRIOR_SD_LN`] in degrees of freedom (eq. 16.2): one, since it comes from one pair
 /// of specimens (its 27 points are of the same two specimens, not independent).
-pub const PRIOR_DOF: f64 = 1.0;
+pub(crate) const PRIOR_DOF: f64 = 1.0;
 
 /// Standard deviation of ln F between specimens from the specimens' frictions at one point (or
 /// scene mean), pooled with the prior (eq. 16.2); the prior alone with fewer than two finite

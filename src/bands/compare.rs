@@ -12,7 +12,7 @@ pub const SIGNIFICANCE: f64 = 0.95;
 
 /// Φ(x), the standard normal distribution function, from erf by Abramowitz & Stegun (1964),
 /// eq. 7.1.26: absolute error below 1.5e-7 in erf, so below 7.5e-8 in Φ.
-pub fn normal_cdf(x: f64) -> f64 {
+pub(crate) fn normal_cdf(x: f64) -> f64 {
     let z = x.abs() / std::f64::consts::SQRT_2;
     let t = 1.0 / (1.0 + 0.327_591_1 * z);
     let poly = t

@@ -3,7 +3,7 @@
 //! solved the same way, then the band of each point and of the scene mean.
 //!
 //! Input: a [`CompoundFit`], a [`Scene`], [`BandSettings`]; output: the solver of the replicate
-//! solves ([`solver`], [`cover_solver`]), the covered regression (eq. 15.6b), the shift-law tail term (eq. 15.8) and,
+//! solves ([`solver`], `cover_solver`), the covered regression (eq. 15.6b), the shift-law tail term (eq. 15.8) and,
 //! from replicate ratios F_b/F̂ (assembled per scene in super::scene), [`FrictionBand`]s
 //! ([`band_of`], [`mean_band`]).
 
@@ -45,10 +45,10 @@ pub fn band_contact_settings(settings: &BandSettings) -> ContactSettings {
 pub const COVER_BAND_TOL: f64 = 1e-3;
 
 /// A replicate solve: F/N of a creep spectrum at log10 a_T, or why it failed.
-pub type Solve<'a> = dyn Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a;
+pub(crate) type Solve<'a> = dyn Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a;
 
 /// The solver of one scene for the bands: F/N of a creep spectrum at log10 a_T on the half-space
-/// (`cover_m` None, `auto` at the band tolerance) or the cover ([`cover_solver`] started cold), or
+/// (`cover_m` None, `auto` at the band tolerance) or the cover (`cover_solver` started cold), or
 /// the solver's error.
 pub fn solver<'a>(
     scene: &'a Scene,
@@ -96,7 +96,7 @@ pub fn replicate_choice(model: Option<Body>) -> Body {
 }
 
 /// `auto` as the body of a covered solve ([`cover_solver`] puts it on its cover).
-pub const AUTO: Body = Body::Auto {
+pub(crate) const AUTO: Body = Body::Auto {
     thickness_m: f64::NAN,
 };
 
@@ -104,7 +104,7 @@ pub const AUTO: Body = Body::Auto {
 pub type CoverSolve = (f64, f64, Option<Body>);
 
 /// A covered solve of the bands ([`cover_solver`]): creep spectrum, log10 a_T, start, body.
-pub trait CoverSolver:
+pub(crate) trait CoverSolver:
     Fn(&CreepSpectrum, f64, Option<(f64, f64)>, Body) -> Result<CoverSolve, String> + Sync
 {
 }
@@ -124,7 +124,7 @@ impl<F> CoverSolver for F where
 /// read the solution (same F/N to the bit, `cover_solver_skips_only_the_checks`) and their ratios
 /// and warnings are not in what this hands on; the main job's own solve at each point keeps them
 /// (its friction point's warnings).
-pub fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl CoverSolver {
+pub(crate) fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl CoverSolver {
     let scene = Scene {
         body: crate::contact::Body::HALF_SPACE,
         ..*scene
@@ -150,7 +150,7 @@ pub fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl Co
 
 /// The fit's own half-space solve at the band tolerance (its friction is the half-space ratios'
 /// F̂; its contact length gives the rolling frequency of eq. 15.9).
-pub fn half_space_solve(
+pub(crate) fn half_space_solve(
     scene: &Scene,
     creep: &CreepSpectrum,
     log10_a_t: f64,

@@ -27,7 +27,7 @@ use crate::Measurement;
 /// Decades either side of the fit's λ that a replicate's λ is drawn from (uniform in log λ): the
 /// λ search's grid step (`PronySettings::lambda_count` values over 11 decades), the resolution
 /// at which the search chose it.
-pub const LAMBDA_SPREAD_DECADES: f64 = 1.0;
+pub(crate) const LAMBDA_SPREAD_DECADES: f64 = 1.0;
 
 /// The alternatives of a fit's choices (see the module docs).
 #[derive(Debug, Clone, Default)]
@@ -42,7 +42,7 @@ pub(super) struct ModelChoices {
 
 impl ModelChoices {
     /// Largest |d_(c,k)| over the criteria and isotherms, decades.
-    pub fn criterion_max_log10(&self) -> f64 {
+    pub(crate) fn criterion_max_log10(&self) -> f64 {
         self.criteria
             .iter()
             .flat_map(|(_, d)| d.iter())
@@ -50,7 +50,7 @@ impl ModelChoices {
     }
 
     /// Largest interpolation term, decades.
-    pub fn interpolation_max_log10(&self) -> f64 {
+    pub(crate) fn interpolation_max_log10(&self) -> f64 {
         self.interpolation.iter().fold(0.0, |m, r| m.max(r.1.abs()))
     }
 }

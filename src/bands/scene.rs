@@ -154,7 +154,7 @@ impl SceneRatios {
 /// Per temperature of `temps_c`, the ratio F_b/F̂ of each replicate b (NaN where a solve failed),
 /// on a cover of `cover_m` bonded to a rigid carcass (eq. 15.6): each replicate's
 /// creep spectrum, shifted by its own law, through the body `auto` chooses
-/// ([`cover_solver`], at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
+/// (`cover_solver`, at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
 /// friction; `None`: the half-space at `settings.contact_tol`. On a cover, only
 /// [`COVER_SOLVED_REPLICATES`] replicates are solved on the cover, at every other temperature
 /// ([`cover_solved_temps`]; eq. 15.6c carries them to the others); the rest come from their

@@ -7,8 +7,8 @@
 //! spectrum the loss modulus at the window's edge), the point's speed, the contact length of the
 //! body solved (half-space or cover) and log10 a_T; output: the [`WindowExcess`] of the point (also
 //! for a point inside the window's last [`RAMP_DECADES`], where the term starts), the relaxation
-//! spectrum continued beyond the edge ([`continued_spectrum`]) whose friction, against the fit's,
-//! sizes the term, and the [`ramp_weight`] that makes the term continuous across the edge.
+//! spectrum continued beyond the edge (`continued_spectrum`) whose friction, against the fit's,
+//! sizes the term, and the `ramp_weight` that makes the term continuous across the edge.
 
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
 use crate::results::CompoundFit;
@@ -33,14 +33,14 @@ pub struct WindowExcess {
     /// The window's end on that side (lowest or highest master-curve reduced frequency), in Hz.
     pub edge_hz: f64,
     /// Decades beyond that end, Δ = |log10(f_red/f_edge)| beyond it, negative inside the window
-    /// (a point within [`RAMP_DECADES`] of the edge gets the term weighted by [`ramp_weight`]).
+    /// (a point within [`RAMP_DECADES`] of the edge gets the term weighted by `ramp_weight`).
     pub decades: f64,
 }
 
 /// The decades of relaxation times the continuation covers beyond the point's own frequency
 /// (eq. 15.9): E′ and E″ at ω feel the terms with ωτ within about a decade of 1, and a rolling
 /// contact spreads its strain rates over the contact length around V/l.
-pub const CONTACT_SPREAD_DECADES: f64 = 1.0;
+pub(crate) const CONTACT_SPREAD_DECADES: f64 = 1.0;
 
 /// The term starts this many decades inside the window's edge and rises to its full size at the
 /// edge (eq. 15.9c): the last half decade is the one the edge's slope is read over, and the Prony fit
@@ -80,7 +80,11 @@ pub fn measured_window_hz(fit: &CompoundFit) -> Option<(f64, f64)> {
 }
 
 /// The point's rolling frequency V/l (Hz) reduced by its shift, f·10^(log10 a_T).
-pub fn rolling_reduced_freq_hz(speed_m_s: f64, contact_length_m: f64, log10_a_t: f64) -> f64 {
+pub(crate) fn rolling_reduced_freq_hz(
+    speed_m_s: f64,
+    contact_length_m: f64,
+    log10_a_t: f64,
+) -> f64 {
     speed_m_s / contact_length_m * 10f64.powf(log10_a_t)
 }
 
@@ -112,7 +116,7 @@ pub fn excess(window: (f64, f64), reduced_freq_hz: f64) -> Option<WindowExcess> 
 /// 1 at Δ ≥ 0, and between them the smooth step 3x² − 2x³ of x = (Δ + [`RAMP_DECADES`]) /
 /// [`RAMP_DECADES`], so that the band's width has neither a step nor a kink where the term starts
 /// or where it reaches its full size.
-pub fn ramp_weight(decades: f64) -> f64 {
+pub(crate) fn ramp_weight(decades: f64) -> f64 {
     let x = ((decades + RAMP_DECADES) / RAMP_DECADES).clamp(0.0, 1.0);
     x * x * (3.0 - 2.0 * x)
 }
@@ -130,7 +134,7 @@ pub fn ramp_weight(decades: f64) -> f64 {
 /// the window is kept (a term with ωτ ≫ 1 adds E_i to it), ΔE capped at
 /// (1 − `MIN_RELAXED_FRACTION`)·E∞. `None` when the edge's loss modulus is not finite and
 /// positive.
-pub fn continued_spectrum(
+pub(crate) fn continued_spectrum(
     relax: &RelaxationSpectrum,
     ex: &WindowExcess,
 ) -> Option<RelaxationSpectrum> {
@@ -231,7 +235,7 @@ pub fn window_note(s_window: f64, ex: &WindowExcess) -> String {
 
 /// A change of ln F by `s` in words: "27 %" up to doubling, then "a factor 3.4" or "a factor 6.5e5"
 /// (never a percentage beyond 1000 %: issue 31).
-pub fn change_text(s: f64) -> String {
+pub(crate) fn change_text(s: f64) -> String {
     let f = s.exp();
     if f < 2.0 {
         format!("{:.0} %", 100.0 * s.exp_m1())

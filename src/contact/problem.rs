@@ -77,7 +77,7 @@ impl DimensionlessScene {
     /// A problem given in units of V·T already (the maps' reduced problem, `viscoroll contact`):
     /// `length_scale_m` = 1, so a body's lengths are passed dimensionless; the SI scales are NaN (not
     /// a scene: not for `to_dimensional`).
-    pub fn in_units_of_vt(terms: Vec<CreepTerm>, load: f64, poisson: f64) -> Self {
+    pub(crate) fn in_units_of_vt(terms: Vec<CreepTerm>, load: f64, poisson: f64) -> Self {
         DimensionlessScene {
             terms,
             load,
@@ -142,7 +142,7 @@ pub struct BodyAnswer {
 impl BodyAnswer {
     /// The answer of a solution that carries its own estimate and checks (the half-space's: NaN
     /// where the scheme gives none).
-    pub fn from_solution(solution: DimensionlessSolution) -> Self {
+    pub(crate) fn from_solution(solution: DimensionlessSolution) -> Self {
         let diag = solution.diagnostics.as_ref();
         BodyAnswer {
             error_estimate: solution.error_estimate.unwrap_or(f64::NAN),

@@ -135,7 +135,11 @@ impl Scene {
 
 impl DimensionlessScene {
     /// Back to SI units: the scene's answer from a dimensionless solution of this problem.
-    pub fn to_dimensional(&self, load_n_per_m: f64, sol: DimensionlessSolution) -> RollSolution {
+    pub(crate) fn to_dimensional(
+        &self,
+        load_n_per_m: f64,
+        sol: DimensionlessSolution,
+    ) -> RollSolution {
         let vt = self.length_scale_m;
         let friction = sol.friction_rho / self.rho;
         let x_m = sol.xi.iter().map(|&x| (x - sol.beta) * vt).collect();

@@ -133,7 +133,7 @@ impl FluidCreep {
     }
 
     /// (J′, J″) at ω with J* = J′ − iJ″: the flow term adds 1/(ωη₀) to J″.
-    pub fn complex_compliance(&self, omega_rad_s: f64) -> (f64, f64) {
+    pub(crate) fn complex_compliance(&self, omega_rad_s: f64) -> (f64, f64) {
         let (j1, j2) = self.solid.complex_compliance(omega_rad_s);
         (j1, j2 + 1.0 / (omega_rad_s * self.viscosity_pa_s))
     }

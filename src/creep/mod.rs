@@ -40,7 +40,7 @@ pub struct CreepSpectrum {
 }
 
 /// Why the rolling contact refuses a fluid (E∞ = 0; docs/MATH.md §17), for every message that does.
-pub const FLUID_NO_STEADY_ROLLING: &str =
+pub(crate) const FLUID_NO_STEADY_ROLLING: &str =
     "A fluid has no steady state in rolling on the half-space: its creep rate tends to 1/η₀ instead of \
      0, so the surface keeps tilting under every load that has passed, whose elastic slope decays only \
      like 1/distance in plane strain; the memory integral diverges logarithmically (friction at \

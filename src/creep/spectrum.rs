@@ -15,11 +15,6 @@ use crate::material::{
 };
 
 impl CreepSpectrum {
-    /// Glassy compliance J_g = J(0) in 1/Pa.
-    pub fn compliance_glassy(&self) -> f64 {
-        self.compliance_glassy_per_pa
-    }
-
     /// Relaxed (equilibrium) compliance J∞ = J_g + Σ Jⱼ in 1/Pa (eq. 2.12 at t → ∞).
     pub fn compliance_relaxed(&self) -> f64 {
         self.compliance_glassy_per_pa + self.terms.iter().map(|t| t.compliance_per_pa).sum::<f64>()
@@ -54,7 +49,7 @@ impl CreepSpectrum {
     }
 
     /// (J′, J″) at ω, J* = J′ − iJ″.
-    pub fn complex_compliance(&self, omega_rad_s: f64) -> (f64, f64) {
+    pub(crate) fn complex_compliance(&self, omega_rad_s: f64) -> (f64, f64) {
         let mut re = self.compliance_glassy_per_pa;
         let mut im = 0.0;
         for r in &self.terms {

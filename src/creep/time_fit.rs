@@ -1,12 +1,12 @@
 //! Creep data to the relaxation spectrum (docs/MATH.md §18, eq. 18.2): the non-negative retardation series
 //! J(t) = J_g + Σ Jⱼ(1 − e^(−t/λⱼ)) + t/η₀ fitted to reduced creep points
-//! ([`crate::prony::time_fit::fit_series_in_time`]), then converted exactly to the relaxation
+//! (`crate::prony::time_fit::fit_series_in_time`), then converted exactly to the relaxation
 //! spectrum ([`super::creep_to_relaxation`], MATH §4), so the chain after it is the frequency path's.
 //!
 //! No flow term is fitted (it cannot be told from a retardation time beyond the window,
 //! `crate::prony::time_fit`): the data are taken as a solid's. When J(t) still rises like t over the
-//! last decade (d log J / d log t ≥ [`FLOW_SLOPE`]) that is said: the data may be a fluid's, whose
-//! rolling has no steady state ([`super::FLUID_NO_STEADY_ROLLING`]), and everything beyond the
+//! last decade (d log J / d log t ≥ `FLOW_SLOPE`) that is said: the data may be a fluid's, whose
+//! rolling has no steady state (`super::FLUID_NO_STEADY_ROLLING`), and everything beyond the
 //! window rests on the assumption.
 
 use super::{creep_to_relaxation, CreepError, CreepSpectrum, RetardationTerm};
@@ -17,7 +17,7 @@ use crate::prony::time_fit::{
 use crate::prony::{PronyError, PronyFit, PronySettings};
 
 /// End slope d log J / d log t above which the creep data look like flow (a fluid's is 1).
-pub const FLOW_SLOPE: f64 = 0.8;
+pub(crate) const FLOW_SLOPE: f64 = 0.8;
 
 /// Why creep data could not be fitted.
 #[derive(Debug, thiserror::Error)]
@@ -32,7 +32,7 @@ pub enum CreepFitError {
 
 /// Fit the retardation series to reduced creep points and convert it to relaxation: the
 /// [`PronyFit`] of the relaxation spectrum (its info from the creep fit) and the creep spectrum.
-pub fn fit_creep_in_time(
+pub(crate) fn fit_creep_in_time(
     points: &[TimeDatum],
     kind: ModulusKind,
     poisson: f64,

@@ -34,11 +34,11 @@ pub struct ColumnMap {
 }
 
 /// The keys of [`ColumnMap::parse`], for messages.
-pub const COLUMN_MAP_KEYS: &str =
+pub(crate) const COLUMN_MAP_KEYS: &str =
     "freq, temp, set_temp, storage, loss, complex, tan_delta, phase, segment";
 
 impl ColumnMap {
-    /// Parse `key=name,key=name` (keys: [`COLUMN_MAP_KEYS`]); a name may not hold `,` or `=`.
+    /// Parse `key=name,key=name` (keys: `COLUMN_MAP_KEYS`); a name may not hold `,` or `=`.
     pub fn parse(spec: &str) -> Result<ColumnMap, String> {
         let mut m = ColumnMap::default();
         for part in spec.split(',').map(str::trim).filter(|p| !p.is_empty()) {

@@ -16,11 +16,11 @@ use calamine::{open_workbook_auto_from_rs, Data, Range, Reader, Sheets};
 use std::io::Cursor;
 
 /// Name of the data sheet.
-pub const DATA_SHEET: &str = "Exported Data";
+pub(crate) const DATA_SHEET: &str = "Exported Data";
 /// Name of the metadata sheet.
-pub const HEADER_SHEET: &str = "Data header";
+pub(crate) const HEADER_SHEET: &str = "Data header";
 /// Name of the shift-factor sheet.
-pub const SHIFT_SHEET: &str = "Shiftlist";
+pub(crate) const SHIFT_SHEET: &str = "Shiftlist";
 
 type Book = Sheets<Cursor<Vec<u8>>>;
 
@@ -250,7 +250,7 @@ pub fn read_eplexor_shiftlist(
 }
 
 /// [`read_eplexor_shiftlist`] on bytes already read.
-pub fn shiftlist_from_bytes(
+pub(crate) fn shiftlist_from_bytes(
     file: &str,
     bytes: &[u8],
 ) -> Result<(ShiftLaw, Option<ShiftLaw>), DmaError> {

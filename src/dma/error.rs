@@ -168,7 +168,7 @@ pub enum DmaError {
 }
 
 /// The units accepted for a quantity (words as in `UnknownUnit::quantity`).
-pub fn expected_units(quantity: &str) -> &'static str {
+pub(crate) fn expected_units(quantity: &str) -> &'static str {
     use super::units;
     match quantity {
         "frequency" => units::FREQ_UNITS,

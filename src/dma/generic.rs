@@ -25,7 +25,7 @@ pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
 }
 
 /// Whether a row of fields is a unit row: no numbers, and most cells are units (bracketed or known).
-pub fn is_unit_row(fields: &[String], dec: Decimal) -> bool {
+pub(crate) fn is_unit_row(fields: &[String], dec: Decimal) -> bool {
     let non_empty: Vec<&String> = fields.iter().filter(|f| !f.trim().is_empty()).collect();
     if non_empty.is_empty()
         || non_empty
@@ -86,7 +86,7 @@ fn header_block(fields: &[Vec<String>], name_row: usize, unit_row: Option<usize>
 }
 
 /// Parse lines already known to be delimited by `delim` with decimal mark `dec`.
-pub fn read_with(
+pub(crate) fn read_with(
     file: &str,
     lines: &[&str],
     delim: Delimiter,
@@ -186,7 +186,7 @@ pub fn read_with(
 }
 
 /// `key: value`, `key = value` or `key<TAB>value` → metadata.
-pub fn metadata_line(line: &str, meta: &mut std::collections::BTreeMap<String, String>) {
+pub(crate) fn metadata_line(line: &str, meta: &mut std::collections::BTreeMap<String, String>) {
     let l = line.trim().trim_start_matches('#').trim();
     if l.is_empty() {
         return;
@@ -206,7 +206,7 @@ pub fn metadata_line(line: &str, meta: &mut std::collections::BTreeMap<String, S
 }
 
 /// `[MPa]` → `MPa`, `(Hz)` → `Hz`, `[]` → empty.
-pub fn strip_brackets(s: &str) -> String {
+pub(crate) fn strip_brackets(s: &str) -> String {
     let t = s.trim();
     let b = t.as_bytes();
     if b.len() >= 2

@@ -57,7 +57,7 @@ pub struct Group {
 }
 
 /// Temperature written as the whole file stem: `T25`, `T-10`, `t_5`, `25C`, `25°C`, `T25C`.
-pub fn temperature_from_file_name(path: &str) -> Option<f64> {
+pub(crate) fn temperature_from_file_name(path: &str) -> Option<f64> {
     let stem = std::path::Path::new(path).file_stem()?.to_str()?;
     let s = stem
         .strip_prefix(['T', 't'])
@@ -174,7 +174,7 @@ pub fn split(points: Vec<RawPoint>, name_temp_c: Option<f64>, set: &SplitSetting
 
 /// The temperature step grid (origin, step Δ) of a set of isotherm means, both rounded to 0.5 K
 /// (see the module docs); `None` for fewer than three isotherms or a spacing below 0.5 K.
-pub fn step_grid(means: &[f64]) -> Option<(f64, f64)> {
+pub(crate) fn step_grid(means: &[f64]) -> Option<(f64, f64)> {
     if means.len() < 3 || means.iter().any(|m| !m.is_finite()) {
         return None;
     }
@@ -196,7 +196,7 @@ pub fn step_grid(means: &[f64]) -> Option<(f64, f64)> {
 }
 
 /// The grid point nearest to `t`.
-pub fn on_grid(t: f64, (origin, step): (f64, f64)) -> f64 {
+pub(crate) fn on_grid(t: f64, (origin, step): (f64, f64)) -> f64 {
     origin + ((t - origin) / step).round() * step
 }
 

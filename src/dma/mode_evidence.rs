@@ -166,7 +166,7 @@ fn level(
 
 /// Tensile or shear from a read file's metadata, step names and column names (module docs), with
 /// the evidence in words. `file` is the path as given: a test name in it counts as a test name.
-pub fn infer(raw: &RawFile, file: &str) -> Option<(ModulusKind, String)> {
+pub(crate) fn infer(raw: &RawFile, file: &str) -> Option<(ModulusKind, String)> {
     let meta = |keys: &[&str]| -> Vec<(String, String)> {
         raw.metadata
             .iter()

@@ -2,20 +2,20 @@
 //! refused, values that look like a unit mix-up are flagged with a suggestion.
 //!
 //! Input: a [`Measurement`] (SI inside: Pa, Hz, °C); output: `Err(reason)` for a temperature below
-//! absolute zero or above [`MAX_TEMP_C`] (no polymer is measured there; an isotherm at 1e9 °C would
+//! absolute zero or above `MAX_TEMP_C` (no polymer is measured there; an isotherm at 1e9 °C would
 //! otherwise send the shift-law fits and scans into astronomically long loops), or the warnings to
 //! add to `Measurement::warnings`. The flags: moduli 10³× or 10⁶× below every polymer's range (kPa or
 //! MPa read as Pa), or above it; temperatures that look like kelvins labelled °C; frequencies above
-//! [`MAX_FREQ_HZ`]; a storage modulus that rises with temperature.
+//! `MAX_FREQ_HZ`; a storage modulus that rises with temperature.
 
 use super::Measurement;
 
 /// Highest isotherm temperature accepted, °C (rubber decomposes long before; DMA ovens stop ~600 °C).
-pub const MAX_TEMP_C: f64 = 1000.0;
+pub(crate) const MAX_TEMP_C: f64 = 1000.0;
 /// Highest frequency not flagged, Hz (DMA and rheometers stop near 1e3–1e4 Hz; ultrasound starts at 2e4).
-pub const MAX_FREQ_HZ: f64 = 1e7;
+pub(crate) const MAX_FREQ_HZ: f64 = 1e7;
 /// Range of the storage modulus of polymers, Pa: soft gels ~1e3, glassy polymers ~1e10.
-pub const POLYMER_MODULUS_PA: (f64, f64) = (1e3, 2e10);
+pub(crate) const POLYMER_MODULUS_PA: (f64, f64) = (1e3, 2e10);
 
 fn median(mut v: Vec<f64>) -> Option<f64> {
     v.retain(|x| x.is_finite());

@@ -7,7 +7,7 @@
 //! read as written. The parameter `T` is the temperature of the sweep (°C, RepTate's convention), the
 //! isotherm's nominal temperature; without it, a temperature in the file name (`…_40C_…`) is taken,
 //! with the same standing. A `.tts` master curve may carry WLF constants `C1`, `C2` (K) and `Tr` (°C)
-//! in its parameters ([`wlf_from_parameters`]).
+//! in its parameters (`wlf_from_parameters`).
 
 use super::error::DmaError;
 use super::table::{cell_from_text, Block, Loc, RawFile, Row};
@@ -40,7 +40,7 @@ pub fn parameters(line: &str) -> Option<BTreeMap<String, String>> {
 }
 
 /// Whether decoded text looks like a RepTate data file: its first line is `key=value;…`.
-pub fn looks_like(text: &str) -> bool {
+pub(crate) fn looks_like(text: &str) -> bool {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
     let Some(first) = lines.next() else {
         return false;
@@ -50,7 +50,7 @@ pub fn looks_like(text: &str) -> bool {
 
 /// A temperature written in a RepTate file name: a part `40C`, `-35C` or `T-35` between `_`, `-`
 /// or `.` separators (`PI223k-14_40C_FS_PP10.osc`, `PI_13.5k_T-35.tts`).
-pub fn temperature_in_file_name(path: &str) -> Option<f64> {
+pub(crate) fn temperature_in_file_name(path: &str) -> Option<f64> {
     let stem = std::path::Path::new(path).file_stem()?.to_str()?;
     let parts: Vec<&str> = stem.split('_').collect();
     parts.iter().rev().find_map(|p| {
@@ -74,7 +74,7 @@ pub fn temperature_in_file_name(path: &str) -> Option<f64> {
 
 /// The WLF law of a `.tts` file's parameters: `C1`, `C2` (K) and `Tr` (°C; else `T`), checked
 /// ([`ShiftLaw::validate`]); `Ok(None)` when the file carries no C1 and C2.
-pub fn wlf_from_parameters(
+pub(crate) fn wlf_from_parameters(
     file: &str,
     params: &BTreeMap<String, String>,
 ) -> Result<Option<ShiftLaw>, DmaError> {

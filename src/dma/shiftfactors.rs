@@ -32,13 +32,8 @@ pub fn read_shift_table(
     shift_table_from_bytes(&file, &bytes, t_ref_c)
 }
 
-/// [`read_shift_factors`] on bytes already read.
-pub fn shift_factors_from_bytes(file: &str, bytes: &[u8]) -> Result<ShiftLaw, DmaError> {
-    shift_table_from_bytes(file, bytes, None)
-}
-
 /// [`read_shift_table`] on bytes already read.
-pub fn shift_table_from_bytes(
+pub(crate) fn shift_table_from_bytes(
     file: &str,
     bytes: &[u8],
     t_ref_c: Option<f64>,

@@ -49,7 +49,7 @@ const NOT_A_SWEEP: &[(&str, &str)] = &[
 
 /// Why the step named `label` is not an oscillatory frequency sweep, or `None` when its name does
 /// not say (a name that says "frequency" is always read).
-pub fn not_a_sweep(label: &str) -> Option<&'static str> {
+pub(crate) fn not_a_sweep(label: &str) -> Option<&'static str> {
     let l = label.to_lowercase();
     if ["frequency", "frequenz", "fréquence", "frequence"]
         .iter()

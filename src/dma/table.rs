@@ -91,7 +91,7 @@ pub struct RawFile {
 }
 
 /// Turn a text field into a cell.
-pub fn cell_from_text(s: &str, dec: super::text::Decimal) -> Cell {
+pub(crate) fn cell_from_text(s: &str, dec: super::text::Decimal) -> Cell {
     if let Some(v) = super::text::parse_number(s, dec) {
         Cell::Num(v)
     } else if super::text::is_missing_marker(s) {
@@ -102,7 +102,7 @@ pub fn cell_from_text(s: &str, dec: super::text::Decimal) -> Cell {
 }
 
 /// Whether a row of text fields is a data row: at least two numbers and no more text than numbers.
-pub fn is_data_row(fields: &[String], dec: super::text::Decimal) -> bool {
+pub(crate) fn is_data_row(fields: &[String], dec: super::text::Decimal) -> bool {
     let mut num = 0;
     let mut text = 0;
     for f in fields {

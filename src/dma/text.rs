@@ -6,7 +6,7 @@ use encoding_rs::{Encoding, UTF_16BE, UTF_16LE, WINDOWS_1252};
 
 /// Decoded text and the encoding it was read in.
 #[derive(Debug, Clone)]
-pub struct Decoded {
+pub(crate) struct Decoded {
     /// The text, BOM removed.
     pub text: String,
     /// `UTF-8`, `UTF-8 BOM`, `UTF-16LE`, `UTF-16BE`, `windows-1252`.
@@ -16,7 +16,7 @@ pub struct Decoded {
 /// Decode a text export. Never fails: bytes that are valid in no Unicode encoding are read as
 /// windows-1252 (a superset of the printable Latin-1 range), which maps every byte. Line ends come
 /// out as `\n`: CRLF and lone CR (old Mac exports, whose lines would otherwise run together) alike.
-pub fn decode(bytes: &[u8]) -> Decoded {
+pub(crate) fn decode(bytes: &[u8]) -> Decoded {
     let mut d = decode_text(bytes);
     if d.text.contains('\r') {
         d.text = d.text.replace("\r\n", "\n").replace('\r', "\n");
@@ -100,7 +100,7 @@ impl Delimiter {
 
 /// Decimal mark of numbers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Decimal {
+pub(crate) enum Decimal {
     /// `1.5`
     Point,
     /// `1,5`
@@ -145,7 +145,7 @@ fn split_quoted(line: &str, sep: char) -> Vec<String> {
 
 /// Read a number written with the given decimal mark; `None` if the text is not a number.
 /// `NaN`/`nan` reads as NaN (a measured NaN is kept and flagged, not dropped).
-pub fn parse_number(s: &str, dec: Decimal) -> Option<f64> {
+pub(crate) fn parse_number(s: &str, dec: Decimal) -> Option<f64> {
     let t = s.trim();
     if t.is_empty() {
         return None;
@@ -174,7 +174,7 @@ pub fn parse_number(s: &str, dec: Decimal) -> Option<f64> {
 }
 
 /// Text that marks a missing value in exports (`---` in EPLEXOR, empty cells elsewhere).
-pub fn is_missing_marker(s: &str) -> bool {
+pub(crate) fn is_missing_marker(s: &str) -> bool {
     let t = s.trim();
     t.is_empty()
         || (t.len() >= 2 && t.chars().all(|c| c == '-'))
@@ -186,7 +186,7 @@ pub fn is_missing_marker(s: &str) -> bool {
 /// tab, semicolon, comma, whitespace) that splits at least half the non-empty lines into two or more
 /// fields, with one field count dominating, wins. The decimal mark is a comma if numbers like `1,5`
 /// occur in fields and no `1.5`, and the delimiter is not a comma.
-pub fn sniff(lines: &[&str]) -> (Delimiter, Decimal) {
+pub(crate) fn sniff(lines: &[&str]) -> (Delimiter, Decimal) {
     let sample: Vec<&str> = lines
         .iter()
         .copied()

@@ -17,7 +17,7 @@ use super::units::{self, TempUnit};
 use crate::material::ModulusKind;
 
 /// Set temperature written in a step name: the last `(… <number> °C)` or `<number> °C`.
-pub fn temperature_in_name(name: &str) -> Option<f64> {
+pub(crate) fn temperature_in_name(name: &str) -> Option<f64> {
     let chars: Vec<char> = name.chars().collect();
     // Scan for a number followed (optionally after spaces) by a temperature unit.
     let mut best = None;
@@ -66,7 +66,7 @@ pub fn temperature_in_name(name: &str) -> Option<f64> {
 }
 
 /// Tensile or shear from the names of all columns, when they say.
-pub fn mode_from_variables(names: &[String]) -> Option<(ModulusKind, String)> {
+pub(crate) fn mode_from_variables(names: &[String]) -> Option<(ModulusKind, String)> {
     for n in names {
         let l = n.to_lowercase();
         if l.contains("torque") || l.contains("g*") || l.contains("shear") || l.contains("g'") {
@@ -89,7 +89,7 @@ pub fn mode_from_variables(names: &[String]) -> Option<(ModulusKind, String)> {
 }
 
 /// Read a TRIOS "Export to LIMS" text.
-pub fn read_lims(file: &str, text: &str) -> Result<RawFile, DmaError> {
+pub(crate) fn read_lims(file: &str, text: &str) -> Result<RawFile, DmaError> {
     let mut raw = RawFile::default();
     let mut section = String::new();
     let mut block: Option<Block> = None;
@@ -185,7 +185,7 @@ pub fn read_lims(file: &str, text: &str) -> Result<RawFile, DmaError> {
 }
 
 /// Read a TRIOS plain text/CSV export (`[step]` blocks).
-pub fn read_text(file: &str, text: &str) -> Result<RawFile, DmaError> {
+pub(crate) fn read_text(file: &str, text: &str) -> Result<RawFile, DmaError> {
     let lines: Vec<&str> = text.lines().collect();
     let (delim, dec) = text::sniff(&lines);
     let delim = if delim == Delimiter::Whitespace {

@@ -44,7 +44,7 @@ pub enum TempUnit {
 
 /// Unit of a phase-angle column.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum AngleUnit {
+pub(crate) enum AngleUnit {
     /// Degree.
     Degree,
     /// Radian.
@@ -58,10 +58,10 @@ pub const FREQ_UNITS: &str = "Hz, kHz, rad/s";
 /// Accepted spellings, for messages.
 pub const TEMP_UNITS: &str = "°C, C, degC, K";
 /// Accepted spellings, for messages.
-pub const ANGLE_UNITS: &str = "°, deg, rad";
+pub(crate) const ANGLE_UNITS: &str = "°, deg, rad";
 
 /// Strip brackets, spaces and the usual look-alikes of the degree sign; keeps case (mPa ≠ MPa).
-pub fn clean_unit(s: &str) -> String {
+pub(crate) fn clean_unit(s: &str) -> String {
     let mut t = s.trim();
     loop {
         let b = t.as_bytes();
@@ -102,7 +102,7 @@ impl ModulusUnit {
         })
     }
     /// Factor to Pa.
-    pub fn to_pa(self) -> f64 {
+    pub(crate) fn to_pa(self) -> f64 {
         match self {
             ModulusUnit::Pa => 1.0,
             ModulusUnit::KPa => 1e3,
@@ -127,7 +127,7 @@ impl FreqUnit {
         })
     }
     /// Convert a value in this unit to Hz.
-    pub fn to_hz(self, v: f64) -> f64 {
+    pub(crate) fn to_hz(self, v: f64) -> f64 {
         match self {
             FreqUnit::Hz => v,
             FreqUnit::KHz => v * 1e3,
@@ -147,7 +147,7 @@ impl TempUnit {
         })
     }
     /// Convert a value in this unit to °C.
-    pub fn to_celsius(self, v: f64) -> f64 {
+    pub(crate) fn to_celsius(self, v: f64) -> f64 {
         match self {
             TempUnit::Celsius => v,
             TempUnit::Kelvin => v - crate::material::ZERO_CELSIUS_K,
@@ -165,7 +165,7 @@ impl AngleUnit {
         })
     }
     /// Convert to rad.
-    pub fn to_rad(self, v: f64) -> f64 {
+    pub(crate) fn to_rad(self, v: f64) -> f64 {
         match self {
             AngleUnit::Degree => v.to_radians(),
             AngleUnit::Radian => v,
@@ -174,13 +174,13 @@ impl AngleUnit {
 }
 
 /// An empty or dimensionless unit (tan δ).
-pub fn is_dimensionless(s: &str) -> bool {
+pub(crate) fn is_dimensionless(s: &str) -> bool {
     matches!(clean_unit(s).as_str(), "" | "-" | "1" | "#")
 }
 
 /// Whether `s` reads as a unit of any quantity a DMA export holds (used only to tell a unit row from a
 /// name row, and a unit inside a column name from other bracketed text).
-pub fn looks_like_unit(s: &str) -> bool {
+pub(crate) fn looks_like_unit(s: &str) -> bool {
     let c = clean_unit(s);
     if ModulusUnit::parse(&c).is_some()
         || FreqUnit::parse(&c).is_some()
@@ -200,7 +200,7 @@ pub fn looks_like_unit(s: &str) -> bool {
 /// Split a column name that carries its unit (`E' (MPa)`, `Storage modulus / MPa`, `E'[MPa]`,
 /// `Temp./°C`) into name and unit. Bracketed text that is not a unit (`Oscillation strain (cmd)`,
 /// `tan(delta)`) stays part of the name.
-pub fn split_name_unit(name: &str) -> (String, Option<String>) {
+pub(crate) fn split_name_unit(name: &str) -> (String, Option<String>) {
     let n = name.trim();
     if let Some(stripped) = n.strip_suffix(']') {
         if let Some(i) = stripped.rfind('[') {

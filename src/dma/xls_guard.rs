@@ -12,7 +12,7 @@
 //! Format: [MS-CFB] §2.2–2.6 and [MS-XLS] §2.4 (record numbers as in calamine's xls.rs).
 
 /// The largest sheet BIFF8 can describe: 65 536 rows × 256 columns.
-pub const MAX_CELLS: u64 = 65_536 * 256;
+pub(crate) const MAX_CELLS: u64 = 65_536 * 256;
 
 const END_OF_CHAIN: u32 = 0xFFFF_FFFE;
 

@@ -4,21 +4,21 @@
 //! array spanning its cell addresses (`Range::from_sparse`). A zip bomb (a few kB inflating to
 //! gigabytes) or one cell far from the others (A1 and XFD1048576: 1.7·10¹⁰ cells) makes it allocate
 //! without bound and abort the process. This module reads the zip's parts through a limit on the
-//! inflated bytes ([`MAX_PART_BYTES`] per part, [`MAX_TOTAL_BYTES`] in all, never trusting the
+//! inflated bytes (`MAX_PART_BYTES` per part, `MAX_TOTAL_BYTES` in all, never trusting the
 //! declared sizes), and scans every worksheet's cell and row addresses (`r="…"`, and the
-//! `<dimension ref="…">` claim) for the sheet's extent, refusing more than [`MAX_CELLS`].
+//! `<dimension ref="…">` claim) for the sheet's extent, refusing more than `MAX_CELLS`.
 //! Files that are not a readable zip pass through to calamine, which refuses them itself.
 //! Format: ECMA-376 Part 1 §18.3.1 (worksheet `dimension`, `row`, `c` elements and their `r`).
 
 use std::io::{Cursor, Read};
 
 /// Largest inflated size of one part (256 MiB: a 1e6-row sheet of five numeric columns is ~60 MB).
-pub const MAX_PART_BYTES: u64 = 256 << 20;
+pub(crate) const MAX_PART_BYTES: u64 = 256 << 20;
 /// Largest inflated size of all parts together.
-pub const MAX_TOTAL_BYTES: u64 = 512 << 20;
+pub(crate) const MAX_TOTAL_BYTES: u64 = 512 << 20;
 /// Largest sheet extent, rows × columns of the bounding box of its cells (calamine keeps 32 bytes a
 /// cell: 2·10⁷ cells are 640 MB).
-pub const MAX_CELLS: u64 = 20_000_000;
+pub(crate) const MAX_CELLS: u64 = 20_000_000;
 
 /// The bounding box of the addresses seen: (min row, max row, min col, max col), 1-based.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -94,7 +94,7 @@ fn sheet_extent(xml: &[u8]) -> Extent {
 
 /// The limits of [`check_with`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Limits {
+pub(crate) struct Limits {
     /// Largest inflated size of one part, bytes.
     pub part_bytes: u64,
     /// Largest inflated size of all parts, bytes.
@@ -119,7 +119,7 @@ pub fn check(bytes: &[u8]) -> Result<(), String> {
 }
 
 /// [`check`] with other limits.
-pub fn check_with(bytes: &[u8], limits: &Limits) -> Result<(), String> {
+pub(crate) fn check_with(bytes: &[u8], limits: &Limits) -> Result<(), String> {
     let (max_part, max_total, max_cells) = (limits.part_bytes, limits.total_bytes, limits.cells);
     let Ok(mut zip) = zip::ZipArchive::new(Cursor::new(bytes)) else {
         return Ok(()); // not a zip calamine can open either: it says why

@@ -27,7 +27,7 @@ pub struct Jail {
 
 impl Jail {
     /// Make `root` (created if missing) a jail until the value is dropped.
-    pub fn enter(root: &Path) -> io::Result<Jail> {
+    pub(crate) fn enter(root: &Path) -> io::Result<Jail> {
         std::fs::create_dir_all(root)?;
         lock_roots().push(root.to_path_buf());
         Ok(Jail {

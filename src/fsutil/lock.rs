@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant, SystemTime};
 
 /// The lock file's name inside the output folder.
-pub const LOCK_FILE: &str = ".viscoroll.lock";
+pub(crate) const LOCK_FILE: &str = ".viscoroll.lock";
 
 /// What a waiting run can tell about the holder: its pid and how long it has held the lock, as far
 /// as the lock file tells (`None` when it does not).

@@ -1,6 +1,6 @@
 //! Safe file access, shared by every stage and the CLI.
 //!
-//! - Atomic writes ([`write_atomic`], [`TempFile`]): a temporary file with an unpredictable name,
+//! - Atomic writes (`write_atomic`, `TempFile`): a temporary file with an unpredictable name,
 //!   created exclusively (`O_EXCL | O_NOFOLLOW`) in an open handle on the target's folder, flushed,
 //!   then renamed within that handle, so a reader never sees a half-written file, a crash leaves
 //!   the old file or the new one, and no symlink planted at a temporary or final name is followed.
@@ -68,7 +68,7 @@ fn temp_name(name: &OsStr) -> String {
 /// A temporary file beside a target path, created exclusively and never through a symlink;
 /// removed when dropped unless [`TempFile::commit`]ted.
 #[derive(Debug)]
-pub struct TempFile {
+pub(crate) struct TempFile {
     dir: OwnedFd,
     name: OsString,
     tmp: String,
@@ -161,14 +161,14 @@ impl Drop for TempFile {
 
 /// Write `bytes` to `path` atomically (creating its folder): temp file, rename. With `replace`
 /// false, fails with `AlreadyExists` if `path` exists.
-pub fn write_atomic(path: &Path, bytes: &[u8], replace: bool) -> io::Result<()> {
+pub(crate) fn write_atomic(path: &Path, bytes: &[u8], replace: bool) -> io::Result<()> {
     write(path, bytes, replace, false)
 }
 
 /// As [`write_atomic`], and the data reach the disk (`fsync`) before the rename, so the file
 /// survives a power loss whole (for files that later runs trust, like fit files). Costs a disk
 /// round trip per file.
-pub fn write_atomic_durable(path: &Path, bytes: &[u8], replace: bool) -> io::Result<()> {
+pub(crate) fn write_atomic_durable(path: &Path, bytes: &[u8], replace: bool) -> io::Result<()> {
     write(path, bytes, replace, true)
 }
 
@@ -180,7 +180,7 @@ fn write(path: &Path, bytes: &[u8], replace: bool, sync: bool) -> io::Result<()>
 
 /// Whether process `pid` is alive (Linux: `/proc/PID` exists; elsewhere assumed alive, so nothing
 /// of a possibly running process is ever removed).
-pub fn process_alive(pid: u32) -> bool {
+pub(crate) fn process_alive(pid: u32) -> bool {
     if pid == std::process::id() {
         return true;
     }
@@ -203,7 +203,7 @@ fn temp_owner(name: &str) -> Option<u32> {
 /// Remove the temporary files that a killed process left in `dir` and its sub-folders (down to
 /// `depth` levels): names made by [`TempFile`] whose process is no longer alive. Returns how many
 /// were removed.
-pub fn remove_stale_temps(dir: &Path, depth: usize) -> usize {
+pub(crate) fn remove_stale_temps(dir: &Path, depth: usize) -> usize {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return 0;
     };

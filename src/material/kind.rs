@@ -18,7 +18,7 @@ pub enum ModulusKind {
 
 impl ModulusKind {
     /// Factor that converts a modulus of this kind into the tensile modulus: E = factor · M.
-    pub fn to_tensile_factor(self, poisson: f64) -> f64 {
+    pub(crate) fn to_tensile_factor(self, poisson: f64) -> f64 {
         match self {
             ModulusKind::Tensile => 1.0,
             ModulusKind::Shear => 2.0 * (1.0 + poisson),
@@ -26,7 +26,7 @@ impl ModulusKind {
     }
 
     /// The letter of the modulus: `E` (tensile) or `G` (shear), for labels.
-    pub fn letter(self) -> &'static str {
+    pub(crate) fn letter(self) -> &'static str {
         match self {
             ModulusKind::Tensile => "E",
             ModulusKind::Shear => "G",
@@ -35,7 +35,7 @@ impl ModulusKind {
 
     /// The symbols of the storage and loss moduli and of the equilibrium modulus: (E′, E″, E∞) or
     /// (G′, G″, G∞), for labels.
-    pub fn symbols(self) -> (&'static str, &'static str, &'static str) {
+    pub(crate) fn symbols(self) -> (&'static str, &'static str, &'static str) {
         match self {
             ModulusKind::Tensile => ("E′", "E″", "E∞"),
             ModulusKind::Shear => ("G′", "G″", "G∞"),

@@ -8,7 +8,7 @@ use crate::results::{CompoundOutcome, SceneSet};
 
 /// For each scene, every pair of ranked compounds with a band of their mean (crate::bands::compare,
 /// in ranking order), and each standing's `tied_with` filled from the ties.
-pub fn compare_ranked(
+pub(crate) fn compare_ranked(
     outcomes: &mut [CompoundOutcome],
     scenes: &SceneSet,
 ) -> Vec<crate::results::PairComparison> {

@@ -6,9 +6,9 @@
 //! docs/MATH.md §4 (crate::creep::exact). Reuse rule: same SHA-256 of every input (as a multiset, paths
 //! ignored), same settings, same tool version.
 
-use super::error::{io, PipelineError};
+use super::error::PipelineError;
 use crate::bands::BandSettings;
-use crate::dma::{read_files, sha256_hex, IngestOptions};
+use crate::dma::{read_files, IngestOptions};
 use crate::prony::{fit_prony, MasterPoint as PronyPoint, PronySettings};
 use crate::results::{CompoundFit, QualityFigure, TtsSummary};
 use crate::tts::{build_master_curve, LawChoice, MasterSettings};
@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 
 /// Bound on the worst overlap RMS of the master curve (log10 units) above which it is flagged: 0.05
 /// is about 12 % scatter between neighbouring isotherms, five times a good DMA's repeatability.
-pub const MASTER_OVERLAP_RMS_BOUND: f64 = 0.05;
+pub(crate) const MASTER_OVERLAP_RMS_BOUND: f64 = 0.05;
 
 /// Settings of the whole fit, stored in the fit file so a re-run can tell whether it may reuse it.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,20 +63,8 @@ impl FitOptions {
     }
 }
 
-/// SHA-256 of each file, sorted (the reuse key; paths do not matter).
-pub fn input_hashes(files: &[PathBuf]) -> Result<Vec<String>, PipelineError> {
-    let mut v = Vec::with_capacity(files.len());
-    for f in files {
-        let bytes =
-            crate::fsutil::read_regular(f, crate::limits::INPUT_BYTES_MAX).map_err(io(f))?;
-        v.push(sha256_hex(&bytes));
-    }
-    v.sort();
-    Ok(v)
-}
-
 /// Whether `fit` was made from inputs with exactly these hashes, with `options`, by this build.
-pub fn fit_matches(fit: &CompoundFit, hashes: &[String], options: &FitOptions) -> bool {
+pub(crate) fn fit_matches(fit: &CompoundFit, hashes: &[String], options: &FitOptions) -> bool {
     let mut have: Vec<String> = fit
         .provenance
         .inputs

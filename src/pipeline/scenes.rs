@@ -43,7 +43,7 @@ pub const COVER_TOL: f64 = 1e-3;
 
 /// The tolerance of a scene's direct contact solves: its own `tol` if set, else `default` on a
 /// half-space and at least [`COVER_TOL`] on a cover.
-pub fn scene_tol(spec: &SceneSpec, default: f64) -> f64 {
+pub(crate) fn scene_tol(spec: &SceneSpec, default: f64) -> f64 {
     spec.tol.unwrap_or(match spec.scene().body {
         Body::HalfSpace { cover_m: None } => default,
         _ => default.max(COVER_TOL),
@@ -51,7 +51,7 @@ pub fn scene_tol(spec: &SceneSpec, default: f64) -> f64 {
 }
 
 /// Friction of `fit` at every temperature of `spec` (parallel over temperatures), each point with
-/// the solver's error estimate; the tolerance is the scene's ([`scene_tol`], `settings`' as the
+/// the solver's error estimate; the tolerance is the scene's (`scene_tol`, `settings`' as the
 /// default). A failed solve gives a point with `error` set, not an error: the other temperatures
 /// still count.
 pub fn friction_vs_temperature(
@@ -64,7 +64,7 @@ pub fn friction_vs_temperature(
 
 /// [`friction_vs_temperature`] and, per point, the body solved (`None` where the solve failed): a
 /// covered scene's bands solve each replicate on it (crate::bands::replicate_choice).
-pub fn friction_on_body(
+pub(crate) fn friction_on_body(
     fit: &CompoundFit,
     spec: &SceneSpec,
     settings: &ContactSettings,

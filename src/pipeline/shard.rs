@@ -9,12 +9,12 @@
 //! runs the compounds whose number i has i mod N = K. Every compound is in exactly one shard.
 //!
 //! What a shard writes: its compounds' fit files and report folders as a whole run does, and
-//! instead of `reports/ranking.csv` and `reports/index.html` its [`ShardFile`] at
+//! instead of `reports/ranking.csv` and `reports/index.html` its `ShardFile` at
 //! `OUT/shards/K-of-N/summary.json` (written last: it marks the shard done). A shard locks
 //! `OUT/shards/K-of-N/`, not the whole folder, so the shards of one run work side by side, and it
 //! leaves temporary files alone (another node's live files look dead from here).
 //!
-//! The merge ([`merge_shards`]): reads every shard file under `OUT/shards/`, checks that they are
+//! The merge (`merge_shards`): reads every shard file under `OUT/shards/`, checks that they are
 //! the N shards of one run (same N, same scenes, same compound count, every compound once), puts
 //! the outcomes back in discovery order, compares the ranked compounds' bands as the whole run does
 //! and writes `reports/ranking.csv` and `reports/index.html` (the tan δ proxies from the fit files
@@ -95,7 +95,7 @@ fn shards_dir(out_dir: &Path) -> PathBuf {
 
 /// What a finished shard leaves for the merge.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct ShardFile {
+pub(crate) struct ShardFile {
     /// Which shard, counted from 0.
     pub shard_index: usize,
     /// How many shards.
@@ -111,7 +111,7 @@ pub struct ShardFile {
 }
 
 /// Write a shard's file (atomically; see the module docs).
-pub fn write_shard_file(out_dir: &Path, file: &ShardFile) -> Result<PathBuf, PipelineError> {
+pub(crate) fn write_shard_file(out_dir: &Path, file: &ShardFile) -> Result<PathBuf, PipelineError> {
     let shard = Shard {
         index: file.shard_index,
         count: file.shard_count,
@@ -199,7 +199,7 @@ fn check_whole(out_dir: &Path, files: &[ShardFile]) -> Result<SceneSet, Pipeline
 /// Merge the shards of a run in `out_dir` (see the module docs): writes `reports/ranking.csv`,
 /// the workbook `reports/viscoroll.xlsx` when `xlsx` (crate::report::workbook) and
 /// `reports/index.html`, and returns the whole run's summary (outcomes in discovery order).
-pub fn merge_shards(out_dir: &Path, xlsx: bool) -> Result<RunSummary, PipelineError> {
+pub(crate) fn merge_shards(out_dir: &Path, xlsx: bool) -> Result<RunSummary, PipelineError> {
     let _lock =
         crate::fsutil::DirLock::acquire(out_dir, LOCK_WAIT, &|_| {}).map_err(io(out_dir))?;
     let files = read_shard_files(out_dir)?;

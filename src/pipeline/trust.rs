@@ -1,7 +1,7 @@
 //! What the main job may claim (issue 31): each point's replicate-specimen frictions, whether it is
-//! determined, its band with the between-specimen term ([`finish_points`]); the band of a scene
-//! mean ([`standing_band`]); and scene means over the temperatures the ranked compounds share
-//! ([`share_windows`]).
+//! determined, its band with the between-specimen term (`finish_points`); the band of a scene
+//! mean (`standing_band`); and scene means over the temperatures the ranked compounds share
+//! (`share_windows`).
 //!
 //! Input: a compound's points in a scene (bands from crate::bands already on them), its replicate
 //! specimens' own points, its bootstrap ratios; output: the same points and standings, finished.
@@ -14,7 +14,7 @@ use crate::results::{CompoundOutcome, FrictionBand, FrictionPoint, SceneSet};
 /// replicate specimen, empty with one specimen), whether the point is determined (its band before
 /// the between-specimen term, its distance beyond `measured_c`: `FrictionPoint::determine`), then
 /// its band widened by the spread between specimens (eq. 16.3; the prior with one specimen).
-pub fn finish_points(
+pub(crate) fn finish_points(
     points: &mut [FrictionPoint],
     specimen_points: &[Vec<FrictionPoint>],
     measured_c: Option<(f64, f64)>,
@@ -38,7 +38,7 @@ pub fn finish_points(
 
 /// The band of the mean friction over `temps_c` (crate::bands::mean_band), widened by the spread
 /// between the specimens' own means over the same temperatures (eq. 16.3).
-pub fn standing_band(
+pub(crate) fn standing_band(
     points: &[FrictionPoint],
     ratios: &[Vec<f64>],
     temps_c: &[f64],
@@ -60,7 +60,7 @@ pub fn standing_band(
 /// `ratios` holds per compound and scene the bootstrap ratios (empty without bands). When the
 /// ranked compounds share no temperature, each keeps its own window and says so in its reasons
 /// (use with care).
-pub fn share_windows(
+pub(crate) fn share_windows(
     outcomes: &mut [CompoundOutcome],
     ratios: &[Vec<Vec<Vec<f64>>>],
     scenes: &SceneSet,

@@ -150,7 +150,7 @@ pub fn parse_target_rms(s: &str) -> Result<[f64; 2], String> {
 
 /// `loss_weight`: the weight of E″ against E′ in the Prony fit, finite and > 0 (1 = both alike, the
 /// default; below 1 favours E′).
-pub fn check_loss_weight(w: f64) -> Result<f64, String> {
+pub(crate) fn check_loss_weight(w: f64) -> Result<f64, String> {
     if w.is_finite() && w > 0.0 {
         Ok(w)
     } else {

@@ -49,7 +49,7 @@
 //! * Terms whose largest relative contribution to any datum is below `drop_threshold` are dropped.
 //! * Size: A has 2m rows, so a master curve of m = 1e6 points would take gigabytes. Above
 //!   [`THIN_ABOVE_POINTS`] points the curve is first replaced by the means (in log f, log E′, log E″)
-//!   of that many equal-count groups of consecutive points in log-frequency ([`thin_points`]): with
+//!   of that many equal-count groups of consecutive points in log-frequency (`thin_points`): with
 //!   equal counts, the least squares through the means with equal weights is the least squares
 //!   through all points with count weights, up to a constant (the scatter within the groups).
 //!
@@ -286,7 +286,7 @@ fn reduce(
     Ok((target, red))
 }
 
-/// Above this many master-curve points the QP fits the means of this many groups ([`thin_points`]).
+/// Above this many master-curve points the QP fits the means of this many groups (`thin_points`).
 /// 5000 points resolve any master curve (a Prony series follows ≈ 1 term per decade over ≤ 30
 /// decades) and keep A below 2·5000·(n+1) doubles (≈ 8 MB for 100 terms); real master curves have a
 /// few hundred points and are never thinned.
@@ -295,7 +295,7 @@ pub const THIN_ABOVE_POINTS: usize = 5000;
 /// The means (in log10) of `groups` groups of consecutive points in reduced frequency whose sizes
 /// differ by at most one (group g: points ⌊g·m/groups⌋ … ⌊(g+1)·m/groups⌋ − 1 after sorting);
 /// `points` unchanged (sorted) when there are no more than `groups`. Points must be positive.
-pub fn thin_points(points: &[MasterPoint], groups: usize) -> Vec<MasterPoint> {
+pub(crate) fn thin_points(points: &[MasterPoint], groups: usize) -> Vec<MasterPoint> {
     let mut logs: Vec<[f64; 5]> = points
         .iter()
         .map(|p| {

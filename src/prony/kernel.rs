@@ -15,14 +15,14 @@ use crate::prony::RelaxationSpectrum;
 
 /// Storage kernel (ωρ)²/(1+(ωρ)²) of one Maxwell element; `w_rho` = ωρ (dimensionless).
 #[inline]
-pub fn storage_kernel(w_rho: f64) -> f64 {
+pub(crate) fn storage_kernel(w_rho: f64) -> f64 {
     let x2 = w_rho * w_rho;
     x2 / (1.0 + x2)
 }
 
 /// Loss kernel ωρ/(1+(ωρ)²) of one Maxwell element; `w_rho` = ωρ (dimensionless).
 #[inline]
-pub fn loss_kernel(w_rho: f64) -> f64 {
+pub(crate) fn loss_kernel(w_rho: f64) -> f64 {
     w_rho / (1.0 + w_rho * w_rho)
 }
 

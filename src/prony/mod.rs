@@ -13,7 +13,8 @@ pub mod kernel;
 pub mod points;
 pub mod pyvisco_csv;
 mod settings;
-pub mod synthetic;
+#[cfg(test)]
+pub(crate) mod synthetic;
 pub mod terms;
 pub mod time_fit;
 

@@ -16,7 +16,7 @@ use crate::dma::units::ModulusUnit;
 use crate::material::ModulusKind;
 
 /// Whether `bytes` look like pyvisco's Prony-term CSV (a first row naming `tau_i`), not JSON.
-pub fn looks_like_pyvisco_terms(bytes: &[u8]) -> bool {
+pub(crate) fn looks_like_pyvisco_terms(bytes: &[u8]) -> bool {
     let text = String::from_utf8_lossy(bytes);
     let first = text.lines().next().unwrap_or("");
     first

@@ -53,7 +53,7 @@ impl RelaxationSpectrum {
     }
 
     /// Loss tangent tan δ = E″/E′ at ω in rad/s.
-    pub fn tan_delta(&self, omega_rad_s: f64) -> f64 {
+    pub(crate) fn tan_delta(&self, omega_rad_s: f64) -> f64 {
         let (re, im) = self.complex_modulus(omega_rad_s);
         im / re
     }

@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 /// A rubber-like spectrum at the given relaxation times: E∞ = 1 MPa and a Gaussian bump in log10 ρ
 /// (centre 1e-4 s, width 2 decades) whose strengths sum to about 1 GPa (glassy/rubbery ≈ 1000, like a
 /// filled elastomer through its glass transition).
-pub fn rubber_like_spectrum(taus_s: &[f64]) -> RelaxationSpectrum {
+pub(crate) fn rubber_like_spectrum(taus_s: &[f64]) -> RelaxationSpectrum {
     let centre = -4.0f64;
     let width = 2.0f64;
     let raw: Vec<f64> = taus_s
@@ -37,7 +37,7 @@ pub fn rubber_like_spectrum(taus_s: &[f64]) -> RelaxationSpectrum {
 
 /// Master-curve points of `spectrum`, `per_decade` log-spaced reduced frequencies from `freq_min_hz`
 /// to `freq_max_hz`, each modulus multiplied by (1 + `noise_rel`·g) with g a seeded standard normal.
-pub fn master_points(
+pub(crate) fn master_points(
     spectrum: &RelaxationSpectrum,
     freq_min_hz: f64,
     freq_max_hz: f64,

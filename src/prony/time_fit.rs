@@ -112,7 +112,7 @@ impl TimeSeries {
 }
 
 /// RMS and largest |log10(fit/datum)| of `f` over `points`.
-pub fn time_errors(points: &[TimeDatum], f: impl Fn(f64) -> f64) -> (f64, f64) {
+pub(crate) fn time_errors(points: &[TimeDatum], f: impl Fn(f64) -> f64) -> (f64, f64) {
     let e: Vec<f64> = points
         .iter()
         .map(|p| (f(p.time_s) / p.value).log10())
@@ -123,7 +123,7 @@ pub fn time_errors(points: &[TimeDatum], f: impl Fn(f64) -> f64) -> (f64, f64) {
 }
 
 /// Fit the series of `basis` to `points` (module docs; eq. 18.1–18.2), non-negatively.
-pub fn fit_series_in_time(
+pub(crate) fn fit_series_in_time(
     points: &[TimeDatum],
     basis: TimeBasis,
     settings: &PronySettings,
@@ -173,7 +173,7 @@ pub fn fit_series_in_time(
 
 /// Fit E(t) = E∞ + Σ Eᵢ e^(−t/τᵢ) to reduced relaxation points (eq. 18.1) → the same [`PronyFit`]
 /// the frequency fit hands on. `function` names the data (`E(t)` or `G(t)`) in the info.
-pub fn fit_relaxation_in_time(
+pub(crate) fn fit_relaxation_in_time(
     points: &[TimeDatum],
     kind: ModulusKind,
     poisson: f64,
@@ -224,7 +224,7 @@ impl TimeFitInfo {
 /// The [`PronyInfo`] of a time-domain fit with `n_terms_kept` relaxation terms: its E′ and E″ error
 /// fields hold the time function's errors (there are no E′, E″ data), `freq_window_hz` the window the
 /// data determine (eq. 18.3), and `time_domain` the rest.
-pub fn time_info(
+pub(crate) fn time_info(
     series: &TimeSeries,
     settings: &PronySettings,
     n_terms_kept: usize,

@@ -1,6 +1,6 @@
 //! A spectrum refitted with fewer terms for a card format with a cap on Prony cards (LS-DYNA's
 //! `*MAT_GENERAL_VISCOELASTIC` takes at most [`super::cards::LSDYNA_MAX_TERMS`]). Input: the
-//! spectrum and, when there is one, the fit file it came from; output: [`CardRefit`] — the refitted
+//! spectrum and, when there is one, the fit file it came from; output: `CardRefit` — the refitted
 //! spectrum, its RMS log10 errors of E′ and E″, and what it was fitted against.
 //!
 //! The refit is the project's Prony QP with term reduction (docs/MATH.md §5, [`crate::prony`]): to
@@ -15,7 +15,7 @@ use std::f64::consts::PI;
 
 /// The result of [`refit_for_cards`].
 #[derive(Debug, Clone, PartialEq)]
-pub struct CardRefit {
+pub(crate) struct CardRefit {
     /// The refitted spectrum.
     pub spectrum: RelaxationSpectrum,
     /// RMS log10 errors of E′ and E″ against the data it was fitted to.
@@ -26,7 +26,7 @@ pub struct CardRefit {
 
 /// Refit `spectrum` with at most `max_cards` cards (E∞, when positive, takes one): to the fit file's
 /// master curve, or to the spectrum's own moduli (module doc).
-pub fn refit_for_cards(
+pub(crate) fn refit_for_cards(
     spectrum: &RelaxationSpectrum,
     fit: Option<&CompoundFit>,
     max_cards: usize,

@@ -1,16 +1,16 @@
 //! The WLF law a card carries, chosen from a table of measured shifts (issue 17: never a silently
 //! degenerate WLF). Input: (T in °C, log10 a_T) referred to the spectrum's T_ref; output:
-//! [`CardWlf`] — WLF over the whole table when it holds, else WLF over the widest run of
+//! `CardWlf` — WLF over the whole table when it holds, else WLF over the widest run of
 //! neighbouring temperatures (containing T_ref) where it holds, with that range and its RMS, else
 //! none and why.
 //!
-//! "Holds" means RMS ≤ [`WLF_RMS_BOUND`] decade and 0 < C2 ≤ [`WLF_C2_MAX_K`] K, C1 > 0. The range
+//! "Holds" means RMS ≤ `WLF_RMS_BOUND` decade and 0 < C2 ≤ `WLF_C2_MAX_K` K, C1 > 0. The range
 //! must contain T_ref because the cards' WLF is referred to the Prony data's temperature (Abaqus
 //! *TRS θ₀, ANSYS TB,SHIFT T_r, LS-DYNA TREF): log10 a_T(T_ref) = 0 is part of the law.
 //!
-//! [`card_shift`] chooses the law a fit's cards carry, with the warnings to show: the fit's own
+//! `card_shift` chooses the law a fit's cards carry, with the warnings to show: the fit's own
 //! Arrhenius law when it used one, else WLF as above, else (WLF withheld) an Arrhenius fit of the
-//! shifts when it holds (RMS ≤ [`WLF_RMS_BOUND`], E_a > 0), else none and why. Abaqus and ANSYS
+//! shifts when it holds (RMS ≤ `WLF_RMS_BOUND`, E_a > 0), else none and why. Abaqus and ANSYS
 //! carry Arrhenius (`*TRS, DEFINITION=ARRHENIUS`; `TB,SHIFT … TN`); LS-DYNA does not
 //! (`report::cards::LSDYNA_NO_ARRHENIUS`).
 
@@ -19,18 +19,18 @@ use crate::ShiftLaw;
 
 /// Largest RMS (log10 decades) of the shifts about a WLF law for it to go into a card: 0.1 decade is
 /// a 26 % error in every relaxation time, about what the master curve's overlap allows.
-pub const WLF_RMS_BOUND: f64 = 0.1;
+pub(crate) const WLF_RMS_BOUND: f64 = 0.1;
 /// Largest C2 (K) of a WLF law that goes into a card: measured polymers have C2 of 30–300 K (WLF's
 /// universal 51.6 K); a C2 of thousands of K is a straight line through the shifts in disguise
 /// (issue 17 found C1 = 26185, C2 = 104763 K at 0.97 decade RMS).
-pub const WLF_C2_MAX_K: f64 = 1000.0;
+pub(crate) const WLF_C2_MAX_K: f64 = 1000.0;
 /// Fewest temperatures a partial-range WLF is fitted to (three constants: T_ref fixed, C1, C2 free,
 /// and at least two more points to judge the fit by).
-pub const WLF_MIN_TEMPERATURES: usize = 4;
+pub(crate) const WLF_MIN_TEMPERATURES: usize = 4;
 
 /// The WLF law for a card.
 #[derive(Debug, Clone, PartialEq)]
-pub enum CardWlf {
+pub(crate) enum CardWlf {
     /// WLF holds over the whole table.
     Whole {
         /// The law (at T_ref).
@@ -84,7 +84,7 @@ fn fit(points: &[(f64, f64)], t_ref_c: f64) -> Result<(ShiftLaw, f64), String> {
 }
 
 /// The WLF law for a card from the shifts `shifts` (°C, log10 a_T) referred to `t_ref_c`.
-pub fn card_wlf(shifts: &[(f64, f64)], t_ref_c: f64) -> CardWlf {
+pub(crate) fn card_wlf(shifts: &[(f64, f64)], t_ref_c: f64) -> CardWlf {
     let mut pts: Vec<(f64, f64)> = shifts
         .iter()
         .copied()
@@ -137,7 +137,7 @@ pub fn card_wlf(shifts: &[(f64, f64)], t_ref_c: f64) -> CardWlf {
 
 /// The shift law for a fit's cards and what to say about it (notes starting `WARNING:` are warnings).
 #[derive(Debug, Clone, PartialEq)]
-pub struct CardShift {
+pub(crate) struct CardShift {
     /// The law, if any can go into a card.
     pub law: Option<ShiftLaw>,
     /// What the cards' reader should know (RMS, range, fallbacks, why none).
@@ -146,7 +146,7 @@ pub struct CardShift {
 
 /// The shift law for the cards of a fit whose master curve found `shifts` (°C, log10 a_T at
 /// `law_in_use`'s T_ref) with `law_in_use` (see the module doc for the order of choice).
-pub fn card_shift(shifts: &[(f64, f64)], law_in_use: &ShiftLaw) -> CardShift {
+pub(crate) fn card_shift(shifts: &[(f64, f64)], law_in_use: &ShiftLaw) -> CardShift {
     let t_ref_c = law_in_use.t_ref_c();
     let pts: Vec<(f64, f64)> = shifts
         .iter()

@@ -58,7 +58,7 @@
 //!   the Arrhenius and WLF shift, B: of the WLF shift). Until this check TREF was written in °C,
 //!   which LS-DYNA refuses at or below 0 °C (e.g. EMS-CA's −5 °C). The WLF sign convention and log
 //!   base of A, B were not in that source, nor the form of the Arrhenius shift, so an Arrhenius law
-//!   is refused for LS-DYNA ([`LSDYNA_NO_ARRHENIUS`]; [`card`] writes the card without it and says
+//!   is refused for LS-DYNA (`LSDYNA_NO_ARRHENIUS`; [`card`] writes the card without it and says
 //!   so).
 //!
 //! Readers: our own three formats (round trips) and ANSYS `TB,PRON`/`TB,PRONY` cards written by ANSYS
@@ -452,7 +452,7 @@ pub fn lsdyna(
 }
 
 /// Why the LS-DYNA card carries no Arrhenius shift.
-pub const LSDYNA_NO_ARRHENIUS: &str = "*MAT_GENERAL_VISCOELASTIC's A is the coefficient of \
+pub(crate) const LSDYNA_NO_ARRHENIUS: &str = "*MAT_GENERAL_VISCOELASTIC's A is the coefficient of \
 its Arrhenius and its WLF shift (keyword definition in PyDyna), but the form of its Arrhenius shift (log \
 base, sign, units of A) is in no source we could check, and it takes no tabulated shift (its only load curve, \
 LCID, is a relaxation curve to fit, not a shift): give the shift in the deck";

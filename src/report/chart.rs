@@ -2,8 +2,8 @@
 //! stems) on linear or log axes with 1-2-5 ticks ([`super::ticks`]), shaded uncertainty bands, and
 //! the legend or a colour bar in a panel beside the plot, never over the data.
 //!
-//! Input: a [`Chart`] (plain data: curves in the values' own units); output: drawing on a plotters
-//! area ([`draw_chart`]); [`super::plots`] renders it to SVG or PNG. Log axes are drawn as log10 of
+//! Input: a `Chart` (plain data: curves in the values' own units); output: drawing on a plotters
+//! area (`draw_chart`); [`super::plots`] renders it to SVG or PNG. Log axes are drawn as log10 of
 //! the value on a linear coordinate (points ≤ 0 on a log axis are left out).
 
 use super::ticks::{linear_ticks, log_tick_label, log_ticks, tick_label};
@@ -15,7 +15,7 @@ use std::ops::Range;
 /// A linear f64 coordinate whose tick marks are exactly the given positions (plotters picks its
 /// own otherwise).
 #[derive(Debug, Clone)]
-pub struct Ticked {
+pub(crate) struct Ticked {
     lo: f64,
     hi: f64,
     ticks: Vec<f64>,
@@ -52,11 +52,11 @@ impl Ranged for Ticked {
 
 /// Tick labels, in plotters font units (the SVG backend writes 0.806 of it: 17.7 SVG px, ≥ 12 px on
 /// screen for a 900 px plot shown ≥ 620 px wide, as in the two-column layout at 1400 px).
-pub const TICK_PX: u32 = 22;
+pub(crate) const TICK_PX: u32 = 22;
 /// Axis titles and legend text.
-pub const LABEL_PX: u32 = 22;
+pub(crate) const LABEL_PX: u32 = 22;
 /// Chart titles.
-pub const TITLE_PX: u32 = 26;
+pub(crate) const TITLE_PX: u32 = 26;
 
 /// How a curve is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -117,7 +117,7 @@ impl Curve {
     }
 
     /// The same curve in `colour`.
-    pub fn coloured(mut self, colour: RGBColor) -> Self {
+    pub(crate) fn coloured(mut self, colour: RGBColor) -> Self {
         self.colour = Some(colour);
         self
     }
@@ -125,7 +125,7 @@ impl Curve {
 
 /// An axis: its title (with unit) and scale.
 #[derive(Debug, Clone)]
-pub struct Axis {
+pub(crate) struct Axis {
     /// Title with unit, e.g. `temperature [°C]`.
     pub label: String,
     /// Logarithmic.
@@ -134,7 +134,7 @@ pub struct Axis {
 
 impl Axis {
     /// A linear axis.
-    pub fn lin(label: &str) -> Self {
+    pub(crate) fn lin(label: &str) -> Self {
         Self {
             label: label.into(),
             log: false,
@@ -151,7 +151,7 @@ impl Axis {
 
 /// A colour bar beside the plot, for curves coloured by a quantity (e.g. isotherm temperature).
 #[derive(Debug, Clone)]
-pub struct ColourBar {
+pub(crate) struct ColourBar {
     /// Title with unit.
     pub label: String,
     /// The quantity's range, coloured by [`ramp`] from `lo` to `hi`.
@@ -162,7 +162,7 @@ pub struct ColourBar {
 
 /// A chart.
 #[derive(Debug, Clone)]
-pub struct Chart {
+pub(crate) struct Chart {
     /// Title above the plot.
     pub title: String,
     /// x axis.
@@ -176,7 +176,7 @@ pub struct Chart {
 }
 
 /// Series colours (colour-blind-safe order of the Tableau 10 palette).
-pub const PALETTE: [RGBColor; 10] = [
+pub(crate) const PALETTE: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
@@ -218,7 +218,7 @@ fn to_axes(c: &Chart, p: (f64, f64)) -> Option<(f64, f64)> {
 
 /// The ranges of the data in axis coordinates, padded 4 % (or ±0.5 when flat); None when no point
 /// can be drawn.
-pub fn ranges(c: &Chart) -> Option<((f64, f64), (f64, f64))> {
+pub(crate) fn ranges(c: &Chart) -> Option<((f64, f64), (f64, f64))> {
     let mut xs = (f64::INFINITY, f64::NEG_INFINITY);
     let mut ys = xs;
     let mut add = |p: (f64, f64)| {
@@ -330,7 +330,7 @@ fn ellipsised(s: &str, n: usize) -> String {
 }
 
 /// Draw `c` on `root` (which it fills white). Errors are plotters' messages.
-pub fn draw_chart<DB: DrawingBackend>(
+pub(crate) fn draw_chart<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     c: &Chart,
 ) -> Result<(), String> {

@@ -1,10 +1,10 @@
 //! The sidecar of each CSV table the tool writes: `NAME.csv` has one header row and no comment
 //! lines, so any CSV reader takes it as it is; what used to be its `#` lines — provenance, the
-//! settings, the notes that hold for the whole table — is `NAME.meta.json` beside it ([`CsvMeta`],
+//! settings, the notes that hold for the whole table — is `NAME.meta.json` beside it (`CsvMeta`,
 //! its JSON Schema in docs/schemas/csv-meta.schema.json). A note that belongs to a row stays on the
 //! row (friction.csv's `note` and `not_trusted` columns; ranking.csv's `note`).
 //!
-//! Input: the table's text and its [`CsvMeta`]; output: both files, each written atomically
+//! Input: the table's text and its `CsvMeta`; output: both files, each written atomically
 //! ([`crate::report::write_file`]).
 
 use super::error::{write_file, ReportError};
@@ -14,11 +14,11 @@ use std::path::{Path, PathBuf};
 
 /// The version of the sidecar's layout ([`CsvMeta::schema_version`]): raised when a field changes
 /// meaning or goes away.
-pub const CSV_META_SCHEMA_VERSION: u32 = 1;
+pub(crate) const CSV_META_SCHEMA_VERSION: u32 = 1;
 
 /// What a CSV table is and where it came from (`NAME.meta.json` beside `NAME.csv`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct CsvMeta {
+pub(crate) struct CsvMeta {
     /// [`CSV_META_SCHEMA_VERSION`].
     pub schema_version: u32,
     /// The file it describes (`friction.csv`), beside it.
@@ -73,12 +73,12 @@ impl CsvMeta {
 }
 
 /// `NAME.meta.json` for `NAME.csv`.
-pub fn meta_path(csv: &Path) -> PathBuf {
+pub(crate) fn meta_path(csv: &Path) -> PathBuf {
     csv.with_extension("meta.json")
 }
 
 /// Write the table `csv_text` to `path` and its sidecar beside it ([`meta_path`]).
-pub fn write_table(path: &Path, csv_text: &str, meta: &CsvMeta) -> Result<(), ReportError> {
+pub(crate) fn write_table(path: &Path, csv_text: &str, meta: &CsvMeta) -> Result<(), ReportError> {
     write_file(path, csv_text.as_bytes())?;
     // A map of strings and plain values: serialising cannot fail.
     let json = serde_json::to_string_pretty(meta).unwrap_or_default();

@@ -6,7 +6,7 @@ use super::plots;
 use std::path::Path;
 
 /// HTML-escape text.
-pub fn esc(s: &str) -> String {
+pub(crate) fn esc(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {
@@ -26,7 +26,7 @@ pub fn esc(s: &str) -> String {
 
 /// The style sheet of the report pages: two plot columns from 1300 px, one below; print: A4, one
 /// plot column, collapsed sections left out.
-pub const STYLE: &str = "body{font:15px/1.4 sans-serif;max-width:1360px;margin:0 auto;padding:0 16px;color:#222}\
+pub(crate) const STYLE: &str = "body{font:15px/1.4 sans-serif;max-width:1360px;margin:0 auto;padding:0 16px;color:#222}\
 h1{font-size:26px;margin:.5em 0 0}h2{font-size:20px;border-bottom:2px solid #ddd;margin:1.2em 0 .4em}h3{font-size:16px;margin:.8em 0 .3em}\
 .sub{color:#555;margin:0 0 .5em}\
 .first{display:grid;grid-template-columns:minmax(420px,1fr) minmax(600px,1.35fr);gap:16px;align-items:start}\
@@ -81,7 +81,7 @@ pub fn num(v: f64) -> String {
 
 /// `v` and its band (p05–p95) in one power of ten: `1.23·10⁻⁴` and `1.10–1.35 ·10⁻⁴`; the band
 /// part empty when there is none.
-pub fn num_band(v: f64, band: Option<(f64, f64)>) -> (String, String) {
+pub(crate) fn num_band(v: f64, band: Option<(f64, f64)>) -> (String, String) {
     let Some((lo, hi)) = band.filter(|(a, b)| a.is_finite() && b.is_finite()) else {
         return (num(v), String::new());
     };
@@ -98,7 +98,7 @@ pub fn num_band(v: f64, band: Option<(f64, f64)>) -> (String, String) {
 
 /// Draw `stem.svg` and its PNG twin `stem.png` in `dir`; returns the HTML to embed: the SVG inline
 /// and links to both files (or a note when there is nothing to plot).
-pub fn plot_pair<F>(dir: &Path, stem: &str, draw: F) -> Result<String, ReportError>
+pub(crate) fn plot_pair<F>(dir: &Path, stem: &str, draw: F) -> Result<String, ReportError>
 where
     F: Fn(&Path) -> Result<(), plots::PlotError>,
 {

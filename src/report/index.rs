@@ -24,18 +24,18 @@ use std::path::Path;
 /// The temperature (°C) and frequency (Hz) of the tan δ proxy: the rolling-resistance indicator
 /// compound developers read off a DMA temperature sweep (tan δ at 60 °C, 10 Hz), the same for every
 /// scene so the proxy ranks compounds once.
-pub const PROXY_TEMP_C: f64 = 60.0;
+pub(crate) const PROXY_TEMP_C: f64 = 60.0;
 /// See [`PROXY_TEMP_C`].
-pub const PROXY_FREQ_HZ: f64 = 10.0;
+pub(crate) const PROXY_FREQ_HZ: f64 = 10.0;
 
 /// A compound's tan δ proxy.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TanDeltaProxy {
     /// The compound.
     pub compound: String,
-    /// tan δ at [`PROXY_TEMP_C`] and [`PROXY_FREQ_HZ`] (NaN where the shift law is undefined).
+    /// tan δ at `PROXY_TEMP_C` and `PROXY_FREQ_HZ` (NaN where the shift law is undefined).
     pub tan_delta: f64,
-    /// [`PROXY_TEMP_C`] lies outside the measured temperatures (the shift law is extrapolated).
+    /// `PROXY_TEMP_C` lies outside the measured temperatures (the shift law is extrapolated).
     pub extrapolated: bool,
 }
 

@@ -1,8 +1,8 @@
 //! Plots of a compound's fit (plotters; SVG or PNG chosen by the file extension): raw isotherms, the
 //! master curve with the Prony fit, log a_T with the WLF and Arrhenius laws, the spectrum, line
-//! charts of friction, and heat maps. Every x–y plot is a [`Chart`] ([`super::chart`]).
+//! charts of friction, and heat maps. Every x–y plot is a `Chart` ([`super::chart`]).
 //!
-//! Input: [`Measurement`], [`MasterPoint`]s, [`RelaxationSpectrum`], [`ShiftLaw`]s, [`Chart`]s;
+//! Input: [`Measurement`], [`MasterPoint`]s, [`RelaxationSpectrum`], [`ShiftLaw`]s, `Chart`s;
 //! output: image files, written atomically (temp file + rename). Text is drawn with DejaVu Sans embedded in the
 //! binary (assets/fonts/, Bitstream Vera licence), registered with plotters' `ab_glyph` backend, so
 //! PNG works on machines with no font libraries. The library never prints; errors are [`PlotError`].
@@ -104,7 +104,7 @@ macro_rules! render_to {
 
 /// Draw `chart` to `path` (SVG or PNG by the extension); [`PlotError::NoData`] when no point can
 /// be drawn.
-pub fn plot_chart(chart: &Chart, what: &'static str, path: &Path) -> Result<(), PlotError> {
+pub(crate) fn plot_chart(chart: &Chart, what: &'static str, path: &Path) -> Result<(), PlotError> {
     if chart::ranges(chart).is_none() {
         return Err(PlotError::NoData {
             what,
@@ -116,23 +116,23 @@ pub fn plot_chart(chart: &Chart, what: &'static str, path: &Path) -> Result<(), 
 
 /// Most markers drawn per series: a 1e6-point export would otherwise put 1e6 circles into every SVG
 /// (hundreds of MB) and take minutes to draw; 2000 markers already overlap on a 900-pixel-wide plot.
-pub const MAX_MARKERS: usize = 2000;
+pub(crate) const MAX_MARKERS: usize = 2000;
 
-/// Every k-th item so that at most [`MAX_MARKERS`] remain (the first one always kept).
+/// Every k-th item so that at most `MAX_MARKERS` remain (the first one always kept).
 pub fn thinned<T: Copy>(v: &[T]) -> Vec<T> {
     let k = v.len().div_ceil(MAX_MARKERS).max(1);
     v.iter().step_by(k).copied().collect()
 }
 
 /// The symbols of a measurement's moduli: (storage, loss).
-pub fn symbols(kind: crate::ModulusKind) -> (&'static str, &'static str) {
+pub(crate) fn symbols(kind: crate::ModulusKind) -> (&'static str, &'static str) {
     let (storage, loss, _) = kind.symbols();
     (storage, loss)
 }
 
 /// Raw isotherms: storage modulus (filled dots, lines) and loss modulus (open circles) against
 /// frequency, coloured by temperature with a colour bar.
-pub fn isotherms_chart(m: &Measurement) -> Chart {
+pub(crate) fn isotherms_chart(m: &Measurement) -> Chart {
     let (lo, hi) = m
         .isotherms
         .iter()
@@ -180,14 +180,17 @@ pub fn isotherms_chart(m: &Measurement) -> Chart {
     }
 }
 
-/// Raw isotherms (see [`isotherms_chart`]).
+/// Raw isotherms (see `isotherms_chart`).
 pub fn plot_isotherms(m: &Measurement, path: &Path) -> Result<(), PlotError> {
     plot_chart(&isotherms_chart(m), "isotherms", path)
 }
 
 /// The Prony fit sampled at 20 points per decade over the reduced frequencies of `points`:
 /// (f, E′, E″).
-pub fn fit_curve(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Vec<(f64, f64, f64)> {
+pub(crate) fn fit_curve(
+    points: &[MasterPoint],
+    spectrum: &RelaxationSpectrum,
+) -> Vec<(f64, f64, f64)> {
     let (l0, l1) = points
         .iter()
         .filter(|p| p.reduced_freq_hz > 0.0 && p.reduced_freq_hz.is_finite())
@@ -210,7 +213,7 @@ pub fn fit_curve(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Vec<(
 
 /// Master curve (points) with the Prony fit (lines): storage and loss modulus against reduced
 /// frequency.
-pub fn master_chart(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Chart {
+pub(crate) fn master_chart(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Chart {
     let (blue, red) = (chart::PALETTE[0], chart::PALETTE[1]);
     let sym = symbols(spectrum.kind);
     let pts = thinned(points);
@@ -251,7 +254,7 @@ pub fn master_chart(points: &[MasterPoint], spectrum: &RelaxationSpectrum) -> Ch
     }
 }
 
-/// Master curve with the Prony fit (see [`master_chart`]).
+/// Master curve with the Prony fit (see `master_chart`).
 pub fn plot_master_fit(
     points: &[MasterPoint],
     spectrum: &RelaxationSpectrum,
@@ -356,43 +359,13 @@ pub fn plot_spectrum(spectrum: &RelaxationSpectrum, path: &Path) -> Result<(), P
     plot_chart(&c, "spectrum", path)
 }
 
-/// One named curve: (x, y) points.
-pub type Series = (String, Vec<(f64, f64)>);
-
-/// Curves of positive y on a log axis against x, linear or (when `log_x`) logarithmic, each a line
-/// with dots: the friction against temperature, speed and load. Points with y ≤ 0 or non-finite
-/// values are left out.
-pub fn plot_lines(
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    series: &[Series],
-    log_x: bool,
-    path: &Path,
-) -> Result<(), PlotError> {
-    let c = Chart {
-        title: title.into(),
-        x: Axis {
-            label: x_label.into(),
-            log: log_x,
-        },
-        y: Axis::log(y_label),
-        curves: series
-            .iter()
-            .map(|(n, p)| Curve::new(n.clone(), p.clone(), Mark::LineDots))
-            .collect(),
-        colour_bar: None,
-    };
-    plot_chart(&c, "line chart", path)
-}
-
 fn e<E: std::fmt::Display>(err: E) -> String {
     err.to_string()
 }
 
 /// One panel of a heat map: its title and z\[i\]\[j\] at (x\[i\], y\[j\]).
 #[derive(Debug, Clone)]
-pub struct HeatPanel {
+pub(crate) struct HeatPanel {
     /// Panel title (e.g. the temperature).
     pub title: String,
     /// Values, `z[i][j]` at `x[i]`, `y[j]`; non-positive or non-finite cells are left white.
@@ -409,7 +382,7 @@ fn heat_colour(s: f64) -> RGBColor {
 /// Heat maps side by side on log x and log y axes (x and y > 0, log-spaced grids), coloured by
 /// log10 z on one scale shared by all panels, with a colour bar: the 2-D friction maps (speed ×
 /// load, one panel per temperature).
-pub fn plot_heatmaps(
+pub(crate) fn plot_heatmaps(
     title: &str,
     axes: (&str, &str, &str),
     x: &[f64],

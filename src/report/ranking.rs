@@ -5,7 +5,7 @@
 //! Input: the [`CompoundOutcome`]s (each with its [`SceneStanding`] per scene, the rule in
 //! crate::results::outcome) and the [`SceneSet`]; output: the order ([`ranked`], [`apart`]), the
 //! CSV text ([`ranking_csv`], written with the csv crate, so a compound name with a comma stays one
-//! field) and its sidecar `ranking.meta.json` ([`ranking_meta`]; both written by [`write_ranking`]).
+//! field) and its sidecar `ranking.meta.json` (`ranking_meta`; both written by [`write_ranking`]).
 
 use super::csv_meta::CsvMeta;
 use super::csv_text::csv_text;
@@ -56,7 +56,7 @@ pub fn apart<'a>(
 }
 
 /// Temperatures as a space-separated list.
-pub fn temps_text(t: &[f64]) -> String {
+pub(crate) fn temps_text(t: &[f64]) -> String {
     t.iter()
         .map(|t| t.to_string())
         .collect::<Vec<_>>()
@@ -172,7 +172,7 @@ pub fn ranking_csv(
 
 /// The sidecar of `reports/ranking.csv` (crate::report::csv_meta): the ranking's rule
 /// (`settings.allow_extrapolation`, `settings.scenes`) and how to read the verdict.
-pub fn ranking_meta(scenes: &SceneSet, allow_extrapolation: bool) -> CsvMeta {
+pub(crate) fn ranking_meta(scenes: &SceneSet, allow_extrapolation: bool) -> CsvMeta {
     let rule = if allow_extrapolation {
         "over every temperature that computed, extrapolated ones included (--allow-extrapolation)"
     } else {
@@ -189,7 +189,7 @@ pub fn ranking_meta(scenes: &SceneSet, allow_extrapolation: bool) -> CsvMeta {
     m
 }
 
-/// Write `reports/ranking.csv` at `path` and its sidecar ([`ranking_csv`], [`ranking_meta`]).
+/// Write `reports/ranking.csv` at `path` and its sidecar ([`ranking_csv`], `ranking_meta`).
 pub fn write_ranking(
     path: &std::path::Path,
     outcomes: &[CompoundOutcome],

@@ -10,7 +10,7 @@ const MAX_TICKS: usize = 9;
 
 /// Ticks on a linear axis over [lo, hi]: multiples of the smallest step in {1, 2, 5}·10ᵏ that
 /// gives at most `MAX_TICKS` ticks (empty for an empty or non-finite range).
-pub fn linear_ticks(lo: f64, hi: f64) -> Vec<f64> {
+pub(crate) fn linear_ticks(lo: f64, hi: f64) -> Vec<f64> {
     ticks_of_step(lo, hi, |_| true)
 }
 
@@ -53,7 +53,7 @@ fn round_to_step(v: f64, step: f64) -> f64 {
 /// ticks, else linear 1-2-5 ticks of the values (6000, 7000, 8000 or 1020, 1040 …), with a step
 /// large enough that no two ticks stand closer than a tenth of the axis (linear ticks crowd at
 /// the top of a log axis). Returned as log10 of the tick values.
-pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+pub(crate) fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     if !(lo.is_finite() && hi.is_finite() && hi > lo) {
         return vec![];
     }
@@ -126,7 +126,7 @@ fn superscript(n: i64) -> String {
 
 /// The label of a tick value: plain decimals in [0.001, 1e5) (`0.02`, `2.5`, `500`, `20000`),
 /// else `10ⁿ` or `m·10ⁿ` with the mantissa to three significant digits.
-pub fn tick_label(v: f64) -> String {
+pub(crate) fn tick_label(v: f64) -> String {
     let a = v.abs();
     if !v.is_finite() {
         return String::new();
@@ -161,7 +161,7 @@ pub fn tick_label(v: f64) -> String {
 }
 
 /// The label of a tick on a log axis (position = log10 of the value).
-pub fn log_tick_label(log10_v: f64) -> String {
+pub(crate) fn log_tick_label(log10_v: f64) -> String {
     tick_label(10f64.powf(log10_v))
 }
 

@@ -22,13 +22,13 @@ use rust_xlsxwriter::{DocProperties, ExcelDateTime, Workbook, Worksheet, XlsxErr
 use std::path::{Path, PathBuf};
 
 /// The workbook's file name, in `reports/`.
-pub const WORKBOOK_NAME: &str = "viscoroll.xlsx";
+pub(crate) const WORKBOOK_NAME: &str = "viscoroll.xlsx";
 
 /// Excel's longest sheet name.
 const SHEET_NAME_MAX: usize = 31;
 
 /// The per-compound sheets: (suffix of the sheet name, what it holds).
-pub const COMPOUND_SHEETS: [(&str, &str); 6] = [
+pub(crate) const COMPOUND_SHEETS: [(&str, &str); 6] = [
     ("friction", "friction.csv"),
     ("map", "friction_map.csv"),
     ("map 2d", "friction_map_2d.csv"),
@@ -61,7 +61,7 @@ fn xlsx_error(path: &Path) -> impl FnOnce(XlsxError) -> ReportError + '_ {
 
 /// The sheet-name stems of `compounds` (in order): each name cut to leave room for the longest
 /// suffix, unique without regard to case (`~2`, `~3`, … where cut names meet).
-pub fn sheet_stems(compounds: &[&str]) -> Vec<String> {
+pub(crate) fn sheet_stems(compounds: &[&str]) -> Vec<String> {
     let room = SHEET_NAME_MAX - 1 - COMPOUND_SHEETS.iter().map(|s| s.0.len()).max().unwrap_or(0);
     let mut used: Vec<String> = vec!["ranking".into(), "contents".into()];
     let mut stems = Vec::with_capacity(compounds.len());
@@ -129,7 +129,7 @@ fn number_sheet(name: String, header: &[&str], rows: Vec<Vec<Option<f64>>>) -> S
 }
 
 /// The three sheets of a fit: master curve, shifts, Prony terms.
-pub fn fit_sheets(stem: &str, fit: &CompoundFit) -> [Sheet; 3] {
+pub(crate) fn fit_sheets(stem: &str, fit: &CompoundFit) -> [Sheet; 3] {
     let master = number_sheet(
         format!("{stem} master"),
         &["reduced_freq_hz", "storage_pa", "loss_pa"],
@@ -208,7 +208,7 @@ fn fill(ws: &mut Worksheet, sheet: &Sheet) -> Result<(), XlsxError> {
 }
 
 /// The workbook of `sheets`, in order, as .xlsx bytes.
-pub fn workbook_bytes(sheets: &[Sheet]) -> Result<Vec<u8>, XlsxError> {
+pub(crate) fn workbook_bytes(sheets: &[Sheet]) -> Result<Vec<u8>, XlsxError> {
     let mut wb = Workbook::new();
     let epoch = ExcelDateTime::from_ymd(1980, 1, 1)?;
     wb.set_properties(&DocProperties::new().set_creation_datetime(&epoch));
@@ -221,7 +221,7 @@ pub fn workbook_bytes(sheets: &[Sheet]) -> Result<Vec<u8>, XlsxError> {
 /// The sheets of the run `summary` (see the module doc): the ranking, the contents, then per
 /// compound that finished its six sheets. Compounds that failed have no tables; they are in the
 /// ranking (listed apart, with the error).
-pub fn run_sheets(summary: &RunSummary) -> Result<Vec<Sheet>, ReportError> {
+pub(crate) fn run_sheets(summary: &RunSummary) -> Result<Vec<Sheet>, ReportError> {
     let reports: PathBuf = summary
         .ranking_csv
         .parent()

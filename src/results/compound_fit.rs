@@ -119,7 +119,7 @@ pub struct MeasurementSummary {
 
 impl MeasurementSummary {
     /// Summarise a measurement.
-    pub fn from_measurement(m: &Measurement) -> Self {
+    pub(crate) fn from_measurement(m: &Measurement) -> Self {
         let freqs = m
             .isotherms
             .iter()
@@ -206,7 +206,7 @@ pub struct InputHash {
 
 impl Provenance {
     /// This build's provenance for the given inputs, without a timestamp.
-    pub fn for_inputs(inputs: Vec<InputHash>) -> Self {
+    pub(crate) fn for_inputs(inputs: Vec<InputHash>) -> Self {
         Self {
             tool: "viscoroll".to_string(),
             tool_version: env!("CARGO_PKG_VERSION").to_string(),
@@ -219,12 +219,12 @@ impl Provenance {
 /// Bounds the Prony quality figures are flagged against: pyvisco's published fit of EMS-CA
 /// (RMS log10 error 0.04 on E′, 0.15 on E″; data/SOURCES.md), the best known reference for what a
 /// good fit of real DMA data reaches.
-pub const PRONY_RMS_LOG10_STORAGE_BOUND: f64 = 0.04;
+pub(crate) const PRONY_RMS_LOG10_STORAGE_BOUND: f64 = 0.04;
 /// See [`PRONY_RMS_LOG10_STORAGE_BOUND`].
-pub const PRONY_RMS_LOG10_LOSS_BOUND: f64 = 0.15;
+pub(crate) const PRONY_RMS_LOG10_LOSS_BOUND: f64 = 0.15;
 
 /// The Prony stage's quality figures.
-pub fn prony_quality(info: &PronyInfo) -> Vec<QualityFigure> {
+pub(crate) fn prony_quality(info: &PronyInfo) -> Vec<QualityFigure> {
     vec![
         QualityFigure::bounded(
             "prony_rms_log10_storage",
@@ -386,7 +386,7 @@ impl CompoundFit {
 
     /// Why results of this fit are to be used with care (issue 31): the master-curve checks that
     /// flagged something (isotherm overlap, Kramers–Kronig, van Gurp–Palmen), as one reason.
-    pub fn care_reasons(&self) -> Vec<String> {
+    pub(crate) fn care_reasons(&self) -> Vec<String> {
         let mut care = match &self.tts {
             Some(t) if !t.flags.is_empty() => vec![super::outcome::cap_line(&format!(
                 "master curve: {} check(s) flagged: {}",

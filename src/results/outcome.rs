@@ -268,7 +268,7 @@ impl CompoundOutcome {
     }
 
     /// Finished, but not trusted in some scene (or its fit is not).
-    pub fn is_untrusted(&self) -> bool {
+    pub(crate) fn is_untrusted(&self) -> bool {
         self.error.is_none()
             && (!self.untrusted.is_empty() || self.standings.iter().any(|s| !s.trusted()))
     }

@@ -98,14 +98,12 @@ impl SceneSpec {
 
 /// The range of a scene's `tol` (and `run --tol`): the friction maps' (crate::contact::maps), the
 /// narrower of theirs and the contact solver's.
-pub const TOL_RANGE: (f64, f64) = (1e-10, 1e-2);
-/// Highest scene temperature, °C (no polymer is used above it): [`crate::limits::TEMP_MAX_C`].
-pub const TEMP_MAX_C: f64 = crate::limits::TEMP_MAX_C;
+pub(crate) const TOL_RANGE: (f64, f64) = (1e-10, 1e-2);
 
 /// The physical range (exclusive lower, inclusive upper bound) of a scene's number, by key: radius
 /// up to 100 m, loads up to 1e8 N/m (100 MN per metre of width: far beyond any rubber contact), speeds
 /// up to 1000 m/s (above the speed of sound in rubber the steady-state theory does not apply).
-pub fn range_of(key: &str) -> (f64, f64) {
+pub(crate) fn range_of(key: &str) -> (f64, f64) {
     match key {
         "roll_radius_mm" => (0.0, 1e5),
         "load_n_per_m" | "map_loads_n_per_m" => (0.0, 1e8),

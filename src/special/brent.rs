@@ -7,7 +7,7 @@
 /// with last iterate a: inverse quadratic interpolation (or the secant when a = c) when it is
 /// accepted, else bisection (`d = e = m`, m = (c − b)/2). `interpolate` is false when the caller
 /// forbids interpolation (e.g. the last steps were too small or a value is not finite).
-pub fn brent_step(
+pub(crate) fn brent_step(
     (a, b, c): (f64, f64, f64),
     (fa, fb, fc): (f64, f64, f64),
     m: f64,

@@ -33,7 +33,11 @@ pub fn lobatto_coefficients(v: &[f64]) -> Vec<f64> {
 
 /// Coefficients cⱼ (j < n) of the interpolant of `f` on [a, b] at the n Chebyshev points of the first
 /// kind, tₖ = cos(π(k + ½)/n) (the DCT-II); evaluate with [`clenshaw`] at t = (2x − a − b)/(b − a).
-pub fn first_kind_coefficients<const N: usize>(f: impl Fn(f64) -> f64, a: f64, b: f64) -> [f64; N] {
+pub(crate) fn first_kind_coefficients<const N: usize>(
+    f: impl Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+) -> [f64; N] {
     let v: Vec<f64> = (0..N)
         .map(|k| {
             let t = (PI * (k as f64 + 0.5) / N as f64).cos();
@@ -52,7 +56,7 @@ pub fn first_kind_coefficients<const N: usize>(f: impl Fn(f64) -> f64, a: f64, b
 }
 
 /// Clenshaw evaluation of Σ cⱼTⱼ(t) (`c` not empty).
-pub fn clenshaw(c: &[f64], t: f64) -> f64 {
+pub(crate) fn clenshaw(c: &[f64], t: f64) -> f64 {
     let (mut b1, mut b2) = (0.0, 0.0);
     for &cj in c.iter().skip(1).rev() {
         let b0 = 2.0 * t * b1 - b2 + cj;
@@ -64,7 +68,7 @@ pub fn clenshaw(c: &[f64], t: f64) -> f64 {
 
 /// Q′(t)/scale = √(1−t²)Σ_{k≥0} a_{k+1}U_k(t) = Σ_{n≥1} aₙ sin(nθ) at t = cos θ (`a[0]` ignored);
 /// the sine form keeps the error ~ n·ε right up to the edges, where a Clenshaw sum loses ~ n²·ε.
-pub fn sine_series(a: &[f64], theta: f64) -> f64 {
+pub(crate) fn sine_series(a: &[f64], theta: f64) -> f64 {
     let (s1, c1) = theta.sin_cos();
     let (mut s, mut c) = (s1, c1);
     let mut acc = 0.0;
@@ -86,7 +90,7 @@ pub fn sine_series(a: &[f64], theta: f64) -> f64 {
 /// Σ_{n≥1} aₙ sin(nθ_m) at all θ_m = πm/M, m = 0…M, with M the smallest power of two ≥ len(a):
 /// one complex FFT of length 2M (radix 2), O(M log M) instead of O(M·len) for the direct sums.
 /// Returns (θ_m, value) pairs.
-pub fn sine_series_grid(a: &[f64]) -> Vec<(f64, f64)> {
+pub(crate) fn sine_series_grid(a: &[f64]) -> Vec<(f64, f64)> {
     let m = a.len().max(2).next_power_of_two();
     let p = 2 * m;
     let mut re = vec![0.0; p];

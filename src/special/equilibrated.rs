@@ -6,7 +6,7 @@
 use nalgebra::{DMatrix, DVector};
 
 /// Solve `a x = r` after row and column equilibration (zeros when singular).
-pub fn solve_equilibrated(mut a: DMatrix<f64>, mut r: DVector<f64>) -> DVector<f64> {
+pub(crate) fn solve_equilibrated(mut a: DMatrix<f64>, mut r: DVector<f64>) -> DVector<f64> {
     let size = r.len();
     // row and column equilibration
     for i in 0..size {

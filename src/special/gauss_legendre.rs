@@ -56,7 +56,7 @@ fn legendre_and_derivative(m: usize, z: f64) -> (f64, f64) {
 }
 
 /// A reusable adaptive integrator (holds its nodes).
-pub struct Integrator {
+pub(crate) struct Integrator {
     x: Vec<f64>,
     w: Vec<f64>,
     /// Panels processed in the last call (a cost measure for tests/benchmarks).
@@ -82,7 +82,12 @@ impl Integrator {
 
     /// ∫ f over [edges\[0\], edges\[last\]], with the given edges as initial panels; relative tolerance `tol`
     /// against the magnitude of the whole integral (integrands here are of one sign or nearly so).
-    pub fn integrate(&mut self, mut f: impl FnMut(f64) -> f64, edges: &[f64], tol: f64) -> f64 {
+    pub(crate) fn integrate(
+        &mut self,
+        mut f: impl FnMut(f64) -> f64,
+        edges: &[f64],
+        tol: f64,
+    ) -> f64 {
         self.panels = 0;
         let mut stack: Vec<(f64, f64, f64, usize)> = Vec::new();
         let mut total_est = 0.0;

@@ -17,7 +17,7 @@ use super::shift::{overlap_rms, Prepared};
 const QUALITY_REACH: usize = 1;
 
 /// The flag of an isotherm whose shift the overlaps do not determine (docs/MATH.md §6.6).
-pub const SHIFT_NOT_DETERMINED: &str = "shift not determined by overlap";
+pub(crate) const SHIFT_NOT_DETERMINED: &str = "shift not determined by overlap";
 
 /// The shift and quality figures of every isotherm, and their summary; `kind` names the moduli in
 /// the flags (E′, E″ or G′, G″).

@@ -44,7 +44,7 @@ pub(super) struct Channels {
 impl Channels {
     /// Build the channels `settings` asks for; `log_b` are the vertical factors known before
     /// shifting (zero, or from temperature).
-    pub fn prepare(
+    pub(crate) fn prepare(
         iso: &[Clean],
         log_b: &[f64],
         settings: &MasterSettings,

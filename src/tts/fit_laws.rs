@@ -47,7 +47,7 @@ pub struct WlfFit {
 impl WlfFit {
     /// This fit moved exactly to `new_t_ref_c` (module docs), with its residuals against
     /// `points` (the shifts relative to the new reference). `None` below the asymptote.
-    pub fn rereferenced(&self, points: &[(f64, f64)], new_t_ref_c: f64) -> Option<WlfFit> {
+    pub(crate) fn rereferenced(&self, points: &[(f64, f64)], new_t_ref_c: f64) -> Option<WlfFit> {
         let (c1, c2_k) = rereference_wlf(self.c1, self.c2_k, self.t_ref_c, new_t_ref_c)?;
         let law = ShiftLaw::Wlf {
             t_ref_c: new_t_ref_c,
@@ -89,7 +89,7 @@ pub struct ArrheniusFit {
 
 impl ArrheniusFit {
     /// This fit moved exactly to `new_t_ref_c` (same E_a), with its residuals against `points`.
-    pub fn rereferenced(&self, points: &[(f64, f64)], new_t_ref_c: f64) -> ArrheniusFit {
+    pub(crate) fn rereferenced(&self, points: &[(f64, f64)], new_t_ref_c: f64) -> ArrheniusFit {
         let law = ShiftLaw::Arrhenius {
             t_ref_c: new_t_ref_c,
             activation_energy_j_per_mol: self.activation_energy_j_per_mol,
@@ -137,7 +137,7 @@ fn residuals(points: &[(f64, f64)], law: &ShiftLaw) -> (f64, Vec<ShiftResidual>)
 }
 
 /// WLF fit of (temperature °C, log10 a_T) at reference `t_ref_c` (see the module docs).
-pub fn fit_wlf(points: &[(f64, f64)], t_ref_c: f64) -> Result<WlfFit, TtsError> {
+pub(crate) fn fit_wlf(points: &[(f64, f64)], t_ref_c: f64) -> Result<WlfFit, TtsError> {
     let distinct = points
         .iter()
         .filter(|p| (p.0 - t_ref_c).abs() > 1e-9)
@@ -265,7 +265,7 @@ fn wlf_polish(
 }
 
 /// Arrhenius fit of (temperature °C, log10 a_T) at reference `t_ref_c` (see the module docs).
-pub fn fit_arrhenius(points: &[(f64, f64)], t_ref_c: f64) -> Result<ArrheniusFit, TtsError> {
+pub(crate) fn fit_arrhenius(points: &[(f64, f64)], t_ref_c: f64) -> Result<ArrheniusFit, TtsError> {
     let t0 = t_ref_c + ZERO_CELSIUS_K;
     let (mut sh, mut hh) = (0.0, 0.0);
     for &(t, s) in points {

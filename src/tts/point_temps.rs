@@ -3,7 +3,7 @@
 //! so each point is moved to the isotherm's temperature before shifting.
 //!
 //! Input: a [`Measurement`] and the local slope d log10 a_T/dT at each isotherm (from a first
-//! shifting pass, [`slopes_from_shifts`], or from a given law); output: a corrected [`Measurement`]
+//! shifting pass, `slopes_from_shifts`, or from a given law); output: a corrected [`Measurement`]
 //! whose points carry the isotherm's temperature and the frequency that gives the same reduced
 //! frequency there. Time–temperature superposition (docs/MATH.md §6, §12): a point at T_p and f has the
 //! reduced frequency f·a_T(T_p) = f·10^(log a(T_p) − log a(T_i))·a_T(T_i), so to first order in
@@ -18,7 +18,7 @@ use crate::dma::Measurement;
 /// d log10 a_T/dT (per K) at each temperature of `shifts` ((T in °C, log10 a_T), any order), from
 /// the parabola through the point and its two neighbours in temperature (three-point derivative on
 /// the uneven grid); at the two ends the secant to the neighbour. Returned in the order given.
-pub fn slopes_from_shifts(shifts: &[(f64, f64)]) -> Vec<f64> {
+pub(crate) fn slopes_from_shifts(shifts: &[(f64, f64)]) -> Vec<f64> {
     let n = shifts.len();
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| shifts[a].0.total_cmp(&shifts[b].0));

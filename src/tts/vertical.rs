@@ -12,7 +12,7 @@ use crate::material::ZERO_CELSIUS_K;
 use nalgebra::{DMatrix, DVector};
 
 /// log10 b_T = log10(T/T_ref) (kelvin), the constant-density entropic factor.
-pub fn log10_b_t_temperature(temp_c: f64, t_ref_c: f64) -> f64 {
+pub(crate) fn log10_b_t_temperature(temp_c: f64, t_ref_c: f64) -> f64 {
     ((temp_c + ZERO_CELSIUS_K) / (t_ref_c + ZERO_CELSIUS_K)).log10()
 }
 

@@ -90,7 +90,7 @@ impl ReducedProblem {
     }
 
     /// Glassy Hertz contact length l_g = 2√(2RCN*/π) in m.
-    pub fn glassy_length_m(&self, radius_m: f64, load_n_per_m: f64) -> f64 {
+    pub(crate) fn glassy_length_m(&self, radius_m: f64, load_n_per_m: f64) -> f64 {
         2.0 * (2.0 * radius_m * self.compliance_factor_per_pa * load_n_per_m / PI).sqrt()
     }
 

@@ -60,11 +60,11 @@ use crate::special::chebyshev::{clenshaw, lobatto_coefficients};
 use std::f64::consts::PI;
 
 /// Initial panel width in y = ln η: two decades of the cover over the glassy contact length.
-pub const ETA_PANEL_WIDTH: f64 = 2.0 * std::f64::consts::LN_10;
+pub(crate) const ETA_PANEL_WIDTH: f64 = 2.0 * std::f64::consts::LN_10;
 /// Starting degree in y: 0, chosen per panel by [`eta_start_degree`].
-pub const ETA_START_DEGREE: usize = 0;
+pub(crate) const ETA_START_DEGREE: usize = 0;
 /// Largest degree in y before a panel is halved in y.
-pub const ETA_MAX_DEGREE: usize = 16;
+pub(crate) const ETA_MAX_DEGREE: usize = 16;
 
 /// One panel: coefficients of ln φ and ln λ on [a, b] × [c, d], row j (degree in x) of length n_y + 1.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,10 +1,10 @@
-//! The viscoelastic curves of a datasheet as [`Chart`]s: E′ and E″ and tan δ against temperature
+//! The viscoelastic curves of a datasheet as `Chart`s: E′ and E″ and tan δ against temperature
 //! at 1 and 10 Hz (the fit as lines, the measured points at those frequencies as markers, as
 //! TRIOS and Proteus summaries show them), the tan δ master curve, and the relaxation modulus E(t)
 //! and creep compliance J(t) at the reference temperature.
 //!
 //! Input: a [`CompoundFit`] and its [`Measurement`]; output: charts for
-//! [`crate::report::plots::plot_chart`]. The fit's moduli at a temperature are the relaxation
+//! `crate::report::plots::plot_chart`. The fit's moduli at a temperature are the relaxation
 //! spectrum shifted by the fit's law (docs/MATH.md §5.1, §6).
 
 use super::transitions::{at, Quantity};
@@ -14,7 +14,7 @@ use crate::results::CompoundFit;
 use crate::Measurement;
 
 /// The two frequencies of the temperature sweeps (Hz).
-pub const SWEEP_FREQS_HZ: [f64; 2] = [1.0, 10.0];
+pub(crate) const SWEEP_FREQS_HZ: [f64; 2] = [1.0, 10.0];
 
 /// A measured point counts as taken at frequency f when within 2 % of it (DMA sweeps list 1 and
 /// 10 Hz as set points; the recorded frequency differs by the instrument's rounding).
@@ -53,7 +53,7 @@ fn measured_at(m: &Measurement, freq_hz: f64) -> Vec<(f64, f64, f64)> {
 }
 
 /// Storage and loss modulus against temperature at 1 and 10 Hz, and tan δ likewise.
-pub fn temperature_sweeps(fit: &CompoundFit, m: &Measurement) -> (Chart, Chart) {
+pub(crate) fn temperature_sweeps(fit: &CompoundFit, m: &Measurement) -> (Chart, Chart) {
     let temps = sweep_temps(fit);
     let sym = symbols(fit.relaxation.kind);
     // measured points only when they are the same kind of modulus as the fit
@@ -125,7 +125,7 @@ pub fn temperature_sweeps(fit: &CompoundFit, m: &Measurement) -> (Chart, Chart) 
 /// Each replicate specimen's own measurement at 1 Hz against temperature (E′ dots, E″ circles,
 /// one colour per specimen) beside the pooled fit's lines (issue 31: "the datasheet shows each
 /// specimen's curves"); `None` with fewer than two specimens or none of the fit's kind.
-pub fn specimen_sweeps(fit: &CompoundFit, specimens: &[Measurement]) -> Option<Chart> {
+pub(crate) fn specimen_sweeps(fit: &CompoundFit, specimens: &[Measurement]) -> Option<Chart> {
     if specimens.len() < 2 || specimens.iter().any(|m| m.kind != fit.relaxation.kind) {
         return None;
     }
@@ -181,7 +181,7 @@ pub fn specimen_sweeps(fit: &CompoundFit, specimens: &[Measurement]) -> Option<C
 }
 
 /// tan δ of the master curve (points) and of the Prony fit (line) against reduced frequency.
-pub fn master_tan_delta(fit: &CompoundFit) -> Chart {
+pub(crate) fn master_tan_delta(fit: &CompoundFit) -> Chart {
     let pts = thinned(&fit.master_curve);
     let line = fit_curve(&fit.master_curve, &fit.relaxation);
     Chart {
@@ -227,7 +227,7 @@ fn times(fit: &CompoundFit) -> Vec<f64> {
 
 /// The relaxation modulus E(t) and (when the fit has a creep spectrum) the creep compliance J(t)
 /// at the reference temperature.
-pub fn relaxation_and_creep(fit: &CompoundFit) -> (Chart, Option<Chart>) {
+pub(crate) fn relaxation_and_creep(fit: &CompoundFit) -> (Chart, Option<Chart>) {
     let ts = times(fit);
     let tref = fit.shift_law.t_ref_c();
     let sym = symbols(fit.relaxation.kind).0.trim_end_matches('′');

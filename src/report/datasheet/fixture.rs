@@ -9,7 +9,11 @@ use std::collections::BTreeMap;
 
 /// A fit whose relaxation spectrum is `spectrum`, its law `law`, measured at two isotherms at the
 /// ends of `range_c` (°C); its creep spectrum the exact conversion of `spectrum`.
-pub fn fit_with(spectrum: RelaxationSpectrum, law: ShiftLaw, range_c: (f64, f64)) -> CompoundFit {
+pub(crate) fn fit_with(
+    spectrum: RelaxationSpectrum,
+    law: ShiftLaw,
+    range_c: (f64, f64),
+) -> CompoundFit {
     let s = PronySettings::default();
     let truth = rubber_like_spectrum(&relaxation_times_s(1e-2, 1e4, &s));
     let pts = master_points(&truth, 1e-2, 1e4, 5.0, 0.0, 1);

@@ -42,7 +42,7 @@ fn on_curve(spec: &SceneSpec, pts: &[MapPoint], t: f64, by_speed: bool) -> Vec<(
 /// interpolant as the listed points: in s on a half-space, in s and h/l_g on a cover) and the listed
 /// points as dots; a map without dense curves (one written before they existed, or a covered
 /// surface that could not be built) shows the listed points joined.
-pub fn speed_and_load_plots(
+pub(crate) fn speed_and_load_plots(
     dir: &Path,
     spec: &SceneSpec,
     map: &FrictionMaps,
@@ -105,7 +105,7 @@ fn distinct(values: impl Iterator<Item = f64>) -> Vec<f64> {
 
 /// The heat maps of the speed × load grid (`friction_SCENE_map2d.{svg,png}`, one panel per map
 /// temperature); `None` when the scene has no grid.
-pub fn grid_plot(
+pub(crate) fn grid_plot(
     dir: &Path,
     spec: &SceneSpec,
     map: &FrictionMaps,

@@ -9,7 +9,8 @@
 
 pub mod curves;
 #[cfg(test)]
-pub mod fixture;
+#[cfg(test)]
+pub(crate) mod fixture;
 pub mod maps;
 pub mod sections;
 pub mod summary;

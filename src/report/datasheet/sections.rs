@@ -1,8 +1,7 @@
 //! The HTML sections of a datasheet, one function each, in page order: source files, test
-//! conditions, shift factors, quality flags, tan δ, rolling friction, Prony series, creep spectrum,
-//! FEA cards. Each takes the fit (and what else it shows) and returns HTML text.
+//! conditions, shift factors, quality flags, rolling friction, Prony series, creep spectrum, FEA
+//! cards (tan δ is in the summary). Each takes the fit (and what else it shows) and returns HTML text.
 
-use super::tan_delta::{tan_delta_at, tan_delta_peak};
 use crate::report::html::{esc, num};
 use crate::report::{card_shift, cards};
 use crate::results::{CompoundFit, FrictionPoint, SceneSpec};
@@ -10,7 +9,7 @@ use crate::ShiftLaw;
 use std::fmt::Write as _;
 
 /// A shift law in words.
-pub fn law_text(law: &ShiftLaw) -> String {
+pub(crate) fn law_text(law: &ShiftLaw) -> String {
     match law {
         ShiftLaw::Wlf { t_ref_c, c1, c2_k } => {
             format!("WLF: T_ref = {t_ref_c:.2} °C, C1 = {c1:.3}, C2 = {c2_k:.2} K")
@@ -30,7 +29,7 @@ pub fn law_text(law: &ShiftLaw) -> String {
 
 /// The verdict first: whether the fit is trusted, and per scene the mean F/N by the ranking's rule
 /// with the temperatures it averages, leaves out or could not compute.
-pub fn trust(
+pub(crate) fn trust(
     fit: &CompoundFit,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     allow_extrapolation: bool,
@@ -164,7 +163,7 @@ pub fn sources(fit: &CompoundFit) -> String {
 }
 
 /// Mode, Poisson's ratio, counts and ranges of the measurement, and the ingest warnings.
-pub fn test_conditions(fit: &CompoundFit) -> String {
+pub(crate) fn test_conditions(fit: &CompoundFit) -> String {
     let m = &fit.measurement;
     let (tlo, thi) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
     let mut h = format!(
@@ -235,30 +234,6 @@ pub fn quality(fit: &CompoundFit) -> String {
             );
         }
     }
-    h
-}
-
-/// The tan δ peak at 1 Hz (T_g) and tan δ at 0 and 60 °C, 10 Hz.
-pub fn tan_delta(fit: &CompoundFit) -> String {
-    let mut h = String::from("<h2>tan δ</h2><table><tr><th>quantity</th><th>value</th></tr>");
-    match tan_delta_peak(fit, 1.0) {
-        Some((t, v)) => {
-            let _ = write!(h, "<tr><td class=\"l\">tan δ peak at 1 Hz (T<sub>g</sub>)</td><td>{v:.3} at {t:.1} °C</td></tr>");
-        }
-        None => h.push_str("<tr><td class=\"l\">tan δ peak at 1 Hz (T<sub>g</sub>)</td><td>not inside the measured temperatures</td></tr>"),
-    }
-    for tc in [0.0, 60.0] {
-        let out = fit
-            .measured_range_c()
-            .is_some_and(|(a, b)| tc < a || tc > b);
-        let _ = write!(
-            h,
-            "<tr><td class=\"l\">tan δ at {tc} °C, 10 Hz</td><td>{:.4}{}</td></tr>",
-            tan_delta_at(fit, tc, 10.0),
-            if out { " (extrapolated)" } else { "" }
-        );
-    }
-    h.push_str("</table>");
     h
 }
 
@@ -348,7 +323,7 @@ pub fn creep(fit: &CompoundFit) -> String {
 
 /// Abaqus, ANSYS and LS-DYNA cards with the shift law each can carry (`card_shift`: WLF where it
 /// holds, else Arrhenius; a card that cannot be written says why), with the warnings about the law.
-pub fn fea_cards(fit: &CompoundFit) -> String {
+pub(crate) fn fea_cards(fit: &CompoundFit) -> String {
     let shifts = fit.tts.as_ref().map(|t| t.shifts.as_slice()).unwrap_or(&[]);
     let chosen = card_shift::card_shift(shifts, &fit.shift_law);
     let opts = cards::CardOptions::default();

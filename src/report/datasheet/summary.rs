@@ -72,7 +72,7 @@ const MAX_VALUE: usize = 80;
 
 /// The sample's metadata lines (label, value), from the first source file that has each; values
 /// that are placeholders (`Anonymous`, `xxx`, `MM/DD/YYYY`) are left out.
-pub fn sample_lines(fit: &CompoundFit) -> Vec<(&'static str, String)> {
+pub(crate) fn sample_lines(fit: &CompoundFit) -> Vec<(&'static str, String)> {
     let placeholder = |v: &str| {
         let v = v.trim().to_lowercase();
         v.is_empty() || v == "anonymous" || v == "xxx" || v == "mm/dd/yyyy"
@@ -243,7 +243,7 @@ fn band_notes(friction: &[(SceneSpec, Vec<FrictionPoint>)]) -> String {
 
 /// The friction matrix: a row per scene, a column per temperature, F/N with its band; then the
 /// body of each scene and why.
-pub fn friction_matrix(
+pub(crate) fn friction_matrix(
     fit: &CompoundFit,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     allow_extrapolation: bool,
@@ -383,7 +383,7 @@ fn scene_body(h: &mut String, spec: &SceneSpec, pts: &[FrictionPoint]) {
 }
 
 /// The first screen: facts beside the friction plot, then the friction matrix.
-pub fn first_screen(
+pub(crate) fn first_screen(
     fit: &CompoundFit,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     allow_extrapolation: bool,
@@ -399,7 +399,7 @@ pub fn first_screen(
 
 /// The compound's verdict, the worst over its scenes, in the words of ranking.csv and the index
 /// (crate::results::TrustLevel), with every reason behind it.
-pub fn verdict_html(
+pub(crate) fn verdict_html(
     fit: &CompoundFit,
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
     allow_extrapolation: bool,

@@ -2,7 +2,7 @@
 //! `friction_map.csv` (F/N against speed and load) and `friction_map_2d.csv` (the speed × load grid).
 //!
 //! Input: the friction points and maps of each scene; output: CSV text (crate::report::csv_text),
-//! one header row and no comment lines, and each table's sidecar ([`compound_meta`]:
+//! one header row and no comment lines, and each table's sidecar (`compound_meta`:
 //! provenance, the fit's settings, its warnings; crate::report::csv_meta).
 //! Numbers are printed in their shortest round-trip form (`{:e}`), so a value read back is the value
 //! computed.
@@ -14,7 +14,7 @@ use crate::results::{CompoundFit, FrictionMaps, FrictionPoint, SceneSpec};
 /// The sidecar of a compound's table `table` (crate::report::csv_meta): the fit's tool, version,
 /// inputs and resolved settings (`settings.fit`), why it is not trusted (`flags`) and its
 /// warnings (`fit_warnings`, numbered F1, F2, … in order).
-pub fn compound_meta(
+pub(crate) fn compound_meta(
     fit: &CompoundFit,
     table: &str,
     description: &str,
@@ -32,13 +32,13 @@ pub fn compound_meta(
 }
 
 /// What friction.csv holds (its sidecar's `description`).
-pub const FRICTION_DESCRIPTION: &str =
+pub(crate) const FRICTION_DESCRIPTION: &str =
     "rolling friction F/N of one compound per scene and temperature, with its band and notes";
 /// What friction_map.csv holds.
-pub const MAP_DESCRIPTION: &str =
+pub(crate) const MAP_DESCRIPTION: &str =
     "F/N against the scene's listed speeds and loads at each map temperature";
 /// What friction_map_2d.csv holds; the interpolant's relative tolerance is `settings.tolerance`.
-pub const GRID_DESCRIPTION: &str =
+pub(crate) const GRID_DESCRIPTION: &str =
     "F/N and contact length on a speed x load grid at each map temperature (reduced-variable interpolant)";
 
 /// `friction.csv`: scene, temperature, F/N, F* (N/m), contact length, log10 a_T, extrapolated,
@@ -55,7 +55,7 @@ pub const GRID_DESCRIPTION: &str =
 /// long: 24 lines for EMS-CA) are written once in full, in order, in the sidecar's `warnings`
 /// (friction.meta.json, [`compound_meta`]; the datasheet shows them too), and every row's note
 /// ends with their codes F1–Fn ([`fit_warning_codes`]), so a reader of one row knows to look there.
-pub fn friction_csv(
+pub(crate) fn friction_csv(
     flags: &[String],
     fit_warnings: &[String],
     friction: &[(SceneSpec, Vec<FrictionPoint>)],
@@ -117,7 +117,7 @@ pub fn friction_csv(
 
 /// The pointer a row's note carries to the sidecar's warnings: `fit warning F1 (see
 /// friction.meta.json)`, `fit warnings F1–F4 (see friction.meta.json)`; empty without fit warnings.
-pub fn fit_warning_codes(n: usize) -> String {
+pub(crate) fn fit_warning_codes(n: usize) -> String {
     match n {
         0 => String::new(),
         1 => "fit warning F1 (see friction.meta.json)".into(),
@@ -142,12 +142,12 @@ fn row_note(untrusted: bool, point: String, codes: &str) -> String {
 }
 
 /// A band percentile as printed (empty without bands).
-pub fn band_text(v: Option<f64>) -> String {
+pub(crate) fn band_text(v: Option<f64>) -> String {
     v.map_or(String::new(), |v| format!("{v:e}"))
 }
 
 /// `friction_map.csv`: F/N against the listed speeds and loads at every map temperature.
-pub fn map_csv(scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
+pub(crate) fn map_csv(scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
     let rows = scenes.iter().flat_map(|(spec, map)| {
         map.points.iter().map(move |p| {
             vec![
@@ -167,7 +167,7 @@ pub fn map_csv(scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
 
 /// `friction_map_2d.csv`: F/N and contact length on the speed × load grid (the interpolant's
 /// tolerance is in the sidecar, [`GRID_DESCRIPTION`]).
-pub fn grid_csv(scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
+pub(crate) fn grid_csv(scenes: &[(&SceneSpec, &FrictionMaps)]) -> String {
     let rows = scenes.iter().flat_map(|(spec, map)| {
         map.grid.iter().map(move |p| {
             vec![

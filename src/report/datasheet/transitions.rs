@@ -64,7 +64,7 @@ pub fn peak(fit: &CompoundFit, q: Quantity, freq_hz: f64) -> Option<(f64, f64)> 
 /// the lowest measured temperature (the glassy side) meets the tangent at the inflection (the
 /// steepest descent); `None` when the steepest descent lies on an end of the range or the tangents
 /// meet outside it.
-pub fn onset(fit: &CompoundFit, freq_hz: f64) -> Option<f64> {
+pub(crate) fn onset(fit: &CompoundFit, freq_hz: f64) -> Option<f64> {
     let temps = scan(fit)?;
     let y: Vec<f64> = temps
         .iter()

@@ -15,7 +15,7 @@ use crate::special::scaled_bessel_i;
 const BESSEL_CUT: f64 = 1e-18;
 
 /// Chebyshev coefficients Fₙ (n ≥ 0) of e^{μ(t−1)} on [−1, 1].
-pub fn exp_coefficients(mu: f64) -> Vec<f64> {
+pub(crate) fn exp_coefficients(mu: f64) -> Vec<f64> {
     let mut c = scaled_bessel_i(mu, BESSEL_CUT);
     for v in c.iter_mut().skip(1) {
         *v *= 2.0;
@@ -24,7 +24,7 @@ pub fn exp_coefficients(mu: f64) -> Vec<f64> {
 }
 
 /// θ = acosh(1+σ) and w = e^{−θ} = 1/(1+σ+√(σ(2+σ))), both without cancellation for small σ.
-pub fn theta_w(sigma: f64) -> (f64, f64) {
+pub(crate) fn theta_w(sigma: f64) -> (f64, f64) {
     let r = (sigma * (2.0 + sigma)).sqrt();
     ((sigma + r).ln_1p(), 1.0 / (1.0 + sigma + r))
 }
@@ -36,7 +36,7 @@ pub fn theta_w(sigma: f64) -> (f64, f64) {
 /// exponential components, so no cancellation); larger θ a Horner sum cut where e^{−nθ} < e^{−41},
 /// run for eight points at once and two coefficients per step, s ← s·w² + (aₙw² + aₙ₋₁w)
 /// (independent chains: one sum at a time is bound by the latency of its multiply-add chain).
-pub fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
+pub(crate) fn exterior_values(a: &[f64], thetas: &[f64], ws: &[f64], out: &mut [f64]) {
     exterior_values_by(a, thetas, ws, |k| taylor_factors(thetas[k]), out);
 }
 
@@ -59,7 +59,7 @@ fn taylor_factors(theta: f64) -> [f64; K] {
 /// Points θ (w = e^{−θ}) at which many series' exterior functions are wanted, with the Taylor
 /// factors of [`exterior_values`] formed once for all series (they depend on θ alone):
 /// [`ExteriorPoints::values`] gives `exterior_values`' results bit for bit.
-pub struct ExteriorPoints {
+pub(crate) struct ExteriorPoints {
     thetas: Vec<f64>,
     ws: Vec<f64>,
     /// Taylor factors at the points with θ ≤ 0.5 (the only ones the Taylor branch can take).
@@ -84,16 +84,6 @@ impl ExteriorPoints {
             ws,
             factors,
         }
-    }
-
-    /// Number of points.
-    pub fn len(&self) -> usize {
-        self.thetas.len()
-    }
-
-    /// True without points.
-    pub fn is_empty(&self) -> bool {
-        self.thetas.is_empty()
     }
 
     /// [`exterior_values`] of the series `a` at these points.
@@ -220,7 +210,7 @@ mod tests {
             .collect();
         let (th, w): (Vec<f64>, Vec<f64>) = sig.iter().map(|&s| theta_w(s)).unzip();
         let points = ExteriorPoints::new(th.clone(), w.clone());
-        assert_eq!(points.len(), sig.len());
+        assert_eq!(points.thetas.len(), sig.len());
         for a in [
             vec![0.0, 1.0],
             exp_coefficients(0.3),

@@ -47,7 +47,7 @@
 //! evaluation (tools/gen_exact_reference.py) to ≤ 1.1e-14 relative over f/b = 1e-3…1e3, bλ = 1e-4…1e4,
 //! κλ ≤ 2e4 (24 cases); the pressure satisfies eq. 3.25 by direct quadrature to ~4e-15 of
 //! max|ξβ − ξ²/2|. The series has ≈ 6.6√(κλ) terms for large κλ (20927 at κλ = 1e7); inputs up to
-//! κλ = 1e9 ([`MAX_KAPPA_LAMBDA`]) run (≈ 1 s per solve at κλ = 1e8, under 1 ms at 1e4, release build)
+//! κλ = 1e9 (`MAX_KAPPA_LAMBDA`) run (≈ 1 s per solve at κλ = 1e8, under 1 ms at 1e4, release build)
 //! and bλ down to 1e-12 and below work (the quadrature range grows only like ln(1/bλ)); beyond 2e4 the
 //! results are checked only through the limits and the scaling test, not against the table.
 //! Check case (Goodier & Loutzenheiser, thesis Table 1): f = 10, b = 1, λ = 1 gives β/λ = 0.195197805,
@@ -64,10 +64,10 @@ use crate::special::gauss_legendre::Integrator;
 use crate::special::{one_minus_one_plus_c_i0, scaled_bessel_i};
 
 /// Largest κλ accepted: the series then has ~1.3e5 terms and one solve takes of the order of a second.
-pub const MAX_KAPPA_LAMBDA: f64 = 1e9;
+pub(crate) const MAX_KAPPA_LAMBDA: f64 = 1e9;
 
 /// Smallest bλ accepted (the solution is then Hertz to about (f/b)·bλ·ln(1/bλ) anyway).
-pub const MIN_B_LAMBDA: f64 = 1e-250;
+pub(crate) const MIN_B_LAMBDA: f64 = 1e-250;
 
 /// Relative cut of the Bessel series Ĩₙ(c) (terms below it are dropped; relative to the largest order ≥ 1; see [`scaled_bessel_i`]).
 const SERIES_CUT: f64 = 1e-19;

@@ -94,7 +94,7 @@ impl Kernel {
     /// (the Toeplitz structure of the thesis scheme on a uniform grid, docs/MATH.md §2).
     ///
     /// The logarithmic part is summed in closed form without cancellation:
-    /// (1/h)Δ²[ξ²log|ξ|/2] = h(D(k) + log h) with D(k) = ½Δ²[k² log|k|] (see [`half_second_diff_k2logk`]).
+    /// (1/h)Δ²[ξ²log|ξ|/2] = h(D(k) + log h) with D(k) = ½Δ²[k² log|k|] (see `half_second_diff_k2logk`).
     /// Per term with H = bh: (fᵢ/bᵢ³)(1/h)Δ²h₂ = (fᵢ/bᵢ)·h·S(k), S(k) = Δ²h₂(kH)/H². Where |kH| < 2, S is
     /// the plain second difference (h₂ ~ x³ log|x| is small there: relative loss ≲ k²ε). Elsewhere the
     /// closed form of h₂ splits S into D(k) + log H + γ_E − 3/2 + E(k)/H + Δ²h(kH)/H² with
@@ -200,7 +200,7 @@ fn xlogx(x: f64) -> f64 {
 
 /// D(k) = ½[(k+1)² log|k+1| − 2k² log|k| + (k−1)² log|k−1|] (0·log 0 = 0), without cancellation:
 /// for |k| ≥ 2, D = log|k| + ½[(k²+1) log(1 − 1/k²) + 4|k| artanh(1/|k|)] → log|k| + 3/2.
-pub fn half_second_diff_k2logk(k: i64) -> f64 {
+pub(crate) fn half_second_diff_k2logk(k: i64) -> f64 {
     let k = k.unsigned_abs();
     match k {
         0 => 0.0,
@@ -215,7 +215,7 @@ pub fn half_second_diff_k2logk(k: i64) -> f64 {
 
 /// E(k) = (k+1) log|k+1| − 2k log|k| + (k−1) log|k−1| (0·log 0 = 0), odd in k, without cancellation:
 /// for |k| ≥ 2, E = k log(1 − 1/k²) + 2 artanh(1/k) ≈ 1/k.
-pub fn second_diff_klogk(k: i64) -> f64 {
+pub(crate) fn second_diff_klogk(k: i64) -> f64 {
     let sign = if k < 0 { -1.0 } else { 1.0 };
     let k = k.unsigned_abs();
     let e = match k {

@@ -58,17 +58,17 @@ impl Modes {
     }
 
     /// κⱼ = bⱼ + δⱼ.
-    pub fn kappa(&self, j: usize) -> f64 {
+    pub(crate) fn kappa(&self, j: usize) -> f64 {
         self.b[j] + self.delta[j]
     }
 
     /// bᵢ − κⱼ without cancellation.
-    pub fn b_minus_kappa(&self, i: usize, j: usize) -> f64 {
+    pub(crate) fn b_minus_kappa(&self, i: usize, j: usize) -> f64 {
         (self.b[i] - self.b[j]) - self.delta[j]
     }
 
     /// S = 1 + Σ fᵢ/bᵢ = J∞/J_g, the relaxed-to-glassy compliance ratio.
-    pub fn compliance_ratio(&self) -> f64 {
+    pub(crate) fn compliance_ratio(&self) -> f64 {
         1.0 + self.f.iter().zip(&self.b).map(|(f, b)| f / b).sum::<f64>()
     }
 }

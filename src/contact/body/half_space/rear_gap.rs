@@ -39,7 +39,7 @@
 //! for one term, +1.3 ms for the 10-term and +2.0 ms for the 30-term spectrum of the bench table
 //! (56, 519 and 497 Chebyshev terms since fast modes are lumped with a measured correction; before
 //! that, 13 706 and 22 860 terms cost +24 and +40 ms: the pressure at ~250 nodes, O(nodes × terms)).
-//! Hence [`contact_check`] looks at ~8 points first and runs the full [`rear_scan`] only when a gap
+//! Hence `contact_check` looks at ~8 points first and runs the full [`rear_scan`] only when a gap
 //! is closed or nearly so; `AutoSettings::gap_check = false` skips it (as the pipeline does).
 //!
 //! # β < 0 and the rear edge: what the scans show
@@ -97,7 +97,7 @@ impl GapEvaluator {
     }
 
     /// As [`GapEvaluator::new`] with a given Gauss–Legendre order and panel growth ratio (> 1).
-    pub fn with_rule(
+    pub(crate) fn with_rule(
         modes: &Modes,
         scale: f64,
         sol: &LambdaSolution,
@@ -179,7 +179,7 @@ impl GapEvaluator {
     }
 
     /// ρv(ξ) for ξ outside [0, λ] (NaN inside).
-    pub fn displacement(&self, xi: f64) -> f64 {
+    pub(crate) fn displacement(&self, xi: f64) -> f64 {
         let (lam, l) = (self.lambda, 0.5 * self.lambda);
         let behind = xi < 0.0;
         let sigma = if behind {
@@ -295,7 +295,7 @@ const AHEAD: [f64; 3] = [0.02, 0.3, 1.5];
 /// further behind. The kernel of
 /// eq. 3.19 behind the contact (negative arguments of h, through Ei) costs ~1.5 µs per evaluation,
 /// so the full scan costs ~(25 points × ~200 nodes × modes) evaluations: it runs only when needed.
-pub fn contact_check(modes: &Modes, scale: f64, sol: &LambdaSolution) -> RearScan {
+pub(crate) fn contact_check(modes: &Modes, scale: f64, sol: &LambdaSolution) -> RearScan {
     let lam = sol.lambda;
     let ev = GapEvaluator::new(modes, scale, sol, 1e-3 * lam);
     let mut behind: Vec<f64> = [1e-3, 1e-2, 0.1, 0.5, 2.0]

@@ -28,13 +28,13 @@ use crate::contact::problem::DimensionlessSolution;
 use nalgebra::{DMatrix, DVector};
 
 /// Smallest number of intervals (one interior unknown plus β).
-pub const MIN_INTERVALS: usize = 2;
+pub(crate) const MIN_INTERVALS: usize = 2;
 /// Largest number of intervals accepted: the work budget's [`crate::limits::CONTACT_N_MAX`] (a dense
 /// n × n LU; 20 000² doubles were 3.2 GB).
-pub const MAX_INTERVALS: usize = crate::limits::CONTACT_N_MAX;
+pub(crate) const MAX_INTERVALS: usize = crate::limits::CONTACT_N_MAX;
 
 /// Check n against [`MIN_INTERVALS`]..=[`MAX_INTERVALS`].
-pub fn check_intervals(n: usize) -> Result<usize, ContactError> {
+pub(crate) fn check_intervals(n: usize) -> Result<usize, ContactError> {
     if (MIN_INTERVALS..=MAX_INTERVALS).contains(&n) {
         Ok(n)
     } else {
@@ -63,7 +63,7 @@ pub fn solve_at_lambda(
 /// Assemble and solve the collocation system above for the hat averages `a` of any kernel of the form
 /// K(ξ) + const (a[k + c] = A(k), c = a.len()/2 ≥ n; the bonded layer's kernel uses it too,
 /// [`crate::contact::body::layer::collocation`]); `scheme` names the result.
-pub fn solve_hat_system(
+pub(crate) fn solve_hat_system(
     a: &[f64],
     n: usize,
     lambda: f64,

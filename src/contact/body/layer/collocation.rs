@@ -17,7 +17,7 @@
 //! layer's own length h′ (the pressure varies on that scale near the contact ends of a thin layer).
 //! The error estimate compares the solutions at n/2 and n (λ and β Richardson-extrapolated, see
 //! [`solve_layer_at_load`]), which doubles n until the estimate meets the tolerance, n reaches its
-//! cap or the kernel table would cost more than [`KERNEL_WORK_BUDGET`] (layers thinner than
+//! cap or the kernel table would cost more than `KERNEL_WORK_BUDGET` (layers thinner than
 //! ~λ/100; a warning says so).
 //!
 //! # Speed (measured; issue 14 asks ≤ 2 ms at tol 1e−4 and ≤ 10 ms at 1e−6 per load point)
@@ -40,7 +40,7 @@
 //!   default; this scheme remains the fallback for covers too thin for its degree cap (h/λ below
 //!   ≈ 0.016 at tol 1e−3, ≈ 0.03 at 1e−6) and the given-λ solver of `Body::Layer`.
 //!
-//! The assembly and solve are the thesis scheme's ([`crate::contact::body::half_space::thesis::solve_hat_system`],
+//! The assembly and solve are the thesis scheme's (`crate::contact::body::half_space::thesis::solve_hat_system`,
 //! shared: the system is the same for any kernel of the form K + const).
 
 use super::kernel::LayerKernel;
@@ -131,7 +131,7 @@ pub fn solve_at_lambda(
 /// An initial guess of λ at load N′ for the load loop: the glassy half-space width 2√N′ or, when
 /// smaller, the thin-layer width (glassy constrained Winkler λ = (6c_W N′)^{1/3}, or the h³ law
 /// λ = 2(15πh′³N′/2)^{1/5} at ν = ½, whichever is larger).
-pub fn lambda_guess(load: f64, thickness: f64, nu: f64) -> f64 {
+pub(crate) fn lambda_guess(load: f64, thickness: f64, nu: f64) -> f64 {
     use super::compliance::{winkler_coefficient, WinklerColumns};
     let hs = 2.0 * load.sqrt();
     let h3 = 2.0 * (7.5 * std::f64::consts::PI * thickness.powi(3) * load).powf(0.2);
@@ -141,8 +141,9 @@ pub fn lambda_guess(load: f64, thickness: f64, nu: f64) -> f64 {
     hs.min(h3.max(w))
 }
 
-/// Solve at load N′ with `n` intervals (one load loop).
-pub fn solve_at_load_n(
+/// Solve at load N′ with `n` intervals (one load loop; the tests' fixed-n reference).
+#[cfg(test)]
+pub(crate) fn solve_at_load_n(
     kernel: &LayerKernel,
     load: f64,
     n: usize,
@@ -265,16 +266,16 @@ pub fn solve_layer_at_load(
 /// under contacts of a ≤ 0.3 R stay below 3·10³; beyond it the thin-cover limits apply (the `auto`
 /// choice takes the Winkler foundation there). Only a bracket search on a wild spectrum (a bootstrap
 /// replicate fitted to a far-off point) reached it: λ/h′ ≈ 10⁵–10⁶, 4 GB per table, before this bound.
-pub const LAMBDA_OVER_THICKNESS_MAX: f64 = 1e4;
+pub(crate) const LAMBDA_OVER_THICKNESS_MAX: f64 = 1e4;
 
 /// Largest work (kernel-table operations, [`kernel_work`]) of one solve at given λ that the n-doubling
 /// of [`solve_layer_at_load`] starts: about 0.1 s. Only layers thinner than ~λ/100 reach it before
 /// n = 512 (the correction's quadrature needs panels of width ~h/2 up to k = 27/h over |x| ≤ 1.5λ).
-pub const KERNEL_WORK_BUDGET: f64 = 1e8;
+pub(crate) const KERNEL_WORK_BUDGET: f64 = 1e8;
 
 /// Operations of the layer kernel table at n intervals on a contact λ over a layer h′ (module doc of
 /// [`super::kernel`]: (2m+1)·10·(panels), m = 1.5n for the contact checks, panels ≈ 30 + 27·1.5λ/h′·2).
-pub fn kernel_work(n: usize, lambda: f64, thickness: f64) -> f64 {
+pub(crate) fn kernel_work(n: usize, lambda: f64, thickness: f64) -> f64 {
     let m = 1.5 * n as f64;
     (2.0 * m + 1.0) * 10.0 * (30.0 + 81.0 * lambda / thickness)
 }
@@ -283,7 +284,7 @@ pub fn kernel_work(n: usize, lambda: f64, thickness: f64) -> f64 {
 /// their error estimate: the property sweep (`tests/layer_props.rs`, `VISCOROLL_SEED=0x6e96a9fbdb9288b`
 /// case 46: 3 terms, J∞/J_g = 150, h/λ = 0.4, ν = 0.27) found the bare change 1.9 times below the
 /// true error of λ where the extrapolation is not yet asymptotic; 3 leaves a margin.
-pub const RICHARDSON_SAFETY: f64 = 3.0;
+pub(crate) const RICHARDSON_SAFETY: f64 = 3.0;
 
 /// Safety factor on the change of ρF/N between n/2 and n, used as its error estimate. Where the
 /// front-edge layer is resolved ρF/N converges at order ≈ 2.8 and the change over-states the error

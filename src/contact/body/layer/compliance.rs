@@ -49,13 +49,13 @@
 //! (E = 2μ(1+ν); Jonkers 1980; Rudolphi & Reicks 2006).
 
 /// κ = 3 − 4ν (plane strain Kolosov constant).
-pub fn kolosov(nu: f64) -> f64 {
+pub(crate) fn kolosov(nu: f64) -> f64 {
     3.0 - 4.0 * nu
 }
 
 /// F(t) = [κ sinh 2t − 2t]/[κ cosh 2t + 2t² + (1+κ²)/2], t = |k|h ≥ 0: the layer's compliance over
 /// the half-space's at wave number k.
-pub fn layer_factor(t: f64, nu: f64) -> f64 {
+pub(crate) fn layer_factor(t: f64, nu: f64) -> f64 {
     1.0 - layer_defect(t, nu)
 }
 
@@ -87,7 +87,7 @@ pub enum WinklerColumns {
 
 /// c_W of ρ·v = c_W·Q′ (thesis units, module doc) for a foundation of dimensionless height `h`;
 /// `None` for constrained columns at ν = ½ (rigid).
-pub fn winkler_coefficient(columns: WinklerColumns, h: f64, nu: f64) -> Option<f64> {
+pub(crate) fn winkler_coefficient(columns: WinklerColumns, h: f64, nu: f64) -> Option<f64> {
     let pi = std::f64::consts::PI;
     match columns {
         WinklerColumns::Uniaxial => Some(pi * h / (2.0 * (1.0 - nu * nu))),

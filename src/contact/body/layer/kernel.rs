@@ -47,7 +47,7 @@
 //!   of e^{ikx}, and the nearest complex zeros of the denominator of R lie ≥ 1/(2h′)·O(1) away);
 //!   k_hi = 27/h′ where R < 1e−20.
 //!
-//! The contact checks ([`LayerKernel::check_hat_averages`]) only need the kernel to ~1e−6 (their
+//! The contact checks (`LayerKernel::check_hat_averages`) only need the kernel to ~1e−6 (their
 //! thresholds are 1e−3): they use a cheaper rule of their own (module [`check_rule`]).
 //!
 //! Errors are therefore exponentially small in the number of nodes per panel (Trefethen, *Approximation

@@ -72,7 +72,7 @@ pub struct WinklerAnswer {
 impl WinklerAnswer {
     /// As a body's answer: closed form, so no error estimate of its own (0); the contact checks'
     /// warnings also in the solution's.
-    pub fn into_body_answer(mut self) -> BodyAnswer {
+    pub(crate) fn into_body_answer(mut self) -> BodyAnswer {
         self.solution.warnings.extend(self.warnings.iter().cloned());
         BodyAnswer {
             error_estimate: 0.0,
@@ -105,7 +105,7 @@ impl Winkler {
     }
 
     /// A foundation with a given c_W > 0.
-    pub fn with_coefficient(terms: &[CreepTerm], c_w: f64) -> Self {
+    pub(crate) fn with_coefficient(terms: &[CreepTerm], c_w: f64) -> Self {
         let modes = Modes::new(terms);
         let relax = (0..modes.len())
             .map(|j| {

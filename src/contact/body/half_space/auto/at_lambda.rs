@@ -29,7 +29,7 @@
 //! Costs: O(N·Q·√μ_max + N²·Q) with Q ≈ 200 quadrature nodes, so fast modes (large μ) are lumped
 //! into the glassy compliance by [`super::reduction`] before they get here. The exterior values (the
 //! O(N·Q·√μ) part, half the time of a 30-term solve) are shared by the step-h solve and the step-2h
-//! check of [`solve_at_lambda_checked`], whose difference gives the quadrature error estimate.
+//! check of `solve_at_lambda_checked`, whose difference gives the quadrature error estimate.
 
 use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
 use crate::contact::body::half_space::modes::Modes;
@@ -79,11 +79,6 @@ impl LambdaSolution {
         sine_series(&self.coefficients, t.acos())
     }
 
-    /// Pressure at t = cos θ, θ ∈ [0, π] (θ = 0 is the front edge).
-    pub fn pressure_at_theta(&self, theta: f64) -> f64 {
-        sine_series(&self.coefficients, theta)
-    }
-
     /// Pressure on the FFT grid θ_m = πm/M (M ≥ number of coefficients, so the spacing near the
     /// front edge, 1 − t ≈ (π/M)²/2 < 1/μ_max, resolves the thinnest layer): (ξ, Q′) for all m,
     /// and the subset returned as the profile: about `n_uniform` points uniform in θ plus every grid
@@ -127,7 +122,7 @@ pub fn solve_at_lambda(modes: &Modes, lambda: f64, q: QuadratureSettings) -> Lam
 
 /// Solve at given λ > 0 and, from the same exterior values, with every second quadrature node
 /// (step 2h): (solution, coarse solution). The coarse one costs only its N×N assembly.
-pub fn solve_at_lambda_checked(
+pub(crate) fn solve_at_lambda_checked(
     modes: &Modes,
     lambda: f64,
     q: QuadratureSettings,

@@ -55,7 +55,7 @@ use reduction::{select, slow_estimate_at, solve_reduced_checked};
 use settings::{budgets, quad_for, validate};
 
 /// Solve at given contact length λ > 0.
-pub fn solve_auto_at_lambda(
+pub(crate) fn solve_auto_at_lambda(
     terms: &[CreepTerm],
     lambda: f64,
     settings: &AutoSettings,

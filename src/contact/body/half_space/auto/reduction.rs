@@ -1,7 +1,7 @@
 //! Mode reduction of the `auto` scheme: which retardation modes a scene needs (docs/MATH.md §8).
 //!
 //! Input: creep terms (fᵢ, bᵢ), the contact length λ and error budgets; output: [`Reduction`] (kept,
-//! lumped and dropped modes and the rescaled problem; their errors: [`lumped_residual`], [`slow_estimate_at`]).
+//! lumped and dropped modes and the rescaled problem; their errors: `lumped_residual`, `slow_estimate_at`).
 //!
 //! With L = λ/2, cᵢ = bᵢL (contact half-time over τᵢ), rᵢ = fᵢ/bᵢ = Jᵢ/J_g:
 //! - **Fast modes (cᵢ ≫ 1) are lumped into the glassy compliance.** For bξ → ∞ the kernel term
@@ -71,12 +71,12 @@ pub struct Reduction {
 }
 
 /// Lumping weight wᵢ = rᵢ/cᵢ = fᵢ/(bᵢ²L) of a fast mode (module doc).
-pub fn lump_weight(t: &CreepTerm, lambda: f64) -> f64 {
+pub(crate) fn lump_weight(t: &CreepTerm, lambda: f64) -> f64 {
     t.f / (t.b * t.b * 0.5 * lambda)
 }
 
 /// Effective compliance ratio at the contact time, S_eff = 1 + Σ rᵢcᵢ/(1+cᵢ) (module doc).
-pub fn effective_compliance(terms: &[CreepTerm], lambda: f64) -> f64 {
+pub(crate) fn effective_compliance(terms: &[CreepTerm], lambda: f64) -> f64 {
     let l = 0.5 * lambda;
     1.0 + terms
         .iter()
@@ -86,7 +86,7 @@ pub fn effective_compliance(terms: &[CreepTerm], lambda: f64) -> f64 {
 }
 
 /// Model first-order gains (g_F, g_N) of the lumping correction: 1/(2S_eff), 1/S_eff.
-pub fn model_gains(terms: &[CreepTerm], lambda: f64) -> (f64, f64) {
+pub(crate) fn model_gains(terms: &[CreepTerm], lambda: f64) -> (f64, f64) {
     let s = effective_compliance(terms, lambda);
     (0.5 / s, 1.0 / s)
 }
@@ -117,7 +117,7 @@ fn drop_estimate(t: &CreepTerm, l: f64, s_eff: f64) -> Option<(f64, f64)> {
 
 /// Largest μ = (1 + rᵢ)cᵢ of a mode the lumping calibration solves for: its front layer needs
 /// ~√(83μ) ≈ 2.9e4 Chebyshev terms (module [`crate::contact::body::half_space::chebyshev`]).
-pub const MU_CALIBRATION_MAX: f64 = 1e7;
+pub(crate) const MU_CALIBRATION_MAX: f64 = 1e7;
 
 /// The mode the lumping calibration measures with ([`super`]): the lumped mode of
 /// largest weight, and the c of the probe that stands in for it when its μ = (1 + rᵢ)cᵢ exceeds
@@ -125,7 +125,7 @@ pub const MU_CALIBRATION_MAX: f64 = 1e7;
 /// beyond the cap of [`select`] can be far too fast to solve for (c ≈ 1e15 in a random slow-end
 /// scene, 13 GB of coefficients); lumped, the probe and the mode are the same problem (only rᵢ
 /// enters the scale s).
-pub fn calibration_mode(
+pub(crate) fn calibration_mode(
     terms: &[CreepTerm],
     lumped: &[usize],
     lambda: f64,
@@ -147,7 +147,7 @@ pub fn calibration_mode(
 /// with gains (g_F, g_N): (ρF/N/λ error, relative N′ error). c_min is the smallest c of the lumped
 /// modes and of the calibration's probe ([`calibration_mode`]), whose own second-order error
 /// enters the measured gain.
-pub fn lumped_residual(
+pub(crate) fn lumped_residual(
     terms: &[CreepTerm],
     lumped: &[usize],
     lambda: f64,
@@ -277,7 +277,7 @@ pub fn build(
 }
 
 /// The same split with lumped mode `i` kept instead (the calibration solve of the correction).
-pub fn unlump(terms: &[CreepTerm], red: &Reduction, i: usize) -> Reduction {
+pub(crate) fn unlump(terms: &[CreepTerm], red: &Reduction, i: usize) -> Reduction {
     let mut kept = red.kept.clone();
     kept.push(i);
     kept.sort_unstable();
@@ -287,7 +287,7 @@ pub fn unlump(terms: &[CreepTerm], red: &Reduction, i: usize) -> Reduction {
 
 /// Re-evaluate the error estimates of the dropped slow modes of a selection at another λ (the
 /// lumped modes' error comes from the measured correction, see [`super`]).
-pub fn slow_estimate_at(terms: &[CreepTerm], red: &Reduction, lambda: f64) -> (f64, f64) {
+pub(crate) fn slow_estimate_at(terms: &[CreepTerm], red: &Reduction, lambda: f64) -> (f64, f64) {
     let l = 0.5 * lambda;
     let mut fr = 0.0;
     let mut ld = 0.0;

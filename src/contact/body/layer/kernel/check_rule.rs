@@ -89,7 +89,7 @@ const LOW_ORDER: usize = 22;
 impl LayerKernel {
     /// [`Self::hat_averages`] to ~1e−9 of the largest difference for the contact checks (module
     /// doc of [`check_rule`](self)), j = −m…m (index j + m), up to one constant.
-    pub fn check_hat_averages(&self, m: usize, delta: f64) -> Vec<f64> {
+    pub(crate) fn check_hat_averages(&self, m: usize, delta: f64) -> Vec<f64> {
         let mut a = half_space_check_averages(&self.half_space, m, delta);
         let x_max = (m as f64 + 1.0) * delta;
         let nodes = self.check_nodes(x_max);
@@ -234,7 +234,7 @@ const FAST_ORDER: usize = 40;
 
 /// The half-space kernel's hat averages A_HS(k), k = −m…m (index k + m), as
 /// [`Kernel::hat_averages`] with the slow and fast terms summed by class (module doc, H1–H2).
-pub fn half_space_check_averages(kernel: &Kernel, m: usize, delta: f64) -> Vec<f64> {
+pub(crate) fn half_space_check_averages(kernel: &Kernel, m: usize, delta: f64) -> Vec<f64> {
     let mi = m as i64;
     let ln_d = delta.ln();
     // D(k) at k = 0…m (even in k) and ln k at k = 0…m + 1 (0 at 0), shared by all classes

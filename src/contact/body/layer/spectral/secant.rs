@@ -20,7 +20,7 @@
 //! so with the effective compliance S_eff(λ) of the half-space `auto` scheme (modes counted by how
 //! far they creep in the contact time) the viscoelastic layer is guessed as an elastic one. The
 //! elastic layer is guessed as a half-space (λ = 2√(S·N′), docs/MATH.md §3) whose compliance is
-//! the layer's F(t) = 1 − R(t) ([`layer_factor`]) at one wave number k* = 4/λ, the peak of a
+//! the layer's F(t) = 1 − R(t) (`layer_factor`) at one wave number k* = 4/λ, the peak of a
 //! Hertzian pressure's spectrum (|k|a ≈ 2, a = λ/2):
 //!
 //! ```text
@@ -31,7 +31,7 @@
 //! half-space; F ∝ t for ν < ½: the constrained Winkler foundation, N′ ∝ λ³/h′; F ∝ t³ at ν = ½:
 //! the h³ law, N′ ∝ λ⁵/h′³) and, for the elastic layer, meets the spectral solver's λ within 10 %
 //! for ν = 0…½, h′/λ_HS = 0.03…10 (10.1 % at h′ = 0.03, ν = ½; `elastic_start_is_within_twelve_percent`; the former min/max of
-//! the three limits, [`lambda_guess`], was up to 68 % off at h′/λ ≈ 0.3 and ν = ½, which cost two
+//! the three limits, `lambda_guess`, was up to 68 % off at h′/λ ≈ 0.3 and ν = ½, which cost two
 //! coarse solves). The slope's terms are central differences of the closed forms.
 
 use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
