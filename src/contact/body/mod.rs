@@ -21,9 +21,9 @@
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
 //!    `Layer { thickness_m }`), with its arms in [`Body::name`] (the serde name too),
 //!    [`Body::asked_for`], [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in
-//!    [`answer_at_load`] and [`solve_at_lambda`] below, the single dispatch point (lengths go in
+//!    [`answer_at_load`] and [`answer_at_lambda`] below, the single dispatch point (lengths go in
 //!    units of `problem.length_scale_m`); to be chosen by `auto` or by name, also in
-//!    [`Body::auto_choice`] / [`Body::choice`] and `contact::cover`'s answer at given λ;
+//!    [`Body::auto_choice`] / [`Body::choice`];
 //! 3. its tests at the foot of its folder, through [`crate::contact::roll`] where they can.
 //!
 //! A body for tests only is the same with `#[cfg(test)]` on its `mod`, its variant and each of its
