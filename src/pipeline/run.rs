@@ -854,8 +854,8 @@ type AllFinished = (
 
 /// [`run_all`], reporting each finished work unit to `progress` (first [`ProgressEvent::Total`],
 /// then one [`ProgressEvent::Done`] per unit, from the worker threads): the compounds found
-/// ([`inputs`]), the output folder locked, each compound solved ([`solve_compounds`]), the
-/// comparisons, then the shard's file or the ranking, workbook and index ([`write_run`]).
+/// (`inputs`), the output folder locked, each compound solved (`solve_compounds`), the
+/// comparisons, then the shard's file or the ranking, workbook and index (`write_run`).
 pub fn run_all_with_progress(
     opts: &RunOptions,
     log: &(dyn Fn(&str) + Sync),

@@ -422,8 +422,8 @@ impl LoadProblem<'_> {
 
 /// Solve the bonded layer at load N′ to `settings.tol` (module doc of [`super`]); `Ok(None)` when
 /// the cover is too thin for the degree cap at the contact found. Up to three rounds, each: 1. the
-/// walk's load loop ([`LoadProblem::walk`]), 2.–4. the lumping gains, the carry to the root and the
-/// degree's error there ([`LoadProblem::settle`]), 5. the reduction selected again at the λ found
+/// walk's load loop (`LoadProblem::walk`), 2.–4. the lumping gains, the carry to the root and the
+/// degree's error there (`LoadProblem::settle`), 5. the reduction selected again at the λ found
 /// (another round where it changed and the estimate misses tol).
 pub fn solve_spectral_at_load(
     terms: &[CreepTerm],
