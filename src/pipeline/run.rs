@@ -572,7 +572,7 @@ fn finish_points(
     fit: &CompoundFit,
     specimen_fits: &[Result<CompoundFit, String>],
     spec: &SceneSpec,
-    points: &mut Vec<FrictionPoint>,
+    points: &mut [FrictionPoint],
 ) {
     let settings = pipeline_contact_settings();
     let specimen_points: Vec<Vec<FrictionPoint>> = specimen_fits
