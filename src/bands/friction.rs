@@ -8,7 +8,7 @@
 //! ([`band_of`], [`mean_band`]).
 
 use super::BandSettings;
-use crate::contact::cover::roll_cover_with;
+use crate::contact::body::{answer_at_load, Warm};
 use crate::contact::{roll, AutoSettings, Body, ContactSettings, RollSolution, Scene, Scheme};
 use crate::results::{CompoundFit, FrictionBand, FrictionPoint};
 use crate::CreepSpectrum;
@@ -115,12 +115,13 @@ impl<F> CoverSolver for F where
 }
 
 /// The covered solver of a scene for the bands: F/N, contact length in m and body of a creep
-/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass ([`roll_cover_from`](crate::contact::cover::roll_cover_from), the
-/// body `choice` at [`COVER_BAND_TOL`] or the band tolerance if looser), the layer solve started
+/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass (the body `choice` through the
+/// body dispatch [`answer_at_load`], as the main job's [`roll_cover_from`](crate::contact::cover::roll_cover_from)
+/// solves it, at [`COVER_BAND_TOL`] or the band tolerance if looser), the layer solve started
 /// from `start` = (contact length in m, d ln N′/d ln λ) when given (the fit's own covered solve at
 /// the same temperature: a replicate's contact differs from it by its scatter, a few per cent; the
 /// answer does not depend on the start beyond the load loop's stopping tolerance), or the
-/// solver's error. The layer's closing contact checks are skipped ([`roll_cover_with`]): they only
+/// solver's error. The layer's closing contact checks are skipped ([`Warm::checks`]): they only
 /// read the solution (same F/N to the bit, `cover_solver_skips_only_the_checks`) and their ratios
 /// and warnings are not in what this hands on; the main job's own solve at each point keeps them
 /// (its friction point's warnings).
@@ -129,21 +130,25 @@ pub(crate) fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> 
         body: crate::contact::Body::HALF_SPACE,
         ..*scene
     };
-    let cover_tol = settings.contact_tol.max(COVER_BAND_TOL);
+    let cs = ContactSettings::auto(settings.contact_tol.max(COVER_BAND_TOL));
     move |c: &CreepSpectrum, log10_a_t: f64, start: Option<(f64, f64)>, choice: Body| {
         if !log10_a_t.is_finite() {
             return Err(format!("log10 a_T is not finite ({log10_a_t})"));
         }
-        let at = shifted(c, log10_a_t);
-        let on = Scene {
-            body: choice.with_cover(h_m),
-            ..scene
+        let body = choice.with_cover(h_m);
+        let p = scene
+            .dimensionless(&shifted(c, log10_a_t))
+            .map_err(|e| e.to_string())?;
+        let warm = Warm {
+            start: start.map(|(l_m, slope)| (l_m / p.length_scale_m, slope)),
+            checks: false,
         };
-        let r = roll_cover_with(&on, &at, cover_tol, start, false).map_err(|e| e.to_string())?;
+        let s = answer_at_load(&body, &p, &cs, warm).map_err(|e| e.to_string())?;
+        let r = p.to_dimensional(scene.load_n_per_m, s.answer.solution);
         Ok((
-            positive_friction(r.roll.friction)?,
-            r.roll.contact_length_m,
-            Some(r.model),
+            positive_friction(r.friction)?,
+            r.contact_length_m,
+            Some(s.body),
         ))
     }
 }

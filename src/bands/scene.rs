@@ -184,9 +184,20 @@ pub fn scene_bands_by(
     settings: &BandSettings,
     mode: CoverMode,
 ) -> SceneRatios {
-    bands_with(
-        fit, ensemble, scene, cover_m, temps_c, settings, mode, None, None,
-    )
+    let job = SceneJob {
+        fit,
+        ensemble,
+        scene,
+        cover_m,
+        temps_c,
+        settings,
+    };
+    let given = Given {
+        mode,
+        nominal: None,
+        half_space: None,
+    };
+    bands_with(&job, given)
 }
 
 /// [`scene_ratios_on`] with the model-error terms it drew in and the failures it met (module doc,
@@ -236,17 +247,20 @@ pub fn scene_bands_given(
     let usable = cover_m.is_some()
         && settings.contact_tol <= COVER_BAND_TOL
         && nominal.len() == temps_c.len();
-    bands_with(
+    let job = SceneJob {
         fit,
         ensemble,
         scene,
         cover_m,
         temps_c,
         settings,
-        CoverMode::Carried,
-        usable.then_some(nominal),
+    };
+    let given = Given {
+        mode: CoverMode::Carried,
+        nominal: usable.then_some(nominal),
         half_space,
-    )
+    };
+    bands_with(&job, given)
 }
 
 /// The half-space solves of the bands in one scene: the fit's own (F̂, contact length) and every
@@ -535,33 +549,7 @@ fn carried(
             .collect()
     };
     let q: Vec<Vec<Result<f64, String>>> = order.iter().map(|&i| q_at(i)).collect();
-    let line = |qa: &Result<f64, String>,
-                qb: &Result<f64, String>,
-                w: f64|
-     -> Result<f64, String> { Ok(qa.clone()? * (1.0 - w) + qb.clone()? * w) };
-    // the error measured at each interior solved temperature, as mean of e²/(a·c)²
-    let mut measured: Vec<Option<f64>> = vec![None; order.len()];
-    for p in 1..order.len().saturating_sub(1) {
-        let (t0, t, t1) = (
-            temps_c[order[p - 1]],
-            temps_c[order[p]],
-            temps_c[order[p + 1]],
-        );
-        let (a, c) = (t - t0, t1 - t);
-        if !(a > 0.0 && c > 0.0) {
-            continue;
-        }
-        let e: Vec<f64> = (0..k)
-            .filter_map(|b| {
-                let l = line(&q[p - 1][b], &q[p + 1][b], a / (a + c)).ok()?;
-                Some(q[p][b].clone().ok()? - l)
-            })
-            .collect();
-        if e.len() * 2 > k {
-            measured[p] =
-                Some(e.iter().map(|x| x * x).sum::<f64>() / e.len() as f64 / (a * c).powi(2));
-        }
-    }
+    let measured = carry_errors(temps_c, &order, &q);
     let all: Vec<f64> = measured.iter().flatten().copied().collect();
     let mut out: Vec<Option<Vec<Result<f64, String>>>> = vec![None; n];
     let mut sd: Vec<Option<f64>> = vec![None; n];
@@ -605,7 +593,7 @@ fn carried(
         out[i] = Some(
             (0..k)
                 .map(|b| {
-                    let qb = line(&q[p0][b], &q[p1][b], w)
+                    let qb = q_line(&q[p0][b], &q[p1][b], w)
                         .map_err(|e| format!("carried from a failed solve: {e}"))?;
                     let h = hs[i][b].clone()?;
                     Ok(h * qb.exp())
@@ -614,6 +602,46 @@ fn carried(
         );
     }
     (out, sd)
+}
+
+/// q on the straight line between `qa` (w = 0) and `qb` (w = 1), or the first failure.
+fn q_line(qa: &Result<f64, String>, qb: &Result<f64, String>, w: f64) -> Result<f64, String> {
+    Ok(qa.clone()? * (1.0 - w) + qb.clone()? * w)
+}
+
+/// The error of the line through the solved neighbours (eq. 15.6c), measured at each interior
+/// solved temperature of `order` (sorted by temperature; `q` by position in it): the mean over
+/// the replicates of e²/(a·c)², e = q_b(T_j) − line and a, c the distances to the neighbours;
+/// `None` at the ends and where half the replicates or fewer measured it.
+fn carry_errors(
+    temps_c: &[f64],
+    order: &[usize],
+    q: &[Vec<Result<f64, String>>],
+) -> Vec<Option<f64>> {
+    let k = q.first().map_or(0, Vec::len);
+    let mut measured: Vec<Option<f64>> = vec![None; order.len()];
+    for p in 1..order.len().saturating_sub(1) {
+        let (t0, t, t1) = (
+            temps_c[order[p - 1]],
+            temps_c[order[p]],
+            temps_c[order[p + 1]],
+        );
+        let (a, c) = (t - t0, t1 - t);
+        if !(a > 0.0 && c > 0.0) {
+            continue;
+        }
+        let e: Vec<f64> = (0..k)
+            .filter_map(|b| {
+                let l = q_line(&q[p - 1][b], &q[p + 1][b], a / (a + c)).ok()?;
+                Some(q[p][b].clone().ok()? - l)
+            })
+            .collect();
+        if e.len() * 2 > k {
+            measured[p] =
+                Some(e.iter().map(|x| x * x).sum::<f64>() / e.len() as f64 / (a * c).powi(2));
+        }
+    }
+    measured
 }
 
 /// The frequency-window term of the point at `temp_c` (eq. 15.9), weighted by the ramp of
@@ -646,20 +674,32 @@ fn window_term(
     Some(WindowTerm { excess: ex, s_ln })
 }
 
-/// [`scene_bands_on`] with the covered replicates solved as `mode` says, the covered nominal
-/// frictions (F/N, contact length in m) given or solved, the half-space ratios given or solved.
-#[allow(clippy::too_many_arguments)]
-fn bands_with(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
+/// One scene's band solves: the compound, its replicates, the roll, the cover (`None`: the
+/// half-space), the temperatures and the settings.
+#[derive(Clone, Copy)]
+struct SceneJob<'a> {
+    fit: &'a CompoundFit,
+    ensemble: &'a BandEnsemble,
+    scene: &'a Scene,
     cover_m: Option<f64>,
-    temps_c: &[f64],
-    settings: &BandSettings,
+    temps_c: &'a [f64],
+    settings: &'a BandSettings,
+}
+
+/// How a [`SceneJob`]'s covered replicates are solved (`mode`) and what the caller has already
+/// solved: the covered nominal frictions (F/N, contact length in m, body; [`scene_bands_given`])
+/// and the half-space ratios.
+struct Given<'a> {
     mode: CoverMode,
-    nominal: Option<&[CoverSolve]>,
-    half_space: Option<&HalfSpaceRatios>,
-) -> SceneRatios {
+    nominal: Option<&'a [CoverSolve]>,
+    half_space: Option<&'a HalfSpaceRatios>,
+}
+
+/// [`scene_bands_on`] with the covered replicates solved as `given.mode` says, the covered nominal
+/// frictions given or solved, the half-space ratios given or solved: the ratios of the body
+/// (eqs. 15.6, 15.6b, 15.6c), then the model-error terms drawn in (eqs. 15.6c, 15.8, 15.9).
+fn bands_with(job: &SceneJob, given: Given) -> SceneRatios {
+    let (fit, scene, temps_c) = (job.fit, job.scene, job.temps_c);
     let Some(creep) = fit.creep.as_ref() else {
         return SceneRatios::empty(temps_c.len());
     };
@@ -670,9 +710,12 @@ fn bands_with(
     // the half-space solves: the fit's F̂ and contact length (the rolling frequency V/l of eq.
     // 15.9, on a cover too: a cover shortens l by a fraction of a decade in V/l) and the ratios
     let own;
-    let hs = match half_space.filter(|h| h.scene == hs_scene && h.temps_c == temps_c) {
+    let hs = match given
+        .half_space
+        .filter(|h| h.scene == hs_scene && h.temps_c == temps_c)
+    {
         Some(h) => h,
-        None => match half_space_ratios(fit, ensemble, scene, temps_c, settings) {
+        None => match half_space_ratios(fit, job.ensemble, scene, temps_c, job.settings) {
             Some(h) => {
                 own = h;
                 &own
@@ -680,103 +723,19 @@ fn bands_with(
             None => return SceneRatios::empty(temps_c.len()),
         },
     };
-    let nb = ensemble.replicates.len();
-    let all: Vec<usize> = (0..nb).collect();
-    let every: Vec<usize> = (0..temps_c.len()).collect();
-    let covered = solver(scene, cover_m, settings);
-    let law = &fit.shift_law;
-    // the body's nominal (F/N, contact length, body): the half-space's, or on a cover given
-    // (finite ones), else solved
-    let body_nominal: Vec<Result<CoverSolve, String>> = match cover_m {
-        None => hs
-            .fit
-            .iter()
-            .map(|r| r.clone().map(|(f, l)| (f, l, Some(Body::HALF_SPACE))))
-            .collect(),
-        Some(h_m) => {
-            let on_cover = cover_solver(scene, h_m, settings);
-            temps_c
-                .par_iter()
-                .enumerate()
-                .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
-                    Some(&x) if x.0.is_finite() && x.0 > 0.0 => Ok(x),
-                    _ => on_cover(creep, law.log10_a_t(t), None, super::friction::AUTO),
-                })
-                .collect()
-        }
-    };
+    let covered = solver(scene, job.cover_m, job.settings);
+    let body_nominal = body_nominal(job, creep, hs, given.nominal);
     let f_nominal: Vec<Result<f64, String>> = body_nominal
         .iter()
         .map(|r| r.as_ref().map(|x| x.0).map_err(Clone::clone))
         .collect();
-    let mut carried_sd: Vec<Option<f64>> = vec![None; temps_c.len()];
-    let (mut ratios, first_failure): (Vec<Vec<f64>>, Vec<Option<String>>) = match cover_m {
-        None => hs.ratios.iter().cloned().map(split).unzip(),
-        Some(h_m) => {
-            // each replicate solved on the body of the fit's own solve at that temperature, its
-            // layer solve started from the fit's contact there
-            let on_cover = cover_solver(scene, h_m, settings);
-            let warm = |i: usize, c: &CreepSpectrum, l: f64| {
-                let own = body_nominal[i].as_ref().ok();
-                let start = own
-                    .map(|x| x.1)
-                    .filter(|l| l.is_finite() && *l > 0.0)
-                    .map(|l| (l, f64::NAN));
-                on_cover(c, l, start, replicate_choice(own.and_then(|x| x.2))).map(|r| r.0)
-            };
-            let solve_all = |at: &[usize]| {
-                ratios_over(fit, ensemble, temps_c, at, &all, &warm, &f_nominal)
-                    .into_iter()
-                    .map(split)
-                    .collect::<Vec<_>>()
-            };
-            if mode == CoverMode::Full {
-                solve_all(&every).into_iter().unzip()
-            } else {
-                let k = COVER_SOLVED_REPLICATES.min(nb);
-                let first: Vec<usize> = (0..k).collect();
-                let at = match mode {
-                    CoverMode::Carried => cover_solved_temps(temps_c),
-                    _ => every.clone(),
-                };
-                let sub = ratios_over(fit, ensemble, temps_c, &at, &first, &warm, &f_nominal);
-                // eq. 15.6c: the other temperatures carried where that is safe, else solved
-                let (partial, sd) = if at.len() == temps_c.len() {
-                    (
-                        sub.into_iter().map(Some).collect(),
-                        vec![None; temps_c.len()],
-                    )
-                } else {
-                    carried(temps_c, &at, &hs.ratios, &sub)
-                };
-                let rest: Vec<usize> = (0..temps_c.len())
-                    .filter(|&i| partial[i].is_none())
-                    .collect();
-                let mut more =
-                    ratios_over(fit, ensemble, temps_c, &rest, &first, &warm, &f_nominal)
-                        .into_iter();
-                let sub: Vec<Vec<Result<f64, String>>> = partial
-                    .into_iter()
-                    .map(|p| p.unwrap_or_else(|| more.next().unwrap_or_default()))
-                    .collect();
-                carried_sd = sd;
-                let z: Vec<f64> = (0..nb)
-                    .map(|b| replicate_normal(settings.seed, STREAM_COVER, b))
-                    .collect();
-                hs.ratios
-                    .iter()
-                    .cloned()
-                    .zip(sub)
-                    .enumerate()
-                    .map(|(i, (hs, sub))| {
-                        predicted(hs, sub, &z).unwrap_or_else(|| {
-                            // too few covered solves succeeded for the regression: all on the cover
-                            solve_all(&[i]).into_iter().next().unwrap_or_default()
-                        })
-                    })
-                    .unzip()
-            }
+    let (mut ratios, first_failure, carried_sd) = match job.cover_m {
+        None => {
+            let (r, f): (Vec<Vec<f64>>, Vec<Option<String>>) =
+                hs.ratios.iter().cloned().map(split).unzip();
+            (r, f, vec![None; temps_c.len()])
         }
+        Some(h_m) => cover_ratios(job, h_m, given.mode, hs, &body_nominal, &f_nominal),
     };
     let tail_ln: Vec<Option<f64>> = temps_c
         .par_iter()
@@ -795,36 +754,12 @@ fn bands_with(
         .collect();
     let (lo, _) = fit.measured_range_c().unwrap_or((f64::NAN, f64::NAN));
     for (i, r) in ratios.iter_mut().enumerate() {
-        let mut terms: Vec<(f64, u64)> = Vec::new();
-        if let Some(s) = carried_sd[i] {
-            terms.push((s, STREAM_COVER_CARRIED));
-        }
-        if let Some(s) = tail_ln[i] {
-            let low = temps_c[i] < lo;
-            terms.push((
-                s,
-                if low {
-                    STREAM_TAIL_LOW
-                } else {
-                    STREAM_TAIL_HIGH
-                },
-            ));
-        }
-        if let Some(WindowTerm {
-            excess,
-            s_ln: Ok(s),
-        }) = &window[i]
-        {
-            let stream = match excess.side {
-                WindowSide::Low => STREAM_WINDOW_LOW,
-                WindowSide::High => STREAM_WINDOW_HIGH,
-            };
-            terms.push((*s, stream));
-        }
+        let low = temps_c[i] < lo;
+        let terms = model_terms(carried_sd[i], tail_ln[i], low, window[i].as_ref());
         for (b, v) in r.iter_mut().enumerate() {
             let d: f64 = terms
                 .iter()
-                .map(|&(s, stream)| s * replicate_normal(settings.seed, stream, b))
+                .map(|&(s, stream)| s * replicate_normal(job.settings.seed, stream, b))
                 .sum();
             *v *= d.exp();
         }
@@ -835,11 +770,155 @@ fn bands_with(
         window,
         first_failure,
         carried_ln: carried_sd,
-        solver_ln: match cover_m {
+        solver_ln: match job.cover_m {
             None => hs.error_ln.clone(),
             Some(_) => vec![0.0; temps_c.len()],
         },
     }
+}
+
+/// The model-error terms of one point, each (s, its draws' stream): the carried covered ratios'
+/// error (eq. 15.6c), the shift-law tail (eq. 15.8; `low`: below the measured temperatures) and
+/// the frequency window (eq. 15.9).
+fn model_terms(
+    carried_sd: Option<f64>,
+    tail_ln: Option<f64>,
+    low: bool,
+    window: Option<&WindowTerm>,
+) -> Vec<(f64, u64)> {
+    let mut terms: Vec<(f64, u64)> = Vec::new();
+    if let Some(s) = carried_sd {
+        terms.push((s, STREAM_COVER_CARRIED));
+    }
+    if let Some(s) = tail_ln {
+        let stream = if low {
+            STREAM_TAIL_LOW
+        } else {
+            STREAM_TAIL_HIGH
+        };
+        terms.push((s, stream));
+    }
+    if let Some(WindowTerm {
+        excess,
+        s_ln: Ok(s),
+    }) = window
+    {
+        let stream = match excess.side {
+            WindowSide::Low => STREAM_WINDOW_LOW,
+            WindowSide::High => STREAM_WINDOW_HIGH,
+        };
+        terms.push((*s, stream));
+    }
+    terms
+}
+
+/// The body's nominal (F/N, contact length, body) per temperature: the half-space's, or on a
+/// cover those `nominal` gives (finite ones), else solved by `auto`.
+fn body_nominal(
+    job: &SceneJob,
+    creep: &CreepSpectrum,
+    hs: &HalfSpaceRatios,
+    nominal: Option<&[CoverSolve]>,
+) -> Vec<Result<CoverSolve, String>> {
+    let Some(h_m) = job.cover_m else {
+        return hs
+            .fit
+            .iter()
+            .map(|r| r.clone().map(|(f, l)| (f, l, Some(Body::HALF_SPACE))))
+            .collect();
+    };
+    let on_cover = cover_solver(job.scene, h_m, job.settings);
+    let law = &job.fit.shift_law;
+    job.temps_c
+        .par_iter()
+        .enumerate()
+        .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
+            Some(&x) if x.0.is_finite() && x.0 > 0.0 => Ok(x),
+            _ => on_cover(creep, law.log10_a_t(t), None, super::friction::AUTO),
+        })
+        .collect()
+}
+
+/// A covered scene's ratios, first failures and carried errors per temperature.
+type CoverRatios = (Vec<Vec<f64>>, Vec<Option<String>>, Vec<Option<f64>>);
+
+/// The covered ratios of a scene on a cover of `h_m` (eq. 15.6): each replicate solved on the
+/// body of the fit's own solve at that temperature (`body_nominal`), its layer solve started from
+/// the fit's contact there; every replicate at every temperature ([`CoverMode::Full`]), or
+/// [`COVER_SOLVED_REPLICATES`] of them at every temperature ([`CoverMode::EveryTemp`]) or at
+/// [`cover_solved_temps`] carried to the others where that is safe ([`CoverMode::Carried`],
+/// eq. 15.6c), the rest predicted from their half-space ratios (eq. 15.6b).
+fn cover_ratios(
+    job: &SceneJob,
+    h_m: f64,
+    mode: CoverMode,
+    hs: &HalfSpaceRatios,
+    body_nominal: &[Result<CoverSolve, String>],
+    f_nominal: &[Result<f64, String>],
+) -> CoverRatios {
+    let (fit, ensemble, temps_c) = (job.fit, job.ensemble, job.temps_c);
+    let nb = ensemble.replicates.len();
+    let all: Vec<usize> = (0..nb).collect();
+    let every: Vec<usize> = (0..temps_c.len()).collect();
+    let on_cover = cover_solver(job.scene, h_m, job.settings);
+    let warm = |i: usize, c: &CreepSpectrum, l: f64| {
+        let own = body_nominal[i].as_ref().ok();
+        let start = own
+            .map(|x| x.1)
+            .filter(|l| l.is_finite() && *l > 0.0)
+            .map(|l| (l, f64::NAN));
+        on_cover(c, l, start, replicate_choice(own.and_then(|x| x.2))).map(|r| r.0)
+    };
+    let solve_all = |at: &[usize]| {
+        ratios_over(fit, ensemble, temps_c, at, &all, &warm, f_nominal)
+            .into_iter()
+            .map(split)
+            .collect::<Vec<_>>()
+    };
+    if mode == CoverMode::Full {
+        let (r, f) = solve_all(&every).into_iter().unzip();
+        return (r, f, vec![None; temps_c.len()]);
+    }
+    let first: Vec<usize> = (0..COVER_SOLVED_REPLICATES.min(nb)).collect();
+    let at = match mode {
+        CoverMode::Carried => cover_solved_temps(temps_c),
+        _ => every,
+    };
+    let sub = ratios_over(fit, ensemble, temps_c, &at, &first, &warm, f_nominal);
+    // eq. 15.6c: the other temperatures carried where that is safe, else solved
+    let (partial, carried_sd) = if at.len() == temps_c.len() {
+        (
+            sub.into_iter().map(Some).collect(),
+            vec![None; temps_c.len()],
+        )
+    } else {
+        carried(temps_c, &at, &hs.ratios, &sub)
+    };
+    let rest: Vec<usize> = (0..temps_c.len())
+        .filter(|&i| partial[i].is_none())
+        .collect();
+    let mut more = ratios_over(fit, ensemble, temps_c, &rest, &first, &warm, f_nominal).into_iter();
+    let sub: Vec<Vec<Result<f64, String>>> = partial
+        .into_iter()
+        .map(|p| p.unwrap_or_else(|| more.next().unwrap_or_default()))
+        .collect();
+    let z: Vec<f64> = (0..nb)
+        .map(|b| replicate_normal(job.settings.seed, STREAM_COVER, b))
+        .collect();
+    let (r, f) = hs
+        .ratios
+        .iter()
+        .cloned()
+        .zip(sub)
+        .enumerate()
+        .map(|(i, (hs, sub))| {
+            predicted(hs, sub, &z).unwrap_or_else(|| {
+                // too few covered solves succeeded for the regression: all on the cover
+                solve_all(&[i]).into_iter().next().unwrap_or_default()
+            })
+        })
+        .unzip();
+    (r, f, carried_sd)
 }
 
 #[cfg(test)]

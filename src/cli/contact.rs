@@ -246,7 +246,7 @@ fn run_cover(args: &Args, terms: &[CreepTerm], settings: &ContactSettings) -> an
             if !(lambda.is_finite() && lambda > 0.0) {
                 bail!("--lambda must be finite and > 0, got {lambda}");
             }
-            solve_cover_at_lambda(terms, lambda, nu, &body, args.tol, settings)?
+            solve_cover_at_lambda(terms, lambda, nu, &body, settings)?
         }
         (Some(_), Some(_)) => bail!("give only one of --lambda and --load, not both"),
         (None, None) => bail!("give one of --lambda L (contact length) or --load N' (load)"),

@@ -24,7 +24,7 @@
 //! (a lower bound of the true one), below about 30 % of the cover.
 
 pub use crate::contact::body::layer::LAYER_TOL_FLOOR;
-use crate::contact::body::{self, half_space, layer, Warm};
+use crate::contact::body::{self, Warm};
 pub use crate::contact::body::{C_HALF_SPACE, C_WINKLER};
 use crate::contact::error::{positive, ContactError};
 use crate::contact::problem::{BodyAnswer, CreepTerm, DimensionlessScene};
@@ -142,73 +142,37 @@ const AUTO_LAYER: &str =
     "auto: the cover is neither thick nor thin enough for a cheaper body within tol: bonded layer";
 
 /// Solve the dimensionless problem at given contact length λ on the cover `body` (lengths in units
-/// of V·T; `viscoroll contact --cover --lambda`): the half-space by the scheme of `settings`; the
-/// bonded layer by the hat collocation with `settings.n` intervals, its error estimated from the same
-/// solve at n/2 (largest relative change of β, N′ and ρF/N); the Winkler foundations in closed form;
-/// `auto` applies the criterion of [`Body::auto_choice`] at the given λ with `tol`.
+/// of V·T; `viscoroll contact --cover --lambda`) through the body dispatch
+/// ([`body::answer_at_lambda`]: the half-space by the scheme of `settings`, the bonded layer by the
+/// hat collocation with `settings.n` intervals and its estimate from n/2, the Winkler foundations in
+/// closed form) and say why this body; `auto` applies the criterion of [`Body::auto_choice`] at the
+/// given λ with `settings.auto.tol`.
 pub fn solve_cover_at_lambda(
     terms: &[CreepTerm],
     lambda: f64,
     poisson: f64,
     body: &Body,
-    tol: f64,
     settings: &ContactSettings,
 ) -> Result<CoverAnswer, ContactError> {
     let h = cover_of(body)?;
-    let nu = poisson;
-    let (model, reason, model_err) = match (body.asked_for(), Body::auto_choice(terms, lambda, h, nu, tol)) {
-        (Some(reason), _) => (*body, reason, None),
-        (None, Some((m, e))) => (
-            m,
-            format!(
-                "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {e:.1e})",
-                h / lambda,
-                m.name(),
-                tol
-            ),
-            Some(e),
+    let problem = DimensionlessScene::in_units_of_vt(terms.to_vec(), f64::NAN, poisson);
+    let solved = body::answer_at_lambda(body, &problem, lambda, settings)?;
+    let reason = match (body.asked_for(), solved.auto) {
+        (Some(reason), _) => reason,
+        (None, Some(pick)) => format!(
+            "auto: cover/contact length = {:.3}: {} within tol {:.0e} of the layer (estimated difference {:.1e})",
+            h / lambda,
+            solved.body.name(),
+            settings.auto.tol,
+            pick.model_error_estimate
         ),
-        (None, None) => (Body::Layer { thickness_m: h }, AUTO_LAYER.into(), None),
-    };
-    let answer = match model {
-        Body::HalfSpace { .. } => {
-            BodyAnswer::from_solution(half_space::solve_at_lambda(terms, lambda, settings)?)
-        }
-        Body::Winkler { .. } | Body::WinklerConstrained { .. } => {
-            let columns = if matches!(model, Body::Winkler { .. }) {
-                layer::WinklerColumns::Uniaxial
-            } else {
-                layer::WinklerColumns::Constrained
-            };
-            layer::Winkler::new(terms, columns, h, nu)?
-                .at_lambda(lambda)?
-                .into_body_answer()
-        }
-        _ => {
-            let k = layer::LayerKernel::new(terms, h, nu)?;
-            let n = settings.n.max(4) / 2 * 2;
-            let fine = layer::collocation::solve_at_lambda(&k, lambda, n)?;
-            let coarse = layer::collocation::solve_at_lambda(&k, lambda, n / 2)?;
-            let rel = |a: f64, b: f64| (a - b).abs() / a.abs().max(b.abs()).max(f64::MIN_POSITIVE);
-            let est = rel(fine.beta, coarse.beta)
-                .max(rel(fine.load, coarse.load))
-                .max(rel(fine.friction_rho, coarse.friction_rho));
-            let (min_pressure_ratio, min_gap_ratio) =
-                layer::collocation::contact_checks(&k, &fine)?;
-            BodyAnswer {
-                error_estimate: est,
-                min_pressure_ratio,
-                min_gap_ratio,
-                warnings: Vec::new(),
-                solution: fine,
-            }
-        }
+        (None, None) => AUTO_LAYER.into(),
     };
     Ok(CoverAnswer {
-        model,
-        answer,
+        model: solved.body,
+        answer: solved.answer,
         reason,
-        model_error_estimate: model_err,
+        model_error_estimate: solved.auto.map(|a| a.model_error_estimate),
     })
 }
 
@@ -230,18 +194,6 @@ pub fn roll_cover_from(
     spectrum: &CreepSpectrum,
     tol: f64,
     start: Option<(f64, f64)>,
-) -> Result<CoverRoll, ContactError> {
-    roll_cover_with(scene, spectrum, tol, start, true)
-}
-
-/// [`roll_cover_from`] with the bonded layer's closing contact checks run or not (`checks`,
-/// [`Warm`]).
-pub fn roll_cover_with(
-    scene: &Scene,
-    spectrum: &CreepSpectrum,
-    tol: f64,
-    start: Option<(f64, f64)>,
-    checks: bool,
 ) -> Result<CoverRoll, ContactError> {
     let p = scene.dimensionless(spectrum)?;
     let Some(h_m) = scene.body.cover_m() else {
@@ -267,7 +219,11 @@ pub fn roll_cover_with(
         });
     }
     let start = start.map(|(l_m, slope)| (l_m / p.length_scale_m, slope));
-    let c = cover_answer(&p, &scene.body, tol, Warm { start, checks })?;
+    let warm = Warm {
+        start,
+        checks: true,
+    };
+    let c = cover_answer(&p, &scene.body, tol, warm)?;
     let a = c.answer;
     let model = c.model;
     let mut warnings = a.warnings;

@@ -16,7 +16,7 @@ pub enum CreepError {
     #[error(transparent)]
     Material(#[from] MaterialError),
     /// The relaxation spectrum describes a fluid (E∞ = 0): its creep function has a flow term t/η₀
-    /// (thesis eq. 2.11) that [`crate::CreepSpectrum`] (a solid, eq. 2.12) cannot hold
+    /// (thesis eq. 2.11) that [`CreepSpectrum`](crate::creep::CreepSpectrum) (a solid, eq. 2.12) cannot hold
     /// ([`crate::creep::fluid_to_creep`] converts it with the flow term apart; the rolling contact
     /// cannot use it: `crate::creep::FLUID_NO_STEADY_ROLLING`).
     #[error(

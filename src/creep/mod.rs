@@ -2,7 +2,7 @@
 //! conversion relaxation → creep (exact, from the roots of s·Ē(s), docs/MATH.md §4; and Park & Schapery,
 //! thesis eq. 2.18–2.23).
 //!
-//! Input: [`crate::RelaxationSpectrum`]; output: [`CreepSpectrum`].
+//! Input: [`crate::prony::RelaxationSpectrum`]; output: [`CreepSpectrum`].
 
 use crate::material::ModulusKind;
 use serde::{Deserialize, Serialize};

@@ -2,7 +2,7 @@
 //! at another temperature through a [`ShiftLaw`]; tensile ↔ shear conversion.
 //!
 //! Input and output: [`CreepSpectrum`] (plain serde type of `creep/mod.rs`); shifting gives an
-//! [`AtTemperature`] (of [`crate::material`], shared with [`crate::RelaxationSpectrum`]).
+//! [`AtTemperature`] (of [`crate::material`], shared with [`crate::prony::RelaxationSpectrum`]).
 //!
 //! Conventions: J*(ω) = J′(ω) − iJ″(ω) = 1/E*(ω) with E* = E′ + iE″ (so J″ ≥ 0), and for one term
 //! Jⱼ(1 − e^(−t/τⱼ)) ↔ Jⱼ/(1 + iωτⱼ). Time–temperature superposition: a time at temperature T equals

@@ -473,100 +473,125 @@ pub fn discover(
 ) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
     let listing = dir.join("compounds.toml");
     let mut notes = Vec::new();
-    if listing.exists() {
-        let text =
-            crate::fsutil::read_regular_to_string(&listing, crate::limits::SETTINGS_BYTES_MAX)
-                .map_err(io(&listing))?;
-        let l: Listing = toml::from_str(&text).map_err(|e| PipelineError::Config {
-            path: listing.clone(),
-            message: e.to_string(),
-        })?;
-        let mut out = Vec::new();
-        for c in l.compound {
-            let config = |message: String| PipelineError::Config {
-                path: listing.clone(),
-                message: format!("compound {:?}: {message}", c.name),
-            };
-            if c.files.is_empty() == c.specimens.is_empty() {
-                return Err(config(
-                    "give either `files` (one specimen) or `specimens` (one entry per replicate \
-                     specimen: a file, a pattern or a folder)"
-                        .into(),
-                ));
-            }
-            let mut files = Vec::new();
-            for f in &c.files {
-                let got = expand(dir, f)?;
-                if got.is_empty() {
-                    notes.push(format!("{}: `{f}` matches no file", c.name));
-                }
-                files.extend(got);
-            }
-            let mut specimens = Vec::new();
-            for f in &c.specimens {
-                let full = dir.join(f);
-                let got: Vec<PathBuf> = if full.is_dir() {
-                    exports_in(&full)?
-                } else {
-                    expand(dir, f)?
-                        .into_iter()
-                        .filter(|p| p.is_file())
-                        .collect()
-                };
-                if got.is_empty() {
-                    return Err(config(format!("specimen `{f}` matches no export")));
-                }
-                files.extend(got.iter().cloned());
-                specimens.push(got);
-            }
-            if specimens.len() == 1 {
-                specimens.clear();
-            }
-            // A bad setting (or name) fails its compound only.
-            let checked = crate::limits::name("name", &c.name)
-                .map_err(|e| e.to_string())
-                .and_then(|()| c.settings(dir));
-            let mut settings = match checked {
-                Ok(s) => s,
-                Err(message) => {
-                    out.push(CompoundInput {
-                        name: c.name,
-                        files,
-                        unreadable: Some(format!("{}: {message}", listing.display())),
-                        ..CompoundInput::default()
-                    });
-                    continue;
-                }
-            };
-            if let Some(sf) = &c.shift_factors {
-                if files.len() != 1 {
-                    return Err(PipelineError::Config {
-                        path: listing.clone(),
-                        message: format!(
-                            "compound {:?}: with shift_factors, `files` must name the one master-curve CSV ({} files found)",
-                            c.name,
-                            files.len()
-                        ),
-                    });
-                }
-                settings.shift_factors = Some(dir.join(sf));
-            }
-            if !specimens.is_empty() && settings.shift_factors.is_some() {
-                return Err(config(
-                    "a master curve read already shifted (shift_factors) has one specimen".into(),
-                ));
-            }
-            out.push(CompoundInput {
+    let mut out = if listing.exists() {
+        listed(dir, &listing, &mut notes)?
+    } else {
+        in_folder(dir, own, &mut notes)?
+    };
+    settle_names(&mut out, &mut notes);
+    Ok((out, notes))
+}
+
+/// The compounds `compounds.toml` (at `listing`) names, in its order.
+fn listed(
+    dir: &Path,
+    listing: &Path,
+    notes: &mut Vec<String>,
+) -> Result<Vec<CompoundInput>, PipelineError> {
+    let text = crate::fsutil::read_regular_to_string(listing, crate::limits::SETTINGS_BYTES_MAX)
+        .map_err(io(listing))?;
+    let l: Listing = toml::from_str(&text).map_err(|e| PipelineError::Config {
+        path: listing.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    l.compound
+        .into_iter()
+        .map(|c| listed_compound(dir, listing, c, notes))
+        .collect()
+}
+
+/// One compound of `compounds.toml`: its files (`files`: one specimen) or specimens (a file, a
+/// pattern or a folder each) and its settings; a bad setting (or name) fails its compound only
+/// (`unreadable`), a listing that contradicts itself fails the run.
+fn listed_compound(
+    dir: &Path,
+    listing: &Path,
+    c: ListedCompound,
+    notes: &mut Vec<String>,
+) -> Result<CompoundInput, PipelineError> {
+    let config = |message: String| PipelineError::Config {
+        path: listing.to_path_buf(),
+        message: format!("compound {:?}: {message}", c.name),
+    };
+    if c.files.is_empty() == c.specimens.is_empty() {
+        return Err(config(
+            "give either `files` (one specimen) or `specimens` (one entry per replicate \
+             specimen: a file, a pattern or a folder)"
+                .into(),
+        ));
+    }
+    let mut files = Vec::new();
+    for f in &c.files {
+        let got = expand(dir, f)?;
+        if got.is_empty() {
+            notes.push(format!("{}: `{f}` matches no file", c.name));
+        }
+        files.extend(got);
+    }
+    let mut specimens = Vec::new();
+    for f in &c.specimens {
+        let full = dir.join(f);
+        let got: Vec<PathBuf> = if full.is_dir() {
+            exports_in(&full)?
+        } else {
+            expand(dir, f)?
+                .into_iter()
+                .filter(|p| p.is_file())
+                .collect()
+        };
+        if got.is_empty() {
+            return Err(config(format!("specimen `{f}` matches no export")));
+        }
+        files.extend(got.iter().cloned());
+        specimens.push(got);
+    }
+    if specimens.len() == 1 {
+        specimens.clear();
+    }
+    let checked = crate::limits::name("name", &c.name)
+        .map_err(|e| e.to_string())
+        .and_then(|()| c.settings(dir));
+    let mut settings = match checked {
+        Ok(s) => s,
+        Err(message) => {
+            return Ok(CompoundInput {
                 name: c.name,
                 files,
-                specimens,
-                settings,
-                unreadable: None,
+                unreadable: Some(format!("{}: {message}", listing.display())),
+                ..CompoundInput::default()
             });
         }
-        settle_names(&mut out, &mut notes);
-        return Ok((out, notes));
+    };
+    if let Some(sf) = &c.shift_factors {
+        if files.len() != 1 {
+            return Err(config(format!(
+                "with shift_factors, `files` must name the one master-curve CSV ({} files found)",
+                files.len()
+            )));
+        }
+        settings.shift_factors = Some(dir.join(sf));
     }
+    if !specimens.is_empty() && settings.shift_factors.is_some() {
+        return Err(config(
+            "a master curve read already shifted (shift_factors) has one specimen".into(),
+        ));
+    }
+    Ok(CompoundInput {
+        name: c.name,
+        files,
+        specimens,
+        settings,
+        unreadable: None,
+    })
+}
+
+/// Without `compounds.toml`: every export in `dir` a compound, every folder of exports (or of
+/// specimen folders) a compound; the run's own entries and hidden ones passed over.
+fn in_folder(
+    dir: &Path,
+    own: &[PathBuf],
+    notes: &mut Vec<String>,
+) -> Result<Vec<CompoundInput>, PipelineError> {
     let mut out = Vec::new();
     for p in sorted_entries(dir)? {
         if is_own_or_hidden(&p, own) {
@@ -577,62 +602,11 @@ pub fn discover(
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         if p.is_dir() {
-            let mut files: Vec<PathBuf> = match exports_in(&p) {
-                Ok(v) => v,
-                Err(e) => {
-                    // An unreadable folder fails its compound only.
-                    out.push(CompoundInput {
-                        name: p
-                            .file_name()
-                            .map_or(name, |n| n.to_string_lossy().into_owned()),
-                        unreadable: Some(e.to_string()),
-                        ..CompoundInput::default()
-                    });
-                    continue;
-                }
-            };
-            let mut specimens = Vec::new();
-            if files.is_empty() {
-                // replicate specimens: a sub-folder of exports each (an unreadable one is skipped
-                // with the others; the compound then fails or runs on what could be read)
-                for sub in sorted_entries(&p)
-                    .unwrap_or_default()
-                    .into_iter()
-                    .filter(|s| s.is_dir())
-                {
-                    let got = match exports_in(&sub) {
-                        Ok(v) => v,
-                        Err(e) => {
-                            notes.push(format!("{e}: specimen folder skipped"));
-                            continue;
-                        }
-                    };
-                    if !got.is_empty() {
-                        files.extend(got.iter().cloned());
-                        specimens.push(got);
-                    }
-                }
-                if specimens.len() == 1 {
-                    specimens.clear();
-                }
-            }
-            if files.is_empty() {
-                notes.push(format!(
-                    "{}: no DMA export in the folder, skipped",
-                    p.display()
-                ));
-            } else {
-                let dir_name = p
-                    .file_name()
-                    .map(|n| n.to_string_lossy().into_owned())
-                    .unwrap_or(name);
-                out.push(CompoundInput {
-                    name: dir_name,
-                    files,
-                    specimens,
-                    ..CompoundInput::default()
-                });
-            }
+            let dir_name = p
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or(name);
+            out.extend(folder_compound(&p, dir_name, notes));
         } else if is_export(&p) {
             out.push(CompoundInput {
                 name,
@@ -643,8 +617,61 @@ pub fn discover(
             notes.push(format!("{}: not a DMA export, skipped", p.display()));
         }
     }
-    settle_names(&mut out, &mut notes);
-    Ok((out, notes))
+    Ok(out)
+}
+
+/// The compound of folder `p` named `name`: its exports, or its sub-folders' as replicate
+/// specimens; an unreadable folder fails its compound only, a folder without exports is skipped
+/// with a note.
+fn folder_compound(p: &Path, name: String, notes: &mut Vec<String>) -> Option<CompoundInput> {
+    let mut files: Vec<PathBuf> = match exports_in(p) {
+        Ok(v) => v,
+        Err(e) => {
+            return Some(CompoundInput {
+                name,
+                unreadable: Some(e.to_string()),
+                ..CompoundInput::default()
+            });
+        }
+    };
+    let mut specimens = Vec::new();
+    if files.is_empty() {
+        // replicate specimens: a sub-folder of exports each (an unreadable one is skipped
+        // with the others; the compound then fails or runs on what could be read)
+        for sub in sorted_entries(p)
+            .unwrap_or_default()
+            .into_iter()
+            .filter(|s| s.is_dir())
+        {
+            let got = match exports_in(&sub) {
+                Ok(v) => v,
+                Err(e) => {
+                    notes.push(format!("{e}: specimen folder skipped"));
+                    continue;
+                }
+            };
+            if !got.is_empty() {
+                files.extend(got.iter().cloned());
+                specimens.push(got);
+            }
+        }
+        if specimens.len() == 1 {
+            specimens.clear();
+        }
+    }
+    if files.is_empty() {
+        notes.push(format!(
+            "{}: no DMA export in the folder, skipped",
+            p.display()
+        ));
+        return None;
+    }
+    Some(CompoundInput {
+        name,
+        files,
+        specimens,
+        ..CompoundInput::default()
+    })
 }
 
 #[cfg(test)]

@@ -484,16 +484,7 @@ fn one_compound(
         no_bands,
         specimen_fits,
         specimens,
-    } = match &c.settings.shift_factors {
-        None if c.unreadable.is_none()
-            && c.specimens.is_empty()
-            && super::fit_time::files_are_time_data(&c.files) =>
-        {
-            fit_time_domain(c, opts)?
-        }
-        None => fit_measured(c, opts)?,
-        Some(sf) => fit_shifted(c, sf, opts)?,
-    };
+    } = fit_any(c, opts)?;
     step("fit");
     let settings = pipeline_contact_settings();
     let mut friction = Vec::new();
@@ -517,18 +508,7 @@ fn one_compound(
         } else {
             ratios.push(Vec::new());
         }
-        // each specimen's own friction, what is determined, the between-specimen term
-        let specimen_points: Vec<Vec<FrictionPoint>> = specimen_fits
-            .iter()
-            .map(|f| {
-                f.as_ref()
-                    .ok()
-                    .and_then(|f| friction_vs_temperature(f, spec, &settings).ok())
-                    .unwrap_or_default()
-            })
-            .collect();
-        super::trust::finish_points(&mut points, &specimen_points, fit.measured_range_c());
-        super::fit_time::mark_time_domain_points(&fit, spec.scene().speed_m_s, &mut points);
+        finish_points(&fit, &specimen_fits, spec, &mut points);
         friction.push((spec.clone(), points));
         step(&format!("friction {}", spec.name));
         let m = super::scenes::friction_maps(&fit, spec, &super::scenes::pipeline_map_settings())?;
@@ -542,22 +522,13 @@ fn one_compound(
         maps.push(m);
         step(&format!("maps {}", spec.name));
     }
-    let mut fit_level = fit_warnings(&fit, no_bands.as_deref(), opts.bands.is_some());
-    fit_level.extend(
-        specimen_fits
-            .iter()
-            .filter_map(|f| f.as_ref().err())
-            .map(|e| format!("replicate specimens: {e} (its friction left out of the spread)")),
+    let fit_level = own_warnings(
+        c,
+        opts,
+        (&fit, no_bands.as_deref()),
+        &specimen_fits,
+        &friction,
     );
-    if opts.bands.is_some() && fit.bands.is_some() {
-        // what every band of the compound covers (docs/MATH.md §16)
-        let sd = friction
-            .iter()
-            .flat_map(|(_, p)| p)
-            .map(|p| crate::bands::between_sd_ln(&p.specimens))
-            .fold(0.0, f64::max);
-        fit_level.push(crate::bands::specimens_note(c.specimens.len().max(1), sd));
-    }
     write_report(
         &fit,
         crate::report::Measured {
@@ -578,6 +549,70 @@ fn one_compound(
         ratios,
         no_bands,
     ))
+}
+
+/// The compound's fit: from time-domain data, from measured sweeps, or from a master curve read
+/// already shifted (`shift_factors`).
+fn fit_any(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError> {
+    match &c.settings.shift_factors {
+        None if c.unreadable.is_none()
+            && c.specimens.is_empty()
+            && super::fit_time::files_are_time_data(&c.files) =>
+        {
+            fit_time_domain(c, opts)
+        }
+        None => fit_measured(c, opts),
+        Some(sf) => fit_shifted(c, sf, opts),
+    }
+}
+
+/// A scene's points finished: each specimen's own friction, what is determined, the
+/// between-specimen term, the time-domain marks.
+fn finish_points(
+    fit: &CompoundFit,
+    specimen_fits: &[Result<CompoundFit, String>],
+    spec: &SceneSpec,
+    points: &mut [FrictionPoint],
+) {
+    let settings = pipeline_contact_settings();
+    let specimen_points: Vec<Vec<FrictionPoint>> = specimen_fits
+        .iter()
+        .map(|f| {
+            f.as_ref()
+                .ok()
+                .and_then(|f| friction_vs_temperature(f, spec, &settings).ok())
+                .unwrap_or_default()
+        })
+        .collect();
+    super::trust::finish_points(points, &specimen_points, fit.measured_range_c());
+    super::fit_time::mark_time_domain_points(fit, spec.scene().speed_m_s, points);
+}
+
+/// The compound's own warnings: the fit's, each replicate specimen that failed, and with bands
+/// what every band of the compound covers (docs/MATH.md §16).
+fn own_warnings(
+    c: &CompoundInput,
+    opts: &RunOptions,
+    (fit, no_bands): (&CompoundFit, Option<&str>),
+    specimen_fits: &[Result<CompoundFit, String>],
+    friction: &[(SceneSpec, Vec<FrictionPoint>)],
+) -> Vec<String> {
+    let mut fit_level = fit_warnings(fit, no_bands, opts.bands.is_some());
+    fit_level.extend(
+        specimen_fits
+            .iter()
+            .filter_map(|f| f.as_ref().err())
+            .map(|e| format!("replicate specimens: {e} (its friction left out of the spread)")),
+    );
+    if opts.bands.is_some() && fit.bands.is_some() {
+        let sd = friction
+            .iter()
+            .flat_map(|(_, p)| p)
+            .map(|p| crate::bands::between_sd_ln(&p.specimens))
+            .fold(0.0, f64::max);
+        fit_level.push(crate::bands::specimens_note(c.specimens.len().max(1), sd));
+    }
+    fit_level
 }
 
 /// [`one_compound`] with a panic caught and turned into the compound's error, so one bad input
@@ -810,36 +845,23 @@ fn stale_reports(reports: &Path, compounds: &[CompoundInput]) -> Vec<String> {
 /// its tan δ proxy for the index.
 type Finished = (CompoundOutcome, Vec<Vec<Vec<f64>>>, Option<TanDeltaProxy>);
 
+/// Every compound's outcome and ratios, in order, and the tan δ proxies of those that finished.
+type AllFinished = (
+    Vec<CompoundOutcome>,
+    Vec<Vec<Vec<Vec<f64>>>>,
+    Vec<TanDeltaProxy>,
+);
+
 /// [`run_all`], reporting each finished work unit to `progress` (first [`ProgressEvent::Total`],
-/// then one [`ProgressEvent::Done`] per unit, from the worker threads).
+/// then one [`ProgressEvent::Done`] per unit, from the worker threads): the compounds found
+/// (`inputs`), the output folder locked, each compound solved (`solve_compounds`), the
+/// comparisons, then the shard's file or the ranking, workbook and index (`write_run`).
 pub fn run_all_with_progress(
     opts: &RunOptions,
     log: &(dyn Fn(&str) + Sync),
     progress: &(dyn Fn(ProgressEvent<'_>) + Sync),
 ) -> Result<RunSummary, PipelineError> {
-    if !opts.input_dir.is_dir() {
-        return Err(PipelineError::NotAFolder {
-            path: opts.input_dir.clone(),
-        });
-    }
-    // the run's own paths are never compounds: a second run in the same folder reads only the
-    // inputs again
-    let own = [
-        opts.out_dir.clone(),
-        opts.out_dir.join("fits"),
-        opts.out_dir.join("reports"),
-    ]
-    .into_iter()
-    .chain(opts.scenes_file.clone())
-    .collect::<Vec<_>>();
-    let (all, mut notes) = discover(&opts.input_dir, &own)?;
-    if all.is_empty() {
-        return Err(PipelineError::NoCompounds {
-            path: opts.input_dir.clone(),
-            notes: notes.iter().take(5).cloned().collect::<Vec<_>>().join("; "),
-        });
-    }
-    notes.insert(0, scenes_origin(opts.scenes_file.as_deref()));
+    let (all, mut notes) = inputs(opts)?;
     // a shard locks its own folder and leaves temporary files alone (crate::pipeline::shard)
     let lock_dir = opts
         .shard
@@ -870,6 +892,70 @@ pub fn run_all_with_progress(
     for n in &notes {
         log(&format!("note: {n}"));
     }
+    let (mut outcomes, ratios, proxies) = solve_compounds(&compounds, opts, log, progress);
+    super::trust::share_windows(&mut outcomes, &ratios, &opts.scenes);
+    let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
+    let reports = opts.out_dir.join("reports");
+    notes.extend(stale_reports(&reports, &all));
+    let summary = RunSummary {
+        compounds: outcomes,
+        notes,
+        allow_extrapolation: opts.allow_extrapolation,
+        ranking_csv: reports.join("ranking.csv"),
+        index_html: reports.join("index.html"),
+        comparisons,
+    };
+    if let Some(shard) = opts.shard {
+        let file = super::shard::ShardFile {
+            shard_index: shard.index,
+            shard_count: shard.count,
+            compounds_total: all.len(),
+            positions,
+            scenes: opts.scenes.clone(),
+            summary,
+        };
+        super::shard::write_shard_file(&opts.out_dir, &file)?;
+        return Ok(file.summary);
+    }
+    write_run(&summary, opts, &proxies)?;
+    Ok(summary)
+}
+
+/// The compounds of the input folder (the run's own paths are never compounds: a second run in
+/// the same folder reads only the inputs again) and the notes, the scenes' origin first.
+fn inputs(opts: &RunOptions) -> Result<(Vec<CompoundInput>, Vec<String>), PipelineError> {
+    if !opts.input_dir.is_dir() {
+        return Err(PipelineError::NotAFolder {
+            path: opts.input_dir.clone(),
+        });
+    }
+    let own = [
+        opts.out_dir.clone(),
+        opts.out_dir.join("fits"),
+        opts.out_dir.join("reports"),
+    ]
+    .into_iter()
+    .chain(opts.scenes_file.clone())
+    .collect::<Vec<_>>();
+    let (all, mut notes) = discover(&opts.input_dir, &own)?;
+    if all.is_empty() {
+        return Err(PipelineError::NoCompounds {
+            path: opts.input_dir.clone(),
+            notes: notes.iter().take(5).cloned().collect::<Vec<_>>().join("; "),
+        });
+    }
+    notes.insert(0, scenes_origin(opts.scenes_file.as_deref()));
+    Ok((all, notes))
+}
+
+/// Each compound's outcome, bootstrap ratios and tan δ proxy (parallel over compounds, each one
+/// isolated, its work units reported to `progress` and the skipped ones made up).
+fn solve_compounds(
+    compounds: &[CompoundInput],
+    opts: &RunOptions,
+    log: &(dyn Fn(&str) + Sync),
+    progress: &(dyn Fn(ProgressEvent<'_>) + Sync),
+) -> AllFinished {
     let per = units_per_compound(&opts.scenes);
     progress(ProgressEvent::Total(per * compounds.len() as u64));
     let done: Vec<Finished> = compounds
@@ -902,52 +988,28 @@ pub fn run_all_with_progress(
         ratios.push(r);
         proxies.extend(p);
     }
-    super::trust::share_windows(&mut outcomes, &ratios, &opts.scenes);
-    let comparisons = compare_ranked(&mut outcomes, &opts.scenes);
-    let reports = opts.out_dir.join("reports");
-    notes.extend(stale_reports(&reports, &all));
-    let ranking_path = reports.join("ranking.csv");
-    let index_path = reports.join("index.html");
-    if let Some(shard) = opts.shard {
-        let summary = RunSummary {
-            compounds: outcomes,
-            notes,
-            allow_extrapolation: opts.allow_extrapolation,
-            ranking_csv: ranking_path,
-            index_html: index_path,
-            comparisons,
-        };
-        let file = super::shard::ShardFile {
-            shard_index: shard.index,
-            shard_count: shard.count,
-            compounds_total: all.len(),
-            positions,
-            scenes: opts.scenes.clone(),
-            summary,
-        };
-        super::shard::write_shard_file(&opts.out_dir, &file)?;
-        return Ok(file.summary);
-    }
+    (outcomes, ratios, proxies)
+}
+
+/// The run's own files: the ranking, the workbook when asked for, and the index last (it reads
+/// the whole summary, comparisons included).
+fn write_run(
+    summary: &RunSummary,
+    opts: &RunOptions,
+    proxies: &[TanDeltaProxy],
+) -> Result<(), PipelineError> {
     write_ranking(
-        &ranking_path,
-        &outcomes,
+        &summary.ranking_csv,
+        &summary.compounds,
         &opts.scenes,
         opts.allow_extrapolation,
     )?;
-    // the index reads the whole summary (comparisons included), so it is written last
-    let summary = RunSummary {
-        compounds: outcomes,
-        notes,
-        allow_extrapolation: opts.allow_extrapolation,
-        ranking_csv: ranking_path,
-        index_html: index_path,
-        comparisons,
-    };
     if opts.xlsx {
-        write_workbook(&summary)?;
+        write_workbook(summary)?;
     }
-    write_index(&reports, &summary, &opts.scenes, &proxies)?;
-    Ok(summary)
+    let reports = opts.out_dir.join("reports");
+    write_index(&reports, summary, &opts.scenes, proxies)?;
+    Ok(())
 }
 
 /// Friction of fit files at one scene, for `viscoroll rank`: (compound, points, standing), trusted
@@ -956,7 +1018,7 @@ pub fn run_all_with_progress(
 /// `run`, and the ranked compounds their comparisons (`tied_with`), which are returned too.
 pub fn rank_fits(
     fits: &[CompoundFit],
-    spec: &crate::results::SceneSpec,
+    spec: &SceneSpec,
     allow_extrapolation: bool,
     bands: Option<&BandSettings>,
 ) -> (Vec<RankedFit>, Vec<crate::results::PairComparison>) {

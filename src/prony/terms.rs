@@ -45,7 +45,7 @@
 use super::kernel::{loss_kernel, storage_kernel};
 use super::points::{log10_errors, Log10Errors, MasterPoint};
 use super::{PronyError, RelaxationSpectrum, RelaxationTerm};
-use crate::ModulusKind;
+use crate::material::ModulusKind;
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;

@@ -21,9 +21,9 @@
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
 //!    `Layer { thickness_m }`), with its arms in [`Body::name`] (the serde name too),
 //!    [`Body::asked_for`], [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in
-//!    [`answer_at_load`] and [`solve_at_lambda`] below, the single dispatch point (lengths go in
+//!    [`answer_at_load`] and [`answer_at_lambda`] below, the single dispatch point (lengths go in
 //!    units of `problem.length_scale_m`); to be chosen by `auto` or by name, also in
-//!    [`Body::auto_choice`] / [`Body::choice`] and `contact::cover`'s answer at given λ;
+//!    [`Body::auto_choice`] / [`Body::choice`];
 //! 3. its tests at the foot of its folder, through [`crate::contact::roll`] where they can.
 //!
 //! A body for tests only is the same with `#[cfg(test)]` on its `mod`, its variant and each of its
@@ -315,7 +315,8 @@ pub struct Solved {
 pub struct AutoPick {
     /// The estimated relative difference of the body chosen from the layer.
     pub model_error_estimate: f64,
-    /// The half-space contact length λ the criterion was applied at (units of V·T).
+    /// The contact length λ the criterion was applied at (units of V·T): at given load the
+    /// half-space's, at given λ the λ given.
     pub lambda_half_space: f64,
 }
 
@@ -412,41 +413,61 @@ pub fn solve_at_lambda(
     lambda: f64,
     settings: &ContactSettings,
 ) -> Result<DimensionlessSolution, ContactError> {
+    answer_at_lambda(body, problem, lambda, settings).map(|s| s.answer.solution)
+}
+
+/// [`solve_at_lambda`] with the body's error estimate, checks and warnings and the body solved
+/// (`auto` resolved by its criterion at the given λ and `settings.auto.tol`): the single dispatch at
+/// given λ. The half-space by the scheme of `settings`; the bonded layer by the hat collocation with
+/// `settings.n` intervals, its error estimated from the same solve at n/2
+/// ([`layer::collocation::answer_at_lambda`]); the Winkler foundations in closed form.
+pub fn answer_at_lambda(
+    body: &Body,
+    problem: &DimensionlessScene,
+    lambda: f64,
+    settings: &ContactSettings,
+) -> Result<Solved, ContactError> {
     body.validate()?;
-    match body {
-        Body::HalfSpace { .. } => half_space::solve_at_lambda(&problem.terms, lambda, settings),
+    let solved = |answer| Solved {
+        body: *body,
+        answer,
+        auto: None,
+    };
+    let (terms, nu) = (&problem.terms, problem.poisson);
+    match *body {
+        Body::HalfSpace { .. } => Ok(solved(BodyAnswer::from_solution(
+            half_space::solve_at_lambda(terms, lambda, settings)?,
+        ))),
         Body::Auto { thickness_m } => {
-            let (chosen, _) = auto_at(problem, *thickness_m, lambda, settings);
-            solve_at_lambda(&chosen, problem, lambda, settings)
+            let (chosen, estimate) = auto_at(problem, thickness_m, lambda, settings);
+            let mut s = answer_at_lambda(&chosen, problem, lambda, settings)?;
+            s.auto = estimate.map(|e| AutoPick {
+                model_error_estimate: e,
+                lambda_half_space: lambda,
+            });
+            Ok(s)
         }
         Body::Layer { thickness_m } => {
-            let k = layer::LayerKernel::new(
-                &problem.terms,
-                thickness_m / problem.length_scale_m,
-                problem.poisson,
-            )?;
-            layer::collocation::solve_at_lambda(&k, lambda, settings.n)
+            let k = layer::LayerKernel::new(terms, thickness_m / problem.length_scale_m, nu)?;
+            layer::collocation::answer_at_lambda(&k, lambda, settings.n).map(solved)
         }
         Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => {
-            let w = layer::Winkler::new(
-                &problem.terms,
-                winkler_columns(body),
-                height_m / problem.length_scale_m,
-                problem.poisson,
-            )?;
-            Ok(w.at_lambda(lambda)?.solution)
+            let h = height_m / problem.length_scale_m;
+            let w = layer::Winkler::new(terms, winkler_columns(body), h, nu)?;
+            Ok(solved(w.at_lambda(lambda)?.into_body_answer()))
         }
         #[cfg(test)]
         Body::OnSprings {
             thickness_m,
             stiffness_pa_per_m,
         } => on_springs::solve_at_lambda(
-            &problem.terms,
+            terms,
             lambda,
             thickness_m / problem.length_scale_m,
-            on_springs::compliance(problem, *stiffness_pa_per_m),
-            problem.poisson,
-        ),
+            on_springs::compliance(problem, stiffness_pa_per_m),
+            nu,
+        )
+        .map(|sol| solved(BodyAnswer::from_solution(sol))),
     }
 }
 
@@ -579,6 +600,7 @@ mod tests {
                 .unwrap()
                 .at_lambda(0.7)
                 .unwrap()
+                .into_body_answer()
                 .solution;
             assert_eq!(at, want_at, "{body:?}");
             answers.push(got.lambda);

@@ -46,7 +46,7 @@
 use super::kernel::LayerKernel;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::problem::DimensionlessSolution;
+use crate::contact::problem::{BodyAnswer, DimensionlessSolution};
 
 /// Settings of the layer solve at given load.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -302,6 +302,30 @@ fn rel(a: f64, b: f64) -> f64 {
     } else {
         (a - b).abs() / a.abs().max(b.abs())
     }
+}
+
+/// The answer at contact length λ with `n` intervals (rounded down to an even number, at least 4):
+/// the solution, its error estimated from the same solve at n/2 (the largest relative change of β,
+/// N′ and ρF/N) and its contact checks ([`contact_checks`]).
+pub fn answer_at_lambda(
+    kernel: &LayerKernel,
+    lambda: f64,
+    n: usize,
+) -> Result<BodyAnswer, ContactError> {
+    let n = n.max(4) / 2 * 2;
+    let fine = solve_at_lambda(kernel, lambda, n)?;
+    let coarse = solve_at_lambda(kernel, lambda, n / 2)?;
+    let error_estimate = rel(fine.beta, coarse.beta)
+        .max(rel(fine.load, coarse.load))
+        .max(rel(fine.friction_rho, coarse.friction_rho));
+    let (min_pressure_ratio, min_gap_ratio) = contact_checks(kernel, &fine)?;
+    Ok(BodyAnswer {
+        error_estimate,
+        min_pressure_ratio,
+        min_gap_ratio,
+        warnings: Vec::new(),
+        solution: fine,
+    })
 }
 
 /// Pressure and gap checks of a solution: min nodal pressure / max, and the smallest gap at the nodes

@@ -313,6 +313,8 @@ struct LoadProblem<'a> {
     safe: (f64, f64),
     /// The Brent fallback's settings (the load loop's default 1e−10 in N′).
     load_settings: LoadSettings,
+    /// The relative tolerance asked for (`SpectralSettings::tol`).
+    tol: f64,
     // the fine secant loop to |ln N′/N′₀| ≤ `fine_stop` = max(1e−10, 1e−3·tol): the stop's λ error
     // ≤ 2·fine_stop (d ln N′/d ln λ ≥ ½) is counted in the estimate, and the answer is carried to
     // the secant's root ([`to_root`]) so that it does not jump by the stop between neighbouring
@@ -419,7 +421,10 @@ impl LoadProblem<'_> {
 }
 
 /// Solve the bonded layer at load N′ to `settings.tol` (module doc of [`super`]); `Ok(None)` when
-/// the cover is too thin for the degree cap at the contact found.
+/// the cover is too thin for the degree cap at the contact found. Up to three rounds, each: 1. the
+/// walk's load loop (`LoadProblem::walk`), 2.–4. the lumping gains, the carry to the root and the
+/// degree's error there (`LoadProblem::settle`), 5. the reduction selected again at the λ found
+/// (another round where it changed and the estimate misses tol).
 pub fn solve_spectral_at_load(
     terms: &[CreepTerm],
     load: f64,
@@ -442,94 +447,206 @@ pub fn solve_spectral_at_load(
         s_full,
         safe: secant_bracket(load, thickness, nu, s_full),
         load_settings: LoadSettings::default(),
+        tol,
         fine_stop: fine_stop(tol),
     };
     let cap = degree_cap(settings.p_max);
-    let (mut lam, mut slope) = warm_start(settings.start, terms, load, thickness, nu);
+    let (lam, slope) = warm_start(settings.start, terms, load, thickness, nu);
     // a cover far too thin for the degree cap at the start (within 25 % of the root, module
     // [`super::secant`]) is declined without a solve; the rule decides at the λ found below
     if degree_for(0.35 * lam, thickness, tol) > settings.p_max {
         return Ok(None);
     }
     let model = model_gains(terms, lam);
-    let (mut p_floor, mut fr_over_l) = (8, None);
-    let mut iterations = 0;
-    let mut warnings = Vec::new();
-    'rounds: for round in 0..3 {
-        // 1. the one load loop at the answer's reduction and degree (module [`super::walk`]),
-        // stopped where the carry to the root is accurate; the bracketed Brent loop from the
-        // walk's reduction and degree if the secant fails, and a new walk from its λ
-        let walk = RefCell::new(Walk::new(
+    let mut r = Round {
+        lam,
+        slope,
+        p_floor: 8,
+        fr_over_l: None,
+        iterations: 0,
+    };
+    for round in 0..3 {
+        // 1. the walk's load loop (or the Brent fallback and another round)
+        let Some((walk, red)) = pb.walk(&mut r, (model, cap), round)? else {
+            continue;
+        };
+        let lam_n = walk.seen[walk.seen.len() - 1].triple.0.lambda;
+        if degree_for(0.5 * lam_n, thickness, tol) > settings.p_max {
+            return Ok(None);
+        }
+        // 2.–4. the gains, the carry to the root, the degree's error (or another round)
+        let Some(s) = pb.settle(&walk, &red, settings, (model, cap), round, &mut r)? else {
+            continue;
+        };
+        let (lambda, fr) = (s.sol.lambda, s.sol.friction_rho);
+        let next = select(
             terms,
-            (thickness, nu),
-            rule,
-            tol,
+            lambda,
+            0.3 * tol * fr / lambda,
+            0.3 * tol,
+            (s.gains.0, s.gains.1),
+        );
+        let same =
+            next.kept == red.kept && next.lumped == red.lumped && next.dropped == red.dropped;
+        if s.est <= tol || same || round == 2 {
+            let warnings = missed_tol(&s, tol, thickness);
+            let (sol, p, est) = (s.sol, s.p, s.est);
+            return finish(
+                &kernel,
+                sol,
+                p,
+                est,
+                r.iterations,
+                warnings,
+                settings.checks,
+            )
+            .map(Some);
+        }
+        // 5. another walk with the reduction selected at the λ found
+        r.lam = lambda;
+        r.fr_over_l = Some(fr / lambda);
+        r.p_floor = s.p;
+    }
+    unreachable!("the round loop returns at round 2")
+}
+
+/// Where a round of [`solve_spectral_at_load`] starts its walk (λ guess and d ln N′/d ln λ, the
+/// degree floor, ρF/N over λ for the reduction) and the solves made so far.
+struct Round {
+    lam: f64,
+    slope: f64,
+    p_floor: usize,
+    fr_over_l: Option<f64>,
+    iterations: usize,
+}
+
+/// A round's answer at its reduction (steps 2–4 of [`solve_spectral_at_load`]).
+struct Settled {
+    sol: LambdaSolution,
+    /// The degree of `sol`.
+    p: usize,
+    /// Its error estimate and the round-off floor of ρF/N ([`estimate`]).
+    est: f64,
+    floor: f64,
+    /// The lumping gains (g_F, g_N, g_β) applied.
+    gains: (f64, f64, f64),
+}
+
+/// The warning when the estimate misses tol (none when it meets it), with the round-off floor's
+/// reason when that is at least half of the estimate.
+fn missed_tol(s: &Settled, tol: f64, thickness: f64) -> Vec<String> {
+    if s.est <= tol {
+        return Vec::new();
+    }
+    let (est, floor, p) = (s.est, s.floor, s.p);
+    let (lambda, fr) = (s.sol.lambda, s.sol.friction_rho);
+    let why = if floor >= 0.5 * est {
+        format!(
+            "; ρF/N is only {:.1e} of the contact length, and its round-off alone \
+             (ρF/N = L − β + …, a difference of O(λ) terms) is {floor:.1e} relative",
+            fr / lambda
+        )
+    } else {
+        String::new()
+    };
+    vec![format!(
+        "tolerance not reached: spectral layer estimate {est:.1e} > tol {tol:.1e} \
+         (degree p = {p}, cover/contact length {:.2e}){why}",
+        thickness / lambda
+    )]
+}
+
+impl<'a> LoadProblem<'a> {
+    /// Step 1 of a round: the one load loop at the answer's reduction and degree (module
+    /// [`super::walk`]), stopped where the carry to the root is accurate; the walk and its
+    /// reduction. When the secant fails (rounds 0–1), the bracketed Brent loop from the walk's
+    /// reduction and degree, its λ the start of another round (`None`).
+    fn walk(
+        &self,
+        r: &mut Round,
+        (model, cap): ((f64, f64), usize),
+        round: usize,
+    ) -> Result<Option<(Walk<'a>, Reduction)>, ContactError> {
+        let walk = RefCell::new(Walk::new(
+            self.terms,
+            (self.thickness, self.nu),
+            self.rule,
+            self.tol,
             cap,
             model,
-            p_floor,
-            fr_over_l,
+            r.p_floor,
+            r.fr_over_l,
         ));
         let looped = secant_until(
-            load,
-            pb.safe,
-            Start::Guess(lam, slope),
+            self.load,
+            self.safe,
+            Start::Guess(r.lam, r.slope),
             SECANT_SOLVES,
             &mut |x| walk.borrow_mut().solve(x),
             &mut |t| walk.borrow().done(t.proposal.step, t.last_step),
         );
         let mut walk = walk.into_inner();
-        iterations += walk.solves;
-        let red = match (looped, walk.red.take()) {
+        r.iterations += walk.solves;
+        match (looped, walk.red.take()) {
             (Ok(l), Some(red)) => {
-                slope = l.slope;
-                red
+                r.slope = l.slope;
+                Ok(Some((walk, red)))
             }
             (Err(_), Some(red)) if round < 2 => {
-                let (s, it) = pb.solve_loop(
-                    &red,
-                    (model.0, model.1, 0.0),
-                    walk.p,
-                    None,
-                    &fallback_settings(),
-                )?;
-                iterations += it;
-                lam = s.lambda;
-                fr_over_l = Some(s.friction_rho / s.lambda);
-                continue;
+                let g = (model.0, model.1, 0.0);
+                let (s, it) = self.solve_loop(&red, g, walk.p, None, &fallback_settings())?;
+                r.iterations += it;
+                r.lam = s.lambda;
+                r.fr_over_l = Some(s.friction_rho / s.lambda);
+                Ok(None)
             }
-            (Err(e), _) => return Err(e),
+            (Err(e), _) => Err(e),
             (Ok(_), None) => unreachable!("a finished loop has solved"),
-        };
+        }
+    }
+
+    /// Steps 2–4 of a round on the walk's last two solves (λₙ and the one before):
+    /// 2. the lumping gains measured at λₙ, with their half-degree companion (until round 5 of
+    /// the speed work the gains came from the first degree and were kept when the check raised
+    /// it: a true error 2.5 times the estimate, tests/layer_thin_gains.rs). At p/2 first where
+    /// p ≥ 16 (its columns cost about half; the gains enter as λ·g·W, far smaller than the
+    /// solution, so they need less of the degree): their degree error (p/2 against p/4) is
+    /// counted in the estimate, and only if the estimate then misses tol are they measured
+    /// again at p and steps 2–4 redone; 3. the carry to the root ([`LoadProblem::carry`]);
+    /// 4. the degree's error at the λ found ([`degree_at_found`]) and the estimate.
+    /// `None` when the measured gains fail the p/2 check below the cap (rounds 0–1): `r` then
+    /// starts another round at the degree the measured convergence rate asks.
+    fn settle(
+        &self,
+        walk: &Walk,
+        red: &Reduction,
+        settings: &SpectralSettings,
+        (model, cap): ((f64, f64), usize),
+        round: usize,
+        r: &mut Round,
+    ) -> Result<Option<Settled>, ContactError> {
+        let (terms, tol) = (self.terms, settings.tol);
         let (wl, p) = (walk.wl, walk.p);
         let n = walk.seen.len();
-        let (last, prev) = (&walk.seen[n - 1], &walk.seen[n - 2]);
-        let lam_n = last.triple.0.lambda;
-        if degree_for(0.5 * lam_n, thickness, tol) > settings.p_max {
-            return Ok(None);
-        }
-        // 2. the lumping gains measured at λₙ, with their half-degree companion (until round 5 of
-        // the speed work the gains came from the first degree and were kept when the check raised
-        // it: a true error 2.5 times the estimate, tests/layer_thin_gains.rs). At p/2 first where
-        // p ≥ 16 (its columns cost about half; the gains enter as λ·g·W, far smaller than the
-        // solution, so they need less of the degree): their degree error (p/2 against p/4) is
-        // counted in the estimate, and only if the estimate then misses tol are they measured
-        // again at p and steps 2–4 redone
-        let t = &last.triple;
-        let budget = degree_budget(terms, &red, lam_n, tol);
+        let (t, prev) = (&walk.seen[n - 1].triple, &walk.seen[n - 2].triple);
+        let lam_n = t.0.lambda;
+        let budget = degree_budget(terms, red, lam_n, tol);
         let mut cal_at_half = !red.lumped.is_empty() && p >= 16;
-        let (sol, p, est, floor, gains) = loop {
+        loop {
             let cal = if red.lumped.is_empty() {
                 Calibration {
                     gains: (model.0, model.1, 0.0), // nothing lumped: the gains multiply W = 0
                     half: (model.0, model.1, 0.0),
                     amp: 0.0,
                 }
-            } else if cal_at_half {
-                iterations += 1;
-                calibrate(terms, &red, (&t.1, &t.2), thickness, nu, p / 2, rule)
             } else {
-                iterations += 1;
-                calibrate(terms, &red, (&t.0, &t.1), thickness, nu, p, rule)
+                r.iterations += 1;
+                let (pair, deg) = if cal_at_half {
+                    ((&t.1, &t.2), p / 2)
+                } else {
+                    ((&t.0, &t.1), p)
+                };
+                calibrate(terms, red, pair, self.thickness, self.nu, deg, self.rule)
             };
             let gains = cal.gains;
             let at_p = corrected(t.0.clone(), wl, gains);
@@ -539,90 +656,71 @@ pub fn solve_spectral_at_load(
                 if p < cap && round < 2 {
                     // the measured gains fail the p/2 check the model's passed: a new walk from
                     // here at the degree the measured convergence rate asks
-                    p_floor =
-                        next_degree(p, e_pre.0.max(e_pre.1), tol, 0.5 * lam_n / thickness, cap);
-                    lam = lam_n;
-                    fr_over_l = Some(at_p.friction_rho / lam_n);
-                    continue 'rounds;
+                    let e = e_pre.0.max(e_pre.1);
+                    r.p_floor = next_degree(p, e, tol, 0.5 * lam_n / self.thickness, cap);
+                    r.lam = lam_n;
+                    r.fr_over_l = Some(at_p.friction_rho / lam_n);
+                    return Ok(None);
                 }
                 // at the cap: the geometric estimate from the p/4 companion
                 e_pre = degree_error_at_cap(&corrected(t.2.clone(), wl, gains), &at_half, &at_p);
             }
-            // 3. carried to the root through the solve before (module [`super::walk`]): its
-            // interpolation remainder bounded by the measured curvature; the fine secant loop
-            // from λₙ where the measured gains moved the root too far for that
-            let prev_c = corrected(prev.triple.0.clone(), wl, gains);
-            let carried = to_root(at_p.clone(), Some(&prev_c), load);
-            let (u_n, u_prev, u_root) = (lam_n.ln(), prev_c.lambda.ln(), carried.lambda.ln());
-            let e_carry = CARRY_CURVATURE * (u_root - u_n).abs() * (u_root - u_prev).abs();
-            // `to_root` declines a carry longer than half the last step (then the fine loop goes
-            // on)
-            let reached = carried.lambda != at_p.lambda || at_p.load == load;
-            let (sol, e_stop) = if reached && e_carry <= 0.1 * tol {
-                // the N′ error e_carry is a λ error ≤ 2·e_carry (d ln N′/d ln λ ≥ ½)
-                (carried, 2.0 * e_carry)
-            } else {
-                let (s, it) = pb.fine(&red, gains, p, Start::Solved(at_p, slope), &mut slope)?;
-                iterations += it;
-                // the fine loop stops at |ln N′/N′₀| ≤ fine_stop (λ within 2× that, counted twice
-                // over; at least the 1e−8 of the former 1e−10 stop)
-                (s, (4.0 * fine_stop(tol)).max(1e-8))
-            };
-            // 4. the degree's error at the λ found
+            let prev_c = corrected(prev.0.clone(), wl, gains);
+            let (sol, e_stop) = self.carry(red, at_p, &prev_c, (p, gains), r)?;
             let (sol, p_found, e_p) = degree_at_found(
-                &pb,
-                &red,
+                self,
+                red,
                 sol,
                 (p, lam_n, e_pre),
                 (settings, budget),
-                &mut iterations,
-                &mut slope,
+                &mut r.iterations,
+                &mut r.slope,
                 (wl, gains),
             )?;
-            let e_quad = 3.0 * quadrature_bound(rule, 0.5 * sol.lambda / thickness);
-            let (est, floor) = estimate(terms, &red, &sol, lam_n, (wl, cal), e_p, (e_quad, e_stop));
+            let e_quad = 3.0 * quadrature_bound(self.rule, 0.5 * sol.lambda / self.thickness);
+            let (est, floor) = estimate(terms, red, &sol, lam_n, (wl, cal), e_p, (e_quad, e_stop));
             if est > tol && cal_at_half && p_found == p {
                 cal_at_half = false;
                 continue;
             }
-            break (sol, p_found, est, floor, gains);
-        };
-        let lambda = sol.lambda;
-        let fr = sol.friction_rho;
-        let next = select(
-            terms,
-            lambda,
-            0.3 * tol * fr / lambda,
-            0.3 * tol,
-            (gains.0, gains.1),
-        );
-        let same =
-            next.kept == red.kept && next.lumped == red.lumped && next.dropped == red.dropped;
-        if est <= tol || same || round == 2 {
-            if est > tol {
-                let why = if floor >= 0.5 * est {
-                    format!(
-                        "; ρF/N is only {:.1e} of the contact length, and its round-off alone \
-                         (ρF/N = L − β + …, a difference of O(λ) terms) is {floor:.1e} relative",
-                        fr / lambda
-                    )
-                } else {
-                    String::new()
-                };
-                warnings.push(format!(
-                    "tolerance not reached: spectral layer estimate {est:.1e} > tol {tol:.1e} \
-                     (degree p = {p}, cover/contact length {:.2e}){why}",
-                    thickness / lambda
-                ));
-            }
-            return finish(&kernel, sol, p, est, iterations, warnings, settings.checks).map(Some);
+            return Ok(Some(Settled {
+                sol,
+                p: p_found,
+                est,
+                floor,
+                gains,
+            }));
         }
-        // 5. another walk with the reduction selected at the λ found
-        lam = lambda;
-        fr_over_l = Some(fr / lambda);
-        p_floor = p;
     }
-    unreachable!("the round loop returns at round 2")
+
+    /// Step 3: the corrected solution at λₙ (`at_p`) carried to the root through the solve before
+    /// (`prev_c`; module [`super::walk`]): its interpolation remainder bounded by the measured
+    /// curvature; the fine secant loop from λₙ where the measured gains moved the root too far for
+    /// that. Returns the solution and its stopping error on λ.
+    fn carry(
+        &self,
+        red: &Reduction,
+        at_p: LambdaSolution,
+        prev_c: &LambdaSolution,
+        (p, gains): (usize, (f64, f64, f64)),
+        r: &mut Round,
+    ) -> Result<(LambdaSolution, f64), ContactError> {
+        let lam_n = at_p.lambda;
+        let carried = to_root(at_p.clone(), Some(prev_c), self.load);
+        let (u_n, u_prev, u_root) = (lam_n.ln(), prev_c.lambda.ln(), carried.lambda.ln());
+        let e_carry = CARRY_CURVATURE * (u_root - u_n).abs() * (u_root - u_prev).abs();
+        // `to_root` declines a carry longer than half the last step (then the fine loop goes on)
+        let reached = carried.lambda != at_p.lambda || at_p.load == self.load;
+        if reached && e_carry <= 0.1 * self.tol {
+            // the N′ error e_carry is a λ error ≤ 2·e_carry (d ln N′/d ln λ ≥ ½)
+            return Ok((carried, 2.0 * e_carry));
+        }
+        let (s, it) = self.fine(red, gains, p, Start::Solved(at_p, r.slope), &mut r.slope)?;
+        r.iterations += it;
+        // the fine loop stops at |ln N′/N′₀| ≤ fine_stop (λ within 2× that, counted twice
+        // over; at least the 1e−8 of the former 1e−10 stop)
+        Ok((s, (4.0 * self.fine_stop).max(1e-8)))
+    }
 }
 
 /// The bracketed Brent loop's settings where the secant walk fails: N′ to 1e−4 (a new walk

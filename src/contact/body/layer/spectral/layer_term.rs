@@ -400,59 +400,72 @@ fn small_kappa_orders(kappa: f64) -> usize {
     n
 }
 
-impl LayerTerm {
-    /// The matrix for the reduced `modes` (Φ = 1 + Σf̂/(b − ik)) at half-length `l`, thickness
-    /// `thickness` = h′, Poisson's ratio `nu`, degree `p` (≥ 2).
-    pub fn new(modes: &Modes, l: f64, thickness: f64, nu: f64, p: usize) -> LayerTerm {
-        Self::with_rule(modes, l, thickness, nu, p, LogRule::production(modes, l))
-    }
+/// The κ range of a layer term at half-length `l`, thickness h′ and degree `p`: (h′/L, κ_hi, the
+/// orders needed at κ_hi). A solve at degree p is only ever accepted with L/h′ ≤ 2p
+/// (`degree::degree_for` with tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated:
+/// such a solve only steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact
+/// lengths of metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.
+fn kappa_range(l: f64, thickness: f64, p: usize) -> (f64, f64, usize) {
+    let h_over_l = thickness / l;
+    let kappa_hi = (T_MAX / h_over_l).min(T_MAX * (2.0 * p as f64).max(200.0));
+    (h_over_l, kappa_hi, orders_needed(kappa_hi))
+}
 
-    fn with_rule(
+/// (module doc, "Evaluation") The rows i = 0…p/2 of the Lobatto points t_i = cos(πi/p) ≥ 0; the
+/// mirrored rows p − i follow from the parity of sin and cos ([`unfold`]).
+fn lobatto_half(p: usize) -> Vec<f64> {
+    (0..=p / 2)
+        .map(|i| (PI * i as f64 / p as f64).cos())
+        .collect()
+}
+
+/// The values G at the p + 1 Lobatto points for a_k = 1, (p + 1) × `orders`, from the products
+/// at the half rows (`xe`, `xo`: orders/2 × 2(p/2 + 1), [`product`]): the even orders' row i is
+/// x₂ + x₁ and its mirror p − i is x₂ − x₁; the odd orders' x₃ − x₄ and x₃ + x₄.
+fn unfold(xe: &DMatrix<f64>, xo: &DMatrix<f64>, p: usize, orders: usize) -> DMatrix<f64> {
+    let half = p / 2;
+    let mut values = DMatrix::<f64>::zeros(p + 1, orders);
+    for i in 0..=half {
+        for k in 0..orders {
+            let (plus, minus) = if k % 2 == 0 {
+                let (x1, x2) = (xe[(k / 2, i)], xe[(k / 2, half + 1 + i)]);
+                (x2 + x1, x2 - x1)
+            } else {
+                let (x3, x4) = (xo[(k / 2, i)], xo[(k / 2, half + 1 + i)]);
+                (x3 - x4, x3 + x4)
+            };
+            values[(i, k)] = plus;
+            values[(p - i, k)] = minus;
+        }
+    }
+    values
+}
+
+/// The factors of a layer term's products ([`LayerTerm::with_rule`]): per node (a column of the
+/// `bt_*`, a row of the `lt_*`) the orders' Bessel factors and the left factors at the half rows.
+struct Factors {
+    bt_even: DMatrix<f64>,
+    bt_odd: DMatrix<f64>,
+    lt_even: DMatrix<f64>,
+    lt_odd: DMatrix<f64>,
+    /// p/2.
+    half: usize,
+}
+
+impl Factors {
+    /// Every node's Bessel factors (k+1)(−i)^k J_{k+1}(κ)·πw (Miller's recurrence by lanes, the
+    /// orders down to the last above 1e−22 of the norm) and Φ(κ/L); on the log nodes also the left
+    /// factors. Returns Φ at every node and the most orders used on a log node.
+    fn fill_nodes(
+        &mut self,
         modes: &Modes,
         l: f64,
-        thickness: f64,
-        nu: f64,
-        p: usize,
-        rule: LogRule,
-    ) -> LayerTerm {
-        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`degree::degree_for` with
-        // tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated: such a solve only
-        // steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact lengths of
-        // metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.
-        let h_over_l = thickness / l;
-        let kappa_hi = (T_MAX / h_over_l).min(T_MAX * (2.0 * p as f64).max(200.0));
-        let orders = orders_needed(kappa_hi);
-        let nodes = nodes(rule, kappa_hi, h_over_l, nu);
+        nodes: &Nodes,
+        wanted: &[usize],
+        ts: &[f64],
+    ) -> (Vec<(f64, f64)>, usize) {
+        let half = self.half;
         let nn = nodes.kappa.len();
-        // (module doc, "Evaluation") rows i = 0…p/2 of the Lobatto points t_i = cos(πi/p) ≥ 0; the
-        // mirrored rows p − i follow from the parity of sin and cos
-        let half = p / 2;
-        let rows = 2 * (half + 1);
-        let ts: Vec<f64> = (0..=half)
-            .map(|i| (PI * i as f64 / p as f64).cos())
-            .collect();
-        let (ne, no) = (orders.div_ceil(2), orders / 2);
-        // node-major transposes (one contiguous column per node): bt_even[(k/2, n)] = c_{n,k},
-        // bt_odd[((k−1)/2, n)] = γ_{n,k}; and the left factors [pr·sin; pi·cos], [pr·cos; pi·sin]
-        // at the half rows, transposed (nodes × rows)
-        let mut bt_even = pooled_zeros(ne, nn);
-        let mut bt_odd = pooled_zeros(no, nn);
-        let mut lt_even = pooled_zeros(nn, rows);
-        let mut lt_odd = pooled_zeros(nn, rows);
-        // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there), and for small κ
-        // far fewer: J_{k+1}(κ) ≤ (κ/2)^{k+1}/(k+1)! (below κ = 1 that bound is < 30 ≤ both others)
-        let wanted: Vec<usize> = nodes
-            .kappa
-            .iter()
-            .map(|&kappa| {
-                let small = small_kappa_orders(kappa);
-                if small < 30 {
-                    small
-                } else {
-                    orders_needed(kappa).min(orders).min(small)
-                }
-            })
-            .collect();
         // Φ(κ/L) = 1 + Σf̂/(b − iκ/L) = 1 + Σf̂(b + iκ/L)/(b² + (κ/L)²): fᵢbᵢ once per mode
         let fb: Vec<f64> = modes.f.iter().zip(&modes.b).map(|(f, b)| f * b).collect();
         let mut phi = vec![(0.0, 0.0); nn];
@@ -477,7 +490,7 @@ impl LayerTerm {
                 }
                 // (k+1)(−i)^k J_{k+1} πw: (−i)^k = 1, −i, −1, i
                 let ww = PI * nodes.weight[n] / norm[q];
-                let (ce, co) = (bt_even.column_mut(n), bt_odd.column_mut(n));
+                let (ce, co) = (self.bt_even.column_mut(n), self.bt_odd.column_mut(n));
                 let (ce, co) = (ce.data.into_slice_mut(), co.data.into_slice_mut());
                 for k in 0..used {
                     let v = ww * ((k + 1) as f64 * scratch[k + 1][q]);
@@ -499,59 +512,106 @@ impl LayerTerm {
                 if n < nodes.n_log {
                     for (i, &t) in ts.iter().enumerate() {
                         let (sn, cs) = sin_cos_unit(kappa * t);
-                        lt_even[(n, i)] = pr * sn;
-                        lt_even[(n, half + 1 + i)] = pi * cs;
-                        lt_odd[(n, i)] = pr * cs;
-                        lt_odd[(n, half + 1 + i)] = pi * sn;
+                        self.lt_even[(n, i)] = pr * sn;
+                        self.lt_even[(n, half + 1 + i)] = pi * cs;
+                        self.lt_odd[(n, i)] = pr * cs;
+                        self.lt_odd[(n, half + 1 + i)] = pi * sn;
                     }
                 }
             }
         }
-        // sin/cos of κt on the linear panels by the angle sums: κ = m + hx (centre m, half-width h,
-        // abscissa x) and sin(κt) = sin(mt)cos(hxt) + cos(mt)sin(hxt), with the LINEAR_POINTS·(p/2+1)
-        // values at hxt shared by all panels (error ~1e−16 of 1, as sin(κt) with κt rounded)
+        (phi, used_log)
+    }
+
+    /// The left factors on the linear panels: sin/cos of κt by the angle sums, κ = m + hx (centre
+    /// m, half-width h, abscissa x) and sin(κt) = sin(mt)cos(hxt) + cos(mt)sin(hxt), with the
+    /// LINEAR_POINTS·(p/2+1) values at hxt shared by all panels (error ~1e−16 of 1, as sin(κt)
+    /// with κt rounded).
+    fn fill_panels(&mut self, nodes: &Nodes, ts: &[f64], phi: &[(f64, f64)]) {
+        let half = self.half;
+        let offsets: Vec<(f64, f64)> = nodes
+            .gx
+            .iter()
+            .flat_map(|&x| ts.iter().map(move |&t| (nodes.half * x * t).sin_cos()))
+            .collect();
+        for (pp, &m) in nodes.panels.iter().enumerate() {
+            let centre: Vec<(f64, f64)> = ts.iter().map(|&t| (m * t).sin_cos()).collect();
+            for g in 0..LINEAR_POINTS {
+                let n = nodes.n_log + pp * LINEAR_POINTS + g;
+                let (pr, pi) = phi[n];
+                for (i, &(sm, cm)) in centre.iter().enumerate() {
+                    let (so, co) = offsets[g * (half + 1) + i];
+                    let (sn, cs) = (sm * co + cm * so, cm * co - sm * so);
+                    self.lt_even[(n, i)] = pr * sn;
+                    self.lt_even[(n, half + 1 + i)] = pi * cs;
+                    self.lt_odd[(n, i)] = pr * cs;
+                    self.lt_odd[(n, half + 1 + i)] = pi * sn;
+                }
+            }
+        }
+    }
+}
+
+impl LayerTerm {
+    /// The matrix for the reduced `modes` (Φ = 1 + Σf̂/(b − ik)) at half-length `l`, thickness
+    /// `thickness` = h′, Poisson's ratio `nu`, degree `p` (≥ 2).
+    pub fn new(modes: &Modes, l: f64, thickness: f64, nu: f64, p: usize) -> LayerTerm {
+        Self::with_rule(modes, l, thickness, nu, p, LogRule::production(modes, l))
+    }
+
+    /// [`LayerTerm::new`] with the log panels' rule `rule`: the nodes in κ, per node the Bessel
+    /// factors of the orders and the left factors at the half rows ([`Factors::fill_nodes`], on
+    /// the linear panels by the angle sums [`Factors::fill_panels`]), their products, the values at
+    /// the Lobatto points ([`unfold`]) and their Chebyshev coefficients.
+    fn with_rule(
+        modes: &Modes,
+        l: f64,
+        thickness: f64,
+        nu: f64,
+        p: usize,
+        rule: LogRule,
+    ) -> LayerTerm {
+        let (h_over_l, kappa_hi, orders) = kappa_range(l, thickness, p);
+        let nodes = nodes(rule, kappa_hi, h_over_l, nu);
+        let nn = nodes.kappa.len();
+        let half = p / 2;
+        let rows = 2 * (half + 1);
+        let ts = lobatto_half(p);
+        let (ne, no) = (orders.div_ceil(2), orders / 2);
+        // node-major transposes (one contiguous column per node): bt_even[(k/2, n)] = c_{n,k},
+        // bt_odd[((k−1)/2, n)] = γ_{n,k}; and the left factors [pr·sin; pi·cos], [pr·cos; pi·sin]
+        // at the half rows, transposed (nodes × rows)
+        let mut f = Factors {
+            bt_even: pooled_zeros(ne, nn),
+            bt_odd: pooled_zeros(no, nn),
+            lt_even: pooled_zeros(nn, rows),
+            lt_odd: pooled_zeros(nn, rows),
+            half,
+        };
+        // orders beyond κ + 12κ^{1/3} + 30 carry nothing (J_n(κ) < 1e−20 there), and for small κ
+        // far fewer: J_{k+1}(κ) ≤ (κ/2)^{k+1}/(k+1)! (below κ = 1 that bound is < 30 ≤ both others)
+        let wanted: Vec<usize> = nodes
+            .kappa
+            .iter()
+            .map(|&kappa| {
+                let small = small_kappa_orders(kappa);
+                if small < 30 {
+                    small
+                } else {
+                    orders_needed(kappa).min(orders).min(small)
+                }
+            })
+            .collect();
+        let (phi, used_log) = f.fill_nodes(modes, l, &nodes, &wanted, &ts);
         if !nodes.panels.is_empty() {
-            let offsets: Vec<(f64, f64)> = nodes
-                .gx
-                .iter()
-                .flat_map(|&x| ts.iter().map(move |&t| (nodes.half * x * t).sin_cos()))
-                .collect();
-            for (pp, &m) in nodes.panels.iter().enumerate() {
-                let centre: Vec<(f64, f64)> = ts.iter().map(|&t| (m * t).sin_cos()).collect();
-                for g in 0..LINEAR_POINTS {
-                    let n = nodes.n_log + pp * LINEAR_POINTS + g;
-                    let (pr, pi) = phi[n];
-                    for (i, &(sm, cm)) in centre.iter().enumerate() {
-                        let (so, co) = offsets[g * (half + 1) + i];
-                        let (sn, cs) = (sm * co + cm * so, cm * co - sm * so);
-                        lt_even[(n, i)] = pr * sn;
-                        lt_even[(n, half + 1 + i)] = pi * cs;
-                        lt_odd[(n, i)] = pr * cs;
-                        lt_odd[(n, half + 1 + i)] = pi * sn;
-                    }
-                }
-            }
+            f.fill_panels(&nodes, &ts, &phi);
         }
-        let xe = product(&bt_even, &lt_even, nodes.n_log, used_log.div_ceil(2));
-        let xo = product(&bt_odd, &lt_odd, nodes.n_log, used_log / 2);
-        for m in [bt_even, bt_odd, lt_even, lt_odd] {
+        let xe = product(&f.bt_even, &f.lt_even, nodes.n_log, used_log.div_ceil(2));
+        let xo = product(&f.bt_odd, &f.lt_odd, nodes.n_log, used_log / 2);
+        for m in [f.bt_even, f.bt_odd, f.lt_even, f.lt_odd] {
             recycle(m);
         }
-        // values[l][k]: G at Lobatto point l for a_k = 1
-        let mut values = DMatrix::<f64>::zeros(p + 1, orders);
-        for i in 0..=half {
-            for k in 0..orders {
-                let (plus, minus) = if k % 2 == 0 {
-                    let (x1, x2) = (xe[(k / 2, i)], xe[(k / 2, half + 1 + i)]);
-                    (x2 + x1, x2 - x1)
-                } else {
-                    let (x3, x4) = (xo[(k / 2, i)], xo[(k / 2, half + 1 + i)]);
-                    (x3 - x4, x3 + x4)
-                };
-                values[(i, k)] = plus;
-                values[(p - i, k)] = minus;
-            }
-        }
+        let values = unfold(&xe, &xo, p, orders);
         // Chebyshev coefficients of the interpolant (DCT-I at the Lobatto points)
         LayerTerm {
             coef: dct(p) * &values,
@@ -577,24 +637,14 @@ impl LayerTerm {
         p: usize,
         rule: LogRule,
     ) -> LayerTerm {
-        // A solve at degree p is only ever accepted with L/h′ ≤ 2p (`degree::degree_for` with
-        // tol ≤ 0.1), so beyond L/h′ = max(2p, 200) the κ range is truncated: such a solve only
-        // steers a load loop's bracket (e.g. a very soft bootstrap replicate, contact lengths of
-        // metres on a 5 mm cover), and its cost (∝ κ_hi²·p) and memory stay bounded.
-        let h_over_l = thickness / l;
-        let kappa_hi = (T_MAX / h_over_l).min(T_MAX * (2.0 * p as f64).max(200.0));
-        let orders = orders_needed(kappa_hi);
+        let (h_over_l, kappa_hi, orders) = kappa_range(l, thickness, p);
         let nodes: Vec<(f64, f64)> = {
             let nd = nodes(rule, kappa_hi, h_over_l, nu);
             nd.kappa.into_iter().zip(nd.weight).collect()
         };
         let nn = nodes.len();
-        // (module doc, "Evaluation") rows i = 0…p/2 of the Lobatto points t_i = cos(πi/p) ≥ 0; the
-        // mirrored rows p − i follow from the parity of sin and cos
         let half = p / 2;
-        let ts: Vec<f64> = (0..=half)
-            .map(|i| (PI * i as f64 / p as f64).cos())
-            .collect();
+        let ts = lobatto_half(p);
         let (ne, no) = (orders.div_ceil(2), orders / 2);
         // B_even[n][k/2] = c_{n,k}, B_odd[n][(k−1)/2] = γ_{n,k}; left factors [pr·sin; pi·cos] and
         // [pr·cos; pi·sin] at the half rows
@@ -654,23 +704,9 @@ impl LayerTerm {
                 left_o[(half + 1 + i, n)] = pi * sn;
             }
         }
-        let xe = &left_e * &b_even;
-        let xo = &left_o * &b_odd;
-        // values[l][k]: G at Lobatto point l for a_k = 1
-        let mut values = DMatrix::<f64>::zeros(p + 1, orders);
-        for i in 0..=half {
-            for k in 0..orders {
-                let (plus, minus) = if k % 2 == 0 {
-                    let (x1, x2) = (xe[(i, k / 2)], xe[(half + 1 + i, k / 2)]);
-                    (x2 + x1, x2 - x1)
-                } else {
-                    let (x3, x4) = (xo[(i, k / 2)], xo[(half + 1 + i, k / 2)]);
-                    (x3 - x4, x3 + x4)
-                };
-                values[(i, k)] = plus;
-                values[(p - i, k)] = minus;
-            }
-        }
+        let xe = (&left_e * &b_even).transpose();
+        let xo = (&left_o * &b_odd).transpose();
+        let values = unfold(&xe, &xo, p, orders);
         // Chebyshev coefficients of the interpolant (DCT-I at the Lobatto points)
         LayerTerm {
             coef: dct_reference(p) * &values,
