@@ -175,7 +175,8 @@ pub fn files_are_time_data(files: &[PathBuf]) -> bool {
     !files.is_empty()
         && files.iter().all(|f| {
             crate::fsutil::read_regular(f, crate::limits::INPUT_BYTES_MAX).is_ok_and(|b| {
-                crate::dma::time_domain::looks_like_time_data(&String::from_utf8_lossy(&b))
+                // decoded as the readers decode (RheoCompass writes UTF-16)
+                crate::dma::time_domain::looks_like_time_data(&crate::dma::text::decode(&b).text)
             })
         })
 }
