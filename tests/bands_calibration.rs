@@ -13,7 +13,8 @@
 //! truth is itself checked against an independent contact path in tests/known_truth.rs.
 //!
 //! In CI: noise seeds 1 and 2 (about 30 s on 2 cores; 252/264 = 95.5 % with eqs. 15.6b–15.9). The full
-//! figure over 10 seeds (about 2 min; 1142/1320 = 86.5 %, per seed 72.7–99.2 %):
+//! figure over 10 seeds (about 2 min; 1229/1320 = 93.1 %, per seed 82.6–99.2 %, median half-width
+//! 0.78 %; before the fit's own choices were drawn, eqs. 15.10–15.12: 1142/1320 = 86.5 %):
 //! `cargo test --release --test tests bands_calibration_ten_seeds -- --ignored --nocapture`.
 //! Both print the coverage per seed, compound and scene, and the misses. The 2-seed check is the
 //! weaker one: single seeds range from 72 % to 98.5 %, so it catches a band that is far off (too
