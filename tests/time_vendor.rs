@@ -97,6 +97,8 @@ fn proteus_creep_and_relaxation_read_their_mode_lines_decimals_and_separators() 
     assert!(w < 1e-14, "{w}");
 }
 
+// the reader's own error, as the library returns it
+#[allow(clippy::result_large_err)]
 fn read(name: &str, text: &str) -> Result<viscoroll::dma::time_domain::TimeData, TimeDataError> {
     time_data_from_bytes(&[(name.into(), text.as_bytes().to_vec())], 0.5)
 }
