@@ -189,6 +189,26 @@ fn export_pyvisco_terms(args: &Args, spectrum: &RelaxationSpectrum) -> anyhow::R
     Ok(())
 }
 
+/// The master curve in pyvisco's layout: frequency domain (`f, E_stor, E_loss`), or for a fit made
+/// in time (docs/MATH.md §18) its time-domain master curve (`t, E_relax`): the fitted E(t) at the
+/// data's reduced times t = 1/(2π f) of the fit file's points (the fit file keeps the fitted
+/// spectrum's values there, not the measured ones), so pyvisco fits it in the domain it was
+/// measured in.
+fn pyvisco_master_text(fit: &crate::pipeline::CompoundFit, points: &[(f64, f64, f64)]) -> String {
+    if fit.prony_info.time_domain.is_none() {
+        return crate::dma::pyvisco::master_csv(fit.relaxation.kind, points);
+    }
+    let mut times: Vec<(f64, f64)> = points
+        .iter()
+        .map(|&(f, _, _)| {
+            let t = 1.0 / (2.0 * std::f64::consts::PI * f);
+            (t, fit.relaxation.relaxation_modulus(t))
+        })
+        .collect();
+    times.sort_by(|a, b| a.0.total_cmp(&b.0));
+    crate::dma::pyvisco_time::time_master_csv(fit.relaxation.kind, &times)
+}
+
 /// `export --to pyvisco`: the fit file's master curve, shifts and Prony terms in pyvisco's CSV
 /// layouts (a bare spectrum: its Prony terms).
 fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> anyhow::Result<()> {
@@ -219,7 +239,7 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
         .iter()
         .map(|p| (p.reduced_freq_hz, p.storage_pa, p.loss_pa))
         .collect();
-    let master_text = crate::dma::pyvisco::master_csv(fit.relaxation.kind, &points);
+    let master_text = pyvisco_master_text(fit, &points);
     let shift_text = crate::dma::pyvisco::shift_csv(&shifts);
     let shift_out = pyvisco_shift_path(out);
     let terms_out = pyvisco_terms_path(out);
@@ -255,8 +275,13 @@ fn export_pyvisco(args: &Args, input: &super::spectrum_input::SpectrumInput) -> 
         outln!("{}", super::output::versioned(obj));
     } else {
         errln!(
-            "viscoroll export: pyvisco master curve ({} points at T_ref = {t_ref} °C) → {}; shift \
-             factors ({} temperatures) → {}",
+            "viscoroll export: pyvisco master curve ({}{} points at T_ref = {t_ref} °C) → {}; \
+             shift factors ({} temperatures) → {}",
+            if fit.prony_info.time_domain.is_some() {
+                "time domain, t, E_relax: the fitted E(t) at the data's reduced times; "
+            } else {
+                ""
+            },
             points.len(),
             out.display(),
             shifts.len(),

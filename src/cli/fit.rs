@@ -41,14 +41,11 @@ pub struct Args {
     /// stress-relaxation or creep steps.
     #[arg(long, value_name = "FILE", num_args = 1.., conflicts_with_all = ["measurement", "master_curve"])]
     pub time_domain: Vec<PathBuf>,
-    /// A master curve already shifted, in pyvisco's CSV layout (`f, E_stor, E_loss` over `Hz, MPa,
-    /// MPa`; `G_…` for shear), fitted instead of a measurement; needs --shift-factors.
-    #[arg(
-        long,
-        value_name = "CSV",
-        conflicts_with = "measurement",
-        requires = "shift_factors"
-    )]
+    /// A master curve already shifted, in pyvisco's CSV layout, fitted instead of a measurement:
+    /// frequency domain (`f, E_stor, E_loss` over `Hz, MPa, MPa`; `G_…` for shear; needs
+    /// --shift-factors) or time domain (`t, E_relax` over `s, MPa`; fitted in time, docs/MATH.md
+    /// §18; without --shift-factors give --tref, and friction is then known at T_ref only).
+    #[arg(long, value_name = "CSV", conflicts_with = "measurement")]
     pub master_curve: Option<PathBuf>,
     /// pyvisco's shift-factor CSV of the master curve (`T, log_aT` over `C, -`); its row with
     /// log_aT = 0 is the reference temperature (else give --tref).
@@ -147,30 +144,45 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             };
             (fit, action, why)
         }
-        Source::Time(data) => {
-            let mut fit = crate::pipeline::fit_time::fit_time_data(&name, data, &options)
-                .with_context(|| input.clone())?;
-            let why = bands
-                .as_ref()
-                .and_then(|s| match crate::bands::ensemble_from_fit(&fit, s) {
-                    Ok(e) => {
-                        fit.bands = Some(e);
-                        None
-                    }
-                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
-                });
-            fit.write(&args.output, args.force)
-                .with_context(|| args.output.display().to_string())?;
-            let action = if args.force {
-                FitAction::Replaced
-            } else {
-                FitAction::Fitted
-            };
-            (fit, action, why)
-        }
+        Source::Time(data) => time_fit_written(
+            &args,
+            crate::pipeline::fit_time::fit_time_data(&name, data, &options)
+                .with_context(|| input.clone())?,
+            bands.as_ref(),
+        )?,
+        Source::TimeMaster(pv) => time_fit_written(
+            &args,
+            crate::pipeline::fit_time::fit_pyvisco_time_master(&name, pv, &options)
+                .with_context(|| input.clone())?,
+            bands.as_ref(),
+        )?,
     };
     print_fit(&args, &fit, action, no_bands.as_deref());
     Ok(())
+}
+
+/// A fit made in time: its bands tried (they resample frequency sweeps, so they say why not), the
+/// file written (anew; `--force` replaces it).
+fn time_fit_written(
+    args: &Args,
+    mut fit: crate::pipeline::CompoundFit,
+    bands: Option<&BandSettings>,
+) -> anyhow::Result<(crate::pipeline::CompoundFit, FitAction, Option<String>)> {
+    let why = bands.and_then(|s| match crate::bands::ensemble_from_fit(&fit, s) {
+        Ok(e) => {
+            fit.bands = Some(e);
+            None
+        }
+        Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+    });
+    fit.write(&args.output, args.force)
+        .with_context(|| args.output.display().to_string())?;
+    let action = if args.force {
+        FitAction::Replaced
+    } else {
+        FitAction::Fitted
+    };
+    Ok((fit, action, why))
 }
 
 /// The input: a measurement JSON, or pyvisco's master curve and shift factors (the master curve
@@ -182,6 +194,17 @@ fn source(args: &Args) -> anyhow::Result<Source> {
             (None, None, _) if !args.time_domain.is_empty() => Source::Time(
                 crate::dma::time_domain::read_time_files(&args.time_domain, args.poisson)?,
             ),
+            (None, Some(mc), sf) if is_time_master(mc) => {
+                Source::TimeMaster(Box::new(crate::dma::pyvisco_time::read_time_master(
+                    mc,
+                    sf.as_deref(),
+                    args.poisson,
+                    args.tref,
+                )?))
+            }
+            (None, Some(_), None) => anyhow::bail!(
+                "a frequency-domain master curve needs its shift-factor file (--shift-factors)"
+            ),
             (None, Some(mc), Some(sf)) => {
                 let pv = crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?;
                 let master = crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
@@ -191,6 +214,13 @@ fn source(args: &Args) -> anyhow::Result<Source> {
             _ => anyhow::bail!("give a measurement JSON, or --master-curve with --shift-factors"),
         },
     )
+}
+
+/// Whether a file is pyvisco's time-domain master curve (its header; an unreadable file is not,
+/// and the frequency reader then says why).
+fn is_time_master(path: &std::path::Path) -> bool {
+    crate::fsutil::read_regular(path, crate::limits::INPUT_BYTES_MAX)
+        .is_ok_and(|b| crate::dma::pyvisco_time::is_time_master(&b))
 }
 
 /// The fit options from the flags: the main job's defaults with the flags given laid over them.
@@ -306,6 +336,8 @@ enum Source {
     Measurement(crate::Measurement),
     Master(crate::Measurement, Box<crate::tts::MasterCurve>),
     Time(crate::dma::time_domain::TimeData),
+    /// pyvisco's time-domain master curve (`t, E_relax`), fitted in time.
+    TimeMaster(Box<crate::dma::pyvisco_time::PyviscoTimeMaster>),
 }
 
 /// A measurement JSON: the bare serde of Measurement, or an object holding it under "measurement".

@@ -17,6 +17,7 @@ pub mod mode_evidence;
 pub mod plausible;
 pub mod proteus;
 pub mod pyvisco;
+pub mod pyvisco_time;
 mod read;
 pub mod reptate;
 pub mod rheocompass;

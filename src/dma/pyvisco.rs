@@ -11,8 +11,8 @@
 //! first the quantity, the second its unit; storage and loss in one unit of Pa, kPa, MPa or GPa;
 //! frequency in Hz; temperature in °C). pyvisco takes the reference temperature from its user; here
 //! it is the shift table's row with log a_T = 0 (the shipped EMS-CA table has one, at −5 °C), or the
-//! one the caller states. Time-domain master curves (`t, E_relax`) are refused: this tool fits E′
-//! and E″. Units are read from the file, never guessed; an unparsable cell is an error, never
+//! one the caller states. Time-domain master curves (`t, E_relax`) are [`super::pyvisco_time`]'s.
+//! Units are read from the file, never guessed; an unparsable cell is an error, never
 //! dropped.
 
 use super::error::DmaError;
@@ -165,8 +165,9 @@ fn read_master_points(
     if find("t").is_some() && find("f").is_none() {
         return Err(structure(
             1,
-            "a time-domain master curve (t, E_relax): only frequency-domain curves (f, E_stor, \
-             E_loss) are read, because E′ and E″ are what the Prony fit uses"
+            "a time-domain master curve (t, E_relax): this reader takes frequency-domain curves \
+             (f, E_stor, E_loss); the time-domain one is read by dma::pyvisco_time (`fit \
+             --master-curve` dispatches by its header)"
                 .into(),
         ));
     }

@@ -42,7 +42,9 @@ pub fn looks_like(text: &str) -> bool {
 /// Read a RheoCompass export.
 pub fn read(file: &str, text: &str) -> Result<RawFile, DmaError> {
     let lines: Vec<&str> = text.lines().collect();
-    let (_, dec) = text::sniff(&lines);
+    // always tab-separated: the decimal mark is sniffed at tabs (intervals of different widths
+    // can make the general sniff take the decimal commas for delimiters)
+    let dec = text::sniff_decimal(&lines, Delimiter::Tab);
     let mut raw = RawFile::default();
     let mut result_label: Option<String> = None;
     let mut i = 0;

@@ -218,29 +218,35 @@ pub(crate) fn sniff(lines: &[&str]) -> (Delimiter, Decimal) {
     let dec = if chosen == Delimiter::Comma {
         Decimal::Point
     } else {
-        let (mut comma, mut point) = (0usize, 0usize);
-        for l in &sample {
-            for f in split(l, chosen) {
-                let t = f.trim();
-                let numeric = t
-                    .chars()
-                    .all(|c| c.is_ascii_digit() || matches!(c, '-' | '+' | 'e' | 'E' | '.' | ','));
-                if numeric && t.chars().any(|c| c.is_ascii_digit()) {
-                    if t.contains(',') && !t.contains('.') {
-                        comma += 1;
-                    } else if t.contains('.') && !t.contains(',') {
-                        point += 1;
-                    }
+        sniff_decimal(&sample, chosen)
+    };
+    (chosen, dec)
+}
+
+/// The decimal mark of lines split at a known delimiter: comma when more numeric cells carry a
+/// comma alone than a point alone.
+pub(crate) fn sniff_decimal(lines: &[&str], delim: Delimiter) -> Decimal {
+    let (mut comma, mut point) = (0usize, 0usize);
+    for l in lines.iter().filter(|l| !l.trim().is_empty()).take(200) {
+        for f in split(l, delim) {
+            let t = f.trim();
+            let numeric = t
+                .chars()
+                .all(|c| c.is_ascii_digit() || matches!(c, '-' | '+' | 'e' | 'E' | '.' | ','));
+            if numeric && t.chars().any(|c| c.is_ascii_digit()) {
+                if t.contains(',') && !t.contains('.') {
+                    comma += 1;
+                } else if t.contains('.') && !t.contains(',') {
+                    point += 1;
                 }
             }
         }
-        if comma > point {
-            Decimal::Comma
-        } else {
-            Decimal::Point
-        }
-    };
-    (chosen, dec)
+    }
+    if comma > point {
+        Decimal::Comma
+    } else {
+        Decimal::Point
+    }
 }
 
 #[cfg(test)]

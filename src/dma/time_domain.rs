@@ -1,6 +1,13 @@
 //! Time-domain data: relaxation E(t) or G(t) and creep D(t) or J(t) isotherms, read from a generic
-//! delimited table (columns temperature, time, modulus or compliance) or from a TA TRIOS text export's
-//! stress-relaxation and creep steps → [`TimeData`] in SI (s, Pa, 1/Pa, °C).
+//! delimited table (columns temperature, time, modulus or compliance), a TA TRIOS text export's
+//! stress-relaxation and creep steps, an Anton Paar RheoCompass export's relaxation or creep
+//! intervals (`Interval Time`, `Relaxation Modulus` or `Creep Compliance`/`Nachgiebigkeit`), or a
+//! Netzsch Proteus ASCII export (`##Temp./°C;Time/min;Compliance/1/MPa`) → [`TimeData`] in SI (s,
+//! Pa, 1/Pa, °C). The format is told by the text (`[step]`, `#KEY:` + `##` lines, `Interval
+//! data:`); an instrument's intervals without a relaxation or creep column are skipped with a note.
+//! The time is the time since the step: a time-since-step column (`Step time`, `Interval Time`,
+//! `Segment time`) wins over an elapsed one, and a time column that runs on from one isotherm to
+//! the next is refused (never reconstructed).
 //!
 //! Units come from the header (in the name: `time [min]`, `E(t) (MPa)`, `J / 1/MPa`, `time_s`; or a
 //! unit row); a column without one is an error naming file:line:column, never a guess. Accepted:
@@ -10,8 +17,10 @@
 //! Mode (relaxation or creep) and kind (tensile or shear) come from evidence, stated in
 //! [`TimeData::evidence`]: a modulus column is relaxation, a compliance column creep; E and D
 //! (Ferry's tensile creep compliance) are tensile, G and J shear, unless a metadata line
-//! (`mode: tensile`) or the column name (`tensile`, `shear`) says otherwise, or the instrument is a
-//! rotational rheometer (TRIOS). The isotherms are the groups of rows whose temperature stays within
+//! (`mode: tensile`) or the column name (`tensile`, `shear`) says otherwise, or the instrument says
+//! (TRIOS' variables, Proteus' `#MODE`, RheoCompass' measuring system, test or device). An
+//! instrument's column named by a word, not a symbol, with nothing that says tension or shear is
+//! refused (a rheometer measures in shear unless a DMA fixture is used; never assumed). The isotherms are the groups of rows whose temperature stays within
 //! [`SAME_ISOTHERM_K`] of the group's first row (or the TRIOS step's temperature); each nominal
 //! temperature is the mean rounded to 0.1 K.
 
@@ -208,28 +217,26 @@ fn read_one(name: &str, bytes: &[u8], si: usize, poisson: f64) -> Result<TimeDat
         });
     }
     let decoded = super::text::decode(bytes);
-    let trios = decoded
-        .text
-        .lines()
-        .any(|l| l.trim().eq_ignore_ascii_case("[step]"));
-    let (raw, format) = if trios {
-        (super::trios::read_text(name, &decoded.text)?, "trios-text")
-    } else {
-        (super::generic::read(name, &decoded.text)?, "generic")
-    };
+    let (raw, format) = raw_table(name, &decoded.text)?;
     let mut warnings: Vec<String> = raw.notes.iter().map(|n| format!("{name}: {n}")).collect();
     let mut isotherms = Vec::new();
     let mut found: Option<(TimeMode, ModulusKind, String)> = None;
     let mut columns = Vec::new();
     for block in &raw.blocks {
-        if trios && !is_time_step(block) {
+        let skip = match format {
+            "trios-text" => !is_time_step(block),
+            "rheocompass" | "proteus" => !carries_time_data(block),
+            _ => false,
+        };
+        if skip {
             warnings.push(format!(
-                "{name}: step `{}` is not a stress-relaxation or creep step, skipped",
+                "{name}: {} `{}` holds no relaxation modulus or creep compliance against time, skipped",
+                if format == "trios-text" { "step" } else { "interval" },
                 block.label.as_deref().unwrap_or("?")
             ));
             continue;
         }
-        let cols = block_columns(name, block, &raw)?;
+        let cols = block_columns(name, block, &raw, format)?;
         if let Some((mode, kind, _)) = &found {
             if *mode != cols.mode {
                 return Err(mixed(name, "mode", cols.mode, mode));
@@ -246,7 +253,10 @@ fn read_one(name: &str, bytes: &[u8], si: usize, poisson: f64) -> Result<TimeDat
     let Some((mode, kind, evidence)) = found else {
         return Err(TimeDataError::NoTimeData {
             file: name.into(),
-            reason: "no TRIOS step named stress relaxation or creep".into(),
+            reason: match format {
+                "trios-text" => "no TRIOS step named stress relaxation or creep".into(),
+                f => format!("no {f} interval with a time column and a relaxation modulus or creep compliance column"),
+            },
         });
     };
     let mut metadata = raw.metadata.clone();
@@ -267,6 +277,40 @@ fn read_one(name: &str, bytes: &[u8], si: usize, poisson: f64) -> Result<TimeDat
         evidence: vec![format!("{name}: {evidence}")],
         warnings,
     })
+}
+
+/// The file's table by the evidence its text carries: a TRIOS text export (`[step]` lines), a
+/// Netzsch Proteus ASCII export (`#KEY:value` lines, a `##name/unit` header), an Anton Paar
+/// RheoCompass export (`Interval data:` lines; its kind from the measuring system, test or device,
+/// [`super::mode_evidence`]), else a generic delimited table.
+fn raw_table(name: &str, text: &str) -> Result<(RawFile, &'static str), TimeDataError> {
+    Ok(
+        if text
+            .lines()
+            .any(|l| l.trim().eq_ignore_ascii_case("[step]"))
+        {
+            (super::trios::read_text(name, text)?, "trios-text")
+        } else if super::proteus::looks_like(text) {
+            (super::proteus::read(name, text)?, "proteus")
+        } else if super::rheocompass::looks_like(text) {
+            let mut raw = super::rheocompass::read(name, text)?;
+            raw.mode_hint = super::mode_evidence::infer(&raw, name);
+            (raw, "rheocompass")
+        } else {
+            (super::generic::read(name, text)?, "generic")
+        },
+    )
+}
+
+/// An instrument's block of time-domain data: a time column and a relaxation modulus or creep
+/// compliance column, and no frequency column (a frequency sweep's interval is skipped).
+fn carries_time_data(block: &Block) -> bool {
+    let lower: Vec<String> = block.names.iter().map(|n| n.to_lowercase()).collect();
+    block.names.iter().any(|n| is_time_name(n))
+        && lower.iter().any(|n| value_role(n).is_some())
+        && !lower
+            .iter()
+            .any(|n| n == "f" || n.contains("freq") || n.contains("omega"))
 }
 
 fn is_time_step(block: &Block) -> bool {
@@ -290,7 +334,7 @@ struct Columns {
 /// A time column: `t` (lower case: `T` is a temperature), or a name with `time`.
 fn is_time_name(name: &str) -> bool {
     let n = name.trim().to_lowercase();
-    name.trim() == "t" || n.contains("time") || n == "zeit"
+    name.trim() == "t" || n.contains("time") || n.contains("zeit")
 }
 
 /// A temperature column: `T` (upper case), `temp`, `temperature…`.
@@ -319,7 +363,15 @@ fn value_role(n: &str) -> Option<TimeMode> {
     {
         return Some(TimeMode::Creep);
     }
-    if n.contains("modulus") || n.contains("relax") || symbol_is('e') || symbol_is('g') {
+    // the dynamic moduli of a sweep are not E(t)
+    let dynamic = [
+        "storage", "loss", "complex", "speicher", "verlust", "komplex",
+    ]
+    .iter()
+    .any(|w| n.contains(w));
+    if !dynamic
+        && (n.contains("modulus") || n.contains("relax") || symbol_is('e') || symbol_is('g'))
+    {
         return Some(TimeMode::Relaxation);
     }
     None
@@ -382,30 +434,93 @@ fn name_unit(block: &Block, c: usize) -> (String, Option<String>) {
     }
 }
 
-fn block_columns(file: &str, block: &Block, raw: &RawFile) -> Result<Columns, TimeDataError> {
+/// The meaning of a block's columns: which hold time, temperature and the modulus or compliance
+/// ([`column_roles`]), their units ([`column_factors`]), and tensile or shear ([`kind_evidence`]).
+fn block_columns(
+    file: &str,
+    block: &Block,
+    raw: &RawFile,
+    format: &str,
+) -> Result<Columns, TimeDataError> {
     let line = block.header_loc.as_ref().map_or(0, Loc::number);
     let named: Vec<(String, Option<String>)> = (0..block.names.len())
         .map(|c| name_unit(block, c))
         .collect();
     let lower: Vec<String> = named.iter().map(|(n, _)| n.to_lowercase()).collect();
+    let roles = column_roles(file, line, block, &named, &lower)?;
+    let (tu, tf, vq, vu, vf, temp) = column_factors(file, line, block, &named, &roles)?;
+    let (time_c, value_c) = (roles.time, roles.value);
+    let (kind, evidence) = kind_evidence(&lower[value_c], &block.names[value_c], roles.mode, raw)
+        .or_else(|| symbol_kind(&lower[value_c], &block.names[value_c], roles.mode, format))
+        .ok_or_else(|| TimeDataError::NoKind {
+            file: file.into(),
+            line,
+            column: value_c + 1,
+            name: block.names[value_c].clone(),
+        })?;
+    let info = [(time_c, "time", &tu), (value_c, vq, &vu)]
+        .into_iter()
+        .map(|(c, q, u)| super::ColumnInfo {
+            name: block.names[c].clone(),
+            quantity: q.into(),
+            unit: u.clone(),
+            index: c,
+        })
+        .collect();
+    Ok(Columns {
+        time: (time_c, tf),
+        value: (value_c, vf),
+        temp,
+        mode: roles.mode,
+        kind,
+        evidence,
+        info,
+    })
+}
+
+/// Which columns hold what (0-based).
+struct Roles {
+    time: usize,
+    temp: Option<usize>,
+    value: usize,
+    mode: TimeMode,
+}
+
+/// The time column (the time since the step — `Step time`, `Interval time`, `Segment time` — when
+/// the block also has an elapsed time), the temperature column, and the one modulus or compliance
+/// column (both is an error; a block without a temperature column needs the step's).
+fn column_roles(
+    file: &str,
+    line: usize,
+    block: &Block,
+    named: &[(String, Option<String>)],
+    lower: &[String],
+) -> Result<Roles, TimeDataError> {
     let missing = |what| TimeDataError::MissingColumn {
         file: file.into(),
         line,
         what,
         found: block.names.clone(),
     };
-    let time_c = named
+    let since_step = |n: &str| {
+        ["step", "interval", "segment"]
+            .iter()
+            .any(|w| n.contains(w))
+    };
+    let time = lower
         .iter()
-        .position(|(n, _)| is_time_name(n))
+        .zip(named)
+        .position(|(l, (n, _))| is_time_name(n) && since_step(l))
+        .or_else(|| named.iter().position(|(n, _)| is_time_name(n)))
         .ok_or_else(|| missing("time"))?;
-    let temp_c = named.iter().position(|(n, _)| is_temp_name(n));
+    let temp = named.iter().position(|(n, _)| is_temp_name(n));
     let modulus = lower
         .iter()
         .position(|n| value_role(n) == Some(TimeMode::Relaxation));
     let compliance = lower
         .iter()
         .position(|n| value_role(n) == Some(TimeMode::Creep));
-    let (value_c, mode) = match (modulus, compliance) {
+    let (value, mode) = match (modulus, compliance) {
         (Some(m), Some(c)) => {
             return Err(TimeDataError::BothModes {
                 file: file.into(),
@@ -418,9 +533,38 @@ fn block_columns(file: &str, block: &Block, raw: &RawFile) -> Result<Columns, Ti
         (None, Some(c)) => (c, TimeMode::Creep),
         (None, None) => return Err(missing("relaxation modulus or creep compliance")),
     };
-    if temp_c.is_none() && block.nominal_c.is_none() {
+    if temp.is_none() && block.nominal_c.is_none() {
         return Err(missing("temperature"));
     }
+    Ok(Roles {
+        time,
+        temp,
+        value,
+        mode,
+    })
+}
+
+/// The columns' units as written and their factors to SI: (time unit, to s, value quantity, value
+/// unit, to Pa or 1/Pa, temperature column and unit). A missing or unknown unit is an error naming
+/// line and column.
+#[allow(clippy::type_complexity)]
+fn column_factors(
+    file: &str,
+    line: usize,
+    block: &Block,
+    named: &[(String, Option<String>)],
+    roles: &Roles,
+) -> Result<
+    (
+        String,
+        f64,
+        &'static str,
+        String,
+        f64,
+        Option<(usize, TempUnit)>,
+    ),
+    TimeDataError,
+> {
     let unit_of =
         |c: usize, quantity: &'static str, example: &'static str, accepted: &'static str| {
             named[c]
@@ -447,19 +591,19 @@ fn block_columns(file: &str, block: &Block, raw: &RawFile) -> Result<Columns, Ti
             accepted,
         }
     };
-    let tu = unit_of(time_c, "time", "s", TIME_UNITS)?;
-    let tf = time_factor(&tu).ok_or_else(|| unknown(time_c, "time", &tu, TIME_UNITS))?;
-    let (vq, vex, vacc) = match mode {
+    let tu = unit_of(roles.time, "time", "s", TIME_UNITS)?;
+    let tf = time_factor(&tu).ok_or_else(|| unknown(roles.time, "time", &tu, TIME_UNITS))?;
+    let (vq, vex, vacc) = match roles.mode {
         TimeMode::Relaxation => ("relaxation modulus", "MPa", units::MODULUS_UNITS),
         TimeMode::Creep => ("creep compliance", "1/MPa", COMPLIANCE_UNITS),
     };
-    let vu = unit_of(value_c, vq, vex, vacc)?;
-    let vf = match mode {
+    let vu = unit_of(roles.value, vq, vex, vacc)?;
+    let vf = match roles.mode {
         TimeMode::Relaxation => ModulusUnit::parse(&vu).map(ModulusUnit::to_pa),
         TimeMode::Creep => compliance_factor(&vu),
     }
-    .ok_or_else(|| unknown(value_c, vq, &vu, vacc))?;
-    let temp = match temp_c {
+    .ok_or_else(|| unknown(roles.value, vq, &vu, vacc))?;
+    let temp = match roles.temp {
         Some(c) => {
             let u = unit_of(c, "temperature", "°C", units::TEMP_UNITS)?;
             Some((
@@ -470,33 +614,17 @@ fn block_columns(file: &str, block: &Block, raw: &RawFile) -> Result<Columns, Ti
         }
         None => None,
     };
-    let (kind, evidence) = kind_evidence(&lower[value_c], &block.names[value_c], mode, raw);
-    let info = [(time_c, "time", &tu), (value_c, vq, &vu)]
-        .into_iter()
-        .map(|(c, q, u)| super::ColumnInfo {
-            name: block.names[c].clone(),
-            quantity: q.into(),
-            unit: u.clone(),
-            index: c,
-        })
-        .collect();
-    Ok(Columns {
-        time: (time_c, tf),
-        value: (value_c, vf),
-        temp,
-        mode,
-        kind,
-        evidence,
-        info,
-    })
+    Ok((tu, tf, vq, vu, vf, temp))
 }
 
-/// Tensile or shear, and the sentence that says why.
-fn kind_evidence(lower: &str, name: &str, mode: TimeMode, raw: &RawFile) -> (ModulusKind, String) {
-    let what = match mode {
-        TimeMode::Relaxation => "relaxation (a modulus column)",
-        TimeMode::Creep => "creep (a compliance column)",
-    };
+/// Tensile or shear from what the file says — the column's name, a metadata line, the instrument
+/// — with the sentence that says why; None when it says nothing ([`symbol_kind`] then).
+fn kind_evidence(
+    lower: &str,
+    name: &str,
+    mode: TimeMode,
+    raw: &RawFile,
+) -> Option<(ModulusKind, String)> {
     let meta = raw.metadata.iter().find_map(|(k, v)| {
         let (k, v) = (k.to_lowercase(), v.to_lowercase());
         (k.contains("mode") || k.contains("kind") || k.contains("geometry"))
@@ -526,15 +654,35 @@ fn kind_evidence(lower: &str, name: &str, mode: TimeMode, raw: &RawFile) -> (Mod
         .mode_hint
         .clone()
         .map(|(k, why)| (k, format!("the instrument: {why}")));
-    let by_symbol = || match lower.chars().next() {
-        Some('g') => (ModulusKind::Shear, format!("column `{name}` is G (shear)")),
-        Some('j') => (
+    let (kind, why) = by_name.or(meta).or(by_hint)?;
+    Some((kind, said(mode, kind, &why)))
+}
+
+/// Tensile or shear from the column's symbol alone: G and J shear, E and D tensile (Ferry's
+/// convention), and in a generic table a modulus not said to be shear is tensile. An instrument's
+/// export (`rheocompass`, `proteus`) whose column is a word, not a symbol, says neither: None (a
+/// rotational rheometer measures in shear unless a DMA fixture is used; never assumed).
+fn symbol_kind(
+    lower: &str,
+    name: &str,
+    mode: TimeMode,
+    format: &str,
+) -> Option<(ModulusKind, String)> {
+    let first = lower.chars().next()?;
+    let symbol = lower.len() == 1
+        || [b'(', b'_', b' '].contains(&lower.as_bytes().get(1).copied().unwrap_or(b'?'));
+    if matches!(format, "rheocompass" | "proteus") && !symbol {
+        return None;
+    }
+    let (kind, why) = match first {
+        'g' => (ModulusKind::Shear, format!("column `{name}` is G (shear)")),
+        'j' => (
             ModulusKind::Shear,
             format!(
                 "column `{name}` is J (shear creep compliance in Ferry's convention; D is tensile)"
             ),
         ),
-        Some('d') => (
+        'd' => (
             ModulusKind::Tensile,
             format!("column `{name}` is D (tensile creep compliance in Ferry's convention)"),
         ),
@@ -543,11 +691,16 @@ fn kind_evidence(lower: &str, name: &str, mode: TimeMode, raw: &RawFile) -> (Mod
             format!("column `{name}` is E or a modulus not said to be shear (tensile)"),
         ),
     };
-    let (kind, why) = by_name.or(meta).or(by_hint).unwrap_or_else(by_symbol);
-    (
-        kind,
-        format!("{what}, {}: {why}", super::columns::kind_name(kind)),
-    )
+    Some((kind, said(mode, kind, &why)))
+}
+
+/// The evidence sentence: mode, kind, and why.
+fn said(mode: TimeMode, kind: ModulusKind, why: &str) -> String {
+    let what = match mode {
+        TimeMode::Relaxation => "relaxation (a modulus column)",
+        TimeMode::Creep => "creep (a compliance column)",
+    };
+    format!("{what}, {}: {why}", super::columns::kind_name(kind))
 }
 
 /// The rows of a block as isotherms: consecutive rows within [`SAME_ISOTHERM_K`] of their group's
@@ -594,6 +747,7 @@ fn block_isotherms(
             _ => groups.push((temp, vec![temp], vec![p])),
         }
     }
+    refuse_elapsed_time(file, block, cols, &groups)?;
     Ok(groups
         .into_iter()
         .map(|(_, temps, mut points)| {
@@ -607,6 +761,31 @@ fn block_isotherms(
             }
         })
         .collect())
+}
+
+/// A time column that runs on from one isotherm to the next (each group starting after the one
+/// before it ended) is the time since the measurement started, not since each step: refused,
+/// naming the first row of the second isotherm (the time since the step is never reconstructed).
+fn refuse_elapsed_time(
+    file: &str,
+    block: &Block,
+    cols: &Columns,
+    groups: &[(f64, Vec<f64>, Vec<TimePoint>)],
+) -> Result<(), TimeDataError> {
+    let runs_on = groups.len() > 1
+        && groups.windows(2).all(|w| {
+            let last = w[0].2.iter().map(|p| p.time_s).fold(0.0, f64::max);
+            w[1].2.first().is_some_and(|p| p.time_s > last)
+        });
+    match (runs_on, groups.get(1).and_then(|g| g.2.first())) {
+        (true, Some(p)) => Err(TimeDataError::ElapsedTime {
+            file: file.into(),
+            line: p.line,
+            column: cols.time.0 + 1,
+            name: block.names[cols.time.0].clone(),
+        }),
+        _ => Ok(()),
+    }
 }
 
 /// Isotherms of one file at the same nominal temperature become one.

@@ -56,6 +56,30 @@ pub enum TimeDataError {
         /// Accepted spellings.
         accepted: &'static str,
     },
+    /// The time column runs on across the isotherms: elapsed time, not the time since each step.
+    #[error("{file}:{line}:{column}: column `{name}` runs on from one isotherm to the next, so it is the time since the measurement started, not since each step; the time since the step is never reconstructed: export the step's (segment's, interval's) time")]
+    ElapsedTime {
+        /// Path as given.
+        file: String,
+        /// First row of the second isotherm, 1-based.
+        line: usize,
+        /// Column, 1-based.
+        column: usize,
+        /// Column name as written.
+        name: String,
+    },
+    /// An instrument's export does not say whether it measured in tension or in shear.
+    #[error("{file}:{line}:{column}: column `{name}`: the file does not say whether it was measured in tension or in shear (no measuring system, geometry, test name or #MODE line that tells, and the column is not a symbol E/G/D/J); a rotational rheometer measures in shear unless a DMA fixture is used, which is never assumed: add a `mode: shear` (or `mode: tensile`) line to the header, or export the test with its measuring system")]
+    NoKind {
+        /// Path as given.
+        file: String,
+        /// Line of the header, 1-based.
+        line: usize,
+        /// Column, 1-based.
+        column: usize,
+        /// Column name as written.
+        name: String,
+    },
     /// A column's unit is not one this quantity can have.
     #[error("{file}:{line}:{column}: column `{name}` ({quantity}) has unit `{unit}`, which is not one of {accepted}")]
     UnknownUnit {

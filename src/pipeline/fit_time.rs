@@ -43,6 +43,42 @@ pub fn fit_time_data(
     options: &FitOptions,
 ) -> Result<CompoundFit, PipelineError> {
     let master = crate::tts::time_shift::shift_time_data(data, options.master.tref_c)?;
+    fit_time_master_curve(compound, data, &master, options)
+}
+
+/// Fit pyvisco's time-domain master curve (`t, E_relax`, read already reduced to its T_ref with
+/// its shift factors, [`crate::dma::pyvisco_time`]) in time, as [`fit_time_data`] fits shifted
+/// isotherms. Without a shift file the law is a single temperature's (a_T = 1 at T_ref, known
+/// nowhere else), and a warning says that the friction is then determined at T_ref only.
+pub fn fit_pyvisco_time_master(
+    compound: &str,
+    pv: &crate::dma::pyvisco_time::PyviscoTimeMaster,
+    options: &FitOptions,
+) -> Result<CompoundFit, PipelineError> {
+    use crate::tts::time_shift::{master_from_reduced, single_temperature_law};
+    let (law, note) = match &pv.shift_law {
+        Some(law) => (law.clone(), None),
+        None => (
+            single_temperature_law(pv.t_ref_c),
+            Some(format!(
+                "no shift-factor file: the master curve is known at {} °C only (a_T = 1 there, no law elsewhere), so its friction is determined at that temperature only",
+                pv.t_ref_c
+            )),
+        ),
+    };
+    let mut master = master_from_reduced(&pv.data, pv.t_ref_c, law);
+    master.warnings.extend(note);
+    fit_time_master_curve(compound, &pv.data, &master, options)
+}
+
+/// The Prony fit in time of a time-domain master curve and the [`CompoundFit`] built from it
+/// (module docs); `data` are the isotherms it was made of.
+fn fit_time_master_curve(
+    compound: &str,
+    data: &TimeData,
+    master: &crate::tts::time_shift::TimeMaster,
+    options: &FitOptions,
+) -> Result<CompoundFit, PipelineError> {
     let points: Vec<TimeDatum> = master
         .points
         .iter()
@@ -139,21 +175,51 @@ pub fn files_are_time_data(files: &[PathBuf]) -> bool {
     !files.is_empty()
         && files.iter().all(|f| {
             crate::fsutil::read_regular(f, crate::limits::INPUT_BYTES_MAX).is_ok_and(|b| {
-                crate::dma::time_domain::looks_like_time_data(&String::from_utf8_lossy(&b))
+                // decoded as the readers decode (RheoCompass writes UTF-16)
+                crate::dma::time_domain::looks_like_time_data(&crate::dma::text::decode(&b).text)
             })
         })
 }
 
 /// [`fit_time_files`] with the measurement record of the data (for the reports: it holds their
-/// sources, kind and ν, no isotherms of E′, E″).
+/// sources, kind and ν, no isotherms of E′, E″). One file that is pyvisco's time-domain master
+/// curve (`t, E_relax`, [`crate::dma::pyvisco_time`]) is fitted as such, with `shift_factors` when
+/// given (else `options.master.tref_c` must state its temperature); shift factors with isotherms
+/// are refused (the isotherms are shifted here).
 pub fn fit_time_files_with_measurement(
     compound: &str,
     files: &[PathBuf],
+    shift_factors: Option<&std::path::Path>,
     poisson: f64,
     options: &FitOptions,
 ) -> Result<(CompoundFit, crate::Measurement), PipelineError> {
-    let data = read_time_files(files, poisson)?;
-    let fit = fit_time_data(compound, &data, options)?;
+    let pyvisco = match files {
+        [one] => crate::fsutil::read_regular(one, crate::limits::INPUT_BYTES_MAX)
+            .is_ok_and(|b| crate::dma::pyvisco_time::is_time_master(&b)),
+        _ => false,
+    };
+    let (data, fit) = if pyvisco {
+        let pv = crate::dma::pyvisco_time::read_time_master(
+            &files[0],
+            shift_factors,
+            poisson,
+            options.master.tref_c,
+        )?;
+        let fit = fit_pyvisco_time_master(compound, &pv, options)?;
+        (pv.data, fit)
+    } else if let Some(sf) = shift_factors {
+        return Err(PipelineError::Setting {
+            field: "shift_factors".into(),
+            message: format!(
+                "{}: shift factors go with a master curve read already shifted (pyvisco's `t, E_relax` CSV); relaxation or creep isotherms are shifted here",
+                sf.display()
+            ),
+        });
+    } else {
+        let data = read_time_files(files, poisson)?;
+        let fit = fit_time_data(compound, &data, options)?;
+        (data, fit)
+    };
     let mut m = stub_measurement(&data);
     m.warnings = fit.measurement.warnings.clone();
     Ok((fit, m))

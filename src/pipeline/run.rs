@@ -383,6 +383,7 @@ fn fit_time_domain(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, Pipel
     let (fit, measurement) = super::fit_time::fit_time_files_with_measurement(
         &c.name,
         &c.files,
+        c.settings.shift_factors.as_deref(),
         poisson,
         &fit_options(c, opts),
     )?;
@@ -562,6 +563,8 @@ fn fit_any(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError
             fit_time_domain(c, opts)
         }
         None => fit_measured(c, opts),
+        // pyvisco's time-domain master curve with its shift factors
+        Some(_) if super::fit_time::files_are_time_data(&c.files) => fit_time_domain(c, opts),
         Some(sf) => fit_shifted(c, sf, opts),
     }
 }

@@ -107,16 +107,6 @@ type Curve = Vec<(f64, f64)>;
 
 /// Shift `data` to `t_ref_c` (module docs).
 pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMaster, TtsError> {
-    let curves: Vec<Curve> = data
-        .isotherms
-        .iter()
-        .map(|i| {
-            i.points
-                .iter()
-                .map(|p| (p.time_s.log10(), p.value.log10()))
-                .collect()
-        })
-        .collect();
     let temps: Vec<f64> = data.isotherms.iter().map(|i| i.temp_c).collect();
     if temps.is_empty() {
         return Err(TtsError::BadSetting {
@@ -125,6 +115,98 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
             expected: "at least one isotherm",
         });
     }
+    let (chain, mut shifts) = chain_pairs(&log_curves(data), &temps)?;
+    let t_ref = t_ref_c.unwrap_or_else(|| middle_temperature(&temps));
+    let mut warnings = reader_notes(data);
+    refer_to(&mut shifts, &chain, t_ref);
+    for (i, s) in shifts.iter().enumerate().filter(|(_, s)| !s.determined) {
+        warnings.push(format!(
+            "the shift between {} °C and {} °C is not determined by their overlap (standard error {:.2} decade > {MAX_PAIR_STD_DECADES}: the curves are nearly flat there)",
+            shifts[i - 1].temp_c, s.temp_c, s.std_err_log10
+        ));
+    }
+    place_beyond_undetermined(&mut shifts, t_ref, &mut warnings);
+    let law_points: Vec<(f64, f64)> = shifts.iter().map(|s| (s.temp_c, s.log10_a_t)).collect();
+    let one = law_points.len() < 2;
+    let shift_law = if one {
+        single_temperature_law(t_ref)
+    } else {
+        ShiftLaw::Table {
+            t_ref_c: t_ref,
+            points: law_points,
+        }
+    };
+    let by: Vec<f64> = shifts.iter().map(|s| s.log10_a_t).collect();
+    let points = reduced_points(data, &by);
+    let mut m = assemble(data, t_ref, points, shifts, shift_law, warnings);
+    if one {
+        m.warnings.push("one isotherm: no shifts; the law is the frequency path's default for a single temperature (Arrhenius fit impossible), a_T = 1 only at T_ref".into());
+    }
+    Ok(m)
+}
+
+/// A master curve read already reduced to `t_ref_c` (one isotherm at T_ref, e.g. pyvisco's
+/// `t, E_relax` CSV) with the shift law that came with it: no shifting; the law's table (or its
+/// values at the isotherm temperatures) are the shifts, and WLF and Arrhenius are fitted to them.
+pub fn master_from_reduced(data: &TimeData, t_ref_c: f64, shift_law: ShiftLaw) -> TimeMaster {
+    let mut warnings = reader_notes(data);
+    let table: Vec<(f64, f64)> = match &shift_law {
+        ShiftLaw::Table { points, .. } => points.clone(),
+        other => vec![(t_ref_c, other.log10_a_t(t_ref_c))],
+    };
+    // the reduced points carry a_T = 1 (they are at T_ref); the table's other rows are the shifts
+    // the stages after take from the law
+    let shifts = table
+        .iter()
+        .map(|&(temp_c, log10_a_t)| TimeShift {
+            temp_c,
+            log10_a_t,
+            overlap_rms_log10: f64::NAN,
+            overlap_points: 0,
+            std_err_log10: 0.0,
+            determined: true,
+            placed_by_law: false,
+        })
+        .collect();
+    warnings.push(format!(
+        "a time-domain master curve read already reduced to {t_ref_c} °C: not shifted here; the shift factors are the file's"
+    ));
+    let points = reduced_points(data, &vec![0.0; data.isotherms.len()]);
+    assemble(data, t_ref_c, points, shifts, shift_law, warnings)
+}
+
+/// The law of a single temperature: a_T = 1 at T_ref and nowhere else known (the frequency path's
+/// default for one isotherm).
+pub fn single_temperature_law(t_ref_c: f64) -> ShiftLaw {
+    ShiftLaw::Table {
+        t_ref_c,
+        points: vec![(t_ref_c - 1.0, 0.0), (t_ref_c + 1.0, 0.0)],
+    }
+}
+
+/// Each isotherm as (log10 t, log10 value), in increasing time.
+fn log_curves(data: &TimeData) -> Vec<Curve> {
+    data.isotherms
+        .iter()
+        .map(|i| {
+            i.points
+                .iter()
+                .map(|p| (p.time_s.log10(), p.value.log10()))
+                .collect()
+        })
+        .collect()
+}
+
+/// The reader's warnings and the mode evidence, the first lines of a master curve's warnings.
+fn reader_notes(data: &TimeData) -> Vec<String> {
+    let mut warnings = data.warnings.clone();
+    warnings.extend(data.evidence.iter().map(|e| format!("mode: {e}")));
+    warnings
+}
+
+/// The neighbouring pairs' shifts chained from the coldest isotherm (eq. 18.4): the chain of
+/// log10 a_T (0 at the coldest) and one [`TimeShift`] per isotherm (its `log10_a_t` still 0).
+fn chain_pairs(curves: &[Curve], temps: &[f64]) -> Result<(Vec<f64>, Vec<TimeShift>), TtsError> {
     let mut chain = vec![0.0];
     let mut shifts = vec![TimeShift {
         temp_c: temps[0],
@@ -153,29 +235,58 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
             placed_by_law: false,
         });
     }
-    let t_ref = t_ref_c.unwrap_or_else(|| middle_temperature(&temps));
-    let table: Vec<(f64, f64)> = temps.iter().copied().zip(chain.iter().copied()).collect();
-    let at_ref = if table.len() > 1 {
+    Ok((chain, shifts))
+}
+
+/// The chain referred to `t_ref` (interpolated linearly between isotherms): each shift's
+/// `log10_a_t`.
+fn refer_to(shifts: &mut [TimeShift], chain: &[f64], t_ref: f64) {
+    let at_ref = if chain.len() > 1 {
         ShiftLaw::Table {
             t_ref_c: t_ref,
-            points: table.clone(),
+            points: shifts
+                .iter()
+                .map(|s| s.temp_c)
+                .zip(chain.iter().copied())
+                .collect(),
         }
         .log10_a_t(t_ref)
     } else {
         0.0
     };
-    let mut warnings = data.warnings.clone();
-    warnings.extend(data.evidence.iter().map(|e| format!("mode: {e}")));
-    for (s, c) in shifts.iter_mut().zip(&chain) {
+    for (s, c) in shifts.iter_mut().zip(chain) {
         s.log10_a_t = c - at_ref;
     }
-    for (i, s) in shifts.iter().enumerate().filter(|(_, s)| !s.determined) {
-        warnings.push(format!(
-            "the shift between {} °C and {} °C is not determined by their overlap (standard error {:.2} decade > {MAX_PAIR_STD_DECADES}: the curves are nearly flat there)",
-            shifts[i - 1].temp_c, s.temp_c, s.std_err_log10
-        ));
-    }
-    place_beyond_undetermined(&mut shifts, t_ref, &mut warnings);
+}
+
+/// The isotherms' points at reduced time t/a_T (`log10_a_t[i]` the i-th isotherm's shift), sorted.
+fn reduced_points(data: &TimeData, log10_a_t: &[f64]) -> Vec<ReducedTimePoint> {
+    let mut points: Vec<ReducedTimePoint> = data
+        .isotherms
+        .iter()
+        .zip(log10_a_t)
+        .flat_map(|(iso, a)| {
+            iso.points.iter().map(move |p| ReducedTimePoint {
+                reduced_time_s: p.time_s / 10f64.powf(*a),
+                value: p.value,
+                temp_c: iso.temp_c,
+            })
+        })
+        .collect();
+    points.sort_by(|a, b| a.reduced_time_s.total_cmp(&b.reduced_time_s));
+    points
+}
+
+/// The master curve from its reduced points and shifts, with WLF and Arrhenius fitted to the
+/// shifts (a failed fit said in the warnings).
+fn assemble(
+    data: &TimeData,
+    t_ref: f64,
+    points: Vec<ReducedTimePoint>,
+    shifts: Vec<TimeShift>,
+    shift_law: ShiftLaw,
+    mut warnings: Vec<String>,
+) -> TimeMaster {
     let law_points: Vec<(f64, f64)> = shifts.iter().map(|s| (s.temp_c, s.log10_a_t)).collect();
     let wlf = fit_law(fit_wlf(&law_points, t_ref), "WLF", &mut warnings);
     let arrhenius = fit_law(
@@ -183,32 +294,7 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
         "Arrhenius",
         &mut warnings,
     );
-    let shift_law = if law_points.len() > 1 {
-        ShiftLaw::Table {
-            t_ref_c: t_ref,
-            points: law_points,
-        }
-    } else {
-        warnings.push("one isotherm: no shifts; the law is the frequency path's default for a single temperature (Arrhenius fit impossible), a_T = 1 only at T_ref".into());
-        ShiftLaw::Table {
-            t_ref_c: t_ref,
-            points: vec![(t_ref - 1.0, 0.0), (t_ref + 1.0, 0.0)],
-        }
-    };
-    let mut points: Vec<ReducedTimePoint> = data
-        .isotherms
-        .iter()
-        .zip(&shifts)
-        .flat_map(|(iso, s)| {
-            iso.points.iter().map(move |p| ReducedTimePoint {
-                reduced_time_s: p.time_s / 10f64.powf(s.log10_a_t),
-                value: p.value,
-                temp_c: s.temp_c,
-            })
-        })
-        .collect();
-    points.sort_by(|a, b| a.reduced_time_s.total_cmp(&b.reduced_time_s));
-    Ok(TimeMaster {
+    TimeMaster {
         mode: data.mode,
         kind: data.kind,
         poisson: data.poisson,
@@ -219,7 +305,7 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
         arrhenius,
         shift_law,
         warnings,
-    })
+    }
 }
 
 fn fit_law<T>(r: Result<T, TtsError>, name: &str, warnings: &mut Vec<String>) -> Option<T> {
