@@ -295,3 +295,53 @@ fn master_reads_the_pyvisco_pair_as_a_master_curve() {
         .unwrap();
     assert_eq!(both.status.code(), Some(2));
 }
+
+/// A frequency-domain master curve without its shift-factor file (issue 29 item 2): `fit
+/// --master-curve M.csv --tref T` fits the curve as shifted to T, with the law of that one
+/// temperature. The points and their weights are those of the pair, so the spectrum must be the
+/// pair's to the bit; the fit says the curve is known at T only; without --tref it is refused,
+/// naming the flag (the file does not say where it was shifted to, and no default is guessed).
+#[test]
+fn a_master_curve_without_its_shift_file_is_fitted_at_the_tref_given() {
+    let (mc, sf) = shipped_paths();
+    let dir = temp_dir("pyvisco-alone");
+    let (with, alone) = (dir.join("with.json"), dir.join("alone.json"));
+    let (mc, sf) = (mc.to_str().unwrap(), sf.to_str().unwrap());
+    viscoroll(&[
+        "fit",
+        "--master-curve",
+        mc,
+        "--shift-factors",
+        sf,
+        "--no-bands",
+        "-o",
+        with.to_str().unwrap(),
+    ]);
+    let o = viscoroll(&[
+        "fit",
+        "--master-curve",
+        mc,
+        "--tref",
+        "-5",
+        "--no-bands",
+        "-o",
+        alone.to_str().unwrap(),
+    ]);
+    let read = |p: &PathBuf| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap()
+    };
+    let (a, b) = (read(&with), read(&alone));
+    assert_eq!(a["relaxation"], b["relaxation"]);
+    assert_eq!(b["shift_law"]["t_ref_c"], -5.0, "{}", b["shift_law"]);
+    let text = format!("{}{}", b, String::from_utf8_lossy(&o.stderr));
+    assert!(text.contains("known at -5 °C only"), "{text}");
+    let refused = Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+        .args(["fit", "--master-curve", mc, "-o"])
+        .arg(dir.join("none.json"))
+        .output()
+        .unwrap();
+    assert!(!refused.status.success());
+    let err = String::from_utf8_lossy(&refused.stderr);
+    assert!(err.contains("--tref"), "{err}");
+    assert!(!dir.join("none.json").exists());
+}

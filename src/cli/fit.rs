@@ -16,7 +16,8 @@
 //! Instead of a measurement, a master curve already shifted can be fitted: pyvisco's master-curve CSV
 //! with its shift-factor CSV (`--master-curve M.csv --shift-factors S.csv`, read by
 //! [`crate::dma::pyvisco`]); its shift table is the fit's shift law, and the WLF and Arrhenius fits
-//! of that table go into the fit file for the cards.
+//! of that table go into the fit file for the cards. Without the shift-factor CSV, `--tref T` says
+//! where the curve was shifted to, and the law is that one temperature's.
 //!
 //! Or relaxation or creep isotherms (`--time-domain FILE…`, docs/MATH.md §18): shifted in log t,
 //! fitted in time (crate::pipeline::fit_time); the fit file is the same, so `roll` and `run` go on
@@ -42,9 +43,9 @@ pub struct Args {
     #[arg(long, value_name = "FILE", num_args = 1.., conflicts_with_all = ["measurement", "master_curve"])]
     pub time_domain: Vec<PathBuf>,
     /// A master curve already shifted, in pyvisco's CSV layout, fitted instead of a measurement:
-    /// frequency domain (`f, E_stor, E_loss` over `Hz, MPa, MPa`; `G_…` for shear; needs
-    /// --shift-factors) or time domain (`t, E_relax` over `s, MPa`; fitted in time, docs/MATH.md
-    /// §18; without --shift-factors give --tref, and friction is then known at T_ref only).
+    /// frequency domain (`f, E_stor, E_loss` over `Hz, MPa, MPa`; `G_…` for shear) or time domain
+    /// (`t, E_relax` over `s, MPa`; fitted in time, docs/MATH.md §18). Without --shift-factors
+    /// give --tref, the temperature it was shifted to: friction is then known at T_ref only.
     #[arg(long, value_name = "CSV", conflicts_with = "measurement")]
     pub master_curve: Option<PathBuf>,
     /// pyvisco's shift-factor CSV of the master curve (`T, log_aT` over `C, -`); its row with
@@ -202,11 +203,13 @@ fn source(args: &Args) -> anyhow::Result<Source> {
                     args.tref,
                 )?))
             }
-            (None, Some(_), None) => anyhow::bail!(
-                "a frequency-domain master curve needs its shift-factor file (--shift-factors)"
-            ),
-            (None, Some(mc), Some(sf)) => {
-                let pv = crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?;
+            (None, Some(mc), sf) => {
+                let pv = match sf {
+                    Some(sf) => {
+                        crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?
+                    }
+                    None => crate::dma::pyvisco::read_master_alone(mc, args.poisson, args.tref)?,
+                };
                 let master = crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
                     .with_context(|| format!("{}", mc.display()))?;
                 Source::Master(pv.measurement, Box::new(master))

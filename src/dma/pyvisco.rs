@@ -68,6 +68,59 @@ pub fn master_pair_from_bytes(
     poisson: f64,
     t_ref_c: Option<f64>,
 ) -> Result<PyviscoMaster, DmaError> {
+    let shift_law = super::shiftfactors::shift_table_from_bytes(shift_file, shifts, t_ref_c)?;
+    master_with_law(
+        master_file,
+        master,
+        Some((shift_file, shifts)),
+        shift_law,
+        poisson,
+    )
+}
+
+/// pyvisco's frequency-domain master curve without its shift-factor file: the curve as shifted to
+/// `t_ref_c` (required: the file does not say it), with the law of that one temperature (a_T = 1
+/// there, unknown elsewhere), so the friction it gives is determined at `t_ref_c` only.
+pub fn read_master_alone(
+    master: &std::path::Path,
+    poisson: f64,
+    t_ref_c: Option<f64>,
+) -> Result<PyviscoMaster, DmaError> {
+    let file = master.display().to_string();
+    let Some(t_ref) = t_ref_c.filter(|t| t.is_finite()) else {
+        return Err(DmaError::Setting {
+            field: "tref".into(),
+            value: format!("{t_ref_c:?}"),
+            reason: "a master curve without its shift-factor file needs the temperature it was \
+                     shifted to (--tref)"
+                .into(),
+        });
+    };
+    let bytes =
+        crate::fsutil::read_regular(master, crate::limits::INPUT_BYTES_MAX).map_err(|source| {
+            DmaError::Io {
+                file: file.clone(),
+                source,
+            }
+        })?;
+    let law = ShiftLaw::single_temperature(t_ref);
+    let mut pv = master_with_law(&file, &bytes, None, law, poisson)?;
+    pv.measurement.warnings.push(format!(
+        "{file}: no shift-factor file: the master curve is known at {t_ref} °C only (a_T = 1 \
+         there, no law elsewhere), so its friction is determined at that temperature only"
+    ));
+    Ok(pv)
+}
+
+/// The [`PyviscoMaster`] of a master-curve file and the law it was shifted by (`shifts`: the
+/// shift-factor file it came from, if any).
+fn master_with_law(
+    master_file: &str,
+    master: &[u8],
+    shifts: Option<(&str, &[u8])>,
+    shift_law: ShiftLaw,
+    poisson: f64,
+) -> Result<PyviscoMaster, DmaError> {
     // ν of an isotropic stable solid lies in (−1, 0.5] (the check of IngestOptions).
     if !(poisson > -1.0 && poisson <= 0.5) {
         return Err(DmaError::Setting {
@@ -76,7 +129,6 @@ pub fn master_pair_from_bytes(
             reason: "Poisson's ratio must lie in (−1, 0.5]".into(),
         });
     }
-    let shift_law = super::shiftfactors::shift_table_from_bytes(shift_file, shifts, t_ref_c)?;
     let t_ref = shift_law.t_ref_c();
     let (kind, unit_text, points) = read_master_points(master_file, master)?;
     let source =
@@ -105,10 +157,14 @@ pub fn master_pair_from_bytes(
     ];
     let n = points.len();
     let measurement = Measurement {
-        sources: vec![
-            source(master_file, master, "pyvisco-master", master_columns),
-            source(shift_file, shifts, "pyvisco-shift-factors", vec![]),
-        ],
+        sources: std::iter::once(source(
+            master_file,
+            master,
+            "pyvisco-master",
+            master_columns,
+        ))
+        .chain(shifts.map(|(f, b)| source(f, b, "pyvisco-shift-factors", vec![])))
+        .collect(),
         kind,
         poisson,
         isotherms: vec![Isotherm {
@@ -120,10 +176,16 @@ pub fn master_pair_from_bytes(
             sheet: None,
             label: Some(format!("pyvisco master curve at {t_ref} °C")),
         }],
-        warnings: vec![format!(
-            "{master_file}: a master curve read already shifted ({n} points at {t_ref} °C, the \
-             temperature of log a_T = 0 in {shift_file})"
-        )],
+        warnings: vec![match shifts {
+            Some((shift_file, _)) => format!(
+                "{master_file}: a master curve read already shifted ({n} points at {t_ref} °C, the \
+                 temperature of log a_T = 0 in {shift_file})"
+            ),
+            None => format!(
+                "{master_file}: a master curve read already shifted ({n} points at {t_ref} °C, \
+                 as --tref says)"
+            ),
+        }],
         issues: vec![],
         summary: Default::default(),
     };

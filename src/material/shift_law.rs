@@ -40,6 +40,15 @@ pub enum ShiftLaw {
 }
 
 impl ShiftLaw {
+    /// The law of a single temperature: a_T = 1 at `t_ref_c` and nowhere else known (a master curve
+    /// read without its shift factors; the frequency path's default for one isotherm).
+    pub fn single_temperature(t_ref_c: f64) -> ShiftLaw {
+        ShiftLaw::Table {
+            t_ref_c,
+            points: vec![(t_ref_c - 1.0, 0.0), (t_ref_c + 1.0, 0.0)],
+        }
+    }
+
     /// The reference temperature in °C.
     pub fn t_ref_c(&self) -> f64 {
         match self {

@@ -55,11 +55,11 @@ pub fn fit_pyvisco_time_master(
     pv: &crate::dma::pyvisco_time::PyviscoTimeMaster,
     options: &FitOptions,
 ) -> Result<CompoundFit, PipelineError> {
-    use crate::tts::time_shift::{master_from_reduced, single_temperature_law};
+    use crate::tts::time_shift::master_from_reduced;
     let (law, note) = match &pv.shift_law {
         Some(law) => (law.clone(), None),
         None => (
-            single_temperature_law(pv.t_ref_c),
+            crate::ShiftLaw::single_temperature(pv.t_ref_c),
             Some(format!(
                 "no shift-factor file: the master curve is known at {} °C only (a_T = 1 there, no law elsewhere), so its friction is determined at that temperature only",
                 pv.t_ref_c

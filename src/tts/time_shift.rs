@@ -129,7 +129,7 @@ pub fn shift_time_data(data: &TimeData, t_ref_c: Option<f64>) -> Result<TimeMast
     let law_points: Vec<(f64, f64)> = shifts.iter().map(|s| (s.temp_c, s.log10_a_t)).collect();
     let one = law_points.len() < 2;
     let shift_law = if one {
-        single_temperature_law(t_ref)
+        ShiftLaw::single_temperature(t_ref)
     } else {
         ShiftLaw::Table {
             t_ref_c: t_ref,
@@ -173,15 +173,6 @@ pub fn master_from_reduced(data: &TimeData, t_ref_c: f64, shift_law: ShiftLaw) -
     ));
     let points = reduced_points(data, &vec![0.0; data.isotherms.len()]);
     assemble(data, t_ref_c, points, shifts, shift_law, warnings)
-}
-
-/// The law of a single temperature: a_T = 1 at T_ref and nowhere else known (the frequency path's
-/// default for one isotherm).
-pub fn single_temperature_law(t_ref_c: f64) -> ShiftLaw {
-    ShiftLaw::Table {
-        t_ref_c,
-        points: vec![(t_ref_c - 1.0, 0.0), (t_ref_c + 1.0, 0.0)],
-    }
 }
 
 /// Each isotherm as (log10 t, log10 value), in increasing time.
