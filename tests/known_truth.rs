@@ -698,3 +698,29 @@ fn known_truth_noise_free_bias() {
         );
     }
 }
+
+/// An export of an exact model whose loss factor falls far below what a DMA resolves (the
+/// noise-free narrow transition with a filled tail: E″/E′ down to ~1e-57) cannot be fitted: every λ
+/// of the search ends InsufficientProgress (docs/DEVLOG.md, "The last 2 %"). The error must say why
+/// and what to do, not only that the solver failed.
+#[test]
+fn a_loss_factor_no_dma_resolves_is_named_when_the_fit_fails() {
+    let compound = viscoroll::testdata::realistic::non_overlapping_compounds()[1].clone();
+    let protocol = DmaProtocol {
+        noise_storage_rel: 0.0,
+        noise_loss_rel: 0.0,
+        ..DmaProtocol::default()
+    };
+    let dir = std::env::temp_dir().join(format!("viscoroll-tiny-loss-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("{}.csv", compound.name));
+    std::fs::write(&path, dma_csv(&dma_rows(&compound, &protocol))).unwrap();
+    let result = fit_files(&compound.name, &[path], &FitOptions::default());
+    let _ = std::fs::remove_dir_all(&dir);
+    let Err(err) = result else {
+        panic!("the fit is expected to fail here")
+    };
+    let err = err.to_string();
+    assert!(err.contains("far below the ~1e-4 a DMA resolves"), "{err}");
+    assert!(err.contains("E″/E′ reaches"), "{err}");
+}

@@ -129,7 +129,8 @@ pub fn fit_prony(
     )?;
     let scale = points.iter().map(|p| p.storage_pa).fold(0.0, f64::max);
     let problem = Problem::new(points, &taus, scale, settings.loss_weight);
-    let (lambda, solution, search, total_iterations) = solve_weights(&problem, settings)?;
+    let (lambda, solution, search, total_iterations) =
+        solve_weights(&problem, settings).map_err(|e| with_loss_factor_note(e, points))?;
     let dense = dense_spectrum(&problem, &solution.x, &taus, scale, settings, kind, poisson);
     let dense_errors = log10_errors(points, &dense);
     let dense_terms = dense.terms.len();
@@ -197,6 +198,35 @@ fn freq_window_hz(points: &[MasterPoint]) -> Result<(f64, f64), PronyError> {
         return Err(PronyError::NoFrequencyWindow { freq_hz: f_min });
     }
     Ok((f_min, f_max))
+}
+
+/// The smallest loss factor E″/E′ a DMA resolves, about: the phase between stress and strain is
+/// measured to ~1e-4 rad at best. Far below it (here 100× below) a datum can only come from a model,
+/// not a measurement.
+const LOSS_FACTOR_RESOLVED: f64 = 1e-4;
+
+/// A failed solve explained where the data carry loss factors far below what a DMA resolves: their
+/// relative E″ residuals make rows of A up to 1/(E″/E′) larger than the others (1e57 in the exact
+/// export of a narrow spectrum), beyond what the solver can balance in double precision.
+fn with_loss_factor_note(e: PronyError, points: &[MasterPoint]) -> PronyError {
+    let PronyError::Solver(why) = e else {
+        return e;
+    };
+    let lowest = points
+        .iter()
+        .map(|p| (p.loss_pa / p.storage_pa, p.reduced_freq_hz))
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    match lowest {
+        Some((ratio, freq_hz)) if ratio < 1e-2 * LOSS_FACTOR_RESOLVED => {
+            PronyError::Solver(format!(
+            "{why}; the data's E″/E′ reaches {ratio:.1e} (at a reduced frequency of {freq_hz:.3e} \
+             Hz), far below the ~{LOSS_FACTOR_RESOLVED:e} a DMA resolves: such points (from a \
+             model, not a measurement) make the fit's rows span more than it can solve; leave \
+             them out, or give E″ no smaller than {LOSS_FACTOR_RESOLVED:e}·E′"
+        ))
+        }
+        _ => PronyError::Solver(why),
+    }
 }
 
 /// The λ search (or the fixed λ): λ, the QP solution there, the candidates tried and the total
