@@ -277,6 +277,28 @@ fn read_master_points(
     Ok((kind, unit_of(i_s), points))
 }
 
+/// Cell `i` of data row `line` (`cells` split, `names` the header) as a number that `accept`s, or
+/// the error naming file, line and column (pyvisco's frequency and time-domain CSVs alike).
+pub(super) fn cell_number(
+    file: &str,
+    line: usize,
+    names: &[String],
+    cells: &[String],
+    i: usize,
+    accept: impl Fn(&f64) -> bool,
+) -> Result<f64, DmaError> {
+    let c = cells.get(i).map(String::as_str).unwrap_or("");
+    c.parse::<f64>()
+        .ok()
+        .filter(accept)
+        .ok_or_else(|| DmaError::BadNumber {
+            file: file.into(),
+            location: format!("line {line}"),
+            column: names[i].clone(),
+            value: c.to_string(),
+        })
+}
+
 /// The data rows of a pyvisco master-curve CSV (after its two header rows): frequency, storage and
 /// loss modulus from `columns` = [f, M′, M″], the moduli times `to_pa`. A cell that is not a finite
 /// number is an error; blank lines are skipped; no row at all is an error.
@@ -295,18 +317,7 @@ fn master_rows<'a>(
             continue;
         }
         let cells = split(l);
-        let get = |i: usize| -> Result<f64, DmaError> {
-            let c = cells.get(i).map(String::as_str).unwrap_or("");
-            c.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| DmaError::BadNumber {
-                    file: file.into(),
-                    location: format!("line {line}"),
-                    column: names[i].clone(),
-                    value: c.to_string(),
-                })
-        };
+        let get = |i: usize| cell_number(file, line, names, &cells, i, |v| v.is_finite());
         points.push(DataPoint {
             freq_hz: get(i_f)?,
             storage_pa: get(i_s)? * to_pa[0],

@@ -221,17 +221,10 @@ fn read_time_points(
     let mut points = Vec::new();
     for (line, l) in lines.filter(|(_, l)| !l.trim().is_empty()) {
         let cells = split(l);
-        let get = |i: usize| -> Result<f64, DmaError> {
-            let c = cells.get(i).map(String::as_str).unwrap_or("");
-            c.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite() && *v > 0.0)
-                .ok_or_else(|| DmaError::BadNumber {
-                    file: file.into(),
-                    location: format!("line {line}"),
-                    column: names[i].clone(),
-                    value: c.to_string(),
-                })
+        let get = |i: usize| {
+            super::pyvisco::cell_number(file, line, &names, &cells, i, |v| {
+                v.is_finite() && *v > 0.0
+            })
         };
         points.push(TimePoint {
             time_s: get(i_t)?,
