@@ -8,7 +8,7 @@
 use std::time::Instant;
 use viscoroll::bands::{build_ensemble, scene_ratios_on, BandSettings};
 use viscoroll::dma::{read_files, IngestOptions};
-use viscoroll::pipeline::fit_compound::fit_measurement_master;
+use viscoroll::pipeline::fit_measurement_master;
 use viscoroll::pipeline::{run_all, FitOptions, RunOptions};
 use viscoroll::results::SceneSet;
 

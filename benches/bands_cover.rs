@@ -12,7 +12,7 @@ use viscoroll::bands::{
     band_of, build_ensemble, scene_bands_by, scene_bands_on, BandSettings, CoverMode,
 };
 use viscoroll::dma::{read_files, IngestOptions};
-use viscoroll::pipeline::fit_compound::fit_measurement_master;
+use viscoroll::pipeline::fit_measurement_master;
 use viscoroll::pipeline::FitOptions;
 use viscoroll::results::SceneSet;
 

@@ -13,7 +13,7 @@ use viscoroll::contact::cover::roll_cover_from;
 use viscoroll::contact::Body;
 use viscoroll::contact::{roll, Scene};
 use viscoroll::pipeline::RunOptions;
-use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
+use viscoroll::testdata::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 use viscoroll::CreepSpectrum;
 
 #[path = "support/cpu.rs"]
@@ -101,8 +101,7 @@ fn main() {
             let m = viscoroll::dma::read_files(std::slice::from_ref(f), &Default::default())
                 .expect("reads");
             let (fit, master) =
-                viscoroll::pipeline::fit_compound::fit_measurement_master(name, &m, &opts.fit)
-                    .expect("fits");
+                viscoroll::pipeline::fit_measurement_master(name, &m, &opts.fit).expect("fits");
             let e = build_ensemble(&master, &m, &fit, &bs).expect("an ensemble");
             let creep = fit.creep.clone().expect("a creep spectrum");
             let law = &fit.shift_law;

@@ -13,9 +13,9 @@ use std::time::Instant;
 use viscoroll::contact::body::layer::{
     collocation, layer_at_load, winkler_at_load, LayerKernel, LayerSettings, WinklerColumns,
 };
-use viscoroll::contact::cover::roll_cover;
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
 use viscoroll::contact::load::LoadSettings;
+use viscoroll::contact::roll_cover;
 use viscoroll::contact::{Body, CreepTerm, Scene};
 use viscoroll::CreepSpectrum;
 

@@ -17,7 +17,7 @@ use viscoroll::pipeline::scenes::{
     friction_maps, friction_vs_temperature, pipeline_contact_settings, pipeline_map_settings,
 };
 use viscoroll::pipeline::{run_all, RunOptions};
-use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
+use viscoroll::testdata::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 
 #[path = "support/cpu.rs"]
 mod cpu;
@@ -128,8 +128,7 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
             let m = viscoroll::dma::read_files(std::slice::from_ref(f), &Default::default())
                 .expect("reads");
             let (mut fit, master) =
-                viscoroll::pipeline::fit_compound::fit_measurement_master(name, &m, &opts.fit)
-                    .expect("fits");
+                viscoroll::pipeline::fit_measurement_master(name, &m, &opts.fit).expect("fits");
             let c1 = cpu_s();
             add("read + master curve + fit".into(), c1 - c0, 0);
             fit.bands = viscoroll::bands::build_ensemble(&master, &m, &fit, &bs).ok();

@@ -18,8 +18,8 @@ use std::path::PathBuf;
 use std::time::Instant;
 use viscoroll::contact::maps::{covered_map, CoveredProblem, MapQuery, MapSettings};
 use viscoroll::pipeline::{fit_files, fit_measurement, FitOptions};
-use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 use viscoroll::testdata::SplitMix64;
+use viscoroll::testdata::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 
 #[path = "support/cpu.rs"]
 mod cpu;

@@ -55,7 +55,7 @@
 pub mod fsutil;
 pub mod limits;
 pub mod material;
-pub mod special;
+pub(crate) mod special;
 
 pub mod bands;
 pub mod contact;
@@ -70,6 +70,12 @@ pub mod tts;
 pub mod testdata;
 
 pub mod cli;
+
+// The crate's own tests (src/tests/) name the crate `viscoroll`, as the integration tests do.
+#[cfg(test)]
+extern crate self as viscoroll;
+#[cfg(test)]
+mod tests;
 
 pub use creep::CreepSpectrum;
 pub use dma::Measurement;

@@ -11,43 +11,43 @@ use thiserror::Error;
 
 /// Smoothing weights λ the Prony fit searches (`prony.lambda_count`, default 12): each is one QP
 /// solve; 1e9 asked for a 32 GB allocation and aborted the run.
-pub const PRONY_LAMBDA_COUNT_MAX: usize = 60;
+pub(crate) const PRONY_LAMBDA_COUNT_MAX: usize = 60;
 /// Relaxation times of a Prony fit (terms per decade × decades of the master curve, or
 /// `prony.max_terms`) and terms a fit file may carry: the QP is dense in the terms (cost ~ n³ per
 /// iteration, memory ~ n² ); 5000 terms took > 60 s and 800 MB.
-pub const PRONY_TERMS_MAX: usize = 400;
+pub(crate) const PRONY_TERMS_MAX: usize = 400;
 /// Intervals of the thesis collocation (`contact --n`): an n × n dense matrix (8 n² bytes, LU ~ n³,
 /// one per step of the load loop); 20000 reached 3 GB, and 4000 (128 MB) took 498 s with the load
 /// loop (debug binary, loaded machine: `cargo bench --bench budget_edges`), so 2000: 1/8 of that
 /// work, 32 MB per matrix. The thesis' tables use n ≤ 320; the independent checks of the layer and
 /// of the `auto` scheme use up to 1280.
-pub const CONTACT_N_MAX: usize = 2000;
+pub(crate) const CONTACT_N_MAX: usize = 2000;
 /// Scenes in one scenes TOML (each costs a friction curve and maps per compound).
-pub const SCENES_MAX: usize = 64;
+pub(crate) const SCENES_MAX: usize = 64;
 /// Temperatures of a scene's friction curve (`temps_c`), each a contact solve per compound.
-pub const SCENE_TEMPS_MAX: usize = 200;
+pub(crate) const SCENE_TEMPS_MAX: usize = 200;
 /// Entries of one friction-map list (`map_temps_c`, `map_speeds_m_s`, `map_loads_n_per_m`).
-pub const MAP_LIST_MAX: usize = 50;
+pub(crate) const MAP_LIST_MAX: usize = 50;
 /// Map cells of one scene: map temperatures × (map speeds + map loads); 3 × 1000 ran over 60 s and
 /// 1000 map temperatures wrote 234 MB for one compound.
-pub const MAP_CELLS_MAX: usize = 1000;
+pub(crate) const MAP_CELLS_MAX: usize = 1000;
 /// Thinnest cover against the roll radius (h / R): thinner covers need a layer solve whose degree
 /// grows with contact length / thickness (1e-9 mm ran over 60 s at 800 MB); 1e-4 of a 100 mm roll
 /// is 10 µm, far below any real cover.
-pub const COVER_OVER_RADIUS_MIN: f64 = 1e-4;
+pub(crate) const COVER_OVER_RADIUS_MIN: f64 = 1e-4;
 /// Work of one compound's scene set, in friction points: Σ over its scenes of `temps_c` plus the
 /// map cells divided by [`MAP_CELLS_PER_POINT`]. The per-scene limits above do not bound the set:
 /// 64 scenes × 200 temperatures on the thinnest cover ran for over 15 min. A friction point with
 /// its band costs at most 0.43 s (thinnest cover, tol 1e-10, 200 points in 85 s; a half-space point
 /// 0.07 s), measured with the unoptimised-crate debug binary with three processes on 2 cores, so
 /// an upper bound; `cargo bench --bench budget_edges` measures the set at this limit.
-pub const SCENE_WORK_MAX: usize = 250;
+pub(crate) const SCENE_WORK_MAX: usize = 250;
 /// Map cells that cost one friction point: maps come from one interpolant per scene, and a cell
 /// cost 1/5.5 of a point on the thinnest cover (1000 cells and 9 points in 61 s) and 1/9 on a
 /// half-space (8.6 s).
-pub const MAP_CELLS_PER_POINT: usize = 5;
+pub(crate) const MAP_CELLS_PER_POINT: usize = 5;
 /// Characters of a compound or scene name (they become file and folder names and table cells).
-pub const NAME_CHARS_MAX: usize = 64;
+pub(crate) const NAME_CHARS_MAX: usize = 64;
 /// Bytes of a DMA export, measurement JSON or fit file read (a 1e6-row CSV is ~50 MB).
 pub(crate) const INPUT_BYTES_MAX: u64 = 256 << 20;
 /// Bytes of a settings file (scenes TOML, compounds.toml).
@@ -94,7 +94,7 @@ pub fn temperature_c(key: &str, t: f64) -> Result<(), LimitError> {
 }
 
 /// A name of at most [`NAME_CHARS_MAX`] characters, none of them a control character.
-pub fn name(key: &str, s: &str) -> Result<(), LimitError> {
+pub(crate) fn name(key: &str, s: &str) -> Result<(), LimitError> {
     let n = s.chars().count();
     let shown = || {
         s.chars()

@@ -11,8 +11,15 @@
 //! given [`ShiftLaw`] (time–temperature superposition, docs/MATH.md §6) for each isotherm, with seeded
 //! multiplicative Gaussian noise and a seeded offset of the actual temperature from the nominal one.
 
-pub mod realistic;
-pub mod time_domain;
+pub(crate) mod realistic;
+pub(crate) mod time_domain;
+
+pub(crate) use realistic::DmaRow;
+pub use realistic::{
+    dma_csv, dma_rows, non_overlapping_compounds, realistic_compounds, DmaProtocol, ExportFormat,
+    RealisticCompound,
+};
+pub use time_domain::{time_domain_csv, TimeSettings};
 
 use crate::dma::{DataPoint, Isotherm, Measurement, SourceFile};
 use crate::prony::{RelaxationSpectrum, RelaxationTerm};
@@ -20,7 +27,7 @@ use crate::{ModulusKind, ShiftLaw};
 use std::collections::BTreeMap;
 
 /// Storage modulus E′(ω) of a Prony series, ω in rad/s.
-pub fn storage_modulus(spectrum: &RelaxationSpectrum, omega_rad_s: f64) -> f64 {
+pub(crate) fn storage_modulus(spectrum: &RelaxationSpectrum, omega_rad_s: f64) -> f64 {
     spectrum.modulus_inf_pa
         + spectrum
             .terms
@@ -33,7 +40,7 @@ pub fn storage_modulus(spectrum: &RelaxationSpectrum, omega_rad_s: f64) -> f64 {
 }
 
 /// Loss modulus E″(ω) of a Prony series, ω in rad/s.
-pub fn loss_modulus(spectrum: &RelaxationSpectrum, omega_rad_s: f64) -> f64 {
+pub(crate) fn loss_modulus(spectrum: &RelaxationSpectrum, omega_rad_s: f64) -> f64 {
     spectrum
         .terms
         .iter()
@@ -45,7 +52,7 @@ pub fn loss_modulus(spectrum: &RelaxationSpectrum, omega_rad_s: f64) -> f64 {
 }
 
 /// `n` values from `a` to `b` (both > 0), equally spaced in log.
-pub fn log_spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
+pub(crate) fn log_spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
     if n == 1 {
         return vec![a];
     }
@@ -170,7 +177,7 @@ pub fn synthetic_measurement(
 
 /// A small seeded generator (SplitMix64, Steele, Lea & Flood 2014), enough for test noise.
 #[derive(Debug, Clone)]
-pub struct SplitMix64(u64);
+pub(crate) struct SplitMix64(u64);
 
 impl SplitMix64 {
     /// Generator with the given seed.

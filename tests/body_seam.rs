@@ -1,5 +1,5 @@
 //! The covered bodies checked through the seam (issue 30, item 7): a scene in SI units solved by
-//! `contact::cover::roll_cover` (the scene made dimensionless by `contact::scene`, the body reached
+//! `contact::roll_cover` (the scene made dimensionless by `contact::scene`, the body reached
 //! through the dispatch `contact::body::answer_at_load`) against references computed here another
 //! way, so that the cover thickness, the load, the radius or the speed handed on 1 % off where the
 //! scene meets the body fails a test (each was injected in turn; the table is in docs/DEVLOG.md).
@@ -26,7 +26,7 @@
 //! 1 % thicker cover (it moves that extrapolation by 6e−3) from the remainder.
 
 use crate::reference::{exact_sls, Kind, SceneSi, Sls};
-use viscoroll::contact::cover::roll_cover;
+use viscoroll::contact::roll_cover;
 use viscoroll::contact::{Body, Scene};
 use viscoroll::creep::RetardationTerm;
 use viscoroll::{CreepSpectrum, ModulusKind};

@@ -386,3 +386,70 @@ fn contact_cover_bad_arguments() {
     one_line_error(&with(&["--cover", "1", "--poisson", "0.7"]), "--poisson");
     one_line_error(&with(&["--cover", "1", "--model", "plate"]), "--model");
 }
+
+#[test]
+fn cli_contact_auto_and_roll_default_report_error_and_modes() {
+    let exe = env!("CARGO_BIN_EXE_viscoroll");
+    let out = std::process::Command::new(exe)
+        .args([
+            "contact", "--creep", "10:1", "--lambda", "1", "--scheme", "auto", "--tol", "1e-9",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["scheme"], "auto");
+    // thesis Table 1 case, exact (mpmath) ρF/N = 0.43218841466733969
+    assert!((v["friction_rho"].as_f64().unwrap() / 0.432_188_414_667_339_7 - 1.0).abs() < 1e-9);
+    assert!(v["error_estimate"].as_f64().unwrap() <= 1e-9);
+    assert_eq!(v["modes_used"], 1);
+    assert_eq!(v["modes_total"], 1);
+
+    let dir = crate::support::temp_dir("auto");
+    let spec = dir.join("spec.json");
+    std::fs::write(
+        &spec,
+        r#"{"compliance_glassy_per_pa": 1e-9, "terms": [
+            {"compliance_per_pa": 1e-7, "tau_s": 1e-3}, {"compliance_per_pa": 5e-7, "tau_s": 1e3}]}"#,
+    )
+    .unwrap();
+    let out = std::process::Command::new(exe)
+        .args([
+            "roll",
+            spec.to_str().unwrap(),
+            "--radius-mm",
+            "50",
+            "--load-n-per-m",
+            "1000",
+        ])
+        .args(["--speed-m-s", "1", "--json"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["scheme"], "auto");
+    assert!(v["error_estimate"].as_f64().unwrap() <= 1e-6);
+    assert_eq!(v["modes_total"], 2);
+    assert!(v["friction"].as_f64().unwrap() > 0.0);
+    // a bad tolerance is a one-line error, not a panic
+    let out = std::process::Command::new(exe)
+        .args([
+            "roll",
+            spec.to_str().unwrap(),
+            "--radius-mm",
+            "50",
+            "--load-n-per-m",
+            "1000",
+        ])
+        .args(["--speed-m-s", "1", "--tol", "0"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -16,7 +16,7 @@
 
 use crate::reference::{csv_rows, job_on_sls, rel, Kind, Sls};
 use std::collections::HashMap;
-use viscoroll::contact::cover::roll_cover;
+use viscoroll::contact::roll_cover;
 use viscoroll::contact::{Body, Scene};
 use viscoroll::CreepSpectrum;
 

@@ -3,7 +3,7 @@
 //! only, |E*| with tan δ only, Latin-1 whitespace) and check each reads to the same measurement as
 //! the plain file. The synthetic vendor-layout files under tests/data/synthetic/ must match it too.
 
-use super::dma_real::data;
+use crate::shipped::data;
 use std::f64::consts::PI;
 use std::path::PathBuf;
 use viscoroll::dma::{self, IngestOptions, Measurement};

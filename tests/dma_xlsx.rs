@@ -2,7 +2,7 @@
 //! `Data header`) into a minimal Office Open XML workbook and reads it back: it must give the same
 //! measurement as the .xls.
 
-use super::dma_real::data;
+use crate::shipped::data;
 use calamine::{open_workbook_auto, Data, Reader};
 use std::io::Write;
 use viscoroll::dma::{self, IngestOptions};

@@ -2,7 +2,7 @@
 //! file reproduces the true moduli, is reused on a re-run, and is not replaced without `--force`.
 
 use crate::support::{temp_dir, viscoroll};
-use viscoroll::pipeline::compound_fit::CompoundFit;
+use viscoroll::results::CompoundFit;
 use viscoroll::testdata::{broad_spectrum, synthetic_measurement, SyntheticSettings};
 use viscoroll::ShiftLaw;
 

@@ -3,7 +3,9 @@
 //! `convert` reads a fit file's spectrum.
 
 use crate::support::{temp_dir, viscoroll};
-use viscoroll::report::cards::{read_lsdyna, LSDYNA_MAX_TERMS};
+use viscoroll::report::CardContents;
+
+const LSDYNA_MAX_TERMS: usize = CardContents::LSDYNA_MAX_TERMS;
 use viscoroll::testdata::{broad_spectrum, synthetic_measurement, SyntheticSettings};
 use viscoroll::ShiftLaw;
 
@@ -28,7 +30,7 @@ fn cards_and_creep_from_a_fit_file() {
     let o = viscoroll(&["export", f_s, "--to", "lsdyna"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let card = String::from_utf8(o.stdout).unwrap();
-    let c = read_lsdyna(&card).unwrap();
+    let c = CardContents::from_lsdyna(&card).unwrap();
     // Prony cards = terms + the β = 0 equilibrium card.
     assert!(c.terms.len() < LSDYNA_MAX_TERMS, "{card}");
     // The WLF law of the exact shifts comes back (the master-curve stage fits it to shifts that are
@@ -66,7 +68,7 @@ fn cards_and_creep_from_a_fit_file() {
     let o = viscoroll(&["export", spectrum.to_str().unwrap(), "--to", "lsdyna"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let card = String::from_utf8(o.stdout).unwrap();
-    let c = read_lsdyna(&card).unwrap();
+    let c = CardContents::from_lsdyna(&card).unwrap();
     assert!(c.terms.len() < LSDYNA_MAX_TERMS, "{card}");
     assert!(card.contains("Prony terms for LS-DYNA"), "{card}");
     let _ = std::fs::remove_dir_all(&dir);
@@ -117,7 +119,7 @@ fn a_wlf_that_holds_over_part_of_the_shifts_goes_into_the_card_with_its_range() 
         .unwrap_or_else(|| panic!("{card}"));
     assert!(note.contains("only, where it holds") && stderr.contains("fitted over"));
     assert!(note.contains("to 60.00 degC"), "{note}");
-    let c = viscoroll::report::cards::read_abaqus(&card).unwrap();
+    let c = CardContents::from_abaqus(&card).unwrap();
     let Some(ShiftLaw::Wlf { t_ref_c, c1, c2_k }) = c.shift else {
         panic!("no WLF in {card}")
     };

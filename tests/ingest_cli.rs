@@ -150,3 +150,41 @@ fn several_files_in_one_measurement() {
     assert_eq!(v["summary"]["points"], 180);
     assert_eq!(v["files"][1]["nominal_temps_c"], serde_json::json!([5.0]));
 }
+
+#[test]
+fn ingest_cli_takes_a_column_mapping_and_prints_the_evidence() {
+    let out = Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+        .args([
+            "ingest",
+            "tests/data/formats/mapped_columns.csv",
+            "--columns",
+            "freq=Frq,temp=Tmp,storage=Mod1,loss=Mod2",
+            "--mode",
+            "tensile",
+            "--json",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["files"][0]["isotherms"], 4);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("evidence: --mode"), "{err}");
+    let bad = Command::new(env!("CARGO_BIN_EXE_viscoroll"))
+        .args([
+            "ingest",
+            "tests/data/formats/mapped_columns.csv",
+            "--columns",
+            "frq=Frq",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("unknown key `frq`"));
+}

@@ -49,15 +49,13 @@
 use crate::reference::{friction_at_length, SceneSi};
 use rayon::prelude::*;
 use std::path::PathBuf;
-use viscoroll::contact::cover::roll_cover;
+use viscoroll::contact::roll_cover;
 use viscoroll::contact::{roll, AutoSettings, Body, ContactSettings, Scene, Scheme};
 use viscoroll::creep::relaxation_to_creep;
-use viscoroll::pipeline::scenes::{friction_vs_temperature, SceneSet, COVER_TOL};
 use viscoroll::pipeline::{fit_files, FitOptions};
-use viscoroll::testdata::realistic::{
-    dma_csv, dma_rows, realistic_compounds, DmaProtocol, RealisticCompound,
-};
-use viscoroll::testdata::{loss_modulus, storage_modulus};
+use viscoroll::pipeline::{friction_vs_temperature, COVER_TOL};
+use viscoroll::results::SceneSet;
+use viscoroll::testdata::{dma_csv, dma_rows, realistic_compounds, DmaProtocol, RealisticCompound};
 use viscoroll::CreepSpectrum;
 
 /// Temperatures of the comparison, °C (the issue's −40 … +60 °C, every 10 K).
@@ -223,12 +221,12 @@ fn evaluate(
                 let w = 2.0 * std::f64::consts::PI * f;
                 let wt = w * 10f64.powf(compound.law.log10_a_t(t_ref_fit));
                 e1 = e1.max(
-                    (fit.relaxation.storage_modulus(w) / storage_modulus(&compound.spectrum, wt))
+                    (fit.relaxation.storage_modulus(w) / compound.spectrum.storage_modulus(wt))
                         .log10()
                         .abs(),
                 );
                 e2 = e2.max(
-                    (fit.relaxation.loss_modulus(w) / loss_modulus(&compound.spectrum, wt))
+                    (fit.relaxation.loss_modulus(w) / compound.spectrum.loss_modulus(wt))
                         .log10()
                         .abs(),
                 );
@@ -240,8 +238,7 @@ fn evaluate(
         let omegas: Vec<f64> = (0..=160)
             .map(|k| 2.0 * std::f64::consts::PI * 10f64.powf(-8.0 + 0.1 * k as f64))
             .collect();
-        let interconversion =
-            viscoroll::creep::exact::max_product_error(&fit.relaxation, &fit_creep, &omegas);
+        let interconversion = fit.relaxation.max_product_error(&fit_creep, &omegas);
         let mut fig = Figures {
             name: compound.name.clone(),
             shift: shift_err.iter().map(|(_, e)| e.abs()).fold(0.0, f64::max),
@@ -633,7 +630,7 @@ fn known_truth_other_seeds() {
 /// decade). Bounds: median 1 %, worst 5 % (the stress case's; the 2 % is not met here).
 #[test]
 fn known_truth_narrow_transition() {
-    let compounds = vec![viscoroll::testdata::realistic::non_overlapping_compounds()[0].clone()];
+    let compounds = vec![viscoroll::testdata::non_overlapping_compounds()[0].clone()];
     let summary = evaluate(
         &compounds,
         &DmaProtocol::default(),
@@ -705,7 +702,7 @@ fn known_truth_noise_free_bias() {
 /// and what to do, not only that the solver failed.
 #[test]
 fn a_loss_factor_no_dma_resolves_is_named_when_the_fit_fails() {
-    let compound = viscoroll::testdata::realistic::non_overlapping_compounds()[1].clone();
+    let compound = viscoroll::testdata::non_overlapping_compounds()[1].clone();
     let protocol = DmaProtocol {
         noise_storage_rel: 0.0,
         noise_loss_rel: 0.0,

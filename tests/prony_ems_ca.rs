@@ -5,33 +5,10 @@
 //! Published comparison (data/SOURCES.md): pyvisco's NNLS fit of its own master curve, 19 terms,
 //! RMS log10 error ≈ 0.04 on E′ and ≈ 0.15 on E″.
 
-use viscoroll::prony::{fit_prony, log10_errors, MasterPoint, PronySettings};
+use viscoroll::prony::{fit_prony, MasterPoint, PronySettings};
 use viscoroll::ModulusKind;
 
-/// Read `f [Hz], E_stor [MPa], E_loss [MPa]` (a name row, then a unit row) into points in Pa.
-pub fn ems_ca_master() -> Vec<MasterPoint> {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/data/pyvisco-ems-ca/freq_user_master.csv"
-    );
-    let mut rdr = csv::ReaderBuilder::new()
-        .has_headers(true)
-        .trim(csv::Trim::All)
-        .from_path(path)
-        .expect("open EMS-CA master curve");
-    let mut out = Vec::new();
-    for (i, rec) in rdr.records().enumerate() {
-        let rec = rec.expect("csv record");
-        if i == 0 {
-            // Unit row: the conversion below relies on it.
-            assert_eq!((&rec[0], &rec[1], &rec[2]), ("Hz", "MPa", "MPa"));
-            continue;
-        }
-        let v: Vec<f64> = rec.iter().map(|s| s.parse().expect("number")).collect();
-        out.push(MasterPoint::new(v[0], v[1] * 1e6, v[2] * 1e6));
-    }
-    out
-}
+pub use crate::shipped::ems_ca_master;
 
 /// Default settings (2 per decade, GCV, equal weights): the solve ends `Solved`, E″ is fitted within
 /// pyvisco's published 0.15, and the reported errors are those of the returned spectrum.
@@ -49,7 +26,7 @@ fn ems_ca_default_fit() {
     assert!(i.rms_log10_loss <= 0.15, "{i:?}");
     assert!(i.rms_log10_storage <= 0.10, "{i:?}");
     // Independent recomputation of the reported figures from the spectrum alone.
-    let e = log10_errors(&pts, &fit.spectrum);
+    let e = fit.spectrum.log10_errors(&pts);
     assert_eq!(
         (e.rms_storage, e.rms_loss),
         (i.rms_log10_storage, i.rms_log10_loss)
@@ -132,9 +109,9 @@ fn pyvisco_master(file: &str) -> Vec<MasterPoint> {
 fn pyvisco_fit(file: &str, pts: &[MasterPoint]) -> (usize, f64, f64) {
     let path = format!("{}/data/pyvisco-ems-ca/{file}", env!("CARGO_MANIFEST_DIR"));
     let s =
-        viscoroll::prony::pyvisco_csv::read_pyvisco_terms(file, &std::fs::read(path).unwrap(), 0.5)
+        viscoroll::RelaxationSpectrum::from_pyvisco_csv(file, &std::fs::read(path).unwrap(), 0.5)
             .unwrap();
-    let e = log10_errors(pts, &s);
+    let e = s.log10_errors(pts);
     (s.terms.len(), e.rms_storage, e.rms_loss)
 }
 
@@ -223,7 +200,7 @@ fn fit_flag_loss_weight_reaches_the_fit() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", crate::support::stderr(&o));
-    let fit = viscoroll::pipeline::CompoundFit::read(&out).unwrap();
+    let fit = viscoroll::results::CompoundFit::read(&out).unwrap();
     let (_, e1, e2) = ours(&pyvisco_master("freq_user_master.csv"), 26, 0.12);
     let i = &fit.prony_info;
     assert!((i.rms_log10_storage - e1).abs() < 1e-9 && (i.rms_log10_loss - e2).abs() < 1e-9);

@@ -7,7 +7,7 @@
 use crate::support::temp_dir;
 use std::path::PathBuf;
 use std::process::Command;
-use viscoroll::dma::pyvisco::{master_csv, read_master_pair, shift_csv, PyviscoMaster};
+use viscoroll::dma::PyviscoMaster;
 use viscoroll::{ModulusKind, ShiftLaw};
 
 fn data(p: &str) -> PathBuf {
@@ -54,7 +54,7 @@ fn shipped_paths() -> (PathBuf, PathBuf) {
 /// The shipped pair read by our reader (ν = 0.5, reference temperature from the table).
 fn shipped_pair() -> PyviscoMaster {
     let (mc, sf) = shipped_paths();
-    read_master_pair(&mc, &sf, 0.5, None).unwrap()
+    PyviscoMaster::read(&mc, &sf, 0.5, None).unwrap()
 }
 
 #[test]
@@ -95,9 +95,9 @@ fn read_write_read_is_equal_to_rounding() {
     };
     let dir = temp_dir("pyvisco-rw");
     let (m, s) = (dir.join("m.csv"), dir.join("m__shift_factors.csv"));
-    std::fs::write(&m, master_csv(ModulusKind::Tensile, &pts)).unwrap();
-    std::fs::write(&s, shift_csv(shifts)).unwrap();
-    let back = read_master_pair(&m, &s, 0.5, None).unwrap();
+    std::fs::write(&m, PyviscoMaster::master_csv(ModulusKind::Tensile, &pts)).unwrap();
+    std::fs::write(&s, PyviscoMaster::shift_csv(shifts)).unwrap();
+    let back = PyviscoMaster::read(&m, &s, 0.5, None).unwrap();
     assert_eq!(back.t_ref_c, pv.t_ref_c);
     assert_eq!(back.shift_law, pv.shift_law);
     let mut worst = 0f64;
@@ -170,8 +170,8 @@ fn fit_export_fit_round_trip_and_the_ansys_fit_beside_ours() {
         "-o",
         fit2.to_str().unwrap(),
     ]);
-    let read = |p: &std::path::Path| -> viscoroll::pipeline::CompoundFit {
-        viscoroll::pipeline::CompoundFit::read(p).unwrap()
+    let read = |p: &std::path::Path| -> viscoroll::results::CompoundFit {
+        viscoroll::results::CompoundFit::read(p).unwrap()
     };
     let (a, b) = (read(&fit1), read(&fit2));
     // The same points (to ≤ 2 ulp) give the same fit: the spectra agree to far below any figure
@@ -187,7 +187,7 @@ fn fit_export_fit_round_trip_and_the_ansys_fit_beside_ours() {
 
     // Beside ANSYS's fit of the same curve: its card gives relative moduli; E₀ is taken as E′ at the
     // top of the curve over the card's unit-E₀ model (as in spectra_cards.rs).
-    let card = viscoroll::report::cards::read_ansys(
+    let card = viscoroll::report::CardContents::from_ansys(
         &std::fs::read_to_string(data("ansys_prony_terms_freq_user_master.MPL")).unwrap(),
     )
     .unwrap();
@@ -249,8 +249,7 @@ fn run_takes_a_pyvisco_master_curve_listed_in_compounds_toml() {
     let err = String::from_utf8_lossy(&o.stderr);
     // 0, or 3 when a quality bound flags the fit: either way the compound was fitted and rolled.
     assert!(matches!(o.status.code(), Some(0) | Some(3)), "{err}");
-    let fit =
-        viscoroll::pipeline::CompoundFit::read(&out.join("fits/ems-ca-pyvisco.json")).unwrap();
+    let fit = viscoroll::results::CompoundFit::read(&out.join("fits/ems-ca-pyvisco.json")).unwrap();
     assert_eq!(fit.master_curve.len(), 206);
     assert_eq!(fit.shift_law.t_ref_c(), -5.0);
     let ranking = std::fs::read_to_string(out.join("reports/ranking.csv")).unwrap();

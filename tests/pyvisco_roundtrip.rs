@@ -21,8 +21,6 @@
 use crate::support::{stderr, temp_dir, viscoroll};
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use viscoroll::prony::pyvisco_csv::read_pyvisco_terms;
-use viscoroll::testdata::{loss_modulus, storage_modulus};
 
 /// A Python that imports pyvisco, or why there is none: made once for the tests of this binary
 /// (they run in threads; the first one makes it, the others wait for it).
@@ -87,8 +85,8 @@ fn worst_against(s: &viscoroll::RelaxationSpectrum, path: &Path) -> f64 {
     for ((f, e1), e2) in c["f"].iter().zip(&c["E_stor"]).zip(&c["E_loss"]) {
         let w = 2.0 * std::f64::consts::PI * f;
         worst = worst
-            .max((storage_modulus(s, w) / (e1 * 1e6) - 1.0).abs())
-            .max((loss_modulus(s, w) / (e2 * 1e6) - 1.0).abs());
+            .max((s.storage_modulus(w) / (e1 * 1e6) - 1.0).abs())
+            .max((s.loss_modulus(w) / (e2 * 1e6) - 1.0).abs());
     }
     worst
 }
@@ -145,7 +143,7 @@ fn pyvisco_reads_our_files_and_we_read_its_prony_terms() {
     );
 
     // 1. raw-data path: pyvisco's master curve from its raw CSV and our shifts lies on ours
-    let fit = viscoroll::pipeline::CompoundFit::read(&f).unwrap();
+    let fit = viscoroll::results::CompoundFit::read(&f).unwrap();
     let mut ours: Vec<(f64, f64)> = fit
         .master_curve
         .iter()
@@ -171,8 +169,12 @@ fn pyvisco_reads_our_files_and_we_read_its_prony_terms() {
 
     // 2. pyvisco's Prony terms, read by us, give its own E', E''
     let terms = dir.join("prony_terms.csv");
-    let theirs =
-        read_pyvisco_terms("prony_terms.csv", &std::fs::read(&terms).unwrap(), 0.5).unwrap();
+    let theirs = viscoroll::RelaxationSpectrum::from_pyvisco_csv(
+        "prony_terms.csv",
+        &std::fs::read(&terms).unwrap(),
+        0.5,
+    )
+    .unwrap();
     let w = worst_against(&theirs, &dir.join("gmaxw.csv"));
     eprintln!(
         "pyvisco's Prony series ({} terms, E_inf {:.4e} Pa) read back: worst relative E', E'' {w:.2e}",
@@ -253,8 +255,9 @@ fn pyvisco_fits_our_time_domain_master_curve_and_we_read_its_terms() {
         String::from_utf8_lossy(&o.stderr)
     );
     let terms = std::fs::read(dir.join("prony_terms.csv")).unwrap();
-    let theirs = read_pyvisco_terms("prony_terms.csv", &terms, 0.5).unwrap();
-    let fit = viscoroll::pipeline::CompoundFit::read(&f).unwrap();
+    let theirs =
+        viscoroll::RelaxationSpectrum::from_pyvisco_csv("prony_terms.csv", &terms, 0.5).unwrap();
+    let fit = viscoroll::results::CompoundFit::read(&f).unwrap();
     let c = columns(&dir.join("time_fit.csv"));
     let (mut own, mut sum, mut worst) = (0.0f64, 0.0, 0.0f64);
     for (t, e) in c["t"].iter().zip(&c["E_relax"]) {

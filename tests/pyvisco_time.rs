@@ -7,10 +7,9 @@
 
 use crate::support::{stderr, temp_dir, viscoroll};
 use std::path::Path;
-use viscoroll::dma::pyvisco::shift_csv;
-use viscoroll::dma::pyvisco_time::{read_time_master, time_master_csv, time_master_from_bytes};
-use viscoroll::pipeline::fit_time::fit_pyvisco_time_master;
-use viscoroll::pipeline::{CompoundFit, FitOptions};
+use viscoroll::dma::{PyviscoMaster, PyviscoTimeMaster};
+use viscoroll::pipeline::{fit_pyvisco_time_master, FitOptions};
+use viscoroll::results::CompoundFit;
 use viscoroll::testdata::broad_spectrum;
 use viscoroll::{ModulusKind, ShiftLaw};
 
@@ -46,8 +45,12 @@ pub(crate) fn write_pair(dir: &Path) -> (std::path::PathBuf, std::path::PathBuf)
         dir.join("time_master.csv"),
         dir.join("time_master__shift_factors.csv"),
     );
-    std::fs::write(&m, time_master_csv(ModulusKind::Tensile, &pts)).unwrap();
-    std::fs::write(&sf, shift_csv(&shifts)).unwrap();
+    std::fs::write(
+        &m,
+        PyviscoTimeMaster::master_csv(ModulusKind::Tensile, &pts),
+    )
+    .unwrap();
+    std::fs::write(&sf, PyviscoMaster::shift_csv(&shifts)).unwrap();
     (m, sf)
 }
 
@@ -81,7 +84,7 @@ fn a_time_domain_master_curve_is_fitted_back_with_and_without_its_shift_file() {
     let dir = temp_dir("pyvisco-time");
     let (m, sf) = write_pair(&dir);
     let options = FitOptions::default();
-    let with = read_time_master(&m, Some(&sf), 0.5, None).unwrap();
+    let with = PyviscoTimeMaster::read(&m, Some(&sf), 0.5, None).unwrap();
     assert_eq!(with.t_ref_c, 20.0, "the table's row with log a_T = 0");
     let fit = fit_pyvisco_time_master("t", &with, &options).unwrap();
     let (e_t, e_w) = worst_errors(&fit);
@@ -110,7 +113,7 @@ fn a_time_domain_master_curve_is_fitted_back_with_and_without_its_shift_file() {
     }
 
     // without the shift file: the temperature is stated, the law is a single temperature's
-    let without = read_time_master(&m, None, 0.5, Some(20.0)).unwrap();
+    let without = PyviscoTimeMaster::read(&m, None, 0.5, Some(20.0)).unwrap();
     let fit2 = fit_pyvisco_time_master("t", &without, &options).unwrap();
     assert_eq!(
         fit2.relaxation, fit.relaxation,
@@ -122,7 +125,7 @@ fn a_time_domain_master_curve_is_fitted_back_with_and_without_its_shift_file() {
         warnings.iter().any(|w| w.contains("no shift-factor file")),
         "{warnings:?}"
     );
-    let e = read_time_master(&m, None, 0.5, None).unwrap_err();
+    let e = PyviscoTimeMaster::read(&m, None, 0.5, None).unwrap_err();
     assert!(e.to_string().contains("--tref"), "{e}");
 }
 
@@ -175,8 +178,9 @@ fn fit_takes_it_from_the_command_line_and_export_writes_it_back_in_time() {
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(text.starts_with("t,E_relax\ns,MPa\n"), "{text}");
     let shifts = std::fs::read(dir.join("back__shift_factors.csv")).unwrap();
-    let back = time_master_from_bytes("back.csv", text.as_bytes(), Some(("s", &shifts)), 0.5, None)
-        .unwrap();
+    let back =
+        PyviscoTimeMaster::from_bytes("back.csv", text.as_bytes(), Some(("s", &shifts)), 0.5, None)
+            .unwrap();
     let pts = &back.data.isotherms[0].points;
     assert_eq!(pts.len(), times().len());
     for p in pts {

@@ -14,11 +14,15 @@
 //! - shear stays shear: the datasheet of a compound whose fit is shear names G′, G″, G∞ and never
 //!   E′, E″, E∞.
 
-use crate::support::table;
+use crate::shipped::table;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-use viscoroll::report::chart::CUT_LEGEND;
-use viscoroll::report::datasheet::BAND_CLIP_FACTOR;
+/// The datasheet's legend for a band cut at the plot's edge (src/report/chart.rs `CUT_LEGEND`: a
+/// spec of the page, written again here so that the test reads the page as a user would).
+const CUT_LEGEND: &str = "band cut at edge";
+/// Bands are drawn no further than this factor beyond the curve's own range (the datasheet's
+/// `BAND_CLIP_FACTOR`, src/report/datasheet/mod.rs, written again here for the same reason).
+const BAND_CLIP_FACTOR: f64 = 10.0;
 
 /// The Chromium executable, if any.
 fn chromium() -> Option<PathBuf> {

@@ -5,7 +5,7 @@
 //! missing and names it.
 
 use crate::support::{run_main, stderr, temp_dir, viscoroll};
-use viscoroll::testdata::realistic::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
+use viscoroll::testdata::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 
 /// A library of `n` compounds: `C{k:02}.csv` (sorted names = numbering), each a realistic base
 /// compound with its own noise seed.

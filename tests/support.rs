@@ -50,29 +50,7 @@ pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
-/// A CSV table written by the main job: its header and rows as text. Read strictly, as a reader
-/// with no comment handling would (pandas' default): the csv crate refuses a row whose width
-/// differs from the header's, and a `#` line would be a row of one field.
-pub fn table(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let mut rd = csv::ReaderBuilder::new().from_reader(text.as_bytes());
-    let header: Vec<String> = rd
-        .headers()
-        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-        .iter()
-        .map(str::to_string)
-        .collect();
-    let rows = rd
-        .records()
-        .map(|r| {
-            r.unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-                .iter()
-                .map(str::to_string)
-                .collect()
-        })
-        .collect();
-    (header, rows)
-}
+pub use crate::shipped::table;
 
 /// The sidecar `NAME.meta.json` of the table `NAME.csv` at `path`, as JSON.
 pub fn table_meta(path: &Path) -> serde_json::Value {

@@ -4,8 +4,8 @@
 //! others ranked.
 
 use crate::support::{col, run_main, stderr, table, temp_dir};
-use viscoroll::dma::time_domain::TimeMode;
-use viscoroll::testdata::time_domain::{time_domain_csv, TimeSettings};
+use viscoroll::dma::TimeMode;
+use viscoroll::testdata::{time_domain_csv, TimeSettings};
 
 #[test]
 fn run_fits_relaxation_isotherms_in_time_and_ranks_only_what_they_determine() {

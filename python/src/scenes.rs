@@ -9,9 +9,9 @@
 use crate::opts::Opts;
 use crate::{stage_err, to_json, Stage};
 use pyo3::prelude::*;
-use viscoroll::contact::cover::roll_cover;
+use viscoroll::contact::roll_cover;
 use viscoroll::contact::{AutoSettings, Body, ContactSettings, Scene, Scheme};
-use viscoroll::pipeline::roll_fit::{roll_source_at, CreepSource};
+use viscoroll::pipeline::{roll_source_at, CreepSource};
 use viscoroll::results::{CompoundFit, SceneSet};
 
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -64,41 +64,9 @@ fn band(
     Result<viscoroll::results::FrictionBand, String>,
     Vec<String>,
 ) {
-    use viscoroll::bands;
-    let (CreepSource::Fit(fit), Some(t)) = (source, t) else {
-        return (Err("a bare creep spectrum carries no measurement scatter: bands need a fit file (`viscoroll fit` or `run`)".into()), vec![]);
-    };
-    let settings = bands::BandSettings::default();
-    let made;
-    let ensemble = match fit.bands.as_ref() {
-        Some(e) => e,
-        None => match bands::ensemble_from_fit(fit, &settings) {
-            Ok(e) => {
-                made = e;
-                &made
-            }
-            Err(e) => {
-                return (
-                    Err(format!("no ensemble could be made from the fit file: {e}")),
-                    vec![],
-                )
-            }
-        },
-    };
-    let ratios = bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
-    let (b, mut notes) = ratios.point_band(0, friction);
-    let b = b.map(|b| bands::widen(b, bands::between_sd_ln(&[]), 1));
-    notes.push(bands::specimens_note(1, bands::PRIOR_SD_LN));
-    if fit.bands.is_none() {
-        notes.push(bands::FROM_FIT_FILE_NOTE.to_string());
-    }
-    match b {
-        Some(b) => (Ok(b), notes),
-        None if notes.is_empty() => (
-            Err("too few replicate solves succeeded for a band".into()),
-            vec![],
-        ),
-        None => (Err(notes.join("; ")), vec![]),
+    match viscoroll::pipeline::point_band(source, scene, cover_m, t, friction) {
+        Ok((b, notes)) => (Ok(b), notes),
+        Err(why) => (Err(why), vec![]),
     }
 }
 
@@ -266,7 +234,7 @@ fn roll_covered(
 ) -> Result<serde_json::Value, anyhow::Error> {
     let (spectrum, shifted, mut warnings) = match (source, t) {
         (CreepSource::Fit(fit), Some(t)) => {
-            let (at, w) = viscoroll::pipeline::roll_fit::fit_spectrum_at(fit, t)?;
+            let (at, w) = viscoroll::pipeline::fit_spectrum_at(fit, t)?;
             (
                 at.spectrum.clone(),
                 Some(at),
@@ -339,10 +307,10 @@ fn maps(py: Python<'_>, fit_json: &str, scene_json: &str) -> PyResult<String> {
     let spec = scene_spec(scene_json)?;
     let m = py
         .detach(|| {
-            viscoroll::pipeline::scenes::friction_maps(
+            viscoroll::pipeline::friction_maps(
                 &fit,
                 &spec,
-                &viscoroll::pipeline::scenes::pipeline_map_settings(),
+                &viscoroll::pipeline::pipeline_map_settings(),
             )
         })
         .map_err(stage_err(stage))?;

@@ -11,8 +11,7 @@ use crate::opts::Opts;
 use crate::{stage_err, to_json, Stage};
 use pyo3::prelude::*;
 use viscoroll::dma::{self, Format, IngestOptions, Measurement};
-use viscoroll::pipeline::fit_compound::{fit_master_curve, fit_measurement_master, FitOptions};
-use viscoroll::pipeline::tuning::{self, FitTuning};
+use viscoroll::pipeline::{fit_master_curve, fit_measurement_master, FitOptions, FitTuning};
 use viscoroll::tts::MasterSettings;
 use viscoroll::{ModulusKind, RelaxationSpectrum};
 
@@ -108,22 +107,16 @@ fn ingest_options(json: &str) -> PyResult<IngestOptions> {
         );
     }
     if let Some(u) = o.str("modulus_unit")? {
-        opts.modulus_unit = Some(
-            dma::units::ModulusUnit::parse(&u)
-                .ok_or_else(|| bad("modulus_unit", &u, dma::units::MODULUS_UNITS))?,
-        );
+        opts.set_unit("modulus", &u)
+            .map_err(|e| stage_err(stage)(anyhow::anyhow!("modulus_unit {e}")))?;
     }
     if let Some(u) = o.str("freq_unit")? {
-        opts.freq_unit = Some(
-            dma::units::FreqUnit::parse(&u)
-                .ok_or_else(|| bad("freq_unit", &u, dma::units::FREQ_UNITS))?,
-        );
+        opts.set_unit("freq", &u)
+            .map_err(|e| stage_err(stage)(anyhow::anyhow!("freq_unit {e}")))?;
     }
     if let Some(u) = o.str("temp_unit")? {
-        opts.temp_unit = Some(
-            dma::units::TempUnit::parse(&u)
-                .ok_or_else(|| bad("temp_unit", &u, dma::units::TEMP_UNITS))?,
-        );
+        opts.set_unit("temp", &u)
+            .map_err(|e| stage_err(stage)(anyhow::anyhow!("temp_unit {e}")))?;
     }
     if let Some(m) = o.str("mode")? {
         opts.mode = Some(match m.to_ascii_lowercase().as_str() {
@@ -171,8 +164,6 @@ pub(crate) fn fit_tuning(o: &Opts, stage: Stage) -> PyResult<(Option<f64>, FitTu
         viscoroll::limits::temperature_c("tref", t)
             .map_err(|e| stage_err(stage)(anyhow::anyhow!(e.reason)))?;
     }
-    let parsed =
-        |key: &'static str| move |e: String| stage_err(stage)(anyhow::anyhow!("{key}: {e}"));
     let mut t = FitTuning {
         nominal: o.flag("nominal")?,
         reduce: o.flag("reduce")?,
@@ -184,31 +175,25 @@ pub(crate) fn fit_tuning(o: &Opts, stage: Stage) -> PyResult<(Option<f64>, FitTu
             "max_terms: must be at least 1"
         )));
     }
-    if let Some(s) = o.str("shift")? {
-        t.shift =
-            Some(tuning::parse_shift(&s, tref, std::path::Path::new("")).map_err(parsed("shift"))?);
-    }
-    if let Some(s) = o.str("vertical")? {
-        t.vertical = Some(tuning::parse_vertical(&s).map_err(parsed("vertical"))?);
-    }
-    if let Some(s) = o.str("criterion")? {
-        t.criterion = Some(tuning::parse_criterion(&s).map_err(parsed("criterion"))?);
-    }
-    if let Some(s) = o.str("law")? {
-        t.law = Some(tuning::parse_law(&s).map_err(parsed("law"))?);
-    }
-    if let Some(s) = o.str("fit_range")? {
-        t.fit_range_c = Some(tuning::parse_fit_range(&s).map_err(parsed("fit_range"))?);
-    }
-    if let Some(s) = o.str("target_rms")? {
-        t.target_rms = Some(tuning::parse_target_rms(&s).map_err(parsed("target_rms"))?);
+    for key in [
+        "shift",
+        "vertical",
+        "criterion",
+        "law",
+        "fit_range",
+        "target_rms",
+    ] {
+        if let Some(text) = o.str(key)? {
+            t.set_text(key, &text, tref, std::path::Path::new(""))
+                .map_err(|e| stage_err(stage)(anyhow::anyhow!(e)))?;
+        }
     }
     Ok((tref, t))
 }
 
 /// A measurement JSON, checked like any export (crate::dma::plausible, as `master` and `fit` read it).
 fn measurement(stage: Stage, json: &str) -> PyResult<Measurement> {
-    dma::plausible::measurement_from_json("measurement", json).map_err(stage_err(stage))
+    Measurement::from_json("measurement", json).map_err(stage_err(stage))
 }
 
 /// The master curve of a measurement (JSON), with `viscoroll master`'s settings.
@@ -241,9 +226,8 @@ fn pyvisco_pair(
     poisson: f64,
     tref: Option<f64>,
 ) -> PyResult<(Measurement, viscoroll::tts::MasterCurve)> {
-    let pv =
-        dma::pyvisco::master_pair_from_bytes(master.0, master.1, shifts.0, shifts.1, poisson, tref)
-            .map_err(stage_err(stage))?;
+    let pv = dma::PyviscoMaster::from_bytes(master.0, master.1, shifts.0, shifts.1, poisson, tref)
+        .map_err(stage_err(stage))?;
     let mc = viscoroll::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
         .map_err(|e| stage_err(stage)(anyhow::Error::new(e).context(master.0.to_string())))?;
     Ok((pv.measurement, mc))
@@ -300,9 +284,7 @@ fn fit(
                         f.bands = Some(e);
                         None
                     }
-                    Err(e) => Some(viscoroll::results::cap_line(&format!(
-                        "uncertainty bands not computed: {e}"
-                    ))),
+                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
                 },
             };
             Ok((f, why))
@@ -398,8 +380,8 @@ fn convert(relaxation_json: &str, method: &str, variant: &str) -> PyResult<Strin
             )))
         }
     };
-    let (wmin, wmax, omegas) = viscoroll::creep::exact::check_frequencies(&relax);
-    let product = viscoroll::creep::exact::max_product_error(&relax, &creep, &omegas);
+    let (wmin, wmax, omegas) = relax.check_frequencies();
+    let product = relax.max_product_error(&creep, &omegas);
     let obj = serde_json::json!({
         "method": method,
         "variant": variant,
@@ -419,7 +401,7 @@ fn convert(relaxation_json: &str, method: &str, variant: &str) -> PyResult<Strin
 
 /// pyvisco's Prony-term CSV (bytes) → a relaxation spectrum (JSON).
 fn pyvisco_terms_read(name: &str, csv: Vec<u8>, poisson: f64) -> PyResult<String> {
-    let s = viscoroll::prony::pyvisco_csv::read_pyvisco_terms(name, &csv, poisson)
+    let s = RelaxationSpectrum::from_pyvisco_csv(name, &csv, poisson)
         .map_err(stage_err(Stage::Convert))?;
     to_json(Stage::Convert, &s)
 }
@@ -428,7 +410,7 @@ fn pyvisco_terms_read(name: &str, csv: Vec<u8>, poisson: f64) -> PyResult<String
 fn pyvisco_terms_write(relaxation_json: &str) -> PyResult<String> {
     let s: RelaxationSpectrum =
         serde_json::from_str(relaxation_json).map_err(stage_err(Stage::Convert))?;
-    Ok(viscoroll::prony::pyvisco_csv::pyvisco_terms_csv(&s))
+    Ok(s.to_pyvisco_csv())
 }
 
 /// Write a fit (JSON) as a fit file, as `viscoroll fit` writes it (atomically, with its content

@@ -56,29 +56,33 @@
 //! errors of the instrument (clamping, compliance, thermocouple calibration) that the data cannot
 //! show.
 
-pub mod between;
-pub mod compare;
-pub mod ensemble;
-pub mod error;
-pub mod friction;
-pub mod model;
-pub mod rng;
-pub mod scene;
-pub mod window;
+pub(crate) mod between;
+pub(crate) mod compare;
+pub(crate) mod ensemble;
+pub(crate) mod error;
+pub(crate) mod friction;
+pub(crate) mod model;
+pub(crate) mod rng;
+pub(crate) mod scene;
+pub(crate) mod window;
 
-pub use between::{between_sd_ln, specimens_note, widen, PRIOR_SD_LN};
-pub use compare::{comparisons, is_tie, prob_lower, prob_text, SIGNIFICANCE};
-pub use ensemble::{build_ensemble, ensemble_from_fit, FROM_FIT_FILE_NOTE};
+pub use between::PRIOR_SD_LN;
+pub(crate) use between::{between_sd_ln, specimens_note, widen};
+pub use compare::comparisons;
+pub(crate) use compare::{is_tie, prob_lower, prob_text, SIGNIFICANCE};
+pub(crate) use ensemble::FROM_FIT_FILE_NOTE;
+pub use ensemble::{build_ensemble, ensemble_from_fit};
 pub use error::BandError;
-pub use friction::{
+pub(crate) use friction::{
     band_of, mean_band, predict_from_half_space, replicate_choice, tail_alternatives, tail_note,
     too_many_failed, CoverSolve, COVER_BAND_TOL,
 };
-pub use scene::{
-    cover_solved_temps, half_space_ratios, scene_bands_by, scene_bands_given, scene_bands_on,
-    scene_ratios_on, CoverMode, HalfSpaceRatios, SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
+pub(crate) use scene::{
+    cover_solved_temps, half_space_ratios, scene_bands_by, scene_ratios_on, CoverMode,
+    HalfSpaceRatios, SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
 };
-pub use window::{window_note, WindowExcess, WindowSide, WIDENED_NOTE_START};
+pub use scene::{scene_bands_given, scene_bands_on};
+pub(crate) use window::{window_note, WindowExcess, WindowSide, WIDENED_NOTE_START};
 
 /// Settings of the bands.
 #[derive(Debug, Clone, PartialEq)]

@@ -206,7 +206,7 @@ fn source(args: &Args) -> anyhow::Result<Source> {
             (None, Some(mc), sf) => {
                 let pv = match sf {
                     Some(sf) => {
-                        crate::dma::pyvisco::read_master_pair(mc, sf, args.poisson, args.tref)?
+                        crate::dma::pyvisco::PyviscoMaster::read(mc, sf, args.poisson, args.tref)?
                     }
                     None => crate::dma::pyvisco::read_master_alone(mc, args.poisson, args.tref)?,
                 };

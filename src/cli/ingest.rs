@@ -64,28 +64,16 @@ fn options(a: &Args) -> anyhow::Result<IngestOptions> {
         o.format = Some(f.parse::<Format>().map_err(anyhow::Error::msg)?);
     }
     if let Some(u) = &a.modulus_unit {
-        o.modulus_unit = Some(dma::units::ModulusUnit::parse(u).ok_or_else(|| {
-            anyhow::anyhow!(
-                "--modulus-unit `{u}`: expected one of {}",
-                dma::units::MODULUS_UNITS
-            )
-        })?);
+        o.set_unit("modulus", u)
+            .map_err(|e| anyhow::anyhow!("--modulus-unit {e}"))?;
     }
     if let Some(u) = &a.freq_unit {
-        o.freq_unit = Some(dma::units::FreqUnit::parse(u).ok_or_else(|| {
-            anyhow::anyhow!(
-                "--freq-unit `{u}`: expected one of {}",
-                dma::units::FREQ_UNITS
-            )
-        })?);
+        o.set_unit("freq", u)
+            .map_err(|e| anyhow::anyhow!("--freq-unit {e}"))?;
     }
     if let Some(u) = &a.temp_unit {
-        o.temp_unit = Some(dma::units::TempUnit::parse(u).ok_or_else(|| {
-            anyhow::anyhow!(
-                "--temp-unit `{u}`: expected one of {}",
-                dma::units::TEMP_UNITS
-            )
-        })?);
+        o.set_unit("temp", u)
+            .map_err(|e| anyhow::anyhow!("--temp-unit {e}"))?;
     }
     if let Some(m) = &a.mode {
         o.mode = Some(match m.to_ascii_lowercase().as_str() {

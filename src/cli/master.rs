@@ -65,7 +65,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         }
         (None, Some(mc), Some(sf)) => {
             // Read already shifted: no shifting; the table of shift factors is the law.
-            let pv = crate::dma::pyvisco::read_master_pair(mc, sf, 0.5, args.tref)?;
+            let pv = crate::dma::pyvisco::PyviscoMaster::read(mc, sf, 0.5, args.tref)?;
             crate::tts::master_curve_from_reduced(&pv.measurement, &pv.shift_law)
                 .with_context(|| format!("{}", mc.display()))?
         }

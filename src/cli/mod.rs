@@ -57,7 +57,7 @@ fn temp_c(s: &str) -> Result<f64, String> {
 }
 
 /// The exit codes, as printed by `--help`.
-pub const EXIT_CODES: &str = "Exit codes: 0 success; 1 bad input or a failed computation (for `run`: \
+pub(crate) const EXIT_CODES: &str = "Exit codes: 0 success; 1 bad input or a failed computation (for `run`: \
 some compound failed, or the folder holds none); 2 usage error; 3 `run` finished, but some results \
 are not trusted (a fit out of its quality bounds, or a friction that could not be computed: listed \
 apart in ranking.csv and index.html). With --json a failure also prints {\"error\": …, \"kind\": …} \
@@ -65,7 +65,7 @@ on stdout.";
 
 /// An error that ends the program with its own exit code (the message is printed as usual).
 #[derive(Debug)]
-pub struct Exit {
+pub(crate) struct Exit {
     /// The exit code.
     pub code: i32,
     /// `kind` in the JSON error object.
@@ -191,7 +191,7 @@ pub fn run() -> i32 {
 }
 
 /// [`run`] on given arguments (the first is the program name).
-pub fn run_with(args: Vec<std::ffi::OsString>) -> i32 {
+pub(crate) fn run_with(args: Vec<std::ffi::OsString>) -> i32 {
     let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
         Err(e) if !e.use_stderr() => {

@@ -81,35 +81,10 @@ fn band_or_why(
     if args.no_bands {
         return Err("skipped (--no-bands)".into());
     }
-    let (CreepSource::Fit(fit), Some(t)) = (source, args.temp_c) else {
-        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file (`viscoroll fit` or `run`)".into());
-    };
-    let settings = crate::bands::BandSettings::default();
-    // A fit file without an ensemble gets one made from the fit file alone (its note says what
-    // that leaves out).
-    let made;
-    let ensemble = match fit.bands.as_ref() {
-        Some(e) => e,
-        None => {
-            made = crate::bands::ensemble_from_fit(fit, &settings)
-                .map_err(|e| format!("no ensemble could be made from the fit file: {e}"))?;
-            &made
-        }
-    };
-    let bands = crate::bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
-    let (band, mut notes) = bands.point_band(0, friction);
-    // The between-specimen term as `run` adds it (docs/MATH.md §16): a fit file does not carry its
-    // specimens' own frictions, so the default spread of one specimen applies, and the note says so.
-    let band = band.map(|b| crate::bands::widen(b, crate::bands::between_sd_ln(&[]), 1));
-    notes.push(crate::bands::specimens_note(1, crate::bands::PRIOR_SD_LN));
-    if fit.bands.is_none() {
-        notes.push(crate::bands::FROM_FIT_FILE_NOTE.to_string());
-    }
-    Ok(match band {
-        Some(b) => RollBand { band: Ok(b), notes },
-        None if notes.is_empty() => {
-            Err("too few replicate solves succeeded for a band".to_string()).into()
-        }
-        None => Err(notes.join("; ")).into(),
-    })
+    Ok(
+        match crate::pipeline::point_band(source, scene, cover_m, args.temp_c, friction) {
+            Ok((b, notes)) => RollBand { band: Ok(b), notes },
+            Err(why) => Err(why).into(),
+        },
+    )
 }

@@ -17,26 +17,28 @@
 //! front (leading) edge at ξ = λ, creep function γ(ζ) = Σᵢ fᵢ e^(−bᵢζ) (eq. 3.7), unknown pressure Q′(ξ)
 //! and offset β, load N′ = 2∫Q′dξ (eq. 3.24), friction ρ·F/N = ∫Q′(ξ−β)dξ / ∫Q′dξ.
 
-pub mod body;
-pub mod cover;
-pub mod error;
-pub mod load;
-pub mod maps;
-pub mod problem;
-pub mod scene;
-pub mod settings;
+pub(crate) mod body;
+pub(crate) mod cover;
+pub(crate) mod error;
+pub(crate) mod load;
+pub(crate) mod maps;
+pub(crate) mod problem;
+pub(crate) mod scene;
+pub(crate) mod settings;
 
-pub use body::half_space;
+pub(crate) use body::half_space;
 pub use body::half_space::exact::{one_term_at_lambda, one_term_at_load, OneTermExact};
 pub use body::Body;
+pub use cover::roll_cover;
 pub use error::ContactError;
-pub use problem::{CreepTerm, Diagnostics, DimensionlessScene, DimensionlessSolution};
+pub(crate) use problem::DimensionlessScene;
+pub use problem::{CreepTerm, Diagnostics, DimensionlessSolution};
 pub use scene::{roll, RollSolution, Scene};
 pub use settings::{AutoSettings, ContactSettings, LoadSettings, Scheme};
 
 /// Solve the dimensionless problem on the half-space at contact length λ (the scheme of
 /// `settings`). For another body use [`body::solve_at_lambda`] with a [`DimensionlessScene`].
-pub fn solve_at_lambda(
+pub(crate) fn solve_at_lambda(
     terms: &[CreepTerm],
     lambda: f64,
     settings: &ContactSettings,
@@ -46,7 +48,7 @@ pub fn solve_at_lambda(
 
 /// Solve the dimensionless problem on the half-space at load N′ (the scheme of `settings`,
 /// `iterations` = solves made). For another body use [`body::solve_at_load`].
-pub fn solve_at_load(
+pub(crate) fn solve_at_load(
     terms: &[CreepTerm],
     load: f64,
     settings: &ContactSettings,

@@ -48,13 +48,13 @@ pub(crate) const FLUID_NO_STEADY_ROLLING: &str =
      foundation would have a steady state, but they are not solved for fluids; give a solid \
      (E∞ > 0), e.g. refit with the equilibrium modulus left free (docs/MATH.md §17).";
 
-pub mod error;
-pub mod exact;
-pub mod park_schapery;
-pub mod spectrum;
-pub mod time_fit;
+pub(crate) mod error;
+pub(crate) mod exact;
+pub(crate) mod park_schapery;
+pub(crate) mod spectrum;
+pub(crate) mod time_fit;
 
-pub use crate::material::AtTemperature;
+pub(crate) use crate::material::AtTemperature;
 pub use error::CreepError;
 pub use exact::{creep_to_relaxation, fluid_to_creep, relaxation_to_creep, ExactInfo, FluidCreep};
 pub use park_schapery::{

@@ -191,6 +191,13 @@ pub fn warnings(m: &Measurement) -> Vec<String> {
     w
 }
 
+impl Measurement {
+    /// A measurement JSON, parsed and checked like any export ([`measurement_from_json`]).
+    pub fn from_json(name: &str, text: &str) -> Result<Self, super::DmaError> {
+        measurement_from_json(name, text)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -33,49 +33,50 @@ pub struct PyviscoMaster {
     pub shift_law: ShiftLaw,
 }
 
-/// Read a pyvisco master curve and its shift-factor file ([`PyviscoMaster`]); `t_ref_c` is needed
-/// only when the shift table has no row with log a_T = 0.
-pub fn read_master_pair(
-    master: &std::path::Path,
-    shifts: &std::path::Path,
-    poisson: f64,
-    t_ref_c: Option<f64>,
-) -> Result<PyviscoMaster, DmaError> {
-    let read = |p: &std::path::Path| {
-        crate::fsutil::read_regular(p, crate::limits::INPUT_BYTES_MAX).map_err(|source| {
-            DmaError::Io {
-                file: p.display().to_string(),
-                source,
-            }
-        })
-    };
-    master_pair_from_bytes(
-        &master.display().to_string(),
-        &read(master)?,
-        &shifts.display().to_string(),
-        &read(shifts)?,
-        poisson,
-        t_ref_c,
-    )
-}
-
-/// [`read_master_pair`] on bytes already read.
-pub fn master_pair_from_bytes(
-    master_file: &str,
-    master: &[u8],
-    shift_file: &str,
-    shifts: &[u8],
-    poisson: f64,
-    t_ref_c: Option<f64>,
-) -> Result<PyviscoMaster, DmaError> {
-    let shift_law = super::shiftfactors::shift_table_from_bytes(shift_file, shifts, t_ref_c)?;
-    master_with_law(
-        master_file,
-        master,
-        Some((shift_file, shifts)),
-        shift_law,
-        poisson,
-    )
+impl PyviscoMaster {
+    /// Read a pyvisco master curve and its shift-factor file ([`PyviscoMaster`]); `t_ref_c` is needed
+    /// only when the shift table has no row with log a_T = 0.
+    pub fn read(
+        master: &std::path::Path,
+        shifts: &std::path::Path,
+        poisson: f64,
+        t_ref_c: Option<f64>,
+    ) -> Result<PyviscoMaster, DmaError> {
+        let read = |p: &std::path::Path| {
+            crate::fsutil::read_regular(p, crate::limits::INPUT_BYTES_MAX).map_err(|source| {
+                DmaError::Io {
+                    file: p.display().to_string(),
+                    source,
+                }
+            })
+        };
+        Self::from_bytes(
+            &master.display().to_string(),
+            &read(master)?,
+            &shifts.display().to_string(),
+            &read(shifts)?,
+            poisson,
+            t_ref_c,
+        )
+    }
+    /// [`PyviscoMaster::read`] on bytes already read.
+    pub fn from_bytes(
+        master_file: &str,
+        master: &[u8],
+        shift_file: &str,
+        shifts: &[u8],
+        poisson: f64,
+        t_ref_c: Option<f64>,
+    ) -> Result<PyviscoMaster, DmaError> {
+        let shift_law = super::shiftfactors::shift_table_from_bytes(shift_file, shifts, t_ref_c)?;
+        master_with_law(
+            master_file,
+            master,
+            Some((shift_file, shifts)),
+            shift_law,
+            poisson,
+        )
+    }
 }
 
 /// pyvisco's frequency-domain master curve without its shift-factor file: the curve as shifted to
@@ -367,6 +368,18 @@ pub fn shift_csv(shifts: &[(f64, f64)]) -> String {
     s
 }
 
+impl PyviscoMaster {
+    /// pyvisco's frequency-domain master-curve CSV of `points` ([`master_csv`]).
+    pub fn master_csv(kind: ModulusKind, points: &[(f64, f64, f64)]) -> String {
+        master_csv(kind, points)
+    }
+
+    /// pyvisco's shift-factor CSV of `shifts` ([`shift_csv`]).
+    pub fn shift_csv(shifts: &[(f64, f64)]) -> String {
+        shift_csv(shifts)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -374,7 +387,7 @@ mod tests {
     #[test]
     fn units_and_layouts_are_checked() {
         let sf = b"T,log_aT\nC,-\n20,1\n30,0\n";
-        let ok = master_pair_from_bytes(
+        let ok = PyviscoMaster::from_bytes(
             "m.csv",
             b"f,G_stor,G_loss\nHz,kPa,kPa\n1,2,3\n",
             "s.csv",
@@ -394,7 +407,7 @@ mod tests {
             b"f,E_stor,E_loss\nHz,MPa,MPa\n",
             b"f,E_stor\nHz,MPa\n1,2\n",
         ] {
-            assert!(master_pair_from_bytes("m.csv", bad, "s.csv", sf, 0.5, None).is_err());
+            assert!(PyviscoMaster::from_bytes("m.csv", bad, "s.csv", sf, 0.5, None).is_err());
         }
     }
 
@@ -404,9 +417,9 @@ mod tests {
     fn poisson_outside_its_range_is_refused() {
         let sf = b"T,log_aT\nC,-\n20,1\n30,0\n";
         let m = b"f,G_stor,G_loss\nHz,kPa,kPa\n1,2,3\n";
-        assert!(master_pair_from_bytes("m.csv", m, "s.csv", sf, 0.5, None).is_ok());
+        assert!(PyviscoMaster::from_bytes("m.csv", m, "s.csv", sf, 0.5, None).is_ok());
         for nu in [0.7, -1.0, f64::NAN] {
-            let err = master_pair_from_bytes("m.csv", m, "s.csv", sf, nu, None).unwrap_err();
+            let err = PyviscoMaster::from_bytes("m.csv", m, "s.csv", sf, nu, None).unwrap_err();
             assert!(
                 matches!(&err, DmaError::Setting { field, .. } if field == "poisson"),
                 "{err}"

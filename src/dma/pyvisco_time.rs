@@ -260,6 +260,34 @@ pub fn time_master_csv(kind: ModulusKind, points: &[(f64, f64)]) -> String {
     s
 }
 
+impl PyviscoTimeMaster {
+    /// Read a time-domain master curve and its shift file, if any ([`read_time_master`]).
+    pub fn read(
+        master: &std::path::Path,
+        shifts: Option<&std::path::Path>,
+        poisson: f64,
+        t_ref_c: Option<f64>,
+    ) -> Result<Self, DmaError> {
+        read_time_master(master, shifts, poisson, t_ref_c)
+    }
+
+    /// [`PyviscoTimeMaster::read`] on bytes already read ([`time_master_from_bytes`]).
+    pub fn from_bytes(
+        master_file: &str,
+        master: &[u8],
+        shifts: Option<(&str, &[u8])>,
+        poisson: f64,
+        t_ref_c: Option<f64>,
+    ) -> Result<Self, DmaError> {
+        time_master_from_bytes(master_file, master, shifts, poisson, t_ref_c)
+    }
+
+    /// pyvisco's time-domain master-curve CSV of `points` ([`time_master_csv`]).
+    pub fn master_csv(kind: ModulusKind, points: &[(f64, f64)]) -> String {
+        time_master_csv(kind, points)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -57,6 +57,23 @@ impl Default for IngestOptions {
 }
 
 impl IngestOptions {
+    /// Set a unit from its text: `which` is `modulus`, `freq` or `temp`. The error lists the
+    /// units known (the caller names its key or flag before it).
+    pub fn set_unit(&mut self, which: &str, text: &str) -> Result<(), String> {
+        use super::units::{FREQ_UNITS, MODULUS_UNITS, TEMP_UNITS};
+        let none = |known: &str| format!("`{text}`: expected one of {known}");
+        match which {
+            "modulus" => {
+                self.modulus_unit =
+                    Some(ModulusUnit::parse(text).ok_or_else(|| none(MODULUS_UNITS))?)
+            }
+            "freq" => self.freq_unit = Some(FreqUnit::parse(text).ok_or_else(|| none(FREQ_UNITS))?),
+            "temp" => self.temp_unit = Some(TempUnit::parse(text).ok_or_else(|| none(TEMP_UNITS))?),
+            _ => return Err(format!("{which}: not a unit (modulus, freq or temp)")),
+        }
+        Ok(())
+    }
+
     fn validate(&self) -> Result<(), DmaError> {
         // ν of an isotropic stable solid lies in (−1, 0.5].
         if !(self.poisson > -1.0 && self.poisson <= 0.5) {

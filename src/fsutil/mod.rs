@@ -12,13 +12,14 @@
 //! Errors are [`std::io::Error`]s (kind `AlreadyExists` when `replace` is false and the file
 //! exists); callers wrap them in their stage's enum.
 
-pub mod jail;
-pub mod lock;
-pub mod read;
+pub(crate) mod jail;
+pub(crate) mod lock;
+pub(crate) mod read;
 
-pub use jail::Jail;
-pub use lock::{DirLock, LockHolder};
-pub use read::{read_regular, read_regular_to_string};
+pub(crate) use jail::Jail;
+pub use lock::DirLock;
+pub(crate) use lock::LockHolder;
+pub(crate) use read::{read_regular, read_regular_to_string};
 
 use rustix::fs::{AtFlags, Mode, OFlags};
 use rustix::io::Errno;

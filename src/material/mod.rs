@@ -20,10 +20,13 @@ mod checks;
 mod debye;
 mod kind;
 mod shift_law;
-pub mod units;
+pub(crate) mod units;
 
-pub use checks::{check_poisson, check_positive, check_wlf_constants, MaterialError};
-pub use debye::debye;
+pub use checks::MaterialError;
+pub(crate) use checks::{check_poisson, check_positive, check_wlf_constants};
+pub(crate) use debye::debye;
 pub use kind::ModulusKind;
-pub use shift_law::{shift_at, AtTemperature, ShiftLaw};
-pub use units::{default_poisson, GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};
+pub(crate) use shift_law::shift_at;
+pub use shift_law::{AtTemperature, ShiftLaw};
+pub(crate) use units::default_poisson;
+pub(crate) use units::{GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};

@@ -234,30 +234,18 @@ impl ListedCompound {
             any = true;
         }
         if let Some(u) = &self.modulus_unit {
-            o.modulus_unit = Some(ModulusUnit::parse(u).ok_or_else(|| {
-                format!(
-                    "modulus_unit `{u}`: expected one of {}",
-                    crate::dma::units::MODULUS_UNITS
-                )
-            })?);
+            o.set_unit("modulus", u)
+                .map_err(|e| format!("modulus_unit {e}"))?;
             any = true;
         }
         if let Some(u) = &self.freq_unit {
-            o.freq_unit = Some(FreqUnit::parse(u).ok_or_else(|| {
-                format!(
-                    "freq_unit `{u}`: expected one of {}",
-                    crate::dma::units::FREQ_UNITS
-                )
-            })?);
+            o.set_unit("freq", u)
+                .map_err(|e| format!("freq_unit {e}"))?;
             any = true;
         }
         if let Some(u) = &self.temp_unit {
-            o.temp_unit = Some(TempUnit::parse(u).ok_or_else(|| {
-                format!(
-                    "temp_unit `{u}`: expected one of {}",
-                    crate::dma::units::TEMP_UNITS
-                )
-            })?);
+            o.set_unit("temp", u)
+                .map_err(|e| format!("temp_unit {e}"))?;
             any = true;
         }
         if let Some(c) = &self.columns {

@@ -5,29 +5,31 @@
 //! [`RunSummary`]. The result types live one floor down, in crate::results.
 
 mod compare;
-pub mod compounds;
-pub mod error;
-pub mod fit_compound;
-pub mod fit_time;
+pub(crate) mod compounds;
+pub(crate) mod error;
+pub(crate) mod fit_compound;
+pub(crate) mod fit_time;
 mod folder;
-pub mod roll_fit;
-pub mod run;
-pub mod scenes;
-pub mod shard;
-pub mod specimens;
-pub mod trust;
-pub mod tuning;
+pub(crate) mod roll_fit;
+pub(crate) mod run;
+pub(crate) mod scenes;
+pub(crate) mod shard;
+pub(crate) mod specimens;
+pub(crate) mod trust;
+pub(crate) mod tuning;
 
 /// The fit file's types (crate::results::compound_fit), at their former path.
-pub use crate::results::compound_fit;
-pub use crate::results::CompoundFit;
+pub(crate) use crate::results::compound_fit;
+pub(crate) use crate::results::CompoundFit;
 pub use error::PipelineError;
 pub use fit_compound::{
-    fit_files, fit_master_curve, fit_measurement, fit_or_reuse, fit_or_reuse_master, FitOptions,
+    fit_files, fit_master_curve, fit_measurement, fit_measurement_master, FitOptions,
 };
-pub use run::{
-    run_all, run_all_with_progress, CompoundOutcome, ProgressEvent, RunOptions, RunStatus,
-    RunSummary,
-};
-pub use scenes::{SceneSet, SceneSpec};
+pub(crate) use fit_compound::{fit_or_reuse, fit_or_reuse_master};
+pub use fit_time::fit_pyvisco_time_master;
+pub use roll_fit::{fit_spectrum_at, point_band, roll_source_at, CreepSource};
+pub use run::{run_all, run_all_with_progress, ProgressEvent, RunOptions};
+pub(crate) use run::{CompoundOutcome, RunStatus, RunSummary};
+pub use scenes::{friction_maps, friction_vs_temperature, pipeline_map_settings, COVER_TOL};
+pub(crate) use scenes::{SceneSet, SceneSpec};
 pub use tuning::FitTuning;

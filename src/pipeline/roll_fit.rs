@@ -155,3 +155,46 @@ pub fn roll_source_at(
         warnings,
     })
 }
+
+/// The 90 % band of the friction `friction` of `scene` at `temp_c` (crate::bands), on a cover of
+/// `cover_m` bonded to a rigid carcass (solved as the main job solves a covered scene, eq. 15.6) or
+/// on the half-space (`None`), with the band's notes (as in friction.csv's note column), or why
+/// there is none. Shared by `viscoroll roll` and the Python package, so both say the same.
+pub fn point_band(
+    source: &CreepSource,
+    scene: &Scene,
+    cover_m: Option<f64>,
+    temp_c: Option<f64>,
+    friction: f64,
+) -> Result<(crate::results::FrictionBand, Vec<String>), String> {
+    use crate::bands;
+    let (CreepSource::Fit(fit), Some(t)) = (source, temp_c) else {
+        return Err("a bare creep spectrum carries no measurement scatter: bands need a fit file (`viscoroll fit` or `run`)".into());
+    };
+    let settings = bands::BandSettings::default();
+    // A fit file without an ensemble gets one made from the fit file alone (its note says what
+    // that leaves out).
+    let made;
+    let ensemble = match fit.bands.as_ref() {
+        Some(e) => e,
+        None => {
+            made = bands::ensemble_from_fit(fit, &settings)
+                .map_err(|e| format!("no ensemble could be made from the fit file: {e}"))?;
+            &made
+        }
+    };
+    let on = bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
+    let (band, mut notes) = on.point_band(0, friction);
+    // The between-specimen term as `run` adds it (docs/MATH.md §16): a fit file does not carry its
+    // specimens' own frictions, so the default spread of one specimen applies, and the note says so.
+    let band = band.map(|b| bands::widen(b, bands::between_sd_ln(&[]), 1));
+    notes.push(bands::specimens_note(1, bands::PRIOR_SD_LN));
+    if fit.bands.is_none() {
+        notes.push(bands::FROM_FIT_FILE_NOTE.to_string());
+    }
+    match band {
+        Some(b) => Ok((b, notes)),
+        None if notes.is_empty() => Err("too few replicate solves succeeded for a band".into()),
+        None => Err(notes.join("; ")),
+    }
+}

@@ -339,7 +339,7 @@ fn fit_shifted(
     opts: &RunOptions,
 ) -> Result<Fitted, PipelineError> {
     let poisson = c.settings.ingest.as_ref().map_or(0.5, |o| o.poisson);
-    let pv = crate::dma::pyvisco::read_master_pair(
+    let pv = crate::dma::pyvisco::PyviscoMaster::read(
         &c.files[0],
         shift_factors,
         poisson,

@@ -73,6 +73,29 @@ impl FitTuning {
         o.prony.reduce_terms |=
             self.reduce || self.max_terms.is_some() || self.target_rms.is_some();
     }
+
+    /// Set the option `key` from its text, as `compounds.toml` and the command line write it
+    /// (`shift`, `vertical`, `criterion`, `law`, `fit_range`, `target_rms`; a `shift` file is
+    /// found from `base`, a WLF or Arrhenius law is at `tref`); the error names the key.
+    pub fn set_text(
+        &mut self,
+        key: &str,
+        text: &str,
+        tref: Option<f64>,
+        base: &Path,
+    ) -> Result<(), String> {
+        let named = |e: String| format!("{key}: {e}");
+        match key {
+            "shift" => self.shift = Some(parse_shift(text, tref, base).map_err(named)?),
+            "vertical" => self.vertical = Some(parse_vertical(text).map_err(named)?),
+            "criterion" => self.criterion = Some(parse_criterion(text).map_err(named)?),
+            "law" => self.law = Some(parse_law(text).map_err(named)?),
+            "fit_range" => self.fit_range_c = Some(parse_fit_range(text).map_err(named)?),
+            "target_rms" => self.target_rms = Some(parse_target_rms(text).map_err(named)?),
+            _ => return Err(format!("{key}: not an option given as text")),
+        }
+        Ok(())
+    }
 }
 
 /// `vertical`: `fitted`, `temperature` or `none`.

@@ -7,22 +7,26 @@ use crate::material::ModulusKind;
 use serde::{Deserialize, Serialize};
 
 mod error;
-pub mod fit;
+pub(crate) mod fit;
 mod info;
-pub mod kernel;
-pub mod points;
-pub mod pyvisco_csv;
+pub(crate) mod kernel;
+pub(crate) mod points;
+pub(crate) mod pyvisco_csv;
 mod settings;
 #[cfg(test)]
 pub(crate) mod synthetic;
-pub mod terms;
-pub mod time_fit;
+pub(crate) mod terms;
+pub(crate) mod time_fit;
 
 pub use error::PronyError;
-pub use fit::{fit_prony, log10_errors, relaxation_times_s, MasterPoint, PronyFit};
-pub use info::{LambdaCandidate, PronyInfo};
+pub use fit::{fit_prony, MasterPoint, PronyFit};
+pub(crate) use fit::{log10_errors, relaxation_times_s};
+pub(crate) use info::LambdaCandidate;
+pub use info::PronyInfo;
 pub use settings::{PronySettings, WeightRule};
-pub use terms::{reduce_terms, TermControl, TermTrade};
+pub(crate) use terms::reduce_terms;
+pub use terms::TermControl;
+pub(crate) use terms::TermTrade;
 
 /// One relaxation term of a Prony series: Eᵢ e^(−t/ρᵢ).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

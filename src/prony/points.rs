@@ -90,3 +90,10 @@ fn unit_weight() -> [f64; 2] {
 fn is_unit_weight(w: &[f64; 2]) -> bool {
     *w == unit_weight()
 }
+
+impl RelaxationSpectrum {
+    /// RMS and largest |log10| errors of this spectrum's E′ and E″ on `points` ([`log10_errors`]).
+    pub fn log10_errors(&self, points: &[MasterPoint]) -> Log10Errors {
+        log10_errors(points, self)
+    }
+}

@@ -7,23 +7,28 @@
 //! lines, a sidecar `NAME.meta.json` beside each table ([`csv_meta`]). Imports only downward
 //! (results and the stages); the pipeline calls it.
 
-pub mod card_refit;
-pub mod card_shift;
-pub mod cards;
-pub mod chart;
-pub mod csv_meta;
-pub mod csv_text;
-pub mod datasheet;
-pub mod error;
-pub mod html;
-pub mod index;
-pub mod plots;
-pub mod ranking;
-pub mod ticks;
-pub mod workbook;
+pub(crate) mod card_refit;
+pub(crate) mod card_shift;
+pub(crate) mod cards;
+pub(crate) mod chart;
+pub(crate) mod csv_meta;
+pub(crate) mod csv_text;
+pub(crate) mod datasheet;
+pub(crate) mod error;
+pub(crate) mod html;
+pub(crate) mod index;
+pub(crate) mod plots;
+pub(crate) mod ranking;
+pub(crate) mod ticks;
+pub(crate) mod workbook;
 
+pub use cards::CardContents;
 pub use datasheet::{write_report, Measured};
-pub use error::{write_file, ReportError};
-pub use index::{index_html, write_index, TanDeltaProxy};
-pub use ranking::{ranked, ranking_csv, write_ranking};
+pub(crate) use error::write_file;
+pub use error::ReportError;
+pub(crate) use index::index_html;
+pub use index::write_index;
+pub(crate) use index::TanDeltaProxy;
+pub use ranking::write_ranking;
+pub(crate) use ranking::{ranked, ranking_csv};
 pub use workbook::write_workbook;

@@ -6,30 +6,31 @@
 //! solutions); output: types that are saved, read back and written into reports. Imports only the
 //! stages below it (dma, tts, prony, creep, contact's `Scene`).
 
-pub mod band_ensemble;
-pub mod compound_fit;
+pub(crate) mod band_ensemble;
+pub(crate) mod compound_fit;
 mod line;
-pub mod outcome;
-pub mod scene;
+pub(crate) mod outcome;
+pub(crate) mod scene;
 
-pub use band_ensemble::{
-    offset_at, BandEnsemble, BandReplicate, ModelErrorSummary, ScatterEstimate,
-};
+pub(crate) use band_ensemble::offset_at;
+pub use band_ensemble::BandEnsemble;
+pub(crate) use band_ensemble::{BandReplicate, ModelErrorSummary, ScatterEstimate};
+pub(crate) use compound_fit::COMPOUND_FIT_FORMAT_VERSION;
 pub use compound_fit::{
-    CompoundFit, CompoundFitError, FitSettings, InputHash, MeasurementSummary, Provenance,
-    QualityFigure, TtsSummary, COMPOUND_FIT_FORMAT_VERSION,
+    CompoundFit, CompoundFitError, FitSettings, MeasurementSummary, TtsSummary,
 };
+pub(crate) use compound_fit::{InputHash, Provenance, QualityFigure};
+pub(crate) use outcome::{cap_line, is_band_note, standing};
 pub use outcome::{
-    cap_line, is_band_note, standing, CompoundOutcome, PairComparison, RunStatus, RunSummary,
-    SceneStanding, TrustLevel,
+    CompoundOutcome, PairComparison, RunStatus, RunSummary, SceneStanding, TrustLevel,
 };
+pub(crate) use scene::{factor_text, EXTRAPOLATION_LIMIT_K, UNDETERMINED_BAND_RATIO};
 pub use scene::{
-    factor_text, FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet,
-    SceneSpec, EXTRAPOLATION_LIMIT_K, UNDETERMINED_BAND_RATIO,
+    FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec,
 };
 
 /// `n` and the noun, plural unless `n` is 1: "1 scene", "3 scenes" (`noun` takes an `s`).
-pub fn counted(n: usize, noun: &str) -> String {
+pub(crate) fn counted(n: usize, noun: &str) -> String {
     if n == 1 {
         format!("1 {noun}")
     } else {

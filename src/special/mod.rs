@@ -21,12 +21,12 @@
 //! below 6e-16 everywhere (≈ 2.6 × 2⁻⁵²); print the table per function and range with
 //! `cargo test --release --test tests special_accuracy_table -- --nocapture`.
 
-pub mod bessel;
-pub mod brent;
-pub mod chebyshev;
-pub mod equilibrated;
+pub(crate) mod bessel;
+pub(crate) mod brent;
+pub(crate) mod chebyshev;
+pub(crate) mod equilibrated;
 mod expint;
-pub mod gauss_legendre;
+pub(crate) mod gauss_legendre;
 mod kernel_bracket;
 mod kernel_taylor;
 

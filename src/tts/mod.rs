@@ -6,29 +6,30 @@ mod assess;
 mod channels;
 mod clean;
 mod error;
-pub mod fit_laws;
+pub(crate) mod fit_laws;
 mod from_reduced;
 mod horizontal;
 mod interp;
 mod law_choice;
 mod master;
-pub mod point_temps;
+pub(crate) mod point_temps;
 mod point_weights;
-pub mod quality;
+pub(crate) mod quality;
 mod quality_types;
 mod settings;
 mod shift;
-pub mod time_shift;
-pub mod vertical;
+pub(crate) mod time_shift;
+pub(crate) mod vertical;
 
 pub use error::TtsError;
-pub use fit_laws::{rereference_wlf, ArrheniusFit, ShiftResidual, WlfFit};
+pub(crate) use fit_laws::{rereference_wlf, ShiftResidual};
+pub use fit_laws::{ArrheniusFit, WlfFit};
 pub use from_reduced::master_curve_from_reduced;
 pub use master::{build_master_curve, IsothermShift, MasterCurve, MasterPoint, MasterQuality};
-pub use point_weights::point_weights;
-pub use quality::QualityBounds;
+pub(crate) use point_weights::point_weights;
+pub(crate) use quality::QualityBounds;
 pub use settings::{
     LawChoice, MasterSettings, ShiftCriterion, ShiftSource, TemperatureBasis, VerticalShift,
 };
 
-pub use crate::material::{ShiftLaw, GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};
+pub(crate) use crate::material::{ShiftLaw, GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};

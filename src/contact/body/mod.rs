@@ -36,10 +36,10 @@
 //! [`ContactError::Unsupported`]. The choice of a body for a cover (`auto`) is
 //! [`crate::contact::cover`], one file over this dispatch.
 
-pub mod half_space;
-pub mod layer;
+pub(crate) mod half_space;
+pub(crate) mod layer;
 #[cfg(test)]
-pub mod on_springs;
+pub(crate) mod on_springs;
 
 use super::error::ContactError;
 use super::problem::{BodyAnswer, CreepTerm, DimensionlessScene, DimensionlessSolution};

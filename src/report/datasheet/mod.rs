@@ -7,16 +7,16 @@
 //! assembled from one function per section ([`sections`]); the tables are in [`tables`], the map
 //! plots in [`maps`].
 
-pub mod curves;
+pub(crate) mod curves;
 #[cfg(test)]
 #[cfg(test)]
 pub(crate) mod fixture;
-pub mod maps;
-pub mod sections;
-pub mod summary;
-pub mod tables;
-pub mod tan_delta;
-pub mod transitions;
+pub(crate) mod maps;
+pub(crate) mod sections;
+pub(crate) mod summary;
+pub(crate) mod tables;
+pub(crate) mod tan_delta;
+pub(crate) mod transitions;
 
 pub use tan_delta::{tan_delta_at, tan_delta_peak};
 

@@ -11,13 +11,13 @@
 //! - [`auto`] (the error-controlled scheme), with [`modes`] (the roots κⱼ), [`chebyshev`] (the
 //!   exponential layers and the exterior transform) and [`rear_gap`] (the gap outside the contact).
 
-pub mod auto;
-pub mod chebyshev;
-pub mod exact;
-pub mod kernel;
-pub mod modes;
-pub mod rear_gap;
-pub mod thesis;
+pub(crate) mod auto;
+pub(crate) mod chebyshev;
+pub(crate) mod exact;
+pub(crate) mod kernel;
+pub(crate) mod modes;
+pub(crate) mod rear_gap;
+pub(crate) mod thesis;
 
 use crate::contact::error::ContactError;
 use crate::contact::load::solve_at_load as load_loop;

@@ -55,7 +55,7 @@
 //! rounding. Cost: O((2m+1)·(panels·10)), about (2m+1)·(300 + 270·X/h′) operations: cheap for layers
 //! thicker than ~λ/20, growing like 1/h′ for thinner ones (where the Winkler / h³ limits apply).
 
-pub mod check_rule;
+pub(crate) mod check_rule;
 
 use super::compliance::layer_defect;
 use crate::contact::body::half_space::kernel::Kernel;

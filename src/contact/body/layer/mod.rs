@@ -14,11 +14,11 @@
 //! - [`winkler`]: Winkler foundations (uniaxial columns of conveyor tools, constrained columns of the
 //!   thin compressible layer) in closed form for any spectrum.
 
-pub mod collocation;
-pub mod compliance;
-pub mod kernel;
-pub mod spectral;
-pub mod winkler;
+pub(crate) mod collocation;
+pub(crate) mod compliance;
+pub(crate) mod kernel;
+pub(crate) mod spectral;
+pub(crate) mod winkler;
 
 pub use collocation::{LayerAnswer, LayerSettings};
 pub use compliance::WinklerColumns;

@@ -34,12 +34,12 @@
 //! The reported `error_estimate` is the largest of the relative errors of ρF/N and of λ (at given
 //! load) or N′ (at given λ).
 
-pub mod at_lambda;
+pub(crate) mod at_lambda;
 mod correction;
 mod gap_check;
 mod load;
 mod outcome;
-pub mod reduction;
+pub(crate) mod reduction;
 mod settings;
 
 pub use load::solve_auto_at_load;

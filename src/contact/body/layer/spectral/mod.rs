@@ -93,13 +93,13 @@
 //! the p/2 check is repeated at the λ found only when λ moved by ≥ 1e−3. The contact checks run on
 //! 64 intervals (skipped with [`at_load::SpectralSettings::checks`] false: the bands' replicates).
 
-pub mod at_lambda;
-pub mod at_load;
-pub mod degree;
-pub mod layer_term;
-pub mod secant;
-pub mod volterra;
-pub mod walk;
+pub(crate) mod at_lambda;
+pub(crate) mod at_load;
+pub(crate) mod degree;
+pub(crate) mod layer_term;
+pub(crate) mod secant;
+pub(crate) mod volterra;
+pub(crate) mod walk;
 
 pub use at_load::{solve_spectral_at_load, SpectralSettings};
 

@@ -50,7 +50,7 @@ fn config() -> Config {
     Config {
         cases: 256,
         // Moving inputs (issue 19): the run's seed, printed for replay (tests/seed.rs).
-        rng_seed: RngSeed::Fixed(crate::seed::seed("spectra_exact")),
+        rng_seed: RngSeed::Fixed(crate::tests::seed::seed("spectra_exact")),
         failure_persistence: None,
         ..Config::default()
     }

@@ -1,7 +1,7 @@
 //! Prony term control (`crate::prony::terms`) on real master curves: pyvisco's EMS-CA master curve
 //! (data/pyvisco-ems-ca/freq_user_master.csv, 206 points over 26 decades).
 
-use super::prony_ems_ca::ems_ca_master;
+use super::shipped::ems_ca_master;
 use viscoroll::prony::{fit_prony, log10_errors, PronySettings};
 use viscoroll::ModulusKind;
 

@@ -340,7 +340,7 @@ fn seeds() -> Vec<(&'static str, Vec<u8>)> {
 proptest! {
     // 200 random inputs per property keep the run well under a second.
     // The run's seed (tests/seed.rs), printed so that a failure can be replayed.
-    #![proptest_config(ProptestConfig { cases: 200, rng_seed: proptest::test_runner::RngSeed::Fixed(crate::seed::seed("dma_errors::never_panic")), .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 200, rng_seed: proptest::test_runner::RngSeed::Fixed(crate::tests::seed::seed("dma_errors::never_panic")), .. ProptestConfig::default() })]
 
     #[test]
     fn random_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..400)) {
@@ -367,7 +367,7 @@ proptest! {
 proptest! {
     // Each case parses a 95 kB workbook (~0.1 s in the test profile): 40 cases keep this short;
     // for a longer hunt: raise `cases` (run with cases = 1000 once before merging).
-    #![proptest_config(ProptestConfig { cases: 40, rng_seed: proptest::test_runner::RngSeed::Fixed(crate::seed::seed("dma_errors::excel")), .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 40, rng_seed: proptest::test_runner::RngSeed::Fixed(crate::tests::seed::seed("dma_errors::excel")), .. ProptestConfig::default() })]
 
     // calamine 0.31 allocates rows × cols of a damaged cell address or DIMENSIONS record at once (an
     // abort, not a panic): dma::xls_guard refuses those first; this found the case.

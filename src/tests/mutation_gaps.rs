@@ -2,8 +2,8 @@
 //! each pins a behaviour that a surviving cargo-mutants mutant changed without any test failing,
 //! against a reference computed here by a different route (geometry, limits, exact solutions).
 
-use crate::reference::{Kind, Sls};
-use viscoroll::contact::cover::roll_cover;
+use crate::tests::sls::{Kind, Sls};
+use viscoroll::contact::roll_cover;
 use viscoroll::contact::{Body, Scene};
 use viscoroll::CreepSpectrum;
 

@@ -194,8 +194,9 @@ fn run_cases(seed: u64, cases: usize) -> (Vec<usize>, usize, usize) {
 
 #[test]
 fn estimate_confirmed_pressure_and_friction_non_negative() {
-    let seed =
-        crate::seed::seed("contact_props::estimate_confirmed_pressure_and_friction_non_negative");
+    let seed = crate::tests::seed::seed(
+        "contact_props::estimate_confirmed_pressure_and_friction_non_negative",
+    );
     let (bad_est, flagged, bad_other) = run_cases(seed, CI_CASES);
     eprintln!(
         "{CI_CASES} cases: estimate failures {bad_est:?}, {flagged} flagged, {bad_other} other"
@@ -376,7 +377,7 @@ fn run_limits(seed: u64, cases: usize) {
 #[test]
 fn friction_vanishes_at_both_speed_limits_with_the_asymptotic_slopes() {
     run_limits(
-        crate::seed::seed(
+        crate::tests::seed::seed(
             "contact_props::friction_vanishes_at_both_speed_limits_with_the_asymptotic_slopes",
         ),
         CI_LIMITS,
@@ -387,7 +388,7 @@ fn friction_vanishes_at_both_speed_limits_with_the_asymptotic_slopes() {
 #[ignore = "larger sweep (about 2 min in release); run with --ignored --nocapture"]
 fn sweep() {
     let mut bad_other = 0;
-    let base = crate::seed::seed("contact_props::sweep");
+    let base = crate::tests::seed::seed("contact_props::sweep");
     for seed in [base, base ^ 0xC0FF_EE01] {
         let (bad_est, flagged, other) = run_cases(seed, 2000);
         eprintln!(

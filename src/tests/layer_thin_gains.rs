@@ -65,7 +65,7 @@ fn rel(a: f64, b: f64) -> f64 {
 
 /// (λ, ρF/N) at load N′ at the fixed degree `p` with every mode kept (module doc), from `lam`.
 fn reference(terms: &[CreepTerm], h: f64, lam: f64, p: usize) -> (f64, f64) {
-    crate::layer_degree::fixed_degree_at_load(terms, LOAD, h, NU, p, lam)
+    crate::tests::layer_degree::fixed_degree_at_load(terms, LOAD, h, NU, p, lam)
 }
 
 /// The reference at p = 96, checked against p = 64 (its own error, module doc).

@@ -16,13 +16,11 @@ use viscoroll::bands::{build_ensemble, scene_bands_on, BandSettings, SceneRatios
 use viscoroll::contact::roll;
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::dma::{read_files, IngestOptions};
-use viscoroll::pipeline::fit_compound::fit_measurement_master;
+use viscoroll::pipeline::fit_measurement_master;
 use viscoroll::pipeline::scenes::{friction_vs_temperature, pipeline_contact_settings, SceneSet};
 use viscoroll::pipeline::FitOptions;
 use viscoroll::results::{CompoundFit, FrictionPoint, SceneSpec};
-use viscoroll::testdata::realistic::{
-    dma_csv, dma_rows, realistic_compounds, DmaProtocol, RealisticCompound,
-};
+use viscoroll::testdata::{dma_csv, dma_rows, realistic_compounds, DmaProtocol, RealisticCompound};
 
 const TEMPS_C: [f64; 4] = [-40.0, -30.0, -10.0, 20.0];
 

@@ -6,11 +6,7 @@ use std::path::PathBuf;
 use viscoroll::dma::{self, Flag, IngestOptions, Measurement, Severity};
 use viscoroll::{ModulusKind, ShiftLaw};
 
-pub fn data(rel: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("data")
-        .join(rel)
-}
+pub use super::shipped::data;
 
 fn read(paths: &[PathBuf]) -> Measurement {
     dma::read_files(paths, &IngestOptions::default()).unwrap_or_else(|e| panic!("{e}"))

@@ -19,11 +19,10 @@
 
 use viscoroll::dma::{self, IngestOptions};
 use viscoroll::pipeline::FitOptions;
-use viscoroll::testdata::realistic::{
+use viscoroll::testdata::{
     dma_csv, dma_rows, non_overlapping_compounds, realistic_compounds, DmaProtocol,
     RealisticCompound,
 };
-use viscoroll::testdata::{loss_modulus, storage_modulus};
 use viscoroll::tts::{build_master_curve, MasterCurve, ShiftCriterion};
 
 /// The bound from T_g + 20 K up, decades.
@@ -36,7 +35,7 @@ const DETERMINED_BOUND_DECADES: f64 = 0.05;
 fn t_g(c: &RealisticCompound) -> f64 {
     let tan_d = |t: f64| {
         let w = 2.0 * std::f64::consts::PI * 10f64.powf(c.law.log10_a_t(t));
-        loss_modulus(&c.spectrum, w) / storage_modulus(&c.spectrum, w)
+        c.spectrum.loss_modulus(w) / c.spectrum.storage_modulus(w)
     };
     let (mut best, mut at) = (0.0, f64::NAN);
     for k in 0..=2000 {

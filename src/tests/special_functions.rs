@@ -11,7 +11,7 @@ use viscoroll::special::{
 /// A real function of one real variable, for the derivative checks.
 type RealFn<'a> = &'a dyn Fn(f64) -> f64;
 
-const TABLE: &str = include_str!("data/special_reference.csv");
+const TABLE: &str = include_str!("../../tests/data/special_reference.csv");
 
 struct Row {
     func: String,

@@ -252,7 +252,7 @@ fn spectral_run(seed: u64, cases: usize, tol: f64) -> (usize, usize) {
 
 #[test]
 fn spectral_estimate_honoured_at_tol_1e6() {
-    let seed = crate::seed::seed("layer_props::spectral_estimate_honoured_at_tol_1e6");
+    let seed = crate::tests::seed::seed("layer_props::spectral_estimate_honoured_at_tol_1e6");
     let (checked, declined) = spectral_run(seed, CI_CASES, 1e-6);
     println!("spectral: checked {checked}, declined {declined}");
 }
@@ -261,7 +261,7 @@ fn spectral_estimate_honoured_at_tol_1e6() {
 fn spectral_estimate_honoured_at_tol_1e4() {
     // the speed goal's tolerance: the walk stops earlier and carries further to the root
     // (`spectral::walk`), so its carry's error counts more here than at 1e−6
-    let seed = crate::seed::seed("layer_props::spectral_estimate_honoured_at_tol_1e4");
+    let seed = crate::tests::seed::seed("layer_props::spectral_estimate_honoured_at_tol_1e4");
     let (checked, declined) = spectral_run(seed, CI_CASES, 1e-4);
     println!("spectral: checked {checked}, declined {declined}");
 }
@@ -269,7 +269,7 @@ fn spectral_estimate_honoured_at_tol_1e4() {
 #[test]
 #[ignore]
 fn spectral_sweep() {
-    let seed = crate::seed::seed("layer_props::spectral_sweep");
+    let seed = crate::tests::seed::seed("layer_props::spectral_sweep");
     let (checked, declined) = spectral_run(seed, 60, 1e-6);
     println!("spectral: checked {checked}, declined {declined}");
     let (checked, declined) = spectral_run(seed, 60, 1e-4);
@@ -278,7 +278,7 @@ fn spectral_sweep() {
 
 #[test]
 fn estimate_honoured_over_the_issue_range() {
-    let seed = crate::seed::seed("layer_props::estimate_honoured_over_the_issue_range");
+    let seed = crate::tests::seed::seed("layer_props::estimate_honoured_over_the_issue_range");
     let (checked, unchecked) = run(seed, CI_CASES);
     println!("checked {checked}, without reference {unchecked}");
 }
@@ -286,7 +286,7 @@ fn estimate_honoured_over_the_issue_range() {
 #[test]
 #[ignore]
 fn sweep() {
-    let seed = crate::seed::seed("layer_props::sweep");
+    let seed = crate::tests::seed::seed("layer_props::sweep");
     let (checked, unchecked) = run(seed, 60);
     println!("checked {checked}, without reference {unchecked}");
 }

@@ -241,7 +241,7 @@ fn scan() {
     // 2. random realistic spectra at λ = 1: 20–40 terms over 20–24 decades, J∞/J_g 1e2…1e4,
     // times centred on the contact time so that the transition crosses it
     // The run's seed (tests/seed.rs; the scan's figures in docs/DEVLOG.md are from the former 4242).
-    let mut rng = Rng(crate::seed::seed("contact_rear::scan"));
+    let mut rng = Rng(crate::tests::seed::seed("contact_rear::scan"));
     let mut spectra = Tally::new();
     for k in 0..300 {
         let n = 20 + (rng.next() * 21.0) as usize;

@@ -1,8 +1,8 @@
 //! Plots on EMS-CA: the master curve with its Prony fit, the spectrum, the shift factors with a WLF
 //! and an Arrhenius law, and isotherms regenerated from the fit and the shift table. Written to
-//! `$CARGO_TARGET_TMPDIR/plots/` (look at them there) and checked as files.
+//! the system temp folder's `viscoroll-plots/` (look at them there) and checked as files.
 
-use crate::prony_ems_ca::ems_ca_master;
+use crate::tests::shipped::ems_ca_master;
 use std::path::{Path, PathBuf};
 use viscoroll::dma::{DataPoint, Isotherm, Measurement};
 use viscoroll::prony::kernel::dynamic_moduli_pa;
@@ -30,7 +30,7 @@ fn ems_ca_shifts() -> Vec<(f64, f64)> {
 }
 
 fn out_dir() -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("plots");
+    let d = std::env::temp_dir().join("viscoroll-plots");
     std::fs::create_dir_all(&d).unwrap();
     d
 }

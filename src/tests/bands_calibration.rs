@@ -5,7 +5,7 @@
 //! temperature) points, over the shipped scenes at −40 … +60 °C every 10 K.
 //!
 //! The band comes from the pipeline's own path: the export written as CSV and read back, the fit
-//! (`pipeline::fit_compound::fit_measurement_master`), the bootstrap ensemble
+//! (`pipeline::fit_measurement_master`), the bootstrap ensemble
 //! (`bands::build_ensemble`, the main job's settings), the friction (`friction_vs_temperature`, the
 //! main job's contact settings) and its band (`bands::scene_ratios_on`, on the scene's cover, + `band_of`). The true friction
 //! comes from the true spectrum, converted exactly to creep and shifted by the true WLF law, through
@@ -45,11 +45,11 @@
 
 use std::path::PathBuf;
 use viscoroll::bands::{band_of, build_ensemble, scene_bands_on, BandSettings};
-use viscoroll::contact::cover::roll_cover;
+use viscoroll::contact::roll_cover;
 use viscoroll::contact::{roll, Body, Scene};
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::dma::{read_files, IngestOptions};
-use viscoroll::pipeline::fit_compound::fit_measurement_master;
+use viscoroll::pipeline::fit_measurement_master;
 use viscoroll::pipeline::scenes::{
     friction_vs_temperature, pipeline_contact_settings, SceneSet, COVER_TOL,
 };
