@@ -13,7 +13,6 @@
 //! error of the relaxed compliance (1/E∞ exactly); `E*J*` max |E*J* − 1| on ω = 1/t over the same
 //! grid; `neg` number of negative strengths; `cond` condition number of A with unit columns.
 
-use viscoroll::creep::exact::max_product_error;
 use viscoroll::creep::{
     creep_to_relaxation, park_schapery, relaxation_to_creep, ParkSchaperySettings,
     ParkSchaperyVariant,
@@ -121,7 +120,7 @@ fn compare(
     Some(Row {
         j_t,
         j_inf: (ps.compliance_relaxed() * relax.modulus_inf_pa - 1.0).abs(),
-        ej: max_product_error(relax, &ps, &omegas),
+        ej: relax.max_product_error(&ps, &omegas),
         neg: info.negative_terms,
         cond: info.condition_number,
     })
@@ -210,7 +209,7 @@ fn main() {
     let mut min_j = f64::INFINITY;
     let (mut rev, mut estar, mut emod_sep) = (0f64, 0f64, 0f64);
     for (s, c) in spectra.iter().zip(&exacts) {
-        ej = ej.max(max_product_error(s, c, &omegas));
+        ej = ej.max(s.max_product_error(c, &omegas));
         j0 = j0.max((c.creep_compliance(0.0) * s.instantaneous_modulus() - 1.0).abs());
         jinf = jinf.max((c.compliance_relaxed() * s.modulus_inf_pa - 1.0).abs());
         min_j = c
@@ -219,7 +218,7 @@ fn main() {
             .map(|t| t.compliance_per_pa * s.instantaneous_modulus())
             .fold(min_j, f64::min);
         let (back, _) = creep_to_relaxation(c).unwrap();
-        rev = rev.max(max_product_error(&back, c, &omegas));
+        rev = rev.max(back.max_product_error(c, &omegas));
         for &w in &omegas {
             let (a1, a2) = s.complex_modulus(w);
             let (b1, b2) = back.complex_modulus(w);

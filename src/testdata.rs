@@ -14,7 +14,6 @@
 pub(crate) mod realistic;
 pub(crate) mod time_domain;
 
-pub(crate) use realistic::DmaRow;
 pub use realistic::{
     dma_csv, dma_rows, non_overlapping_compounds, realistic_compounds, DmaProtocol, ExportFormat,
     RealisticCompound,

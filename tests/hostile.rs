@@ -502,12 +502,10 @@ fn tables_lose_no_row_silently() {
     broken_tables(8, &mut rng);
 }
 
-/// Hostile strings: CSV cells that would run as formulas are neutralised (numbers stay numbers),
-/// control characters are escaped; a long scene name is refused before any work; stdout on a full
+/// Hostile strings (the CSV cells: src/tests/hostile_budget.rs): a long scene name is refused before any work; stdout on a full
 /// device ends with exit 1, no panic.
 #[test]
 fn hostile_strings_and_full_devices_are_handled() {
-    let mut rng = Rng(seed("hostile strings"));
     // a 5000-character scene name: refused at input, the reason whole and short
     let dir = input_folder("hostile-name-in");
     let out = temp_dir("hostile-name-out");

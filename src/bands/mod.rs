@@ -69,20 +69,16 @@ pub(crate) mod window;
 pub use between::PRIOR_SD_LN;
 pub(crate) use between::{between_sd_ln, specimens_note, widen};
 pub use compare::comparisons;
-pub(crate) use compare::{is_tie, prob_lower, prob_text, SIGNIFICANCE};
+pub(crate) use compare::prob_text;
 pub(crate) use ensemble::FROM_FIT_FILE_NOTE;
 pub use ensemble::{build_ensemble, ensemble_from_fit};
 pub use error::BandError;
-pub(crate) use friction::{
-    band_of, mean_band, predict_from_half_space, replicate_choice, tail_alternatives, tail_note,
-    too_many_failed, CoverSolve, COVER_BAND_TOL,
-};
-pub(crate) use scene::{
-    cover_solved_temps, half_space_ratios, scene_bands_by, scene_ratios_on, CoverMode,
-    HalfSpaceRatios, SceneRatios, WindowTerm, COVER_SOLVED_REPLICATES,
-};
+pub(crate) use friction::{band_of, mean_band, CoverSolve};
+pub(crate) use scene::{half_space_ratios, HalfSpaceRatios, SceneRatios};
 pub use scene::{scene_bands_given, scene_bands_on};
-pub(crate) use window::{window_note, WindowExcess, WindowSide, WIDENED_NOTE_START};
+#[cfg(test)]
+pub(crate) use window::WindowSide;
+pub(crate) use window::WIDENED_NOTE_START;
 
 /// Settings of the bands.
 #[derive(Debug, Clone, PartialEq)]

@@ -151,30 +151,9 @@ impl SceneRatios {
     }
 }
 
-/// Per temperature of `temps_c`, the ratio F_b/F̂ of each replicate b (NaN where a solve failed),
-/// on a cover of `cover_m` bonded to a rigid carcass (eq. 15.6): each replicate's
-/// creep spectrum, shifted by its own law, through the body `auto` chooses
-/// (`cover_solver`, at [`COVER_BAND_TOL`] or the band tolerance if looser), as the nominal
-/// friction; `None`: the half-space at `settings.contact_tol`. On a cover, only
-/// [`COVER_SOLVED_REPLICATES`] replicates are solved on the cover, at every other temperature
-/// ([`cover_solved_temps`]; eq. 15.6c carries them to the others); the rest come from their
-/// half-space ratios (eq. 15.6b, [`predict_from_half_space`]). Points beyond the measured
-/// temperatures or frequencies get the terms of eqs. 15.8 and 15.9 ([`scene_bands_on`]).
-pub fn scene_ratios_on(
-    fit: &CompoundFit,
-    ensemble: &BandEnsemble,
-    scene: &Scene,
-    cover_m: Option<f64>,
-    temps_c: &[f64],
-    settings: &BandSettings,
-) -> Vec<Vec<f64>> {
-    scene_bands_on(fit, ensemble, scene, cover_m, temps_c, settings).ratios
-}
-
 /// [`scene_bands_on`] with the covered replicates solved as `mode` says: [`CoverMode::Full`] (the
-/// full bootstrap of eq. 15.6, 32 layer solves per temperature) and [`CoverMode::EveryTemp`]
-/// (eq. 15.6b without 15.6c) are the references the main job's [`CoverMode::Carried`] is checked
-/// against (benches/bands_cover.rs); the same model-error terms in each.
+/// full bootstrap of eq. 15.6, 32 layer solves per temperature) is the reference the main job's
+/// [`CoverMode::Carried`] is checked against; the same model-error terms in each.
 pub fn scene_bands_by(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
@@ -363,8 +342,6 @@ pub fn half_space_ratios(
 pub enum CoverMode {
     /// Every replicate on the cover at every temperature (eq. 15.6).
     Full,
-    /// [`COVER_SOLVED_REPLICATES`] on the cover at every temperature, the rest by eq. 15.6b.
-    EveryTemp,
     /// [`COVER_SOLVED_REPLICATES`] on the cover at [`cover_solved_temps`], carried to the other
     /// temperatures by eq. 15.6c, the rest by eq. 15.6b (the main job's).
     Carried,
@@ -845,8 +822,7 @@ type CoverRatios = (Vec<Vec<f64>>, Vec<Option<String>>, Vec<Option<f64>>);
 /// The covered ratios of a scene on a cover of `h_m` (eq. 15.6): each replicate solved on the
 /// body of the fit's own solve at that temperature (`body_nominal`), its layer solve started from
 /// the fit's contact there; every replicate at every temperature ([`CoverMode::Full`]), or
-/// [`COVER_SOLVED_REPLICATES`] of them at every temperature ([`CoverMode::EveryTemp`]) or at
-/// [`cover_solved_temps`] carried to the others where that is safe ([`CoverMode::Carried`],
+/// [`COVER_SOLVED_REPLICATES`] of them at [`cover_solved_temps`] carried to the others where that is safe ([`CoverMode::Carried`],
 /// eq. 15.6c), the rest predicted from their half-space ratios (eq. 15.6b).
 fn cover_ratios(
     job: &SceneJob,

@@ -23,9 +23,7 @@
 //! indentation, estimated as the roll's depth below the higher contact edge, max(β, λ−β)²/(2ρ)·VT
 //! (a lower bound of the true one), below about 30 % of the cover.
 
-pub use crate::contact::body::layer::LAYER_TOL_FLOOR;
 use crate::contact::body::{self, Warm};
-pub use crate::contact::body::{C_HALF_SPACE, C_WINKLER};
 use crate::contact::error::{positive, ContactError};
 use crate::contact::problem::{BodyAnswer, CreepTerm, DimensionlessScene};
 use crate::contact::scene::{RollSolution, Scene};

@@ -194,7 +194,8 @@ pub(crate) trait Step {
 /// A step rule's proposal.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Proposal {
-    /// The rule's current point (the iterate the step starts from).
+    /// The rule's current point (the iterate the step starts from; read by the tests).
+    #[cfg_attr(not(test), allow(dead_code))]
     pub at: f64,
     /// The next iterate.
     pub next: f64,
@@ -446,12 +447,14 @@ impl Step for SafeSecant {
 
 /// The thesis' secant (ch. 4, Fig. 4) on N′(λ) itself: λₙ₊₁ = λₙ + (N′ₙ − N′₀)/(N′ₙ − N′ₙ₋₁)·(λₙ₋₁ − λₙ),
 /// from (λ₀, N′ = 0); the residual it is shown is N′ itself.
+#[cfg(test)]
 struct ThesisStep {
     load: f64,
     prev: (f64, f64),
     current: (f64, f64),
 }
 
+#[cfg(test)]
 impl Step for ThesisStep {
     fn observe(&mut self, u: f64, g: f64) {
         self.prev = std::mem::replace(&mut self.current, (u, g));
@@ -493,6 +496,7 @@ fn finish_with(
 /// The thesis' load iteration (ch. 4, Fig. 4), as printed: secant on N′(λ) from λ₁ = 2√N′₀, λ₀ = λ₁/2
 /// (with N′(λ₀) taken as 0), stopping when |N′₀ − N′ᵢ| ≤ `tol`. Kept to show where it fails: returns
 /// [`ContactError::NotConverged`] if λ leaves (0, ∞) or `max_iter` solves pass.
+#[cfg(test)]
 pub fn thesis_secant<F>(
     load: f64,
     tol: f64,
@@ -549,6 +553,7 @@ where
 }
 
 /// [`thesis_secant`] out of solves: the last two λ and no residual.
+#[cfg(test)]
 fn out_of_solves(iterations: usize, lam: f64, lam_prev: f64) -> ContactError {
     ContactError::NotConverged {
         iterations,

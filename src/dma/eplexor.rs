@@ -9,8 +9,12 @@
 
 use super::error::DmaError;
 use super::table::{Block, Cell, Loc, RawFile, Row};
-use super::text::{self, Decimal};
+#[cfg(test)]
+use super::text;
+use super::text::Decimal;
+#[cfg(test)]
 use super::units::TempUnit;
+#[cfg(test)]
 use crate::material::ShiftLaw;
 use calamine::{open_workbook_auto_from_rs, Data, Range, Reader, Sheets};
 use std::io::Cursor;
@@ -223,6 +227,7 @@ fn header_metadata(h: &Range<Data>, meta: &mut std::collections::BTreeMap<String
 
 /// Number in a string like `C1 : 13.50`, `C2 : 141.19 K`, `25.0 °C`: the first number after the
 /// last `:` (or in the whole string).
+#[cfg(test)]
 fn number_in(s: &str) -> Option<f64> {
     let tail = s.rsplit(':').next().unwrap_or(s).trim();
     let num: String = tail
@@ -235,6 +240,7 @@ fn number_in(s: &str) -> Option<f64> {
 /// Read the `Shiftlist` sheet of an EPLEXOR master-curve export: the table of (T in °C, log10 a_T)
 /// as [`ShiftLaw::Table`] (sorted by temperature) and, when the sheet states it, the WLF law the
 /// instrument software fitted as [`ShiftLaw::Wlf`].
+#[cfg(test)]
 pub fn read_eplexor_shiftlist(
     path: &std::path::Path,
 ) -> Result<(ShiftLaw, Option<ShiftLaw>), DmaError> {
@@ -250,6 +256,7 @@ pub fn read_eplexor_shiftlist(
 }
 
 /// [`read_eplexor_shiftlist`] on bytes already read.
+#[cfg(test)]
 pub(crate) fn shiftlist_from_bytes(
     file: &str,
     bytes: &[u8],

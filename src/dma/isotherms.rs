@@ -52,8 +52,6 @@ pub struct Group {
     pub nominal_source: &'static str,
     /// Mean measured temperature in °C (nominal if none measured).
     pub mean_c: f64,
-    /// Block label (step name), if any.
-    pub label: Option<String>,
 }
 
 /// Temperature written as the whole file stem: `T25`, `T-10`, `t_5`, `25C`, `25°C`, `T25C`.
@@ -165,7 +163,6 @@ pub fn split(points: Vec<RawPoint>, name_temp_c: Option<f64>, set: &SplitSetting
                 mean_c: mean.unwrap_or(nominal_c),
                 nominal_c,
                 nominal_source,
-                label: None,
                 points: pts,
             }
         })

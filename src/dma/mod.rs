@@ -37,6 +37,7 @@ pub use checks::{CheckSettings, Flag, Issue, Severity};
 pub use column_map::ColumnMap;
 pub(crate) use columns::ColumnInfo;
 pub use detect::Format;
+#[cfg(test)]
 pub(crate) use eplexor::read_eplexor_shiftlist;
 pub use error::DmaError;
 pub use isotherms::SplitSettings;
@@ -45,6 +46,7 @@ pub use pyvisco_time::PyviscoTimeMaster;
 pub(crate) use read::sha256_hex;
 pub use read::{read_bytes, read_files, IngestOptions};
 pub use shiftfactors::read_shift_factors;
+#[cfg(test)]
 pub(crate) use shiftfactors::read_shift_table;
 pub use time_domain::TimeMode;
 

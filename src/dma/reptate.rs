@@ -13,6 +13,7 @@ use super::error::DmaError;
 use super::table::{cell_from_text, Block, Loc, RawFile, Row};
 use super::text::{self, Decimal, Delimiter};
 use super::units;
+#[cfg(test)]
 use crate::material::ShiftLaw;
 use std::collections::BTreeMap;
 
@@ -74,6 +75,7 @@ pub(crate) fn temperature_in_file_name(path: &str) -> Option<f64> {
 
 /// The WLF law of a `.tts` file's parameters: `C1`, `C2` (K) and `Tr` (°C; else `T`), checked
 /// ([`ShiftLaw::validate`]); `Ok(None)` when the file carries no C1 and C2.
+#[cfg(test)]
 pub(crate) fn wlf_from_parameters(
     file: &str,
     params: &BTreeMap<String, String>,
@@ -240,6 +242,7 @@ mod tests {
 /// A RepTate `.tts` master curve: its reduced points as one isotherm at the reference temperature
 /// (the parameter `Tr`, else `T`), and the WLF law of its header when it carries one.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg(test)]
 pub struct ReptateMaster {
     /// The reduced points (frequency = reduced frequency at `t_ref_c`), one isotherm.
     pub measurement: super::Measurement,
@@ -251,6 +254,7 @@ pub struct ReptateMaster {
 
 /// Read a RepTate `.tts` master curve ([`ReptateMaster`]). A temperature column, if any, is
 /// ignored: every point is at the reference temperature.
+#[cfg(test)]
 pub fn read_master(
     path: &std::path::Path,
     opts: &super::IngestOptions,

@@ -18,7 +18,6 @@ pub(crate) mod read;
 
 pub(crate) use jail::Jail;
 pub use lock::DirLock;
-pub(crate) use lock::LockHolder;
 pub(crate) use read::{read_regular, read_regular_to_string};
 
 use rustix::fs::{AtFlags, Mode, OFlags};

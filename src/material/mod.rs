@@ -23,7 +23,7 @@ mod shift_law;
 pub(crate) mod units;
 
 pub use checks::MaterialError;
-pub(crate) use checks::{check_poisson, check_positive, check_wlf_constants};
+pub(crate) use checks::{check_poisson, check_positive};
 pub(crate) use debye::debye;
 pub use kind::ModulusKind;
 pub(crate) use shift_law::shift_at;

@@ -211,7 +211,6 @@ impl ListedCompound {
 
     /// The settings, each checked (the message names the key).
     fn settings(&self, dir: &Path) -> Result<CompoundSettings, String> {
-        use crate::dma::units::{FreqUnit, ModulusUnit, TempUnit};
         let mut o = IngestOptions::default();
         let mut any = false;
         if let Some(f) = &self.format {

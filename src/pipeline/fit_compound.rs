@@ -296,19 +296,6 @@ impl FitAction {
     }
 }
 
-/// Reuse `fit_path` if it matches the measurement's inputs and `options`; otherwise fit and write it
-/// (refusing to replace a different fit without `force`).
-pub fn fit_or_reuse(
-    compound: &str,
-    measurement: &crate::Measurement,
-    fit_path: &Path,
-    options: &FitOptions,
-    force: bool,
-) -> Result<(CompoundFit, FitAction), PipelineError> {
-    fit_or_reuse_with_bands(compound, measurement, fit_path, options, force, None)
-        .map(|(f, a, _)| (f, a))
-}
-
 /// [`fit_or_reuse`] for a master curve read already shifted (e.g. pyvisco's CSV with its shift
 /// factors): `measurement` holds its reduced points and sources, `master` the curve made of them.
 /// `options.master` should be `master.settings`, so that such a fit is never taken for one made
@@ -428,10 +415,4 @@ pub fn fit_or_reuse_with_bands(
             Ok((fit, action, why))
         }
     }
-}
-
-/// The measured temperature range (°C) of a fit, for flagging extrapolation
-/// ([`CompoundFit::measured_range_c`]).
-pub fn measured_range_c(fit: &CompoundFit) -> Option<(f64, f64)> {
-    fit.measured_range_c()
 }

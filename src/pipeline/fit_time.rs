@@ -23,17 +23,6 @@ use crate::results::{CompoundFit, MeasurementSummary, QualityFigure, TtsSummary}
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
-/// Read time-domain files and fit them ([`fit_time_data`]).
-pub fn fit_time_files(
-    compound: &str,
-    files: &[PathBuf],
-    poisson: f64,
-    options: &FitOptions,
-) -> Result<CompoundFit, PipelineError> {
-    let data = read_time_files(files, poisson)?;
-    fit_time_data(compound, &data, options)
-}
-
 /// Fit relaxation or creep isotherms (module docs). `options.master.tref_c` is the reference
 /// temperature (default: the isotherm nearest the middle); the Prony settings are the frequency
 /// fit's.

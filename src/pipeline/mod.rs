@@ -19,17 +19,15 @@ pub(crate) mod trust;
 pub(crate) mod tuning;
 
 /// The fit file's types (crate::results::compound_fit), at their former path.
-pub(crate) use crate::results::compound_fit;
 pub(crate) use crate::results::CompoundFit;
 pub use error::PipelineError;
 pub use fit_compound::{
     fit_files, fit_master_curve, fit_measurement, fit_measurement_master, FitOptions,
 };
-pub(crate) use fit_compound::{fit_or_reuse, fit_or_reuse_master};
 pub use fit_time::fit_pyvisco_time_master;
 pub use roll_fit::{fit_spectrum_at, point_band, roll_source_at, CreepSource};
 pub use run::{run_all, run_all_with_progress, ProgressEvent, RunOptions};
-pub(crate) use run::{CompoundOutcome, RunStatus, RunSummary};
+pub(crate) use run::{RunStatus, RunSummary};
+pub(crate) use scenes::SceneSet;
 pub use scenes::{friction_maps, friction_vs_temperature, pipeline_map_settings, COVER_TOL};
-pub(crate) use scenes::{SceneSet, SceneSpec};
 pub use tuning::FitTuning;

@@ -15,8 +15,7 @@ use crate::results::CompoundFit;
 use rayon::prelude::*;
 
 pub use crate::results::scene::{
-    FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec, CURVE_POINTS,
-    DEFAULT_SCENES_TOML, GRID_POINTS,
+    FrictionMaps, FrictionPoint, MapPoint, SceneSet, SceneSpec, CURVE_POINTS, GRID_POINTS,
 };
 
 /// Contact settings of the main job: the error-controlled `auto` scheme at its default relative
@@ -415,18 +414,4 @@ fn sort_map_points(
         }
     }
     (points, grid, curves, long)
-}
-
-/// Mean friction over the temperatures that solved (NaN if none did).
-pub fn mean_friction(points: &[FrictionPoint]) -> f64 {
-    let ok: Vec<f64> = points
-        .iter()
-        .map(|p| p.friction)
-        .filter(|f| f.is_finite())
-        .collect();
-    if ok.is_empty() {
-        f64::NAN
-    } else {
-        ok.iter().sum::<f64>() / ok.len() as f64
-    }
 }

@@ -62,7 +62,9 @@
 //!   material functions. Part I, Int. J. Solids Struct. 36, 1653–1675 (Prony series fits).
 
 use super::kernel::{loss_kernel, storage_kernel};
-pub use super::points::{log10_errors, Log10Errors, MasterPoint};
+#[cfg(test)]
+pub use super::points::Log10Errors;
+pub use super::points::{log10_errors, MasterPoint};
 use super::terms::{reduce_terms, Reduced, TermControl};
 use super::{
     LambdaCandidate, PronyError, PronyInfo, PronySettings, RelaxationSpectrum, RelaxationTerm,

@@ -19,12 +19,13 @@ pub(crate) mod terms;
 pub(crate) mod time_fit;
 
 pub use error::PronyError;
+pub(crate) use fit::log10_errors;
+#[cfg(test)]
+pub(crate) use fit::relaxation_times_s;
 pub use fit::{fit_prony, MasterPoint, PronyFit};
-pub(crate) use fit::{log10_errors, relaxation_times_s};
 pub(crate) use info::LambdaCandidate;
 pub use info::PronyInfo;
 pub use settings::{PronySettings, WeightRule};
-pub(crate) use terms::reduce_terms;
 pub use terms::TermControl;
 pub(crate) use terms::TermTrade;
 

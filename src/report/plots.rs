@@ -335,6 +335,7 @@ pub fn plot_shift_factors(
 
 /// The relaxation spectrum: a stem Eᵢ (Gᵢ for shear) at each τᵢ (log–log), E∞ (G∞) stated in the
 /// title.
+#[cfg(test)]
 pub fn plot_spectrum(spectrum: &RelaxationSpectrum, path: &Path) -> Result<(), PlotError> {
     let c = Chart {
         title: format!(

@@ -15,19 +15,18 @@ pub(crate) mod scene;
 pub(crate) use band_ensemble::offset_at;
 pub use band_ensemble::BandEnsemble;
 pub(crate) use band_ensemble::{BandReplicate, ModelErrorSummary, ScatterEstimate};
-pub(crate) use compound_fit::COMPOUND_FIT_FORMAT_VERSION;
 pub use compound_fit::{
     CompoundFit, CompoundFitError, FitSettings, MeasurementSummary, TtsSummary,
 };
-pub(crate) use compound_fit::{InputHash, Provenance, QualityFigure};
-pub(crate) use outcome::{cap_line, is_band_note, standing};
+pub(crate) use compound_fit::{InputHash, QualityFigure};
+pub(crate) use outcome::{cap_line, standing};
 pub use outcome::{
     CompoundOutcome, PairComparison, RunStatus, RunSummary, SceneStanding, TrustLevel,
 };
-pub(crate) use scene::{factor_text, EXTRAPOLATION_LIMIT_K, UNDETERMINED_BAND_RATIO};
 pub use scene::{
     FrictionBand, FrictionMaps, FrictionPoint, MapPoint, SceneError, SceneSet, SceneSpec,
 };
+pub(crate) use scene::{EXTRAPOLATION_LIMIT_K, UNDETERMINED_BAND_RATIO};
 
 /// `n` and the noun, plural unless `n` is 1: "1 scene", "3 scenes" (`noun` takes an `s`).
 pub(crate) fn counted(n: usize, noun: &str) -> String {

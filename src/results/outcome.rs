@@ -15,7 +15,9 @@
 //! warned of its validity, a point is not determined, or extrapolated temperatures are averaged
 //! in; else *trusted*. A failed or undetermined point never enters a mean.
 
-pub use super::line::{cap_line, MAX_LINE_BYTES};
+pub use super::line::cap_line;
+#[cfg(test)]
+pub use super::line::MAX_LINE_BYTES;
 use super::scene::FrictionPoint;
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;

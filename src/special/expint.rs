@@ -60,6 +60,7 @@ const EI_ABOUT_ZERO_UP_TO: f64 = 1.5;
 const E1_SERIES_UP_TO: f64 = 0.5;
 
 /// E1(x) = ∫ₓ^∞ e⁻ᵗ/t dt for x > 0. E1(0) = +∞; NaN for x < 0 or NaN. Underflows to 0 past x ≈ 745.
+#[cfg(test)]
 pub fn e1(x: f64) -> f64 {
     if x.is_nan() || x < 0.0 {
         return f64::NAN;
@@ -92,6 +93,7 @@ pub fn exp_e1(x: f64) -> f64 {
 
 /// Ei(x) = PV ∫₋∞ˣ eᵗ/t dt for x ≠ 0; Ei(x) = −E1(−x) for x < 0. −∞ at 0; overflows to +∞ past
 /// x ≈ 716 (where the value is no longer representable).
+#[cfg(test)]
 pub fn ei(x: f64) -> f64 {
     if x.is_nan() {
         return f64::NAN;
@@ -134,6 +136,7 @@ pub fn expm_ei(x: f64) -> f64 {
 
 /// eᵃ·v without spurious overflow or underflow of eᵃ alone (|a| > 700: eᵃ = (e^{a/2})², applied
 /// one factor at a time; below, one exp, one rounding fewer).
+#[cfg(test)]
 fn exp_times(a: f64, v: f64) -> f64 {
     if a.abs() < 700.0 {
         a.exp() * v

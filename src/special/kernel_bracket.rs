@@ -66,6 +66,7 @@ pub fn kernel_bracket(x: f64) -> f64 {
 }
 
 /// H₁(x) = ∫₀ˣ h(t) dt = x(ln|x| + γ − 1) + h(x).
+#[cfg(test)]
 pub fn kernel_bracket_int1(x: f64) -> f64 {
     bracket(x, 1)
 }

@@ -31,5 +31,13 @@ mod kernel_bracket;
 mod kernel_taylor;
 
 pub use bessel::{one_minus_one_plus_c_i0, scaled_bessel_i};
-pub use expint::{e1, ei, exp_e1, expm_ei, EULER_GAMMA};
-pub use kernel_bracket::{kernel_bracket, kernel_bracket_int1, kernel_bracket_int2};
+#[cfg(test)]
+pub use expint::e1;
+#[cfg(test)]
+pub use expint::ei;
+#[cfg(test)]
+pub use expint::exp_e1;
+pub use expint::{expm_ei, EULER_GAMMA};
+#[cfg(test)]
+pub use kernel_bracket::kernel_bracket_int1;
+pub use kernel_bracket::{kernel_bracket, kernel_bracket_int2};

@@ -264,6 +264,7 @@ pub fn non_overlapping_compounds() -> Vec<RealisticCompound> {
 
 /// The τ range (log10 s) a spectrum must span for `law` so that every isotherm of −60 … +100 °C
 /// at 0.1–100 Hz lies within it, one decade to spare at each end: (fastest, slowest).
+#[cfg(test)]
 fn tau_range_for(law: &ShiftLaw) -> (f64, f64) {
     let two_pi = 2.0 * std::f64::consts::PI;
     let fast = -(two_pi * 100.0).log10() - law.log10_a_t(-60.0);
@@ -275,6 +276,7 @@ fn tau_range_for(law: &ShiftLaw) -> (f64, f64) {
 /// terms per decade, its main bell's peak where the loss peaks at 1 Hz at `tg_c` under `law`
 /// (log10 τ_peak = −log10 2π − log10 a_T(T_g)) and its slow bell `slow_after_decades` slower (the
 /// shape's own `n_terms`, `log10_tau_min_s`, `decades` and bell positions are replaced).
+#[cfg(test)]
 fn held_out(
     name: &str,
     description: &str,
@@ -301,6 +303,7 @@ fn held_out(
     }
 }
 
+#[cfg(test)]
 fn wlf(t_ref_c: f64, c1: f64, c2_k: f64) -> ShiftLaw {
     ShiftLaw::Wlf { t_ref_c, c1, c2_k }
 }
@@ -313,6 +316,7 @@ fn wlf(t_ref_c: f64, c1: f64, c2_k: f64) -> ShiftLaw {
 /// at most 2 decades apart at −60 °C (so a 3-decade sweep overlaps its neighbour). The τ grid of
 /// each covers the window of −60 … +100 °C at 0.1–100 Hz under its own law, a decade to spare at
 /// each end (no isotherm past the spectrum).
+#[cfg(test)]
 pub fn held_out_compounds() -> Vec<RealisticCompound> {
     let base = RubberShape {
         n_terms: 0,

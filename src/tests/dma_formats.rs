@@ -8,7 +8,6 @@
 //! through ω = 2πf, K → °C and E = 3G).
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use viscoroll::dma::{self, ColumnMap, DmaError, IngestOptions, Measurement};
 use viscoroll::tts::{build_master_curve, master_curve_from_reduced, MasterSettings};
 use viscoroll::{ModulusKind, ShiftLaw};

@@ -8,8 +8,11 @@
 
 #[path = "../../tests/seed.rs"]
 mod seed;
+// Shared with the integration tests: each side uses part of them.
+#[allow(dead_code)]
 #[path = "../../tests/shipped.rs"]
 mod shipped;
+#[allow(dead_code)]
 #[path = "../../tests/sls.rs"]
 mod sls;
 

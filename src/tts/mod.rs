@@ -22,14 +22,15 @@ pub(crate) mod time_shift;
 pub(crate) mod vertical;
 
 pub use error::TtsError;
-pub(crate) use fit_laws::{rereference_wlf, ShiftResidual};
+#[cfg(test)]
+pub(crate) use fit_laws::rereference_wlf;
 pub use fit_laws::{ArrheniusFit, WlfFit};
 pub use from_reduced::master_curve_from_reduced;
 pub use master::{build_master_curve, IsothermShift, MasterCurve, MasterPoint, MasterQuality};
 pub(crate) use point_weights::point_weights;
-pub(crate) use quality::QualityBounds;
 pub use settings::{
     LawChoice, MasterSettings, ShiftCriterion, ShiftSource, TemperatureBasis, VerticalShift,
 };
 
-pub(crate) use crate::material::{ShiftLaw, GAS_CONSTANT_J_PER_MOL_K, ZERO_CELSIUS_K};
+#[cfg(test)]
+pub(crate) use crate::material::GAS_CONSTANT_J_PER_MOL_K;

@@ -407,6 +407,7 @@ pub fn answer_at_load(
 }
 
 /// Solve the dimensionless problem of a scene on `body` at contact length λ (in units of V·T).
+#[cfg(test)]
 pub fn solve_at_lambda(
     body: &Body,
     problem: &DimensionlessScene,

@@ -70,6 +70,7 @@ impl CoveredProblem {
 
     /// Solve the dimensionless covered problem on the bonded layer at s = e^x, η = e^y (N′ = 1/4) to
     /// `tol` (the layer solver's floor applies; its warning is returned).
+    #[cfg(test)]
     pub fn node(&self, x: f64, y: f64, tol: f64) -> Result<CoveredNode, FrictionMapError> {
         self.node_from(x, y, tol, None)
     }

@@ -260,6 +260,7 @@ impl ReducedCurve {
     }
 
     /// Number of panels.
+    #[cfg(test)]
     pub fn panels(&self) -> usize {
         self.panels.len()
     }

@@ -56,9 +56,10 @@ mod reduced;
 mod surface;
 
 pub use covered::covered_map;
-pub use covered_problem::{CoveredNode, CoveredProblem};
+pub use covered_problem::CoveredProblem;
 pub use curve::ReducedCurve;
-pub use reduced::{node_tol, Node, ReducedProblem, ReducedSolution};
+pub use reduced::ReducedProblem;
+#[cfg(test)]
 pub use surface::CoveredSurface;
 
 use crate::contact::error::ContactError;

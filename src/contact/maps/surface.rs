@@ -467,11 +467,13 @@ impl CoveredSurface {
     }
 
     /// Number of panels.
+    #[cfg(test)]
     pub fn panels(&self) -> usize {
         self.panels.len()
     }
 
     /// Each panel's rectangle [a, b] × [c, d] in (ln s, ln η) and degrees (n_x, n_y).
+    #[cfg(test)]
     pub fn panel_shapes(&self) -> Vec<([f64; 4], (usize, usize))> {
         self.panels
             .iter()

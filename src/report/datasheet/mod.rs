@@ -18,7 +18,7 @@ pub(crate) mod tables;
 pub(crate) mod tan_delta;
 pub(crate) mod transitions;
 
-pub use tan_delta::{tan_delta_at, tan_delta_peak};
+pub use tan_delta::tan_delta_at;
 
 use super::chart::{Axis, Chart, Curve, Mark};
 use super::csv_meta::write_table;

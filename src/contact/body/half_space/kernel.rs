@@ -24,7 +24,9 @@
 
 use crate::contact::error::{non_negative, positive, ContactError};
 use crate::contact::problem::CreepTerm;
-use crate::special::{kernel_bracket, kernel_bracket_int1, kernel_bracket_int2, EULER_GAMMA};
+#[cfg(test)]
+use crate::special::kernel_bracket_int1;
+use crate::special::{kernel_bracket, kernel_bracket_int2, EULER_GAMMA};
 
 /// Below this bᵢh the hat averages use the leading series term of h₂ (see [`Kernel::hat_averages`]).
 const TINY_H: f64 = 1e-30;
@@ -61,6 +63,7 @@ impl Kernel {
     }
 
     /// K(ξ) = log|ξ| + Σ (fᵢ/bᵢ) h(bᵢξ) (eq. 3.19 up to a constant). K(0) = −∞.
+    #[cfg(test)]
     pub fn k(&self, xi: f64) -> f64 {
         let mut s = xi.abs().ln();
         for t in &self.terms {
@@ -70,6 +73,7 @@ impl Kernel {
     }
 
     /// K₁(ξ) = ∫₀^ξ K = ξ(log|ξ| − 1) + Σ (fᵢ/bᵢ²) h₁(bᵢξ).
+    #[cfg(test)]
     pub fn k1(&self, xi: f64) -> f64 {
         let mut s = xlogx(xi) - xi;
         for t in &self.terms {
@@ -79,6 +83,7 @@ impl Kernel {
     }
 
     /// K₂(ξ) = ∫₀^ξ K₁ = ξ² log|ξ|/2 − 3ξ²/4 + Σ (fᵢ/bᵢ³) h₂(bᵢξ).
+    #[cfg(test)]
     pub fn k2(&self, xi: f64) -> f64 {
         let mut s = 0.5 * xi * xlogx(xi) - 0.75 * xi * xi;
         for t in &self.terms {
@@ -190,6 +195,7 @@ pub(crate) fn add_term_hat_averages_with(
 }
 
 /// x log|x| with the limit 0 at x = 0.
+#[cfg(test)]
 fn xlogx(x: f64) -> f64 {
     if x == 0.0 {
         0.0

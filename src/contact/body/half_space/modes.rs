@@ -52,11 +52,6 @@ impl Modes {
         self.b.len()
     }
 
-    /// True when there is no creep term (elastic).
-    pub fn is_empty(&self) -> bool {
-        self.b.is_empty()
-    }
-
     /// κⱼ = bⱼ + δⱼ.
     pub(crate) fn kappa(&self, j: usize) -> f64 {
         self.b[j] + self.delta[j]

@@ -174,6 +174,7 @@ impl GapEvaluator {
     }
 
     /// Number of quadrature nodes (a cost measure).
+    #[cfg(test)]
     pub fn nodes(&self) -> usize {
         self.xi_nodes.len()
     }

@@ -20,10 +20,10 @@ pub(crate) mod kernel;
 pub(crate) mod spectral;
 pub(crate) mod winkler;
 
-pub use collocation::{LayerAnswer, LayerSettings};
+pub use collocation::LayerSettings;
 pub use compliance::WinklerColumns;
 pub use kernel::LayerKernel;
-pub use winkler::{Winkler, WinklerAnswer};
+pub use winkler::Winkler;
 
 use crate::contact::error::ContactError;
 use crate::contact::load::LoadSettings;

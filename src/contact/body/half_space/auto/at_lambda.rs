@@ -33,7 +33,7 @@
 
 use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
 use crate::contact::body::half_space::modes::Modes;
-use crate::special::chebyshev::{sine_series, sine_series_grid};
+use crate::special::chebyshev::sine_series_grid;
 use crate::special::equilibrated::solve_equilibrated;
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::PI;
@@ -69,16 +69,6 @@ pub struct LambdaSolution {
 }
 
 impl LambdaSolution {
-    /// Pressure Q′ at ξ ∈ [0, λ] (0 outside).
-    pub fn pressure(&self, xi: f64) -> f64 {
-        let l = 0.5 * self.lambda;
-        let t = xi / l - 1.0;
-        if !(-1.0..=1.0).contains(&t) {
-            return 0.0;
-        }
-        sine_series(&self.coefficients, t.acos())
-    }
-
     /// Pressure on the FFT grid θ_m = πm/M (M ≥ number of coefficients, so the spacing near the
     /// front edge, 1 − t ≈ (π/M)²/2 < 1/μ_max, resolves the thinnest layer): (ξ, Q′) for all m,
     /// and the subset returned as the profile: about `n_uniform` points uniform in θ plus every grid

@@ -46,6 +46,7 @@ impl LaplaceRule {
 
 /// Solve the layer equation at λ (module doc of [`super`]) with the layer term of degree `p`
 /// and the Laplace step `step` (lower cut 1e−20, [`LaplaceRule::with_step`]).
+#[cfg(test)]
 pub fn solve_at_lambda(
     modes: &Modes,
     lambda: f64,

@@ -72,6 +72,7 @@ use std::sync::OnceLock;
 const T_MAX: f64 = 20.0;
 
 /// J₀…J_nmax at x > 0 (Miller's backward recurrence, normalised by J₀ + 2ΣJ₂ₖ = 1).
+#[cfg(test)]
 pub fn bessel_j(x: f64, nmax: usize) -> Vec<f64> {
     let mut out = [Vec::new()];
     bessel_j_lanes(&[x], nmax, &mut out);
@@ -85,6 +86,7 @@ pub const LANES: usize = 8;
 
 /// [`bessel_j`] at up to [`LANES`] points at once: `out[q]` = J₀…J_nmax at `xs[q]`. Each lane starts
 /// at the highest start the lanes need (a higher start only makes Miller's algorithm more accurate).
+#[cfg(test)]
 pub fn bessel_j_lanes(xs: &[f64], nmax: usize, out: &mut [Vec<f64>]) {
     let w = xs.len().min(LANES).min(out.len());
     let mut j = Vec::new();
@@ -738,11 +740,6 @@ impl LayerTerm {
         g.column_iter()
             .map(|c| c.iter().copied().collect())
             .collect()
-    }
-
-    /// Chebyshev coefficients g_m of G for the H̃ coefficients `h` (a_k = h_{k+1}).
-    pub fn apply(&self, h: &[f64]) -> Vec<f64> {
-        self.apply_all(&[h]).swap_remove(0)
     }
 }
 

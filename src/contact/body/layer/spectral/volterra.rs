@@ -162,6 +162,7 @@ fn antiderivative(f: &[f64], n: usize) -> f64 {
 
 /// Exact Y\[f\] = ∫_t^1 e^{−μ(u−t)}f(u)du for each f of `fs` (Chebyshev coefficients), μ > 0, with
 /// `m` coefficients (module doc: m ≥ deg f + √(83μ) + 12 truncates below rounding).
+#[cfg(test)]
 pub fn memory_exact(mu: f64, fs: &[&[f64]], m: usize) -> Vec<Vec<f64>> {
     let mut out = vec![Vec::new(); fs.len()];
     memory_exact_add(mu, fs, m, 1.0, &mut out);
