@@ -38,7 +38,7 @@ pub use settings::{AutoSettings, ContactSettings, LoadSettings, Scheme};
 
 /// Solve the dimensionless problem on the half-space at contact length λ (the scheme of
 /// `settings`). For another body use [`body::solve_at_lambda`] with a [`DimensionlessScene`].
-pub(crate) fn solve_at_lambda(
+pub fn solve_at_lambda(
     terms: &[CreepTerm],
     lambda: f64,
     settings: &ContactSettings,
@@ -48,7 +48,7 @@ pub(crate) fn solve_at_lambda(
 
 /// Solve the dimensionless problem on the half-space at load N′ (the scheme of `settings`,
 /// `iterations` = solves made). For another body use [`body::solve_at_load`].
-pub(crate) fn solve_at_load(
+pub fn solve_at_load(
     terms: &[CreepTerm],
     load: f64,
     settings: &ContactSettings,

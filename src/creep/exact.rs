@@ -128,6 +128,7 @@ pub struct FluidCreep {
 
 impl FluidCreep {
     /// J(t) in 1/Pa at `t_s` ≥ 0, flow term included.
+    #[cfg(test)]
     pub fn creep_compliance(&self, t_s: f64) -> f64 {
         self.solid.creep_compliance(t_s) + t_s / self.viscosity_pa_s
     }

@@ -56,7 +56,8 @@ pub(crate) mod time_fit;
 
 pub(crate) use crate::material::AtTemperature;
 pub use error::CreepError;
-pub use exact::{creep_to_relaxation, fluid_to_creep, relaxation_to_creep, ExactInfo, FluidCreep};
+pub use exact::{creep_to_relaxation, relaxation_to_creep, ExactInfo};
+pub(crate) use exact::{fluid_to_creep, FluidCreep};
 pub use park_schapery::{
     park_schapery, ParkSchaperyInfo, ParkSchaperySettings, ParkSchaperyVariant,
 };

@@ -26,7 +26,8 @@ pub use fit_compound::{
 };
 pub use fit_time::fit_pyvisco_time_master;
 pub use roll_fit::{fit_spectrum_at, point_band, roll_source_at, CreepSource};
-pub use run::{run_all, run_all_with_progress, ProgressEvent, RunOptions};
+pub use run::{run_all, RunOptions};
+pub(crate) use run::{run_all_with_progress, ProgressEvent};
 pub(crate) use run::{RunStatus, RunSummary};
 pub(crate) use scenes::SceneSet;
 pub use scenes::{friction_maps, friction_vs_temperature, pipeline_map_settings, COVER_TOL};
