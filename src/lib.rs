@@ -16,6 +16,34 @@
 //! be run, saved, inspected and tested alone. The `viscoroll` binary is a thin shell over this library
 //! ([`cli`]). SI units inside; explicit units in field names at the edges (`freq_hz`, `load_n_per_m`).
 //!
+//! The whole chain, from a shipped DMA export (the EMS-CA sweeps of `data/`, data/SOURCES.md) to the
+//! rolling friction of one scene at 20 °C, with the main job's defaults:
+//!
+//! ```
+//! use std::path::PathBuf;
+//! use viscoroll::contact::{Body, ContactSettings, Scene};
+//! use viscoroll::pipeline::{fit_files, roll_source_at, CreepSource, FitOptions};
+//!
+//! let export =
+//!     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/pyvisco-ems-ca/freq_Eplexor_raw.xls");
+//! // ingest → master curve (time–temperature shifts) → Prony fit → exact creep spectrum
+//! let fit = fit_files("ems-ca", &[export], &FitOptions::default())?;
+//! assert!(fit.creep.is_some() && fit.relaxation.terms.len() > 5);
+//! // a 100 mm roll under 2 kN/m at 1 m/s on the half-space, the spectrum shifted to 20 °C
+//! let scene = Scene {
+//!     radius_m: 0.1,
+//!     load_n_per_m: 2000.0,
+//!     speed_m_s: 1.0,
+//!     poisson: None,
+//!     body: Body::HALF_SPACE,
+//! };
+//! let source = CreepSource::Fit(Box::new(fit));
+//! let r = roll_source_at(&source, Some(20.0), &scene, &ContactSettings::default())?;
+//! // rolling friction F/N: positive, and far below sliding friction for a rubber at room temperature
+//! assert!(r.roll.friction > 0.0 && r.roll.friction < 0.1, "{}", r.roll.friction);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! From a relaxation spectrum to the rolling friction of one scene:
 //!
 //! ```

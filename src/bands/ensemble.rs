@@ -433,7 +433,7 @@ pub const FROM_FIT_FILE_NOTE: &str = "made from the fit file alone (it carried n
 /// carried one, a master curve read already shifted): the fit's own master-curve points as one
 /// isotherm at T_ref (crate::tts::master_curve_from_reduced) bootstrapped as in [`build_ensemble`].
 /// The shifts cannot be resampled without the isotherms, so the band lacks their scatter; its notes
-/// say so ([`FROM_FIT_FILE_NOTE`]).
+/// say so (`FROM_FIT_FILE_NOTE`).
 pub fn ensemble_from_fit(
     fit: &CompoundFit,
     settings: &BandSettings,

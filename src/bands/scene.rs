@@ -179,7 +179,7 @@ pub fn scene_bands_by(
     bands_with(&job, given)
 }
 
-/// [`scene_ratios_on`] with the model-error terms it drew in and the failures it met (module doc,
+/// `scene_ratios_on` with the model-error terms it drew in and the failures it met (module doc,
 /// eqs. 15.6, 15.6b, 15.6c, 15.8, 15.9). Each term enters each replicate as a factor e^(s·u_b), u_b
 /// standard normal, one draw per replicate, term and side (below, above the measured range): the
 /// alternative's change is taken as one standard deviation, so the 90 % band spans ±1.645 of it.
@@ -203,14 +203,14 @@ pub fn scene_bands_on(
 }
 
 /// [`scene_bands_on`] with what the main job has already solved: `nominal[i]` = (F/N, contact
-/// length in m, body) of the fit at `temps_c[i]` on the cover by `auto` at [`COVER_BAND_TOL`] (the
+/// length in m, body) of the fit at `temps_c[i]` on the cover by `auto` at `COVER_BAND_TOL` (the
 /// main job's covered points are exactly that solve: crate::pipeline's `COVER_TOL` is the same
 /// 1e−3), NaN where it failed (then solved here), which saves one layer solve per temperature,
 /// starts each replicate's layer solve there and solves it on the same body
-/// ([`replicate_choice`]); and `half_space`, the replicates' half-space ratios of
-/// another scene with the same roll and temperatures ([`half_space_ratios`]; used only when it is
+/// (`replicate_choice`); and `half_space`, the replicates' half-space ratios of
+/// another scene with the same roll and temperatures (`half_space_ratios`; used only when it is
 /// of this scene, else solved here). Without a cover, or with a band tolerance looser than
-/// [`COVER_BAND_TOL`], `nominal` is not used (the half-space's ratios are over the fit solved at
+/// `COVER_BAND_TOL`, `nominal` is not used (the half-space's ratios are over the fit solved at
 /// the band tolerance, not the report's).
 #[allow(clippy::too_many_arguments)]
 pub fn scene_bands_given(

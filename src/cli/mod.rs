@@ -3,7 +3,7 @@
 //! Every computing command takes `--json` and then prints exactly one JSON object on stdout; human
 //! text goes to stderr. A failure prints one message on stderr — the error and its causes, each
 //! once — and with `--json` also one object `{"error": …, "kind": …}` on stdout, with the same exit
-//! code. Exit codes ([`EXIT_CODES`]): 0 success, 1 bad input or a failed computation, 2 usage error
+//! code. Exit codes (`EXIT_CODES`): 0 success, 1 bad input or a failed computation, 2 usage error
 //! (clap's full message, with its "a similar argument exists" tips), 3 `run` finished but some
 //! results are not trusted.
 

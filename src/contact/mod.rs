@@ -5,12 +5,12 @@
 //! [`Scheme`]: thesis, exact or auto); output: the [`RollSolution`] (pressure, contact length,
 //! offset, rolling-friction coefficient, error estimate and warnings) or a [`ContactError`].
 //!
-//! Layout: the ground, importing nothing else of contact: [`problem`] (the dimensionless problem and
-//! solution common to every body), [`settings`] (every scheme's settings), [`error`]; [`load`] (the
-//! load loop) on it; [`body`] (the seam: one enum, one dispatch; [`body::half_space`] holds the
-//! half-space kernel, modes, reduction and the three schemes, [`body::layer`] the cover and the Winkler
-//! foundations) over them; [`scene`] (to and from the dimensionless problem, [`roll`]), [`cover`] (the
-//! choice of body for a cover) and [`maps`] (friction maps of a spectrum from one reduced variable)
+//! Layout: the ground, importing nothing else of contact: `problem` (the dimensionless problem and
+//! solution common to every body), `settings` (every scheme's settings), `error`; `load` (the
+//! load loop) on it; `body` (the seam: one enum, one dispatch; `body::half_space` holds the
+//! half-space kernel, modes, reduction and the three schemes, `body::layer` the cover and the Winkler
+//! foundations) over them; `scene` (to and from the dimensionless problem, [`roll`]), `cover` (the
+//! choice of body for a cover) and `maps` (friction maps of a spectrum from one reduced variable)
 //! over the dispatch.
 //!
 //! Dimensionless problem (thesis §3.2, eq. 3.25): lengths in units of V·T, contact on 0 ≤ ξ ≤ λ with the
@@ -37,7 +37,7 @@ pub use scene::{roll, RollSolution, Scene};
 pub use settings::{AutoSettings, ContactSettings, LoadSettings, Scheme};
 
 /// Solve the dimensionless problem on the half-space at contact length λ (the scheme of
-/// `settings`). For another body use [`body::solve_at_lambda`] with a [`DimensionlessScene`].
+/// `settings`). For another body use `body::solve_at_lambda` with a `DimensionlessScene`.
 pub fn solve_at_lambda(
     terms: &[CreepTerm],
     lambda: f64,
@@ -47,7 +47,7 @@ pub fn solve_at_lambda(
 }
 
 /// Solve the dimensionless problem on the half-space at load N′ (the scheme of `settings`,
-/// `iterations` = solves made). For another body use [`body::solve_at_load`].
+/// `iterations` = solves made). For another body use `body::solve_at_load`.
 pub fn solve_at_load(
     terms: &[CreepTerm],
     load: f64,

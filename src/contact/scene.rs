@@ -165,7 +165,7 @@ impl DimensionlessScene {
     }
 }
 
-/// Solve one scene at its load: on its body ([`body::solve_at_load`], the one dispatch point) with
+/// Solve one scene at its load: on its body (`body::solve_at_load`, the one dispatch point) with
 /// the scheme of `settings`.
 ///
 /// Validity: eq. 3.22 replaces the roll by the parabola −(x−b)²/(2R). Over the contact the circle

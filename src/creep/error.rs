@@ -17,7 +17,7 @@ pub enum CreepError {
     Material(#[from] MaterialError),
     /// The relaxation spectrum describes a fluid (E∞ = 0): its creep function has a flow term t/η₀
     /// (thesis eq. 2.11) that [`CreepSpectrum`](crate::creep::CreepSpectrum) (a solid, eq. 2.12) cannot hold
-    /// ([`crate::creep::fluid_to_creep`] converts it with the flow term apart; the rolling contact
+    /// (`crate::creep::fluid_to_creep` converts it with the flow term apart; the rolling contact
     /// cannot use it: `crate::creep::FLUID_NO_STEADY_ROLLING`).
     #[error(
         "modulus_inf_pa = 0: the spectrum is a fluid (its creep compliance grows without bound, \

@@ -573,13 +573,13 @@ fn dd_div(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
 }
 
 impl RelaxationSpectrum {
-    /// The frequencies a conversion of this spectrum is checked over ([`check_frequencies`]):
+    /// The frequencies a conversion of this spectrum is checked over (`check_frequencies`):
     /// (ω_min, ω_max, the ω's) in rad/s.
     pub fn check_frequencies(&self) -> (f64, f64, Vec<f64>) {
         check_frequencies(self)
     }
 
-    /// max over `omegas_rad_s` of |E*(ω)·J*(ω) − 1| against `creep` ([`max_product_error`]).
+    /// max over `omegas_rad_s` of |E*(ω)·J*(ω) − 1| against `creep` (`max_product_error`).
     pub fn max_product_error(&self, creep: &CreepSpectrum, omegas_rad_s: &[f64]) -> f64 {
         max_product_error(self, creep, omegas_rad_s)
     }

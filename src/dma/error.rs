@@ -158,7 +158,7 @@ pub enum DmaError {
     /// No input file was given.
     #[error("no input files")]
     NoFiles,
-    /// Values no polymer DMA can give ([`super::plausible`]); the message names file, line and
+    /// Values no polymer DMA can give (`super::plausible`); the message names file, line and
     /// column.
     #[error("implausible data: {message}")]
     Implausible {

@@ -192,7 +192,7 @@ pub fn warnings(m: &Measurement) -> Vec<String> {
 }
 
 impl Measurement {
-    /// A measurement JSON, parsed and checked like any export ([`measurement_from_json`]).
+    /// A measurement JSON, parsed and checked like any export (`measurement_from_json`).
     pub fn from_json(name: &str, text: &str) -> Result<Self, super::DmaError> {
         measurement_from_json(name, text)
     }

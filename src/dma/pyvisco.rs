@@ -369,12 +369,12 @@ pub fn shift_csv(shifts: &[(f64, f64)]) -> String {
 }
 
 impl PyviscoMaster {
-    /// pyvisco's frequency-domain master-curve CSV of `points` ([`master_csv`]).
+    /// pyvisco's frequency-domain master-curve CSV of `points` (`master_csv`).
     pub fn master_csv(kind: ModulusKind, points: &[(f64, f64, f64)]) -> String {
         master_csv(kind, points)
     }
 
-    /// pyvisco's shift-factor CSV of `shifts` ([`shift_csv`]).
+    /// pyvisco's shift-factor CSV of `shifts` (`shift_csv`).
     pub fn shift_csv(shifts: &[(f64, f64)]) -> String {
         shift_csv(shifts)
     }

@@ -261,7 +261,7 @@ pub fn time_master_csv(kind: ModulusKind, points: &[(f64, f64)]) -> String {
 }
 
 impl PyviscoTimeMaster {
-    /// Read a time-domain master curve and its shift file, if any ([`read_time_master`]).
+    /// Read a time-domain master curve and its shift file, if any (`read_time_master`).
     pub fn read(
         master: &std::path::Path,
         shifts: Option<&std::path::Path>,
@@ -271,7 +271,7 @@ impl PyviscoTimeMaster {
         read_time_master(master, shifts, poisson, t_ref_c)
     }
 
-    /// [`PyviscoTimeMaster::read`] on bytes already read ([`time_master_from_bytes`]).
+    /// [`PyviscoTimeMaster::read`] on bytes already read (`time_master_from_bytes`).
     pub fn from_bytes(
         master_file: &str,
         master: &[u8],
@@ -282,7 +282,7 @@ impl PyviscoTimeMaster {
         time_master_from_bytes(master_file, master, shifts, poisson, t_ref_c)
     }
 
-    /// pyvisco's time-domain master-curve CSV of `points` ([`time_master_csv`]).
+    /// pyvisco's time-domain master-curve CSV of `points` (`time_master_csv`).
     pub fn master_csv(kind: ModulusKind, points: &[(f64, f64)]) -> String {
         time_master_csv(kind, points)
     }

@@ -4,10 +4,10 @@
 //!   created exclusively (`O_EXCL | O_NOFOLLOW`) in an open handle on the target's folder, flushed,
 //!   then renamed within that handle, so a reader never sees a half-written file, a crash leaves
 //!   the old file or the new one, and no symlink planted at a temporary or final name is followed.
-//! - The output folder as a jail ([`jail`]): below a folder held by a [`DirLock`], folders are walked
+//! - The output folder as a jail (`jail`): below a folder held by a [`DirLock`], folders are walked
 //!   without following symlinks, and a symlinked sub-folder is refused.
-//! - The folder lock ([`lock`]): an advisory `flock` that the OS releases with its process.
-//! - Reading inputs ([`read`]): regular files only, within a size limit, never blocking on a FIFO.
+//! - The folder lock (`lock`): an advisory `flock` that the OS releases with its process.
+//! - Reading inputs (`read`): regular files only, within a size limit, never blocking on a FIFO.
 //!
 //! Errors are [`std::io::Error`]s (kind `AlreadyExists` when `replace` is false and the file
 //! exists); callers wrap them in their stage's enum.

@@ -1,7 +1,7 @@
 //! Ground floor `material`: the basics every stage shares, with no stage of its own — the modulus
 //! kind ([`ModulusKind`]), the shift law a_T(T) and its evaluation at a temperature ([`ShiftLaw`],
-//! [`AtTemperature`]), the Debye terms of one relaxation or retardation term ([`debye`]), parameter
-//! checks with their typed error ([`MaterialError`]) and unit constants ([`units`]).
+//! [`AtTemperature`]), the Debye terms of one relaxation or retardation term (`debye`), parameter
+//! checks with their typed error ([`MaterialError`]) and unit constants (`units`).
 //!
 //! Import rule: the stages sit on floors, and a module imports only from its own floor or below:
 //!

@@ -84,7 +84,7 @@ impl ShiftLaw {
         }
     }
 
-    /// Check the law's constants: WLF C1 > 0 and C2 > 0 K ([`check_wlf_constants`]); Arrhenius
+    /// Check the law's constants: WLF C1 > 0 and C2 > 0 K (`check_wlf_constants`); Arrhenius
     /// E_a > 0; a table of at least two finite rows at distinct, increasing temperatures.
     pub fn validate(&self) -> Result<(), MaterialError> {
         match self {

@@ -36,7 +36,7 @@ pub fn fit_time_data(
 }
 
 /// Fit pyvisco's time-domain master curve (`t, E_relax`, read already reduced to its T_ref with
-/// its shift factors, [`crate::dma::pyvisco_time`]) in time, as [`fit_time_data`] fits shifted
+/// its shift factors, `crate::dma::pyvisco_time`) in time, as `fit_time_data` fits shifted
 /// isotherms. Without a shift file the law is a single temperature's (a_T = 1 at T_ref, known
 /// nowhere else), and a warning says that the friction is then determined at T_ref only.
 pub fn fit_pyvisco_time_master(

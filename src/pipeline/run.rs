@@ -44,7 +44,7 @@ pub struct RunOptions {
     pub allow_extrapolation: bool,
     /// Uncertainty bands (crate::bands) with these settings; `None` skips them (`--no-bands`).
     pub bands: Option<BandSettings>,
-    /// Longest wait for another run that holds the output folder (`--wait`; default [`LOCK_WAIT`]).
+    /// Longest wait for another run that holds the output folder (`--wait`; default `LOCK_WAIT`).
     pub lock_wait: std::time::Duration,
     /// Run only this shard's compounds (`--shard K/N`, crate::pipeline::shard); `None`: all.
     pub shard: Option<super::shard::Shard>,

@@ -229,8 +229,8 @@ fn map_jobs(spec: &SceneSpec) -> Vec<(f64, f64, f64, u8)> {
 
 /// Friction maps of `fit` in `spec` ([`FrictionMaps`]), all from one interpolant of the
 /// dimensionless solution: in the reduced variable s = l_g/(V·a_T) on the half-space (module
-/// [`crate::contact::maps`]: exact scaling, interpolation error ≤ `settings.tol`), in s and
-/// η = h/l_g on the bonded layer for a covered scene ([`crate::contact::maps::covered_map`], at
+/// `crate::contact::maps`: exact scaling, interpolation error ≤ `settings.tol`), in s and
+/// η = h/l_g on the bonded layer for a covered scene (`crate::contact::maps::covered_map`, at
 /// least [`COVER_TOL`]). A covered surface that cannot be built leaves the maps empty (NaN) with
 /// the reason in `warnings`, so the friction against temperature still counts.
 pub fn friction_maps(

@@ -31,7 +31,7 @@ pub struct PronyInfo {
     pub max_abs_log10_loss: f64,
     /// Master-curve points fitted.
     pub n_points: usize,
-    /// When the master curve had more than [`super::fit::THIN_ABOVE_POINTS`] points: how many. The
+    /// When the master curve had more than `super::fit::THIN_ABOVE_POINTS` points: how many. The
     /// fit then used `n_points` means of equal-count groups in log-frequency (the errors above are
     /// against those means).
     #[serde(default, skip_serializing_if = "Option::is_none")]

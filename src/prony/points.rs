@@ -66,7 +66,7 @@ pub struct MasterPoint {
     /// Loss modulus E″ (or G″) in Pa.
     pub loss_pa: f64,
     /// Weights of this point's E′ and E″ residuals in the fit (1, 1 unless the point's reduced
-    /// frequency is uncertain: [`crate::tts::point_weights`], docs/MATH.md eq. 5.1).
+    /// frequency is uncertain: `crate::tts::point_weights`, docs/MATH.md eq. 5.1).
     #[serde(default = "unit_weight", skip_serializing_if = "is_unit_weight")]
     pub weight: [f64; 2],
 }
@@ -92,7 +92,7 @@ fn is_unit_weight(w: &[f64; 2]) -> bool {
 }
 
 impl RelaxationSpectrum {
-    /// RMS and largest |log10| errors of this spectrum's E′ and E″ on `points` ([`log10_errors`]).
+    /// RMS and largest |log10| errors of this spectrum's E′ and E″ on `points` (`log10_errors`).
     pub fn log10_errors(&self, points: &[MasterPoint]) -> Log10Errors {
         log10_errors(points, self)
     }

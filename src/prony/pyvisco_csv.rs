@@ -198,12 +198,12 @@ pub fn pyvisco_terms_csv(spectrum: &RelaxationSpectrum) -> String {
 }
 
 impl RelaxationSpectrum {
-    /// Read pyvisco's Prony-term CSV ([`read_pyvisco_terms`]; `poisson` is stated by the caller).
+    /// Read pyvisco's Prony-term CSV (`read_pyvisco_terms`; `poisson` is stated by the caller).
     pub fn from_pyvisco_csv(file: &str, bytes: &[u8], poisson: f64) -> Result<Self, PronyError> {
         read_pyvisco_terms(file, bytes, poisson)
     }
 
-    /// This spectrum in pyvisco's Prony-term layout ([`pyvisco_terms_csv`]).
+    /// This spectrum in pyvisco's Prony-term layout (`pyvisco_terms_csv`).
     pub fn to_pyvisco_csv(&self) -> String {
         pyvisco_terms_csv(self)
     }

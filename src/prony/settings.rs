@@ -18,7 +18,7 @@ pub enum WeightRule {
     /// terms. It estimates the prediction error, so it goes to small λ on exact data and to the
     /// noise level on noisy data, without a corner to find.
     Gcv,
-    /// A fixed weight λ (dimensionless, in the scaled problem of [`crate::prony::fit`]).
+    /// A fixed weight λ (dimensionless, in the scaled problem of `crate::prony::fit`).
     Fixed {
         /// λ ≥ 0.
         lambda: f64,
@@ -60,7 +60,7 @@ pub struct PronySettings {
     /// Iteration limit of each QP solve (clarabel; default 200, its own default).
     pub max_iter: u32,
     /// Reduce the dense grid spectrum to the fewest terms at free positions that meet the target
-    /// ([`crate::prony::terms`]; EMS-CA 65 → 28 terms, TRIOS 32 → 19 at no worse RMS log10 error of
+    /// (`crate::prony::terms`; EMS-CA 65 → 28 terms, TRIOS 32 → 19 at no worse RMS log10 error of
     /// E′ and E″ against the data; figures in that module's docs; `max_terms` or `target_rms_log10` imply it). Default false: on the known-truth
     /// compounds the reduced fit is no worse against the noisy data but up to 3.7× worse in E′ against
     /// the true spectrum (high-tg-tread 0.0032 → 0.0120 decade), so the main job keeps the dense,

@@ -824,20 +824,20 @@ pub fn read_lsdyna(text: &str) -> Result<CardContents, CardError> {
 }
 
 impl CardContents {
-    /// Most Prony cards (terms including the β = 0 one) written for LS-DYNA ([`LSDYNA_MAX_TERMS`]).
+    /// Most Prony cards (terms including the β = 0 one) written for LS-DYNA (`LSDYNA_MAX_TERMS`).
     pub const LSDYNA_MAX_TERMS: usize = LSDYNA_MAX_TERMS;
 
-    /// Read an Abaqus card ([`read_abaqus`]).
+    /// Read an Abaqus card (`read_abaqus`).
     pub fn from_abaqus(text: &str) -> Result<Self, CardError> {
         read_abaqus(text)
     }
 
-    /// Read an ANSYS APDL card ([`read_ansys`]).
+    /// Read an ANSYS APDL card (`read_ansys`).
     pub fn from_ansys(text: &str) -> Result<Self, CardError> {
         read_ansys(text)
     }
 
-    /// Read an LS-DYNA card ([`read_lsdyna`]).
+    /// Read an LS-DYNA card (`read_lsdyna`).
     pub fn from_lsdyna(text: &str) -> Result<Self, CardError> {
         read_lsdyna(text)
     }

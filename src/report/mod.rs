@@ -2,9 +2,9 @@
 //! friction tables), the ranking, the index page, plots and FEA export cards.
 //!
 //! Input: the saved results ([`crate::results`]): fits, friction points and maps, run outcomes;
-//! output: files, each written atomically through [`write_file`] (the crate's one atomic writer,
-//! [`crate::fsutil`]). CSV goes through the csv crate ([`csv_text`]): one header row, no comment
-//! lines, a sidecar `NAME.meta.json` beside each table ([`csv_meta`]). Imports only downward
+//! output: files, each written atomically through `write_file` (the crate's one atomic writer,
+//! [`crate::fsutil`]). CSV goes through the csv crate (`csv_text`): one header row, no comment
+//! lines, a sidecar `NAME.meta.json` beside each table (`csv_meta`). Imports only downward
 //! (results and the stages); the pipeline calls it.
 
 pub(crate) mod card_refit;

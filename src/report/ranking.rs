@@ -189,7 +189,7 @@ pub(crate) fn ranking_meta(scenes: &SceneSet, allow_extrapolation: bool) -> CsvM
     m
 }
 
-/// Write `reports/ranking.csv` at `path` and its sidecar ([`ranking_csv`], `ranking_meta`).
+/// Write `reports/ranking.csv` at `path` and its sidecar (`ranking_csv`, `ranking_meta`).
 pub fn write_ranking(
     path: &std::path::Path,
     outcomes: &[CompoundOutcome],

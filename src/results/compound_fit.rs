@@ -33,7 +33,7 @@ pub const COMPOUND_FIT_FORMAT_VERSION: u32 = 1;
 /// One compound's fit, as saved in `fits/NAME.json`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CompoundFit {
-    /// File format version ([`COMPOUND_FIT_FORMAT_VERSION`]).
+    /// File format version (`COMPOUND_FIT_FORMAT_VERSION`).
     pub format_version: u32,
     /// Compound name (the file stem by default).
     pub compound: String,

@@ -1,5 +1,5 @@
 //! Results as plain serde data, the floor below `pipeline` and `report`: the fit file of a compound
-//! ([`CompoundFit`]), the scenes and what a compound does in them ([`scene`]), and the outcome of the
+//! ([`CompoundFit`]), the scenes and what a compound does in them (`scene`), and the outcome of the
 //! main job ([`RunSummary`]).
 //!
 //! Input: what the stages hand on (measurement, shift law, Prony fit, creep spectrum, contact

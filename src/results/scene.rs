@@ -355,8 +355,8 @@ pub const EXTRAPOLATION_LIMIT_K: f64 = 10.0;
 impl FrictionPoint {
     /// Decide whether the point is determined: not when its band (the measurement's and the
     /// model's terms, before the between-specimen term: that one is the same for every point and
-    /// stated apart) spans more than [`UNDETERMINED_BAND_RATIO`], or its temperature lies more
-    /// than [`EXTRAPOLATION_LIMIT_K`] beyond `measured_c` (the measured temperatures). A failed
+    /// stated apart) spans more than `UNDETERMINED_BAND_RATIO`, or its temperature lies more
+    /// than `EXTRAPOLATION_LIMIT_K` beyond `measured_c` (the measured temperatures). A failed
     /// point is failed, not undetermined.
     pub fn determine(&mut self, measured_c: Option<(f64, f64)>) {
         if self.error.is_some() || !self.friction.is_finite() {
@@ -447,11 +447,11 @@ pub struct FrictionMaps {
     /// F/N against `map_speeds_m_s` (at the scene's load) and against `map_loads_n_per_m` (at the
     /// scene's speed), at every map temperature.
     pub points: Vec<MapPoint>,
-    /// F/N on a [`GRID_POINTS`]² grid of speed × load (log-spaced between the smallest and largest
+    /// F/N on a `GRID_POINTS`² grid of speed × load (log-spaced between the smallest and largest
     /// listed speed and load) at every map temperature; empty unless both lists span a range.
     pub grid: Vec<MapPoint>,
     /// F/N against speed (at the scene's load) and against load (at the scene's speed) at
-    /// [`CURVE_POINTS`] log-spaced values between the smallest and largest listed one, at every map
+    /// `CURVE_POINTS` log-spaced values between the smallest and largest listed one, at every map
     /// temperature, from the same interpolant as `points` (for the datasheet's curves).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub curves: Vec<MapPoint>,

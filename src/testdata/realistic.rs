@@ -555,10 +555,10 @@ pub fn dma_csv(rows: &[DmaRow]) -> String {
 pub enum ExportFormat {
     /// [`dma_csv`]: plain CSV, Hz and MPa, a segment column.
     PlainCsv,
-    /// [`dma_trios_text`]: TA TRIOS plain text of a shear run (G = E/3), rad/s and Pa, one
+    /// `dma_trios_text`: TA TRIOS plain text of a shear run (G = E/3), rad/s and Pa, one
     /// `[step]` per isotherm.
     TriosText,
-    /// [`dma_proteus`]: Netzsch Proteus ASCII, decimal comma, `;`-separated, MPa, cp1252.
+    /// `dma_proteus`: Netzsch Proteus ASCII, decimal comma, `;`-separated, MPa, cp1252.
     Proteus,
 }
 

@@ -67,7 +67,7 @@ pub struct MasterCurve {
 
 /// Build the master curve of `measurement` (see the module docs); with
 /// `correct_point_temperatures`, first move every point to its isotherm's temperature
-/// ([`super::point_temps`]) with the slopes of the given law or of a first shifting pass.
+/// (`super::point_temps`) with the slopes of the given law or of a first shifting pass.
 pub fn build_master_curve(
     measurement: &Measurement,
     settings: &MasterSettings,

@@ -1,6 +1,6 @@
 //! Stage `tts`: time–temperature superposition. Horizontal (and optional vertical) shifts of the
 //! isotherms of a [`crate::Measurement`], WLF and Arrhenius fits of log a_T → master curve and
-//! [`ShiftLaw`] (docs/MATH.md §6).
+//! `ShiftLaw` (docs/MATH.md §6).
 
 mod assess;
 mod channels;

@@ -122,7 +122,7 @@ pub struct MasterSettings {
     /// Quality bounds.
     pub bounds: QualityBounds,
     /// Move each point that has its own measured temperature to its isotherm's temperature before
-    /// shifting ([`super::point_temps`]: f → f·10^(s·(T_p − T_i)), s = d log10 a_T/dT from a first
+    /// shifting (`super::point_temps`: f → f·10^(s·(T_p − T_i)), s = d log10 a_T/dT from a first
     /// shifting pass, or from the given law). Default off here (`viscoroll master` shows the data as
     /// measured); the main job turns it on: on synthetic exports with ±1.5 K drift it removed most
     /// of the shift error at the cold end (tests/known_truth.rs).

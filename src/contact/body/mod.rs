@@ -68,15 +68,15 @@ pub enum Body {
         cover_m: Option<f64>,
     },
     /// A viscoelastic cover of thickness `thickness_m` bonded to a rigid carcass (plane strain,
-    /// [`layer`]). Every scheme is served at given load by the layer's own error-controlled solver
-    /// ([`layer::layer_at_load`]: spectral to `settings.auto.tol`, the hat collocation for covers
+    /// `layer`). Every scheme is served at given load by the layer's own error-controlled solver
+    /// (`layer::layer_at_load`: spectral to `settings.auto.tol`, the hat collocation for covers
     /// too thin for it); at given λ by the thesis collocation with `settings.n` intervals.
     Layer {
         /// Cover thickness in m (> 0).
         thickness_m: f64,
     },
     /// A Winkler foundation of uniaxial columns of height `height_m` (conveyor design tools;
-    /// [`layer::winkler`], closed form).
+    /// `layer::winkler`, closed form).
     Winkler {
         /// Column height in m (> 0).
         height_m: f64,
