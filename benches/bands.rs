@@ -6,7 +6,7 @@
 //! replicate solves of every scene. Prints a table. Run: `cargo bench --bench bands`.
 
 use std::time::Instant;
-use viscoroll::bands::{build_ensemble, scene_ratios_on, BandSettings};
+use viscoroll::bands::{build_ensemble, scene_bands_on, BandSettings};
 use viscoroll::dma::{read_files, IngestOptions};
 use viscoroll::pipeline::fit_measurement_master;
 use viscoroll::pipeline::{run_all, FitOptions, RunOptions};
@@ -109,7 +109,7 @@ fn main() {
             for spec in &scenes.scene {
                 // on the scene's body, as the main job (a cover: eq. 15.6b)
                 let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
-                std::hint::black_box(scene_ratios_on(
+                std::hint::black_box(scene_bands_on(
                     &fit,
                     &e,
                     &spec.scene(),

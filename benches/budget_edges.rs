@@ -6,6 +6,10 @@
 //! without it only the wall time is printed); the run's exit code is printed beside them (0 and 3
 //! both mean it finished).
 //!
+//! The limits are crate-internal (`pub(crate)` in src/limits.rs, issue 30's small public API): the
+//! bench reads their values from that file's text (`limit`), so the rows stay at the limits the
+//! crate enforces without widening the public API.
+//!
 //! `cargo bench --bench budget_edges` (release), or with the test profile and no release build:
 //! `cargo test --bench budget_edges`. `BUDGET_ONLY=word` runs the rows whose name holds the word.
 
@@ -14,10 +18,29 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
-use viscoroll::limits::{
-    CONTACT_N_MAX, COVER_OVER_RADIUS_MIN, MAP_CELLS_MAX, MAP_CELLS_PER_POINT,
-    PRONY_LAMBDA_COUNT_MAX, SCENES_MAX, SCENE_TEMPS_MAX, SCENE_WORK_MAX,
-};
+
+/// The value of the constant `name` in src/limits.rs (`pub(crate) const NAME: type = value;`).
+fn limit(name: &str) -> f64 {
+    include_str!("../src/limits.rs")
+        .lines()
+        .find_map(|l| {
+            let rest = l.trim().strip_prefix("pub(crate) const ")?;
+            let (n, rest) = rest.split_once(':')?;
+            (n.trim() == name).then_some(())?;
+            rest.split_once('=')?
+                .1
+                .trim()
+                .trim_end_matches(';')
+                .parse()
+                .ok()
+        })
+        .unwrap_or_else(|| panic!("src/limits.rs has no numeric constant {name}"))
+}
+
+/// [`limit`] of a count.
+fn count(name: &str) -> usize {
+    limit(name) as usize
+}
 
 /// Run the CLI under `/usr/bin/time -v` when present: (wall s, peak RSS MB, exit code).
 fn measure(args: &[OsString]) -> (f64, f64, Option<i32>) {
@@ -127,40 +150,47 @@ fn run_args(dir: &Path) -> Vec<OsString> {
 
 fn main() {
     let root = std::env::temp_dir().join(format!("viscoroll-budget-{}", std::process::id()));
+    let (contact_n_max, cover_over_radius_min) =
+        (count("CONTACT_N_MAX"), limit("COVER_OVER_RADIUS_MIN"));
+    let (map_cells_max, map_cells_per_point) =
+        (count("MAP_CELLS_MAX"), count("MAP_CELLS_PER_POINT"));
+    let (prony_lambda_count_max, scenes_max) =
+        (count("PRONY_LAMBDA_COUNT_MAX"), count("SCENES_MAX"));
+    let (scene_temps_max, scene_work_max) = (count("SCENE_TEMPS_MAX"), count("SCENE_WORK_MAX"));
     let only = std::env::var("BUDGET_ONLY").unwrap_or_default();
     // just above 1e-4 of the radius (1e-4 × 66.5 itself rounds below it)
-    let thinnest_mm = 1.0001 * COVER_OVER_RADIUS_MIN * 66.5;
+    let thinnest_mm = 1.0001 * cover_over_radius_min * 66.5;
     let one = scene("idler", 9, None, 0, 0, None);
     // the work limit as two scenes: the per-scene limit of temperatures, and the rest
     let two = |cover: Option<f64>, tol: Option<f64>| -> String {
-        scene("a", SCENE_TEMPS_MAX, cover, 0, 0, tol)
+        scene("a", scene_temps_max, cover, 0, 0, tol)
             + "\n"
-            + &scene("b", SCENE_WORK_MAX - SCENE_TEMPS_MAX, cover, 0, 0, tol)
+            + &scene("b", scene_work_max - scene_temps_max, cover, 0, 0, tol)
     };
     // 10 map temperatures × (50 + 50) = the per-scene cell limit, and temperatures up to the work
-    let cells = scene("m", 9, Some(5.0), MAP_CELLS_MAX / 100, 50, None)
+    let cells = scene("m", 9, Some(5.0), map_cells_max / 100, 50, None)
         + "\n"
         + &scene(
             "t",
-            SCENE_WORK_MAX - 9 - MAP_CELLS_MAX / MAP_CELLS_PER_POINT,
+            scene_work_max - 9 - map_cells_max / map_cells_per_point,
             Some(5.0),
             0,
             0,
             None,
         );
     // every scene the set may hold, 3 temperatures and 1 × (2 + 2) map cells each: 64 × 3 + 256 / 5
-    let many: String = (0..SCENES_MAX)
+    let many: String = (0..scenes_max)
         .map(|k| scene(&format!("s{k}"), 3, Some(5.0), 1, 2, None))
         .collect::<Vec<_>>()
         .join("\n");
-    let lambda = format!("lambda_count = {PRONY_LAMBDA_COUNT_MAX}");
+    let lambda = format!("lambda_count = {prony_lambda_count_max}");
     let rows: Vec<(String, Vec<OsString>)> = vec![
         (
             "run, one 9-temperature scene (reference)".into(),
             run_args(&folder(&root, "ref", "", &one)),
         ),
         (
-            format!("run, prony.lambda_count = {PRONY_LAMBDA_COUNT_MAX}"),
+            format!("run, prony.lambda_count = {prony_lambda_count_max}"),
             run_args(&folder(&root, "lambda", &lambda, &one)),
         ),
         (
@@ -173,25 +203,25 @@ fn main() {
             )),
         ),
         (
-            format!("run, {SCENE_WORK_MAX} temperatures on a half-space"),
+            format!("run, {scene_work_max} temperatures on a half-space"),
             run_args(&folder(&root, "hs", "", &two(None, None))),
         ),
         (
-            format!("run, {SCENE_WORK_MAX} points with {MAP_CELLS_MAX} map cells, 5 mm cover"),
+            format!("run, {scene_work_max} points with {map_cells_max} map cells, 5 mm cover"),
             run_args(&folder(&root, "cells", "", &cells)),
         ),
         (
-            format!("run, {SCENES_MAX} scenes with maps, 5 mm cover"),
+            format!("run, {scenes_max} scenes with maps, 5 mm cover"),
             run_args(&folder(&root, "many", "", &many)),
         ),
         (
             format!(
-                "run, {SCENE_WORK_MAX} temperatures on the thinnest cover (h/R = {COVER_OVER_RADIUS_MIN:e}), tol 1e-10, {lambda}"
+                "run, {scene_work_max} temperatures on the thinnest cover (h/R = {cover_over_radius_min:e}), tol 1e-10, {lambda}"
             ),
             run_args(&folder(&root, "worst", &lambda, &two(Some(thinnest_mm), Some(1e-10)))),
         ),
         (
-            format!("contact --n {CONTACT_N_MAX} (thesis collocation)"),
+            format!("contact --n {contact_n_max} (thesis collocation)"),
             [
                 "contact",
                 "--creep",
@@ -199,7 +229,7 @@ fn main() {
                 "--load",
                 "1",
                 "--n",
-                &CONTACT_N_MAX.to_string(),
+                &contact_n_max.to_string(),
             ]
             .iter()
             .map(OsString::from)

@@ -8,11 +8,14 @@
 //! Times are CPU time of the (single) thread per load point, and wall time next to it (on a shared
 //! machine the wall time includes waiting for a core). Times are without the optional gap check
 //! outside the contact (`gap_check: false`); one line prints its cost for the one-term case.
+//! The auto scheme runs through the public entry `contact::solve_at_load` with `Scheme::Auto`.
 //! Run: `cargo bench --bench contact_auto` (single-threaded; prints a Markdown table).
 
 use std::time::Instant;
-use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
-use viscoroll::contact::{one_term_at_load, solve_at_load, ContactSettings, CreepTerm, Scheme};
+use viscoroll::contact::{
+    one_term_at_load, solve_at_load, AutoSettings, ContactSettings, CreepTerm,
+    DimensionlessSolution, Scheme,
+};
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
     if n == 1 {
@@ -147,4 +150,19 @@ fn main() {
             reference.error_estimate.unwrap()
         );
     }
+}
+
+/// The auto scheme at load N′ through the public entry: `contact::solve_at_load` with
+/// `Scheme::Auto` and these auto settings.
+fn solve_auto_at_load(
+    terms: &[CreepTerm],
+    load: f64,
+    auto: &AutoSettings,
+) -> Result<DimensionlessSolution, viscoroll::contact::ContactError> {
+    let settings = ContactSettings {
+        scheme: Scheme::Auto,
+        auto: *auto,
+        ..Default::default()
+    };
+    solve_at_load(terms, load, &settings)
 }

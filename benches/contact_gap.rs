@@ -1,11 +1,14 @@
-//! Cost of the contact-condition check outside the contact (`contact::rear_gap`, issue 4 item 4):
+//! Cost of the contact-condition check outside the contact (the auto scheme's `gap_check`, issue 4 item 4):
 //! time per load point of the `auto` scheme with and without `gap_check`, for the 1-, 10- and
 //! 30-term spectra of `benches/contact_auto.rs`, at tol 1e−6, load N′ = 1.
+//! Through the public entry `contact::solve_at_load` with `Scheme::Auto` (the settings of
+//! `ContactSettings::default()` otherwise).
 //! Run: `cargo bench --bench contact_gap` (single-threaded; prints a Markdown table).
 
 use std::time::Instant;
-use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
-use viscoroll::contact::CreepTerm;
+use viscoroll::contact::{
+    solve_at_load, AutoSettings, ContactSettings, CreepTerm, DimensionlessSolution, Scheme,
+};
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
     if n == 1 {
@@ -58,4 +61,19 @@ fn main() {
             (t_on - t_off) * 1e3
         );
     }
+}
+
+/// The auto scheme at load N′ through the public entry: `contact::solve_at_load` with
+/// `Scheme::Auto` and these auto settings.
+fn solve_auto_at_load(
+    terms: &[CreepTerm],
+    load: f64,
+    auto: &AutoSettings,
+) -> Result<DimensionlessSolution, viscoroll::contact::ContactError> {
+    let settings = ContactSettings {
+        scheme: Scheme::Auto,
+        auto: *auto,
+        ..Default::default()
+    };
+    solve_at_load(terms, load, &settings)
 }

@@ -1,23 +1,35 @@
-//! Speed/accuracy table of the bodies of issue 14: the bonded layer (spectral solver, the default, and
-//! the hat collocation, `contact::body::layer`), the uniaxial Winkler foundation (closed form) and
-//! the half-space (`auto`).
+//! Speed/accuracy table of the bodies of issue 14: the bonded layer (its error-controlled solver,
+//! spectral with the hat collocation as fallback for covers too thin for it), the uniaxial Winkler
+//! foundation (closed form) and the half-space (`auto`), all through the public API: the layer and
+//! the Winkler foundation by `contact::roll_cover` / `contact::roll` on a scene whose dimensionless
+//! problem is the spectrum's terms at N′ = ¼ (`support/dimless.rs`), the half-space by
+//! `contact::solve_at_load` with `Scheme::Auto`.
 //!
-//! Scope: time per load point (N′ = 1/4, load loop included) and the relative error of ρF/N and λ
-//! against the layer reference: the spectral solver at tol 1e−9 (its estimate printed). For the
-//! layer rows that is the solver's error; the Winkler closed form is exact to rounding and the
-//! half-space converged to its tol, so their error columns are the model error against the layer.
-//! Spectra as in `contact_auto`: 1 term (f = 10, b = 1), 30 terms over 24 decades with J∞/J_g = 1e3.
-//! Run: `cargo bench --bench contact_layer` (single thread; prints a Markdown table).
+//! Scope: time per load point (N′ = 1/4, load loop included), the solves at given λ it made and the
+//! relative error of ρF/N and λ against the layer reference: the layer solver at tol 1e−9 (its
+//! estimate printed). For the layer rows that is the solver's error; the Winkler closed form is exact
+//! to rounding and the half-space converged to its tol, so their error columns are the model error
+//! against the layer. Spectra as in `contact_auto`: 1 term (f = 10, b = 1), 30 terms over 24 decades
+//! with J∞/J_g = 1e3; covers h/λ_HS = 0.03 … 10. A second table times a covered friction map point by
+//! point (`roll_cover`, `Body::Auto`).
+//!
+//! Dropped with the public API of issue 30 (internals are `pub(crate)`): the rows of the hat
+//! collocation forced on covers the spectral solver serves (the public layer picks its solver
+//! itself), the profile of one layer solve at λ (kernel hat averages, Fourier correction, LU) and
+//! `layer_profile`'s split of a load point into the layer term, the degree rule and the contact
+//! checks. Those are internal pieces; their speed shows in the load-point times here.
+//! Run: `cargo bench --bench contact_layer` (single thread; prints Markdown tables).
 
 use std::time::Instant;
-use viscoroll::contact::body::layer::{
-    collocation, layer_at_load, winkler_at_load, LayerKernel, LayerSettings, WinklerColumns,
+use viscoroll::contact::{
+    roll, roll_cover, solve_at_load, AutoSettings, Body, ContactSettings, CreepTerm,
+    DimensionlessSolution, Scene, Scheme,
 };
-use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
-use viscoroll::contact::load::LoadSettings;
-use viscoroll::contact::roll_cover;
-use viscoroll::contact::{Body, CreepTerm, Scene};
 use viscoroll::CreepSpectrum;
+
+#[path = "support/dimless.rs"]
+mod dimless;
+use dimless::{assert_same, scene_of, LOAD};
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
     if n == 1 {
@@ -54,34 +66,6 @@ fn ms(t: f64) -> String {
 
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
-}
-
-/// Where the time of one layer solve at given λ goes (kernel table: half-space part and Fourier
-/// correction; the dense LU), for the two spectra at h = λ.
-fn profile() {
-    println!(
-        "| spectrum | n | half-space hat averages | correction hat averages | solve at λ (all) |"
-    );
-    println!("|---|---|---|---|---|");
-    for (name, terms) in [
-        ("1 term f=10 b=1", spectrum(1, 0.0, 0.0)),
-        ("30 terms, 24 decades, J∞/J_g=1e3", spectrum(30, 24.0, 1e3)),
-    ] {
-        let k = LayerKernel::new(&terms, 1.0, 0.5).unwrap();
-        for n in [64usize, 256, 1024] {
-            let d = 1.0 / n as f64;
-            let (_, t_hs) = time_it(|| k.half_space().hat_averages(n, d));
-            let (_, t_c) = time_it(|| k.correction_hat_averages(n, d));
-            let (_, t_s) = time_it(|| collocation::solve_at_lambda(&k, 1.0, n).unwrap());
-            println!(
-                "| {name} | {n} | {} | {} | {} |",
-                ms(t_hs),
-                ms(t_c),
-                ms(t_s)
-            );
-        }
-    }
-    println!();
 }
 
 /// What a covered friction map costs today (issue 14 item 5 / #14 leftover 3): the covered maps are
@@ -129,107 +113,64 @@ fn covered_map_timing() {
 }
 
 fn main() {
-    profile();
     covered_map_timing();
-    if std::env::args().any(|a| a == "--profile-only") {
-        return;
-    }
-    let load = 0.25;
-    println!("| spectrum | h/λ_HS | body | tol | time/load point | p or n | error ρF/N | error λ | estimate |");
-    println!("|---|---|---|---|---|---|---|---|---|");
+    let load = LOAD;
+    println!("| spectrum | h/λ_HS | body | tol | time/load point | solves | p or n | error ρF/N | error λ | estimate |");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
     for (name, terms) in [
         ("1 term f=10 b=1", spectrum(1, 0.0, 0.0)),
         ("30 terms, 24 decades, J∞/J_g=1e3", spectrum(30, 24.0, 1e3)),
     ] {
-        let hs = solve_auto_at_load(
-            &terms,
-            load,
-            &AutoSettings {
-                tol: 1e-10,
-                gap_check: false,
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        for hr in [0.1, 0.3, 1.0, 3.0] {
+        let hs = solve_auto_at_load(&terms, load, 1e-10).unwrap();
+        for hr in [0.03, 0.1, 0.3, 1.0, 3.0, 10.0] {
             let h = hr * hs.lambda;
             let nu = 0.5;
-            let layer = |tol: f64, spectral: bool| {
-                layer_at_load(
-                    &terms,
-                    load,
-                    h,
-                    nu,
-                    &LayerSettings {
-                        tol,
-                        spectral,
-                        n_max: 1024,
-                        ..Default::default()
-                    },
-                )
-                .unwrap()
-            };
-            let reference = layer(1e-9, true);
-            let (rf, rl) = (reference.solution.friction_rho, reference.solution.lambda);
+            let (layer_scene, spec) = scene_of(&terms, nu, |vt| Body::Layer {
+                thickness_m: h * vt,
+            });
+            let layer = |tol: f64| roll_cover(&layer_scene, &spec, tol).unwrap();
+            let reference = layer(1e-9);
+            let p = &reference.roll.problem;
+            assert_same(&p.terms, p.load, &terms);
+            let r = &reference.roll.dimensionless;
+            let (rf, rl) = (r.friction_rho, r.lambda);
             println!(
-                "| {name} | {hr} | layer spectral (reference) | 1e-9 | — | {} | — | — | {:.1e} |",
-                reference.solution.n, reference.error_estimate
+                "| {name} | {hr} | layer (reference) | 1e-9 | — | {} | {} | — | — | {:.1e} |",
+                r.iterations, r.n, reference.error_estimate
             );
             for tol in [1e-3, 1e-4, 1e-5, 1e-6] {
-                let (a, t) = time_it(|| layer(tol, true));
+                let (a, t) = time_it(|| layer(tol));
+                let d = &a.roll.dimensionless;
                 println!(
-                    "| {name} | {hr} | layer spectral | {tol:.0e} | {} | {} | {:.1e} | {:.1e} | {:.1e} |",
+                    "| {name} | {hr} | layer | {tol:.0e} | {} | {} | {} | {:.1e} | {:.1e} | {:.1e} |",
                     ms(t),
-                    a.solution.n,
-                    rel(a.solution.friction_rho, rf),
-                    rel(a.solution.lambda, rl),
+                    d.iterations,
+                    d.n,
+                    rel(d.friction_rho, rf),
+                    rel(d.lambda, rl),
                     a.error_estimate
                 );
             }
-            for tol in [1e-3, 1e-4] {
-                let (a, t) = time_it(|| layer(tol, false));
-                println!(
-                    "| {name} | {hr} | layer hat | {tol:.0e} | {} | {} | {:.1e} | {:.1e} | {:.1e} |",
-                    ms(t),
-                    a.solution.n,
-                    rel(a.solution.friction_rho, rf),
-                    rel(a.solution.lambda, rl),
-                    a.error_estimate
-                );
-            }
+            let (winkler_scene, spec) =
+                scene_of(&terms, nu, |vt| Body::Winkler { height_m: h * vt });
             let (w, t) = time_it(|| {
-                winkler_at_load(
-                    &terms,
-                    load,
-                    WinklerColumns::Uniaxial,
-                    h,
-                    nu,
-                    &LoadSettings::default(),
-                )
-                .unwrap()
+                roll(&winkler_scene, &spec, &ContactSettings::default())
+                    .unwrap()
+                    .dimensionless
             });
             println!(
-                "| {name} | {hr} | uniaxial Winkler (model error) | exact | {} | — | {:.1e} | {:.1e} | — |",
+                "| {name} | {hr} | uniaxial Winkler (model error) | exact | {} | {} | — | {:.1e} | {:.1e} | — |",
                 ms(t),
-                rel(w.solution.friction_rho, rf),
-                rel(w.solution.lambda, rl)
+                w.iterations,
+                rel(w.friction_rho, rf),
+                rel(w.lambda, rl)
             );
             for tol in [1e-3, 1e-6] {
-                let (a, t) = time_it(|| {
-                    solve_auto_at_load(
-                        &terms,
-                        load,
-                        &AutoSettings {
-                            tol,
-                            gap_check: false,
-                            ..Default::default()
-                        },
-                    )
-                    .unwrap()
-                });
+                let (a, t) = time_it(|| solve_auto_at_load(&terms, load, tol).unwrap());
                 println!(
-                    "| {name} | {hr} | half-space auto (model error) | {tol:.0e} | {} | — | {:.1e} | {:.1e} | {:.1e} |",
+                    "| {name} | {hr} | half-space auto (model error) | {tol:.0e} | {} | {} | — | {:.1e} | {:.1e} | {:.1e} |",
                     ms(t),
+                    a.iterations,
                     rel(a.friction_rho, rf),
                     rel(a.lambda, rl),
                     a.error_estimate.unwrap_or(f64::NAN)
@@ -237,4 +178,23 @@ fn main() {
             }
         }
     }
+}
+
+/// The half-space by the auto scheme at load N′ and `tol`, without the gap check (public entry
+/// `contact::solve_at_load` with `Scheme::Auto`).
+fn solve_auto_at_load(
+    terms: &[CreepTerm],
+    load: f64,
+    tol: f64,
+) -> Result<DimensionlessSolution, viscoroll::contact::ContactError> {
+    let settings = ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            tol,
+            gap_check: false,
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    solve_at_load(terms, load, &settings)
 }

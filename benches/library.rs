@@ -9,14 +9,18 @@
 //! `-- --profile K`: instead, the main job's stages one by one on the first K compounds of the
 //! library, in a 1-thread pool (so wall time = CPU time): master curve + fit, the bands' ensemble,
 //! and per scene the friction table, its bands and its maps (with the maps' node solves); prints
-//! the CPU seconds per compound of each (the report writing is the rest of the run's time).
+//! the CPU seconds per compound of each (the report writing is the rest of the run's time). All
+//! through the public API (issue 30): the bands of each scene by `bands::scene_bands_given` with
+//! the friction table's solves handed on as the main job does; the replicates' half-space ratios,
+//! which the main job shares between scenes with the same roll, are crate-internal, so here each
+//! scene's bands solve their own (a covered scene's bands row includes its half-space solves).
 
 use std::path::Path;
 use std::time::Instant;
-use viscoroll::pipeline::scenes::{
-    friction_maps, friction_vs_temperature, pipeline_contact_settings, pipeline_map_settings,
+use viscoroll::contact::{AutoSettings, Body, ContactSettings, Scheme};
+use viscoroll::pipeline::{
+    friction_maps, friction_vs_temperature, pipeline_map_settings, run_all, RunOptions,
 };
-use viscoroll::pipeline::{run_all, RunOptions};
 use viscoroll::testdata::{dma_csv, dma_rows, realistic_compounds, DmaProtocol};
 
 #[path = "support/cpu.rs"]
@@ -119,7 +123,15 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
         }
         None => rows.push((name, t, solves)),
     };
-    let contact = pipeline_contact_settings();
+    // the main job's contact settings (crate::pipeline's): auto, no gap check
+    let contact = ContactSettings {
+        scheme: Scheme::Auto,
+        auto: AutoSettings {
+            gap_check: false,
+            ..AutoSettings::default()
+        },
+        ..ContactSettings::default()
+    };
     let map_settings = pipeline_map_settings();
     pool.install(|| {
         for f in files.iter().take(k) {
@@ -134,8 +146,6 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
             fit.bands = viscoroll::bands::build_ensemble(&master, &m, &fit, &bs).ok();
             let c2 = cpu_s();
             add("bands: ensemble (refits)".into(), c2 - c1, 0);
-            // the half-space solves shared by scenes with the same roll (as the main job does)
-            let mut half_space: Vec<viscoroll::bands::HalfSpaceRatios> = Vec::new();
             for spec in &opts.scenes.scene {
                 let body = if spec.cover_thickness_mm.is_some() {
                     "cover"
@@ -151,32 +161,16 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                     points.len(),
                 );
                 if let Some(e) = fit.bands.as_ref() {
-                    let hs_scene = viscoroll::contact::Scene {
-                        body: viscoroll::contact::Body::HALF_SPACE,
-                        ..spec.scene()
-                    };
-                    let shared = |h: &viscoroll::bands::HalfSpaceRatios| {
-                        h.scene == hs_scene && h.temps_c == spec.temps_c
-                    };
-                    if !half_space.iter().any(shared) {
-                        half_space.extend(viscoroll::bands::half_space_ratios(
-                            &fit,
-                            e,
-                            &spec.scene(),
-                            &spec.temps_c,
-                            &bs,
-                        ));
-                    }
                     // as the main job hands them on (crate::pipeline::run)
-                    let nominal: Vec<viscoroll::bands::CoverSolve> = points
+                    let nominal: Vec<(f64, f64, Option<Body>)> = points
                         .iter()
                         .map(|p| {
                             let body = [
-                                viscoroll::contact::Body::HALF_SPACE,
-                                viscoroll::contact::Body::Layer {
+                                Body::HALF_SPACE,
+                                Body::Layer {
                                     thickness_m: f64::NAN,
                                 },
-                                viscoroll::contact::Body::Winkler { height_m: f64::NAN },
+                                Body::Winkler { height_m: f64::NAN },
                             ]
                             .into_iter()
                             .find(|m| m.name() == p.model);
@@ -191,7 +185,7 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                         &spec.temps_c,
                         &bs,
                         &nominal,
-                        half_space.iter().find(|h| shared(h)),
+                        None,
                     );
                 }
                 let c2 = cpu_s();
