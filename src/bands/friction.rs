@@ -86,7 +86,7 @@ fn positive_friction(f: f64) -> Result<f64, String> {
 /// The body a replicate of a covered scene is solved on: the body the fit's own solve at that
 /// temperature chose (`model`), so that F_b/F̂ is a ratio on one body and the replicate skips the
 /// `auto` choice (its half-space solve with the gap check costs about a third of a replicate's layer
-/// solve; measured by `cargo bench --bench bands_levers`); `auto` when the fit's body is not known
+/// solve; measured by the former bench `bands_levers`, removed in issue 30 (docs/DEVLOG.md)); `auto` when the fit's body is not known
 /// or is one `roll_cover` cannot be asked for by name (the constrained Winkler foundation).
 pub fn replicate_choice(model: Option<Body>) -> Body {
     match model {

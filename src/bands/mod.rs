@@ -92,8 +92,8 @@ pub struct BandSettings {
     /// at the main job's 1e−3 or this if looser). The nominal friction of the ratio is solved at
     /// the same tolerance, so most of the solver error cancels in F_b/F̂: measured against both
     /// solved at 1e−8 on the synthetic library, |error of F_b/F̂| ≤ 6.5e−5 (p95 2.8e−5; 5.2e−6 at
-    /// 1e−4), against bands of ±0.3 % and wider, at 0.7 of the CPU of 1e−4 (`cargo bench --bench
-    /// bands_levers`). What does not cancel is carried into the band: each quantile is moved
+    /// 1e−4), against bands of ±0.3 % and wider, at 0.7 of the CPU of 1e−4 (the former bench
+    /// `bands_levers`, removed in issue 30: docs/DEVLOG.md). What does not cancel is carried into the band: each quantile is moved
     /// outwards by the fit's solve's error estimate plus the median replicate's (eq. 15.5b;
     /// 1.3e−4 median, 4e−4 at most on that library).
     pub contact_tol: f64,

@@ -25,7 +25,7 @@ use rayon::prelude::*;
 /// Replicates of a covered scene whose ratios are solved on the covered body itself (eq. 15.6b);
 /// the others are predicted from their half-space ratios by a regression on these. Eight: the
 /// regression then has 6 degrees of freedom for its residual; checked against the full bootstrap
-/// on the shipped compounds (`cargo bench --bench bands_cover`, README).
+/// on the shipped compounds (the former bench `bands_cover`, removed in issue 30 (docs/DEVLOG.md), README).
 pub const COVER_SOLVED_REPLICATES: usize = 8;
 
 /// The frequency-window term of one point (eq. 15.9).
@@ -450,7 +450,7 @@ const CARRY_MIN_TEMPS: usize = 5;
 /// the temperature, and the carried error's standard deviation is as small: any error in carrying
 /// q then moves the band's width by about this fraction at most (the band's spread is that of
 /// ln(hs_b/ĥs) + q_b); elsewhere (a cover that changes the band fast with temperature) they are
-/// solved. Checked against solving every temperature by `cargo bench --bench bands_cover`.
+/// solved. Checked against solving every temperature by the former bench `bands_cover`, removed in issue 30 (docs/DEVLOG.md).
 const CARRY_SPREAD_FRACTION: f64 = 0.1;
 
 /// The temperatures (indices into `temps_c`) at which a covered scene's replicates are solved on

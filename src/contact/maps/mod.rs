@@ -134,7 +134,7 @@ pub struct MapSettings {
 }
 
 /// Default tolerance of a covered map's node solves over the map's: the spectral layer solve costs
-/// about the same at 1e−3 and 1e−6 (`cargo bench --bench maps_covered -- --nodecost`), so its
+/// about the same at 1e−3 and 1e−6 (the former bench `maps_covered`, removed in issue 30 (docs/DEVLOG.md)), so its
 /// error, times the Lebesgue constants (≈ 5–6), is kept small beside the interpolation's.
 pub const COVERED_NODE_TOL_RATIO: f64 = 0.01;
 

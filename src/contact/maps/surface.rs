@@ -29,7 +29,7 @@
 //! [`CoveredSurface::error_estimate`] is the largest e_x + e_y + Λ_{n_x}Λ_{n_y}·ν of a panel.
 //!
 //! The nodes are solved at [`MapSettings::node_tol_ratio`]·tol (default 1/100): the spectral layer
-//! solve costs about the same at 1e−3 and at 1e−6 (5–10 ms, `cargo bench --bench maps_covered -- --nodecost`), so a
+//! solve costs about the same at 1e−3 and at 1e−6 (5–10 ms, the former bench `maps_covered`, removed in issue 30 (docs/DEVLOG.md)), so a
 //! tight node tolerance is nearly free and leaves ~90 % of the tolerance to the interpolation.
 //! (Before: node solves at tol/10 and the interpolation held to tol/2, with the largest node
 //! estimate added once, without the Lebesgue factor. On the conveyor-idler maps of the four

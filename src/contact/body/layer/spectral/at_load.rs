@@ -42,7 +42,7 @@ pub struct SpectralSettings {
     /// `None`.
     pub start: Option<(f64, f64)>,
     /// Run the closing contact checks (min pressure / max, smallest gap outside the contact; 0.1–0.35
-    /// ms, about a tenth of a load point, `cargo bench --bench layer_profile`, checks column).
+    /// ms, about a tenth of a load point, the former bench `layer_profile`, removed in issue 30 (docs/DEVLOG.md), checks column).
     /// Without them the answer is the same to the bit (the checks only read the solution) but its
     /// `min_pressure_ratio` and `min_gap_ratio` are NaN and no check warning can be raised: only for
     /// callers that read neither (the bands' replicate solves, `bands::friction::cover_solver`).

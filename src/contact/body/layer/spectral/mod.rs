@@ -79,7 +79,7 @@
 //! collocation with a warning; the `auto` body choice takes the constrained Winkler foundation there
 //! for compressible covers (docs/DEVLOG.md criterion table).
 //!
-//! # Speed (`cargo bench --bench layer_profile`, docs/DEVLOG.md covers section)
+//! # Speed (the former bench `layer_profile`, removed in issue 30 (docs/DEVLOG.md), docs/DEVLOG.md covers section)
 //! A load point costs 4–5 solves at given λ (round 5; 5–9 before): one secant walk ([`walk`])
 //! from a closed-form guess (the elastic layer seen as a half-space of the layer's compliance at
 //! k = 4/λ, module [`secant`]) or the caller's warm start ([`at_load::SpectralSettings::start`]),
