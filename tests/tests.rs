@@ -35,6 +35,7 @@ mod ingest_cli;
 mod json_schemas;
 mod known_truth;
 mod layer_degree;
+mod layer_fourier;
 mod layer_props;
 mod layer_thin_gains;
 mod master_cli;
