@@ -288,24 +288,28 @@ impl Elastic {
     }
 }
 
-/// The root next to `near` of the least-squares quadratic through (x, p²).
+/// The root next to `near` of the least-squares quadratic through (x, p²) (in the variable
+/// (x − near)/span, span the window's width, for conditioning).
 fn edge_root(x: &[f64], p: &[f64], near: f64) -> f64 {
+    let span = near - x[0];
     let mut a = [[0.0; 3]; 3];
     let mut b = [0.0; 3];
     for (&xi, &pi) in x.iter().zip(p) {
-        let phi = [1.0, xi - near, (xi - near).powi(2)];
-        for r in 0..3 {
+        let v = (xi - near) / span;
+        let phi = [1.0, v, v * v];
+        for (r, row) in a.iter_mut().enumerate() {
             b[r] += phi[r] * pi * pi;
-            for c in 0..3 {
-                a[r][c] += phi[r] * phi[c];
+            for (arc, pc) in row.iter_mut().zip(&phi) {
+                *arc += phi[r] * pc;
             }
         }
     }
     for k in 0..3 {
+        let pivot = a[k];
         for r in k + 1..3 {
-            let f = a[r][k] / a[k][k];
-            for c in k..3 {
-                a[r][c] -= f * a[k][c];
+            let f = a[r][k] / pivot[k];
+            for (arc, pc) in a[r].iter_mut().zip(&pivot).skip(k) {
+                *arc -= f * pc;
             }
             b[r] -= f * b[k];
         }
@@ -315,11 +319,11 @@ fn edge_root(x: &[f64], p: &[f64], near: f64) -> f64 {
         let s: f64 = (r + 1..3).map(|c| a[r][c] * q[c]).sum();
         q[r] = (b[r] - s) / a[r][r];
     }
-    let mut s = -q[0] / q[1];
+    let mut v = -q[0] / q[1];
     for _ in 0..30 {
-        s -= (q[0] + q[1] * s + q[2] * s * s) / (q[1] + 2.0 * q[2] * s);
+        v -= (q[0] + q[1] * v + q[2] * v * v) / (q[1] + 2.0 * q[2] * v);
     }
-    near + s
+    near + v * span
 }
 
 /// One compared case: Poisson's ratio, thickness (m) and the grid (period in m, log2 n).
