@@ -385,10 +385,19 @@ impl Case {
     }
 }
 
+/// What the comparison reads of `roll`'s solution.
+struct Rolled {
+    contact_length_m: f64,
+    max_pressure_pa: f64,
+    offset_m: f64,
+    x_m: Vec<f64>,
+    pressure_pa: Vec<f64>,
+}
+
 /// The roll on the layer at V = 1 m/s with a standard linear solid of relaxation time 1e6 s
 /// (retardation 5e6 s): the compliance grows by (J∞ − J_g)/J_g · l/(Vτ) < 1e−8 while a point
 /// crosses the contact, elastic with E_g.
-fn rolled(case: &Case, thickness_m: f64) -> viscoroll::contact::RollSolution {
+fn rolled(case: &Case, thickness_m: f64) -> Rolled {
     let relaxation = RelaxationSpectrum {
         kind: ModulusKind::Tensile,
         poisson: case.nu,
@@ -406,7 +415,14 @@ fn rolled(case: &Case, thickness_m: f64) -> viscoroll::contact::RollSolution {
         poisson: None,
         body: Body::Layer { thickness_m },
     };
-    roll(&scene, &creep, &ContactSettings::default()).expect("solves")
+    let r = roll(&scene, &creep, &ContactSettings::default()).expect("solves");
+    Rolled {
+        contact_length_m: r.contact_length_m,
+        max_pressure_pa: r.max_pressure_pa,
+        offset_m: r.offset_m,
+        x_m: r.x_m,
+        pressure_pa: r.pressure_pa,
+    }
 }
 
 /// Linear interpolation in a profile (x increasing).
