@@ -20,6 +20,7 @@ mod hostile;
 mod ingest_cli;
 mod json_schemas;
 mod known_truth;
+mod layer_fourier;
 mod master_cli;
 mod master_real;
 mod physical_units;
