@@ -4,7 +4,7 @@
 //! draws one fresh base seed (clock and process id). Each test mixes the base seed with its own name,
 //! so tests do not share their streams, and prints `VISCOROLL_SEED=…` at its start: libtest shows a
 //! failing test's output, so every failure names the seed that reproduces it, e.g.
-//! `VISCOROLL_SEED=0x1234abcd cargo test --test tests contact_props`.
+//! `VISCOROLL_SEED=0x1234abcd cargo test --lib contact_props`.
 
 use std::sync::OnceLock;
 

@@ -15,7 +15,7 @@
 //! In CI: noise seeds 1 and 2 (about 30 s on 2 cores; 252/264 = 95.5 % with eqs. 15.6b–15.9). The full
 //! figure over 10 seeds (about 2 min; 1229/1320 = 93.1 %, per seed 82.6–99.2 %, median half-width
 //! 0.78 %; before the fit's own choices were drawn, eqs. 15.10–15.12: 1142/1320 = 86.5 %):
-//! `cargo test --release --test tests bands_calibration_ten_seeds -- --ignored --nocapture`.
+//! `cargo test --release --lib bands_calibration_ten_seeds -- --ignored --nocapture`.
 //! Both print the coverage per seed, compound and scene, and the misses. The 2-seed check is the
 //! weaker one: single seeds range from 72 % to 98.5 %, so it catches a band that is far off (too
 //! narrow or too wide by ~2×), not a few points of coverage. Those measurements reach every
@@ -29,7 +29,7 @@
 //! temperatures. Over 10 seeds (about 1.5 min): 1150/1320 = 87.1 %; inside 689/810 = 85.1 %, ramp
 //! 83/83 = 100 %, beyond the window 167/187 = 89.3 % (all 20 misses above the band), beyond the
 //! temperatures 211/240 = 87.9 %:
-//! `cargo test --release --test tests bands_calibration_truncated_ten_seeds -- --ignored --nocapture`.
+//! `cargo test --release --lib bands_calibration_truncated_ten_seeds -- --ignored --nocapture`.
 //! CI runs seeds 1–2 of it (`bands_cover_the_true_friction_on_truncated_measurements_two_seeds`).
 
 //!

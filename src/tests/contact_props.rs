@@ -12,7 +12,7 @@
 //! A seeded generator (SplitMix64) draws the cases from the run's seed (tests/seed.rs): a fresh one
 //! on every run unless `VISCOROLL_SEED` is set, printed at the start of each test so that a failure
 //! can be replayed. CI runs `CI_CASES` cases of 1–3 and `CI_LIMITS` of 4; the larger sweep is
-//! `#[ignore]`d: `cargo test --release --test tests contact_props::sweep -- --ignored --nocapture`.
+//! `#[ignore]`d: `cargo test --release --lib contact_props::sweep -- --ignored --nocapture`.
 //! The regression tests that need one particular case (`a_slow_mode_only_shifts_beta…`: CI case 28
 //! of the former fixed seed 0x5EED_0004; the lumping-cap test) keep their fixed seeds.
 

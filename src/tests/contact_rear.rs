@@ -5,7 +5,7 @@
 //! against an independent quadrature of eq. 3.19 with the exact one-term pressure). The scans below
 //! look for penetration over the one-term (f, b, λ) plane, random realistic spectra and dimensional
 //! scenes over the range. The full scan is `#[ignore]`d (≈ 1–2 min in release):
-//! `cargo test --release --test tests contact_rear::scan -- --ignored --nocapture`.
+//! `cargo test --release --lib contact_rear::scan -- --ignored --nocapture`.
 
 use viscoroll::contact::{
     roll, solve_at_lambda, solve_at_load, AutoSettings, Body, ContactSettings, CreepTerm,

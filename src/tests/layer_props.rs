@@ -20,7 +20,7 @@
 //!    refinement's ([`spectral_run`]).
 //!
 //! The seed comes from `VISCOROLL_SEED` (tests/seed.rs). CI runs [`CI_CASES`]; the larger sweep is
-//! `#[ignore]`d: `cargo test --release --test tests layer_props::sweep -- --ignored --nocapture`.
+//! `#[ignore]`d: `cargo test --release --lib layer_props::sweep -- --ignored --nocapture`.
 
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
 use viscoroll::contact::body::layer::{layer_at_load, LayerSettings};

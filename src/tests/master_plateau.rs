@@ -15,7 +15,7 @@
 //!    fall strictly with temperature, and the flags reach the warnings. The 0.03 from
 //!    T_g + 20 K up is met on both (narrow-tg 0.0107, narrow-tg-filled 0.0086).
 //!
-//! The per-temperature tables print with `cargo test --test tests master_plateau -- --nocapture`.
+//! The per-temperature tables print with `cargo test --lib master_plateau -- --nocapture`.
 
 use viscoroll::dma::{self, IngestOptions};
 use viscoroll::pipeline::FitOptions;
