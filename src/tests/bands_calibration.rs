@@ -36,7 +36,7 @@
 //! Held-out set (issue 32): `held_out_compounds` (8 shapes none of the bands were tuned on) × noise
 //! seeds 101–110, whole range or truncated at −20 °C / +40 °C, written as plain CSV, TRIOS text or
 //! Proteus ASCII; each point's band with the fit's own choices drawn (eqs. 15.10–15.12) and, beside
-//! it, the data's scatter alone: `VISCOROLL_HELD_OUT_SEEDS=10 cargo test --release --test tests
+//! it, the data's scatter alone: `VISCOROLL_HELD_OUT_SEEDS=10 cargo test --release --lib
 //! bands_calibration_held_out_ten_seeds -- --ignored --nocapture` (use the test profile, without
 //! `--release`, on a shared machine; a refused band counts as a miss and is counted apart). Its
 //! one-seed-each subset (`bands_cover_the_true_friction_held_out_one_seed_each`) is ignored for
@@ -927,7 +927,7 @@ fn held_out_refits_all_converge() {
 
 /// Writes every held-out case's export of the seeds in `VISCOROLL_HELD_OUT_SEEDS` (default 101–103)
 /// into the folder `VISCOROLL_DUMP_DIR` (one file per case, as the calibration writes it), to look at
-/// a case with the CLI: `VISCOROLL_DUMP_DIR=/tmp/h cargo test --test tests dump_held_out_exports --
+/// a case with the CLI: `VISCOROLL_DUMP_DIR=/tmp/h cargo test --lib dump_held_out_exports --
 /// --ignored`, then `viscoroll master /tmp/h/seed102-high-tg.csv`.
 #[test]
 #[ignore = "a tool, not a check"]

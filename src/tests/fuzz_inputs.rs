@@ -3,7 +3,7 @@
 //! be accepted only when every number is finite and physical, and then turn into a dimensionless
 //! problem without a panic. Deterministic (a fixed xorshift seed) and sized to run in a few seconds;
 //! `fuzz_sweep_long` (ignored) runs 20× as many cases:
-//! `cargo test --release --test tests -- --ignored fuzz_sweep_long`.
+//! `cargo test --release --lib -- --ignored fuzz_sweep_long`.
 
 use std::path::Path;
 use viscoroll::dma::{read_bytes, IngestOptions};

@@ -2,7 +2,7 @@
 //! by tools/gen_special_reference.py with mpmath at 120 digits; CI does not need Python).
 //!
 //! Print the accuracy table (max relative error per function and range):
-//! `cargo test --release --test tests special_accuracy_table -- --nocapture`
+//! `cargo test --release --lib special_accuracy_table -- --nocapture`
 
 use viscoroll::special::{
     e1, ei, exp_e1, expm_ei, kernel_bracket, kernel_bracket_int1, kernel_bracket_int2,
@@ -312,7 +312,7 @@ fn special_functions_extreme_arguments() {
 }
 
 /// Dense sweep (300 000 intervals, ≈ 2 s in release; run with
-/// `cargo test --release --test tests dense_sweep -- --ignored --nocapture`): on 100 000 short
+/// `cargo test --release --lib dense_sweep -- --ignored --nocapture`): on 100 000 short
 /// intervals [a, a(1 + 1e-3)] log-spaced over 1e-12 ≤ |a| ≤ 1e12, both signs, F(b) − F(a) must equal
 /// the 20-point Gauss–Legendre integral of F′ for (F, F′) = (h, g), (H₁, h), (H₂, H₁). F and F′ come
 /// from different branches (series, Taylor pieces, closed forms, scaled E1/Ei), so a wrong branch or a
