@@ -6,7 +6,6 @@
 //! Times are CPU time of the bench's thread (the machine is shared). Run: `cargo bench --bench
 //! layer_profile` (single thread; prints a Markdown table).
 
-use viscoroll::contact::body::half_space::auto::reduction::select;
 use viscoroll::contact::body::layer::collocation::contact_checks;
 use viscoroll::contact::body::layer::spectral::at_lambda::solve_at_lambda;
 use viscoroll::contact::body::layer::spectral::degree::degree_for;
@@ -14,6 +13,7 @@ use viscoroll::contact::body::layer::spectral::layer_term::LayerTerm;
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
 use viscoroll::contact::body::layer::LayerKernel;
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
+use viscoroll::contact::numerics::reduction::select;
 use viscoroll::contact::CreepTerm;
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
