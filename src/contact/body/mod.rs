@@ -180,6 +180,30 @@ impl Body {
         })
     }
 
+    /// Why `auto` chose this body for a cover of `cover_over_contact` half-space contact lengths,
+    /// its estimated difference from the layer `estimate` being within `tol` (the reason line of
+    /// `contact::cover`'s answer): `auto` chooses the half-space for thick covers and the
+    /// constrained Winkler foundation for thin ones ([`Body::auto_choice`]).
+    pub fn auto_reason(&self, cover_over_contact: f64, estimate: f64, tol: f64) -> String {
+        let (r, e) = (cover_over_contact, estimate);
+        match self {
+            Body::HalfSpace { .. } => format!(
+                "auto: cover/contact length = {r:.3} is thick enough for the half-space \
+                 (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
+            ),
+            _ => format!(
+                "auto: cover/contact length = {r:.3} is thin enough for a Winkler foundation \
+                 with the constrained modulus (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
+            ),
+        }
+    }
+
+    /// Whether the body is the half-space (on a cover or not): its validity limit is its own
+    /// (the parabolic roll profile, checked by `contact::roll`), not a cover's.
+    pub fn is_half_space(&self) -> bool {
+        matches!(self, Body::HalfSpace { .. })
+    }
+
     /// The thickness in m of the cover the body stands for (None: a half-space without a cover).
     pub fn cover_m(&self) -> Option<f64> {
         match *self {
