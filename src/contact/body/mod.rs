@@ -6,8 +6,8 @@
 //! [`ContactError`].
 //!
 //! One enum, [`Body`], names the body, its model and, for a cover, the choice of model: the
-//! viscoelastic half-space of the thesis ([`half_space`]: its kernel, eq. 3.19, the three schemes that
-//! solve eq. 3.25 on it), the bonded layer and the Winkler foundations ([`layer`]), and `auto` (the
+//! viscoelastic half-space of the thesis ([`half_space`]: the three schemes that solve eq. 3.25 on
+//! the kernel of eq. 3.19), the bonded layer and the Winkler foundations ([`layer`]), and `auto` (the
 //! cheapest of them accurate enough, [`Body::auto_choice`]; its reasons and estimates are
 //! `contact::cover`'s). The dispatch below resolves `auto` and calls the body's folder.
 //!
@@ -17,7 +17,8 @@
 //!    `solve_at_lambda` taking the dimensionless problem's parts ([`crate::contact::problem`]), the
 //!    body's own dimensionless parameters and the settings, and the conversion of its SI parameters
 //!    to dimensionless ones (given the [`DimensionlessScene`]); it imports the ground (`problem`,
-//!    `settings`, `error`), `load` and shared numerics, never this file, `scene` or `cover`;
+//!    `settings`, `error`), `load` and the shared numerics ([`crate::contact::numerics`]), never
+//!    another body's folder, this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
 //!    `Layer { thickness_m }`), with its arms in [`Body::name`] (the serde name too),
 //!    [`Body::asked_for`], [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in
