@@ -58,7 +58,7 @@ pub(crate) fn band_scene(scene: &Scene, cover_m: Option<f64>) -> Scene {
 }
 
 /// The solver of one scene for the bands: F/N of a creep spectrum at log10 a_T on the scene's
-/// body: on a cover (`scene.body.cover_m()`) by [`cover_solver`] started cold, else on the
+/// body: on a cover (`scene.body.cover_m()`) by `cover_solver` started cold, else on the
 /// half-space by `auto` at the band tolerance; or the solver's error.
 pub fn solver<'a>(
     scene: &'a Scene,
@@ -89,7 +89,7 @@ fn positive_friction(f: f64) -> Result<f64, String> {
 }
 
 /// The scene a replicate of a covered scene is solved on: `scene` (its body `auto` on the cover,
-/// [`band_scene`]) on the body the fit's own solve at that temperature chose (`model`, on the same
+/// `band_scene`) on the body the fit's own solve at that temperature chose (`model`, on the same
 /// cover), so that F_b/F̂ is a ratio on one body and the replicate skips the `auto` choice (its
 /// half-space solve with the gap check costs about a third of a replicate's layer solve; measured by
 /// `cargo bench --bench bands_levers`); `scene` itself when the fit's body is not known or is one

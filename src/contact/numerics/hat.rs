@@ -3,7 +3,7 @@
 //! collocation of eq. 3.25 at the n nodes ξ₁ … ξₙ (eq. 3.25 holds trivially at ξ₀ = 0), unknowns the
 //! n − 1 interior nodal pressures and the offset β. Shared: the half-space's thesis scheme is
 //! [`solve_at_lambda`] on the kernel of [`super::kernel`]; the bonded layer's hat scheme assembles its
-//! own kernel's averages and solves them with [`solve_hat_system`].
+//! own kernel's averages and solves them with `solve_hat_system`.
 //!
 //! Input: a [`Kernel`], λ and n; output: a [`DimensionlessSolution`] (scheme `thesis`).
 //!
