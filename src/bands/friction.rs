@@ -47,27 +47,32 @@ pub const COVER_BAND_TOL: f64 = 1e-3;
 /// A replicate solve: F/N of a creep spectrum at log10 a_T, or why it failed.
 pub(crate) type Solve<'a> = dyn Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a;
 
-/// The solver of one scene for the bands: F/N of a creep spectrum at log10 a_T on the half-space
-/// (`cover_m` None, `auto` at the band tolerance) or the cover (`cover_solver` started cold), or
-/// the solver's error.
+/// The scene the bands solve: `scene`'s roll on a cover of `cover_m` (its body `auto` there, each
+/// replicate then on its own body, [`replicate_choice`]) or on the half-space (`None`).
+pub(crate) fn band_scene(scene: &Scene, cover_m: Option<f64>) -> Scene {
+    let body = match cover_m {
+        Some(thickness_m) => Body::Auto { thickness_m },
+        None => Body::HALF_SPACE,
+    };
+    Scene { body, ..*scene }
+}
+
+/// The solver of one scene for the bands: F/N of a creep spectrum at log10 a_T on the scene's
+/// body: on a cover (`scene.body.cover_m()`) by `cover_solver` started cold, else on the
+/// half-space by `auto` at the band tolerance; or the solver's error.
 pub fn solver<'a>(
     scene: &'a Scene,
-    cover_m: Option<f64>,
     settings: &BandSettings,
 ) -> impl Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a {
-    let scene = Scene {
-        body: crate::contact::Body::HALF_SPACE,
-        ..*scene
-    };
     let cs = band_contact_settings(settings);
-    let on_cover = cover_m.map(|h_m| cover_solver(&scene, h_m, settings));
+    let on_cover = scene.body.cover_m().map(|_| cover_solver(settings));
     move |c: &CreepSpectrum, log10_a_t: f64| match &on_cover {
-        Some(solve) => solve(c, log10_a_t, None, AUTO).map(|r| r.0),
+        Some(solve) => solve(c, log10_a_t, None, scene).map(|r| r.0),
         None => {
             if !log10_a_t.is_finite() {
                 return Err(format!("log10 a_T is not finite ({log10_a_t})"));
             }
-            let f = roll(&scene, &shifted(c, log10_a_t), &cs)
+            let f = roll(scene, &shifted(c, log10_a_t), &cs)
                 .map_err(|e| e.to_string())?
                 .friction;
             positive_friction(f)
@@ -83,40 +88,39 @@ fn positive_friction(f: f64) -> Result<f64, String> {
     }
 }
 
-/// The body a replicate of a covered scene is solved on: the body the fit's own solve at that
-/// temperature chose (`model`), so that F_b/F̂ is a ratio on one body and the replicate skips the
-/// `auto` choice (its half-space solve with the gap check costs about a third of a replicate's layer
-/// solve; measured by the former bench `bands_levers`, removed in issue 30 (docs/DEVLOG.md)); `auto` when the fit's body is not known
-/// or is one `roll_cover` cannot be asked for by name (the constrained Winkler foundation).
-pub fn replicate_choice(model: Option<Body>) -> Body {
+/// The scene a replicate of a covered scene is solved on: `scene` (its body `auto` on the cover,
+/// `band_scene`) on the body the fit's own solve at that temperature chose (`model`, on the same
+/// cover), so that F_b/F̂ is a ratio on one body and the replicate skips the `auto` choice (its
+/// half-space solve with the gap check costs about a third of a replicate's layer solve; measured by
+/// the former bench `bands_levers`, removed in issue 30: docs/DEVLOG.md); `scene` itself when the fit's body is not known or is one
+/// `roll_cover` cannot be asked for by name (the constrained Winkler foundation).
+pub fn replicate_choice(scene: &Scene, model: Option<Body>) -> Scene {
     match model {
-        Some(b @ (Body::Layer { .. } | Body::HalfSpace { .. } | Body::Winkler { .. })) => b,
-        _ => AUTO,
+        Some(body @ (Body::Layer { .. } | Body::HalfSpace { .. } | Body::Winkler { .. })) => {
+            Scene { body, ..*scene }
+        }
+        _ => *scene,
     }
 }
-
-/// `auto` as the body of a covered solve ([`cover_solver`] puts it on its cover).
-pub(crate) const AUTO: Body = Body::Auto {
-    thickness_m: f64::NAN,
-};
 
 /// One covered solve of the bands: F/N, contact length in m, the body solved (`None`: not known).
 pub type CoverSolve = (f64, f64, Option<Body>);
 
-/// A covered solve of the bands ([`cover_solver`]): creep spectrum, log10 a_T, start, body.
+/// A covered solve of the bands ([`cover_solver`]): creep spectrum, log10 a_T, start, the scene
+/// (its body with its cover).
 pub(crate) trait CoverSolver:
-    Fn(&CreepSpectrum, f64, Option<(f64, f64)>, Body) -> Result<CoverSolve, String> + Sync
+    Fn(&CreepSpectrum, f64, Option<(f64, f64)>, &Scene) -> Result<CoverSolve, String> + Sync
 {
 }
 
 impl<F> CoverSolver for F where
-    F: Fn(&CreepSpectrum, f64, Option<(f64, f64)>, Body) -> Result<CoverSolve, String> + Sync
+    F: Fn(&CreepSpectrum, f64, Option<(f64, f64)>, &Scene) -> Result<CoverSolve, String> + Sync
 {
 }
 
-/// The covered solver of a scene for the bands: F/N, contact length in m and body of a creep
-/// spectrum at log10 a_T on a cover of `h_m` bonded to a rigid carcass (the body `choice` through the
-/// body dispatch [`answer_at_load`], as the main job's [`roll_cover_from`](crate::contact::cover::roll_cover_from)
+/// The covered solver of the bands: F/N, contact length in m and body of a creep spectrum at
+/// log10 a_T in a scene whose body is on a cover bonded to a rigid carcass (the scene's body through
+/// the body dispatch [`answer_at_load`], as the main job's [`roll_cover_from`](crate::contact::cover::roll_cover_from)
 /// solves it, at [`COVER_BAND_TOL`] or the band tolerance if looser), the layer solve started
 /// from `start` = (contact length in m, d ln N′/d ln λ) when given (the fit's own covered solve at
 /// the same temperature: a replicate's contact differs from it by its scatter, a few per cent; the
@@ -125,17 +129,12 @@ impl<F> CoverSolver for F where
 /// read the solution (same F/N to the bit, `cover_solver_skips_only_the_checks`) and their ratios
 /// and warnings are not in what this hands on; the main job's own solve at each point keeps them
 /// (its friction point's warnings).
-pub(crate) fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> impl CoverSolver {
-    let scene = Scene {
-        body: crate::contact::Body::HALF_SPACE,
-        ..*scene
-    };
+pub(crate) fn cover_solver(settings: &BandSettings) -> impl CoverSolver {
     let cs = ContactSettings::auto(settings.contact_tol.max(COVER_BAND_TOL));
-    move |c: &CreepSpectrum, log10_a_t: f64, start: Option<(f64, f64)>, choice: Body| {
+    move |c: &CreepSpectrum, log10_a_t: f64, start: Option<(f64, f64)>, scene: &Scene| {
         if !log10_a_t.is_finite() {
             return Err(format!("log10 a_T is not finite ({log10_a_t})"));
         }
-        let body = choice.with_cover(h_m);
         let p = scene
             .dimensionless(&shifted(c, log10_a_t))
             .map_err(|e| e.to_string())?;
@@ -143,7 +142,7 @@ pub(crate) fn cover_solver(scene: &Scene, h_m: f64, settings: &BandSettings) -> 
             start: start.map(|(l_m, slope)| (l_m / p.length_scale_m, slope)),
             checks: false,
         };
-        let s = answer_at_load(&body, &p, &cs, warm).map_err(|e| e.to_string())?;
+        let s = answer_at_load(&scene.body, &p, &cs, warm).map_err(|e| e.to_string())?;
         let r = p.to_dimensional(scene.load_n_per_m, s.answer.solution);
         Ok((
             positive_friction(r.friction)?,
@@ -590,7 +589,7 @@ mod tests {
         let bs = BandSettings::default();
         let tol = bs.contact_tol.max(COVER_BAND_TOL);
         for h_m in [5e-3, 10e-3] {
-            let solve = cover_solver(&scene, h_m, &bs);
+            let solve = cover_solver(&bs);
             for choice in [
                 Body::Layer { thickness_m: h_m },
                 Body::Auto { thickness_m: h_m },
@@ -607,7 +606,7 @@ mod tests {
                 let l = cold.roll.contact_length_m;
                 for start in [None, Some((1.03 * l, f64::NAN))] {
                     let with = roll_cover_from(&on, &spec, tol, start).unwrap();
-                    let (f, l_m, model) = solve(&spec, 0.0, start, choice).unwrap();
+                    let (f, l_m, model) = solve(&spec, 0.0, start, &on).unwrap();
                     assert_eq!(
                         f.to_bits(),
                         with.roll.friction.to_bits(),

@@ -8,8 +8,8 @@
 //! [`SceneRatios`].
 
 use super::friction::{
-    cover_solver, half_space_solve, predict_from_half_space, replicate_choice, solver, tail_note,
-    tail_term, too_many_failed, CoverSolve, Solve, COVER_BAND_TOL,
+    band_scene, cover_solver, half_space_solve, predict_from_half_space, replicate_choice, solver,
+    tail_note, tail_term, too_many_failed, CoverSolve, Solve, COVER_BAND_TOL,
 };
 use super::window::{
     continued_spectrum, excess, measured_window_hz, ramp_weight, rolling_reduced_freq_hz,
@@ -166,8 +166,7 @@ pub fn scene_bands_by(
     let job = SceneJob {
         fit,
         ensemble,
-        scene,
-        cover_m,
+        scene: band_scene(scene, cover_m),
         temps_c,
         settings,
     };
@@ -229,8 +228,7 @@ pub fn scene_bands_given(
     let job = SceneJob {
         fit,
         ensemble,
-        scene,
-        cover_m,
+        scene: band_scene(scene, cover_m),
         temps_c,
         settings,
     };
@@ -651,14 +649,13 @@ fn window_term(
     Some(WindowTerm { excess: ex, s_ln })
 }
 
-/// One scene's band solves: the compound, its replicates, the roll, the cover (`None`: the
-/// half-space), the temperatures and the settings.
+/// One scene's band solves: the compound, its replicates, the scene (its body `auto` on the cover
+/// or the half-space, [`band_scene`]), the temperatures and the settings.
 #[derive(Clone, Copy)]
 struct SceneJob<'a> {
     fit: &'a CompoundFit,
     ensemble: &'a BandEnsemble,
-    scene: &'a Scene,
-    cover_m: Option<f64>,
+    scene: Scene,
     temps_c: &'a [f64],
     settings: &'a BandSettings,
 }
@@ -676,7 +673,7 @@ struct Given<'a> {
 /// frictions given or solved, the half-space ratios given or solved: the ratios of the body
 /// (eqs. 15.6, 15.6b, 15.6c), then the model-error terms drawn in (eqs. 15.6c, 15.8, 15.9).
 fn bands_with(job: &SceneJob, given: Given) -> SceneRatios {
-    let (fit, scene, temps_c) = (job.fit, job.scene, job.temps_c);
+    let (fit, scene, temps_c) = (job.fit, &job.scene, job.temps_c);
     let Some(creep) = fit.creep.as_ref() else {
         return SceneRatios::empty(temps_c.len());
     };
@@ -700,19 +697,19 @@ fn bands_with(job: &SceneJob, given: Given) -> SceneRatios {
             None => return SceneRatios::empty(temps_c.len()),
         },
     };
-    let covered = solver(scene, job.cover_m, job.settings);
+    let covered = solver(scene, job.settings);
     let body_nominal = body_nominal(job, creep, hs, given.nominal);
     let f_nominal: Vec<Result<f64, String>> = body_nominal
         .iter()
         .map(|r| r.as_ref().map(|x| x.0).map_err(Clone::clone))
         .collect();
-    let (mut ratios, first_failure, carried_sd) = match job.cover_m {
+    let (mut ratios, first_failure, carried_sd) = match scene.body.cover_m() {
         None => {
             let (r, f): (Vec<Vec<f64>>, Vec<Option<String>>) =
                 hs.ratios.iter().cloned().map(split).unzip();
             (r, f, vec![None; temps_c.len()])
         }
-        Some(h_m) => cover_ratios(job, h_m, given.mode, hs, &body_nominal, &f_nominal),
+        Some(_) => cover_ratios(job, given.mode, hs, &body_nominal, &f_nominal),
     };
     let tail_ln: Vec<Option<f64>> = temps_c
         .par_iter()
@@ -747,7 +744,7 @@ fn bands_with(job: &SceneJob, given: Given) -> SceneRatios {
         window,
         first_failure,
         carried_ln: carried_sd,
-        solver_ln: match job.cover_m {
+        solver_ln: match scene.body.cover_m() {
             None => hs.error_ln.clone(),
             Some(_) => vec![0.0; temps_c.len()],
         },
@@ -797,21 +794,21 @@ fn body_nominal(
     hs: &HalfSpaceRatios,
     nominal: Option<&[CoverSolve]>,
 ) -> Vec<Result<CoverSolve, String>> {
-    let Some(h_m) = job.cover_m else {
+    if job.scene.body.cover_m().is_none() {
         return hs
             .fit
             .iter()
             .map(|r| r.clone().map(|(f, l)| (f, l, Some(Body::HALF_SPACE))))
             .collect();
-    };
-    let on_cover = cover_solver(job.scene, h_m, job.settings);
+    }
+    let on_cover = cover_solver(job.settings);
     let law = &job.fit.shift_law;
     job.temps_c
         .par_iter()
         .enumerate()
         .map(|(i, &t)| match nominal.and_then(|n| n.get(i)) {
             Some(&x) if x.0.is_finite() && x.0 > 0.0 => Ok(x),
-            _ => on_cover(creep, law.log10_a_t(t), None, super::friction::AUTO),
+            _ => on_cover(creep, law.log10_a_t(t), None, &job.scene),
         })
         .collect()
 }
@@ -819,14 +816,13 @@ fn body_nominal(
 /// A covered scene's ratios, first failures and carried errors per temperature.
 type CoverRatios = (Vec<Vec<f64>>, Vec<Option<String>>, Vec<Option<f64>>);
 
-/// The covered ratios of a scene on a cover of `h_m` (eq. 15.6): each replicate solved on the
+/// The covered ratios of a scene on a cover (eq. 15.6): each replicate solved on the
 /// body of the fit's own solve at that temperature (`body_nominal`), its layer solve started from
 /// the fit's contact there; every replicate at every temperature ([`CoverMode::Full`]), or
 /// [`COVER_SOLVED_REPLICATES`] of them at [`cover_solved_temps`] carried to the others where that is safe ([`CoverMode::Carried`],
 /// eq. 15.6c), the rest predicted from their half-space ratios (eq. 15.6b).
 fn cover_ratios(
     job: &SceneJob,
-    h_m: f64,
     mode: CoverMode,
     hs: &HalfSpaceRatios,
     body_nominal: &[Result<CoverSolve, String>],
@@ -836,14 +832,15 @@ fn cover_ratios(
     let nb = ensemble.replicates.len();
     let all: Vec<usize> = (0..nb).collect();
     let every: Vec<usize> = (0..temps_c.len()).collect();
-    let on_cover = cover_solver(job.scene, h_m, job.settings);
+    let on_cover = cover_solver(job.settings);
     let warm = |i: usize, c: &CreepSpectrum, l: f64| {
         let own = body_nominal[i].as_ref().ok();
         let start = own
             .map(|x| x.1)
             .filter(|l| l.is_finite() && *l > 0.0)
             .map(|l| (l, f64::NAN));
-        on_cover(c, l, start, replicate_choice(own.and_then(|x| x.2))).map(|r| r.0)
+        let on = replicate_choice(&job.scene, own.and_then(|x| x.2));
+        on_cover(c, l, start, &on).map(|r| r.0)
     };
     let solve_all = |at: &[usize]| {
         ratios_over(fit, ensemble, temps_c, at, &all, &warm, f_nominal)

@@ -113,17 +113,8 @@ fn cover_answer(
     let reason = match (body.asked_for(), solved.auto) {
         (Some(reason), _) => reason,
         (None, Some(pick)) => {
-            let (r, e) = (h / pick.lambda_half_space, pick.model_error_estimate);
-            match solved.body {
-                Body::HalfSpace { .. } => format!(
-                    "auto: cover/contact length = {r:.3} is thick enough for the half-space \
-                     (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
-                ),
-                _ => format!(
-                    "auto: cover/contact length = {r:.3} is thin enough for a Winkler foundation \
-                     with the constrained modulus (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
-                ),
-            }
+            let r = h / pick.lambda_half_space;
+            solved.body.auto_reason(r, pick.model_error_estimate, tol)
         }
         (None, None) => AUTO_LAYER.into(),
     };
@@ -226,7 +217,7 @@ pub fn roll_cover_from(
     let model = c.model;
     let mut warnings = a.warnings;
     let mut roll = p.to_dimensional(scene.load_n_per_m, a.solution);
-    if matches!(model, Body::HalfSpace { .. }) {
+    if model.is_half_space() {
         // the half-space's own validity check, as `contact::roll` makes it
         let l_over_r = roll.contact_length_m / scene.radius_m;
         if l_over_r > 0.126 {
@@ -260,7 +251,7 @@ pub fn roll_cover_from(
             h_m * 1e3
         ));
     }
-    if !matches!(out.model, Body::HalfSpace { .. }) {
+    if !out.model.is_half_space() {
         push_length_warning(&mut out.warnings, out.roll.contact_length_m, scene.radius_m);
     }
     Ok(out)

@@ -7,9 +7,10 @@
 //!
 //! Layout: the ground, importing nothing else of contact: `problem` (the dimensionless problem and
 //! solution common to every body), `settings` (every scheme's settings), `error`; `load` (the
-//! load loop) on it; `body` (the seam: one enum, one dispatch; `body::half_space` holds the
-//! half-space kernel, modes, reduction and the three schemes, `body::layer` the cover and the Winkler
-//! foundations) over them; `scene` (to and from the dimensionless problem, [`roll`]), `cover` (the
+//! load loop) on it; `numerics` (what several bodies share: the half-space kernel and its hat
+//! collocation, modes, Chebyshev pieces, the solve at λ, the mode reduction) on the ground; `body`
+//! (the seam: one enum, one dispatch; `body::half_space` holds the three schemes on the half-space,
+//! `body::layer` the cover and the Winkler foundations) over them; `scene` (to and from the dimensionless problem, [`roll`]), `cover` (the
 //! choice of body for a cover) and `maps` (friction maps of a spectrum from one reduced variable)
 //! over the dispatch.
 //!
@@ -22,6 +23,7 @@ pub(crate) mod cover;
 pub(crate) mod error;
 pub(crate) mod load;
 pub(crate) mod maps;
+pub(crate) mod numerics;
 pub(crate) mod problem;
 pub(crate) mod scene;
 pub(crate) mod settings;

@@ -18,10 +18,10 @@
 //! with `/λ` → `·λ` (budget no longer T-invariant) and with `+` → `*` (budget collapsed: the fast
 //! mode solved for).
 
-use viscoroll::contact::half_space::auto::at_lambda::{
+use viscoroll::contact::numerics::at_lambda::{
     solve_at_lambda as full_solve, LambdaSolution, QuadratureSettings,
 };
-use viscoroll::contact::half_space::modes::Modes;
+use viscoroll::contact::numerics::modes::Modes;
 use viscoroll::contact::{
     one_term_at_lambda, solve_at_lambda, AutoSettings, ContactSettings, CreepTerm,
     DimensionlessSolution, Scheme,

@@ -217,8 +217,8 @@ fn estimate_confirmed_pressure_and_friction_non_negative() {
 /// jumped by 5.6e−7 near c = 2.5e−9, where the n = 2 coefficient fell below the old cut.
 #[test]
 fn a_slow_mode_only_shifts_beta_by_f_n_ln_b_over_2() {
-    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
-    use viscoroll::contact::half_space::auto::reduction::build;
+    use viscoroll::contact::numerics::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::numerics::reduction::build;
     let mut rng = Rng(0x5EED_0004);
     let mut case = None;
     for _ in 0..=28 {

@@ -183,9 +183,9 @@ fn gap_opens_like_three_halves_power_behind_the_edge() {
     // g ≈ C|ξ|^{3/2} next to the rear edge (pressure ~ √ξ there): the ratio of the gaps at
     // 1e−3 λ and 1e−2 λ behind must be close to 10^{−3/2} = 0.0316 (the next term is O(|ξ|²), i.e.
     // a relative correction of order √(|ξ|/λ) ≈ 0.1 at 1e−2 λ: allow 25 %).
-    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
-    use viscoroll::contact::half_space::modes::Modes;
     use viscoroll::contact::half_space::rear_gap::GapEvaluator;
+    use viscoroll::contact::numerics::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::numerics::modes::Modes;
     for (f, b) in [(10.0, 0.01), (10.0, 1.0), (3.0, 20.0)] {
         let m = Modes::new(&[CreepTerm { f, b }]);
         let sol = solve_at_lambda(&m, 1.0, QuadratureSettings::default());

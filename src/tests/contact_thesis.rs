@@ -2,8 +2,8 @@
 //! against n, a 10-term spectrum over eight decades of λ and of speed, and the load loop where the
 //! thesis' secant fails.
 
-use viscoroll::contact::half_space::{kernel::Kernel, thesis};
 use viscoroll::contact::load::thesis_secant;
+use viscoroll::contact::numerics::{hat, kernel::Kernel};
 use viscoroll::contact::{solve_at_lambda, solve_at_load, ContactSettings, CreepTerm, Scheme};
 
 fn settings(n: usize) -> ContactSettings {
@@ -154,7 +154,7 @@ fn load_loop_against_the_thesis_secant_at_low_speed() {
     }];
     let kernel = Kernel::new(&terms).unwrap();
     let n = 80;
-    let solve = |l: f64| thesis::solve_at_lambda(&kernel, l, n);
+    let solve = |l: f64| hat::solve_at_lambda(&kernel, l, n);
     let ours = solve_at_load(&terms, 0.25, &settings(n)).unwrap();
     eprintln!(
         "bracketed Brent: lambda = {}, {} solves",

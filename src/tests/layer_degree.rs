@@ -17,7 +17,7 @@
 use viscoroll::contact::body::layer::spectral::at_lambda::solve_at_lambda as fixed_degree;
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
 use viscoroll::contact::half_space::auto::{solve_auto_at_load, AutoSettings};
-use viscoroll::contact::half_space::modes::Modes;
+use viscoroll::contact::numerics::modes::Modes;
 use viscoroll::contact::CreepTerm;
 
 fn rel(a: f64, b: f64) -> f64 {

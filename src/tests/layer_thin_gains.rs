@@ -28,7 +28,7 @@
 use viscoroll::contact::body::layer::spectral::at_lambda::solve_at_lambda as fixed_degree;
 use viscoroll::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
 use viscoroll::contact::cover::solve_cover;
-use viscoroll::contact::half_space::modes::Modes;
+use viscoroll::contact::numerics::modes::Modes;
 use viscoroll::contact::Body;
 use viscoroll::contact::CreepTerm;
 

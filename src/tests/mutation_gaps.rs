@@ -168,9 +168,9 @@ fn dense_min(ev: &viscoroll::contact::half_space::rear_gap::GapEvaluator, lam: f
 /// replaced), the golden-section bracket narrowed to one side of the coarse minimum.
 #[test]
 fn rear_scan_finds_the_interior_minimum_of_the_gap() {
-    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
-    use viscoroll::contact::half_space::modes::Modes;
     use viscoroll::contact::half_space::rear_gap::{rear_scan, GapEvaluator};
+    use viscoroll::contact::numerics::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::numerics::modes::Modes;
     use viscoroll::contact::CreepTerm;
     let lam = 1.0;
     let m = Modes::new(&[CreepTerm { f: 10.0, b: 0.1 }]);
@@ -210,9 +210,9 @@ fn rear_scan_finds_the_interior_minimum_of_the_gap() {
 /// (`rear_gap.rs`, `sol.beta < 0.0` made `== 0.0`): the scan then stopped at −6 λ, 2–9 λ short.
 #[test]
 fn rear_scan_reaches_the_lowest_point_of_the_roll_far_behind() {
-    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
-    use viscoroll::contact::half_space::modes::Modes;
     use viscoroll::contact::half_space::rear_gap::{rear_scan, GapEvaluator};
+    use viscoroll::contact::numerics::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::numerics::modes::Modes;
     use viscoroll::contact::CreepTerm;
     let lam = 1.0;
     let m = Modes::new(&[CreepTerm { f: 10.0, b: 0.1 }]);
@@ -256,9 +256,9 @@ fn rear_scan_reaches_the_lowest_point_of_the_roll_far_behind() {
 /// indexes before the first point.
 #[test]
 fn rear_scan_of_a_solved_contact_finds_the_gap_smallest_at_the_rear_edge() {
-    use viscoroll::contact::half_space::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
-    use viscoroll::contact::half_space::modes::Modes;
     use viscoroll::contact::half_space::rear_gap::{rear_scan, GapEvaluator};
+    use viscoroll::contact::numerics::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use viscoroll::contact::numerics::modes::Modes;
     use viscoroll::contact::CreepTerm;
     let lam = 1.0;
     for b in [1.0, 0.1, 0.01] {

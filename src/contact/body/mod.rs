@@ -6,8 +6,8 @@
 //! [`ContactError`].
 //!
 //! One enum, [`Body`], names the body, its model and, for a cover, the choice of model: the
-//! viscoelastic half-space of the thesis ([`half_space`]: its kernel, eq. 3.19, the three schemes that
-//! solve eq. 3.25 on it), the bonded layer and the Winkler foundations ([`layer`]), and `auto` (the
+//! viscoelastic half-space of the thesis ([`half_space`]: the three schemes that solve eq. 3.25 on
+//! the kernel of eq. 3.19), the bonded layer and the Winkler foundations ([`layer`]), and `auto` (the
 //! cheapest of them accurate enough, [`Body::auto_choice`]; its reasons and estimates are
 //! `contact::cover`'s). The dispatch below resolves `auto` and calls the body's folder.
 //!
@@ -17,7 +17,8 @@
 //!    `solve_at_lambda` taking the dimensionless problem's parts ([`crate::contact::problem`]), the
 //!    body's own dimensionless parameters and the settings, and the conversion of its SI parameters
 //!    to dimensionless ones (given the [`DimensionlessScene`]); it imports the ground (`problem`,
-//!    `settings`, `error`), `load` and shared numerics, never this file, `scene` or `cover`;
+//!    `settings`, `error`), `load` and the shared numerics ([`crate::contact::numerics`]), never
+//!    another body's folder, this file, `scene` or `cover`;
 //! 2. one variant in [`Body`] (its dimensional parameters, SI, with units in the names, e.g.
 //!    `Layer { thickness_m }`), with its arms in [`Body::name`] (the serde name too),
 //!    [`Body::asked_for`], [`Body::validate`], [`Body::cover_m`], [`Body::with_cover`] and in
@@ -178,6 +179,30 @@ impl Body {
             #[cfg(test)]
             Body::OnSprings { .. } => "cover on springs asked for".into(),
         })
+    }
+
+    /// Why `auto` chose this body for a cover of `cover_over_contact` half-space contact lengths,
+    /// its estimated difference from the layer `estimate` being within `tol` (the reason line of
+    /// `contact::cover`'s answer): `auto` chooses the half-space for thick covers and the
+    /// constrained Winkler foundation for thin ones ([`Body::auto_choice`]).
+    pub fn auto_reason(&self, cover_over_contact: f64, estimate: f64, tol: f64) -> String {
+        let (r, e) = (cover_over_contact, estimate);
+        match self {
+            Body::HalfSpace { .. } => format!(
+                "auto: cover/contact length = {r:.3} is thick enough for the half-space \
+                 (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
+            ),
+            _ => format!(
+                "auto: cover/contact length = {r:.3} is thin enough for a Winkler foundation \
+                 with the constrained modulus (estimated difference from the layer {e:.1e} ≤ tol {tol:.0e})"
+            ),
+        }
+    }
+
+    /// Whether the body is the half-space (on a cover or not): its validity limit is its own
+    /// (the parabolic roll profile, checked by `contact::roll`), not a cover's.
+    pub fn is_half_space(&self) -> bool {
+        matches!(self, Body::HalfSpace { .. })
     }
 
     /// The thickness in m of the cover the body stands for (None: a half-space without a cover).

@@ -9,7 +9,7 @@
 //! # Math (docs/MATH.md §11)
 //! Off the contact the surface displacement is still eq. 3.19 with v(0) = 0,
 //! ρv(ξ) = s∫₀^λ Q′(ξ′)[K̂(−ξ′) − K̂(ξ−ξ′)]dξ′, K̂(x) = ln|x| + Σᵢ (f̂ᵢ/bᵢ)h(bᵢx) (docs/MATH.md §2; with
-//! fast modes lumped Q′K = Q′·sK̂, module [`super::auto::reduction`]), and the roll sits at depth ξβ − ξ²/2
+//! fast modes lumped Q′K = Q′·sK̂, module [`crate::contact::numerics::reduction`]), and the roll sits at depth ξβ − ξ²/2
 //! (eq. 3.22), so g(ξ) = ρv(ξ) − (ξβ − ξ²/2) must be ≥ 0. The two parts of K̂ are integrated apart:
 //!
 //! - **Elastic part, in closed form.** With ξ′ = L(1+s), L = λ/2, Q′ = √(1−s²)ΣFₙU_{n−1}(s) and, for
@@ -57,9 +57,9 @@
 //! 400 random scenes) were wrong solutions of the solver at tol 1e−6 (a re-solve at tol 1e−10 gives
 //! another λ and an open gap; tests/data/rear_gap_wrong_solution_case.json): the check flags them.
 
-use super::auto::at_lambda::LambdaSolution;
-use super::chebyshev::theta_w;
-use super::modes::Modes;
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::chebyshev::theta_w;
+use crate::contact::numerics::modes::Modes;
 use crate::special::chebyshev::{clenshaw, first_kind_coefficients, sine_series};
 use crate::special::gauss_legendre::gauss_legendre;
 use crate::special::{expm_ei, kernel_bracket, EULER_GAMMA};
@@ -393,10 +393,10 @@ pub fn rear_scan(modes: &Modes, scale: f64, sol: &LambdaSolution) -> RearScan {
 
 #[cfg(test)]
 mod tests {
-    use super::super::auto::at_lambda::{solve_at_lambda, QuadratureSettings};
     use super::super::exact::one_term_at_lambda;
-    use super::super::kernel::Kernel;
     use super::*;
+    use crate::contact::numerics::at_lambda::{solve_at_lambda, QuadratureSettings};
+    use crate::contact::numerics::kernel::Kernel;
     use crate::contact::problem::CreepTerm;
     use crate::special::gauss_legendre::Integrator;
 

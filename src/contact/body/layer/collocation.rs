@@ -40,7 +40,7 @@
 //!   default; this scheme remains the fallback for covers too thin for its degree cap (h/λ below
 //!   ≈ 0.016 at tol 1e−3, ≈ 0.03 at 1e−6) and the given-λ solver of `Body::Layer`.
 //!
-//! The assembly and solve are the thesis scheme's (`crate::contact::body::half_space::thesis::solve_hat_system`,
+//! The assembly and solve are the thesis scheme's (`crate::contact::numerics::hat::solve_hat_system`,
 //! shared: the system is the same for any kernel of the form K + const).
 
 use super::kernel::LayerKernel;
@@ -111,7 +111,7 @@ pub fn solve_at_lambda(
     n: usize,
 ) -> Result<DimensionlessSolution, ContactError> {
     positive("lambda", lambda)?;
-    crate::contact::body::half_space::thesis::check_intervals(n)?;
+    crate::contact::numerics::hat::check_intervals(n)?;
     let ratio = lambda / kernel.thickness();
     if ratio > LAMBDA_OVER_THICKNESS_MAX {
         return Err(ContactError::OutOfRange {
@@ -125,7 +125,7 @@ pub fn solve_at_lambda(
     let h = lambda / n as f64;
     let a = kernel.hat_averages(n, h);
     // the thesis' assembly and solve, shared (the system is the same for any kernel K + const)
-    crate::contact::body::half_space::thesis::solve_hat_system(&a, n, lambda, "layer")
+    crate::contact::numerics::hat::solve_hat_system(&a, n, lambda, "layer")
 }
 
 /// An initial guess of λ at load N′ for the load loop: the glassy half-space width 2√N′ or, when

@@ -58,8 +58,8 @@
 pub(crate) mod check_rule;
 
 use super::compliance::layer_defect;
-use crate::contact::body::half_space::kernel::Kernel;
 use crate::contact::error::{positive, ContactError};
+use crate::contact::numerics::kernel::Kernel;
 use crate::contact::problem::CreepTerm;
 use crate::special::gauss_legendre::gauss_legendre;
 

@@ -4,10 +4,10 @@
 use super::collocation::{lambda_guess, solve_at_load_n};
 use super::compliance::{winkler_coefficient, WinklerColumns};
 use super::*;
-use crate::contact::body::half_space::auto::{solve_auto_at_load, AutoSettings};
-use crate::contact::body::half_space::kernel::Kernel;
-use crate::contact::body::half_space::thesis;
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
+use crate::contact::numerics::hat;
+use crate::contact::numerics::kernel::Kernel;
+use crate::contact::{solve_at_load as half_space_at_load, ContactSettings};
 use crate::contact::{Body, CreepTerm, DimensionlessSolution, Scene};
 use crate::CreepSpectrum;
 
@@ -18,7 +18,7 @@ fn rel(a: f64, b: f64) -> f64 {
 fn thesis_at_load(terms: &[CreepTerm], load: f64, n: usize) -> DimensionlessSolution {
     let k = Kernel::new(terms).unwrap();
     load_loop(load, k.sum_f_over_b(), &LoadSettings::default(), |l| {
-        thesis::solve_at_lambda(&k, l, n)
+        hat::solve_at_lambda(&k, l, n)
     })
     .unwrap()
 }
@@ -79,15 +79,7 @@ fn thick_layer_tends_to_half_space() {
     }
     // Against the error-controlled half-space solver (auto, tol 1e−9): the layer's estimate holds.
     let terms = [CreepTerm { f: 10.0, b: 1.0 }, CreepTerm { f: 0.5, b: 0.05 }];
-    let auto = solve_auto_at_load(
-        &terms,
-        load,
-        &AutoSettings {
-            tol: 1e-9,
-            ..Default::default()
-        },
-    )
-    .unwrap();
+    let auto = half_space_at_load(&terms, load, &ContactSettings::auto(1e-9)).unwrap();
     for tol in [1e-3, 1e-4] {
         let ans = layer_at_load(
             &terms,
@@ -266,7 +258,7 @@ fn issue_figures_conveyor_idler() {
         body: Body::HALF_SPACE,
     };
     let p = scene.dimensionless(&spec).unwrap();
-    let hs = solve_auto_at_load(&p.terms, p.load, &AutoSettings::default()).unwrap();
+    let hs = half_space_at_load(&p.terms, p.load, &ContactSettings::default()).unwrap();
     let f_hs = hs.friction_rho / p.rho;
     eprintln!(
         "half-space F/N {f_hs:.5} (l = {:.2} mm)",
@@ -501,7 +493,7 @@ fn criterion_nu049() {
     println!("| spectrum | ν | h/λ_layer | p | layer estimate | constrained Winkler vs layer (λ, ρF/N) | C |");
     println!("|---|---|---|---|---|---|---|");
     for (name, terms) in &cases {
-        let hs = solve_auto_at_load(terms, load, &AutoSettings::default()).unwrap();
+        let hs = half_space_at_load(terms, load, &ContactSettings::default()).unwrap();
         for nu in [0.49, 0.45] {
             for hr in [0.03, 0.01, 3e-3, 1e-3, 3e-4] {
                 let h = hr * hs.lambda;

@@ -41,9 +41,9 @@
 //! surface whenever β < λ.
 
 use super::compliance::{winkler_coefficient, WinklerColumns};
-use crate::contact::body::half_space::modes::Modes;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
+use crate::contact::numerics::modes::Modes;
 use crate::contact::problem::{BodyAnswer, CreepTerm, DimensionlessSolution};
 use crate::special::gauss_legendre::gauss_legendre;
 
@@ -94,7 +94,7 @@ impl Winkler {
     ) -> Result<Self, ContactError> {
         positive("foundation height h/(VT)", thickness)?;
         // Validates the terms (fᵢ ≥ 0, bᵢ > 0).
-        crate::contact::body::half_space::kernel::Kernel::new(terms)?;
+        crate::contact::numerics::kernel::Kernel::new(terms)?;
         let c_w = winkler_coefficient(columns, thickness, nu).ok_or_else(|| {
             ContactError::Unsupported(
                 "a Winkler foundation of constrained columns is rigid at Poisson's ratio 0.5"

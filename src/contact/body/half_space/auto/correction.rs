@@ -1,12 +1,12 @@
-//! The first-order correction for the lumped fast modes ([`super::reduction`] module doc): the
+//! The first-order correction for the lumped fast modes ([`crate::contact::numerics::reduction`] module doc): the
 //! model gains, their measurement by one extra solve (calibration), applying them, and the error
 //! that remains (second order, plus the round-off floor of the corrected friction).
 //!
 //! Input: the creep terms, the [`Reduction`] and a reduced [`LambdaSolution`]; output: a
 //! [`Correction`] and error estimates.
 
-use super::at_lambda::{LambdaSolution, QuadratureSettings};
-use super::reduction::{
+use crate::contact::numerics::at_lambda::{LambdaSolution, QuadratureSettings};
+use crate::contact::numerics::reduction::{
     calibration_mode, lump_weight, lumped_residual, model_gains, solve_reduced, unlump, Reduction,
 };
 use crate::contact::problem::CreepTerm;

@@ -5,10 +5,10 @@
 //! Input: the reduced problem, the corrected solution and the settings (`gap_check` off: NaN);
 //! output: the smallest gap over λ²/8 and where it lies, warnings appended.
 
-use super::at_lambda::LambdaSolution;
-use super::reduction::Reduction;
 use super::settings::AutoSettings;
 use crate::contact::body::half_space::rear_gap::contact_check;
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::reduction::Reduction;
 
 /// (min gap / (λ²/8), its ξ) outside the contact, and the warnings about it (penetration; the
 /// roll's lowest point behind the rear edge).

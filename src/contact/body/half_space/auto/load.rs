@@ -5,17 +5,17 @@
 //! Input: creep terms, N′, [`AutoSettings`]; output: the [`DimensionlessSolution`] at the λ found
 //! (via [`super::outcome::package`]) or a [`ContactError`].
 
-use super::at_lambda::{LambdaSolution, QuadratureSettings};
 use super::correction::{
     calibrate, lumped_weight_times_lambda, lumping_error, roundoff_floor, Correction,
 };
 use super::outcome::package;
-use super::reduction::{
-    effective_compliance, select, slow_estimate_at, solve_reduced_checked, Reduction,
-};
 use super::settings::{budgets, quad_for, validate, AutoSettings};
 use crate::contact::error::ContactError;
 use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Verdict};
+use crate::contact::numerics::at_lambda::{LambdaSolution, QuadratureSettings};
+use crate::contact::numerics::reduction::{
+    effective_compliance, select, slow_estimate_at, solve_reduced_checked, Reduction,
+};
 use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 
 /// Solve at given load N′ > 0: rounds of mode selection (at the last λ), load loop and measured

@@ -6,14 +6,14 @@
 //! [`ContactError`].
 //!
 //! Error budget for a relative tolerance `tol` on ρ·F/N and λ (or N′ at given λ; docs/MATH.md §9):
-//! - mode reduction ([`reduction`]): ≤ 0.3·tol, re-selected until the estimate, evaluated with
+//! - mode reduction ([`reduction`](crate::contact::numerics::reduction)): ≤ 0.3·tol, re-selected until the estimate, evaluated with
 //!   the friction of the solution itself, fits. Lumped fast modes are *corrected* to first order:
 //!   one extra solve at the final λ with the lumped mode of largest weight kept measures the gains
 //!   (g_F, g_N, g_β) of ρF/N/λ, ln N′ and β per unit lumping weight, and g·Σwᵢ is added to the
-//!   answer; the remaining error is the second-order estimate of [`reduction`]. At given load
+//!   answer; the remaining error is the second-order estimate of [`reduction`](crate::contact::numerics::reduction). At given load
 //!   the loop solves N′_lumped(λ)(1 + g_N·W(λ)) = N′, first with the model gain, then (when the
 //!   measured one moves the target) on from the λ found;
-//! - quadrature ([`at_lambda`]): step h = 0.6 for tol ≥ 1e−4, 0.4 for tol ≥ 1e−7, 0.3 below
+//! - quadrature ([`at_lambda`](crate::contact::numerics::at_lambda)): step h = 0.6 for tol ≥ 1e−4, 0.4 for tol ≥ 1e−7, 0.3 below
 //!   (measured errors ≤ 5e−8, 2e−11, ~1e−15: ≈ e^{−π²/h} with a constant ≤ 1 on 1–30-term
 //!   problems); the estimate is 10·e^{−π²/(2h)} times the difference to the same sum on every second
 //!   node (step 2h, from the same exterior values: no second solve). The calibration is a difference
@@ -34,24 +34,22 @@
 //! The reported `error_estimate` is the largest of the relative errors of ρF/N and of λ (at given
 //! load) or N′ (at given λ).
 
-pub(crate) mod at_lambda;
 mod correction;
 mod gap_check;
 mod load;
 mod outcome;
-pub(crate) mod reduction;
 mod settings;
 
 pub use load::solve_auto_at_load;
 pub use settings::AutoSettings;
 
 use crate::contact::error::ContactError;
+use crate::contact::numerics::reduction::{select, slow_estimate_at, solve_reduced_checked};
 use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use correction::{
     calibrate, lumped_weight_times_lambda, lumping_error, roundoff_floor, Correction,
 };
 use outcome::package;
-use reduction::{select, slow_estimate_at, solve_reduced_checked};
 use settings::{budgets, quad_for, validate};
 
 /// Solve at given contact length λ > 0.

@@ -5,10 +5,10 @@
 //! Input: the reduced problem, the corrected [`LambdaSolution`] and the error estimates; output: the
 //! [`DimensionlessSolution`].
 
-use super::at_lambda::LambdaSolution;
 use super::gap_check::gap_check;
-use super::reduction::Reduction;
 use super::settings::AutoSettings;
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::reduction::Reduction;
 use crate::contact::problem::Diagnostics;
 use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 

@@ -4,8 +4,8 @@
 //! Input: [`AutoSettings`] (plain serde data) and the creep terms; output: checked input,
 //! [`QuadratureSettings`], budgets.
 
-use super::at_lambda::QuadratureSettings;
 use crate::contact::error::ContactError;
+use crate::contact::numerics::at_lambda::QuadratureSettings;
 use crate::contact::problem::CreepTerm;
 pub use crate::contact::settings::AutoSettings;
 

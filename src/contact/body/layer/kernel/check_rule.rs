@@ -72,10 +72,10 @@
 //! ≤ 1e−10 of the largest difference allowed.
 
 use super::LayerKernel;
-use crate::contact::body::half_space::kernel::{
+use crate::contact::body::layer::compliance::layer_defect;
+use crate::contact::numerics::kernel::{
     add_term_hat_averages_with, half_second_diff_k2logk, second_diff_klogk, split_from, Kernel,
 };
-use crate::contact::body::layer::compliance::layer_defect;
 use crate::special::gauss_legendre::gauss_legendre;
 use crate::special::{kernel_bracket, EULER_GAMMA};
 

@@ -7,9 +7,9 @@
 
 use super::layer_term::LayerTerm;
 use super::volterra::{memory_exact_add, memory_polynomial, poly_min_mu};
-use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
-use crate::contact::body::half_space::chebyshev::{exp_coefficients, theta_w, ExteriorPoints};
-use crate::contact::body::half_space::modes::Modes;
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::chebyshev::{exp_coefficients, theta_w, ExteriorPoints};
+use crate::contact::numerics::modes::Modes;
 use crate::special::equilibrated::solve_equilibrated;
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::PI;
@@ -337,10 +337,8 @@ fn system(
 #[cfg(test)]
 mod tests {
     use super::solve_at_lambda;
-    use crate::contact::body::half_space::auto::at_lambda::{
-        solve_at_lambda as hs_solve, QuadratureSettings,
-    };
-    use crate::contact::body::half_space::modes::Modes;
+    use crate::contact::numerics::at_lambda::{solve_at_lambda as hs_solve, QuadratureSettings};
+    use crate::contact::numerics::modes::Modes;
     use crate::contact::problem::CreepTerm;
 
     #[test]

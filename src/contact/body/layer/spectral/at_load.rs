@@ -14,15 +14,15 @@ use super::degree::{
 };
 use super::secant::{bracket as secant_bracket, secant_loop, secant_until, start_guess, Start};
 use super::walk::{Walk, CARRY_CURVATURE};
-use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
-use crate::contact::body::half_space::auto::reduction::{
-    calibration_mode, lump_weight, lumped_residual, model_gains, select, slow_estimate_at, unlump,
-    Reduction,
-};
 use crate::contact::body::layer::collocation::{contact_checks, lambda_guess, LayerAnswer};
 use crate::contact::body::layer::LayerKernel;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::reduction::{
+    calibration_mode, lump_weight, lumped_residual, model_gains, select, slow_estimate_at, unlump,
+    Reduction,
+};
 use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use crate::special::chebyshev::sine_series;
 use std::cell::RefCell;
@@ -191,7 +191,7 @@ impl Calibration {
 }
 
 /// First-order lumping gains (g_F, g_N, g_β) and the amplification Σwᵢ/w* (module doc of
-/// [`crate::contact::body::half_space::auto::reduction`]): measured by one solve with the lumped
+/// [`crate::contact::numerics::reduction`]): measured by one solve with the lumped
 /// mode of largest weight kept (or its probe), or the model's gains when nothing is lumped. `pair`
 /// is the reduced solution at λ at degrees p and p/2; the calibration solve is made at the same two
 /// degrees (one set of columns), so that the gains carry the degree of the solution they correct
@@ -996,18 +996,10 @@ mod tests {
         // 1 + 2·Σwᵢ/w* times, and the answer missed tol 1e−4 (estimate 1.2e−4, flagged; this test
         // fails so). With the budget divided by that factor it meets tol, and its true error
         // (against tol 1e−9) lies within its estimate plus the refinement's.
-        use crate::contact::body::half_space::auto::{solve_auto_at_load, AutoSettings};
         let terms = super::super::spread_terms(30, 24.0);
-        let hs = solve_auto_at_load(
-            &terms,
-            0.25,
-            &AutoSettings {
-                tol: 1e-10,
-                gap_check: false,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let mut hs_settings = crate::contact::ContactSettings::auto(1e-10);
+        hs_settings.auto.gap_check = false;
+        let hs = crate::contact::solve_at_load(&terms, 0.25, &hs_settings).unwrap();
         let h = 0.03 * hs.lambda;
         let solve = |tol| {
             let st = SpectralSettings {

@@ -2,14 +2,14 @@
 //! walk ([`super::walk`]) share: the degree rule p(L/h′, tol), the degree error from the p/2
 //! comparison and the next degree after a failed check (module doc of [`super`], "Convergence"),
 //! and the lumping correction's pieces (W = Σwᵢ, the amplification Σwᵢ/w*, the corrected solution;
-//! module doc of [`crate::contact::body::half_space::auto::reduction`]).
+//! module doc of [`crate::contact::numerics::reduction`]).
 //!
 //! Input: solutions at λ ([`LambdaSolution`]), creep terms and their [`Reduction`]; output: degrees,
 //! error figures and corrected solutions. Below both of its users, so that they do not import each
 //! other.
 
-use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
-use crate::contact::body::half_space::auto::reduction::{calibration_mode, lump_weight, Reduction};
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::reduction::{calibration_mode, lump_weight, Reduction};
 use crate::contact::problem::CreepTerm;
 
 /// Degree p for a contact of half-length L on a cover h′ at `tol`: the measured convergence of the

@@ -60,8 +60,8 @@
 //! `LayerTerm::reference`, the straightforward build, is kept for the tests (≤ 1e−13 of the largest
 //! coefficient, `fast_build_matches_the_reference`).
 
-use crate::contact::body::half_space::modes::Modes;
 use crate::contact::body::layer::compliance::layer_defect;
+use crate::contact::numerics::modes::Modes;
 use crate::special::gauss_legendre::gauss_legendre;
 use nalgebra::DMatrix;
 use std::cell::RefCell;

@@ -2,7 +2,7 @@
 //! layer body's default (issue 14, "Numbers to reach"; the design weighed in [`super::collocation`]).
 //!
 //! Input: the dimensionless creep terms (fᵢ, bᵢ), λ or N′, the cover h′ = h/(VT), ν and a tolerance;
-//! output: [`LambdaSolution`](crate::contact::body::half_space::auto::at_lambda::LambdaSolution) at
+//! output: [`LambdaSolution`](crate::contact::numerics::at_lambda::LambdaSolution) at
 //! given λ ([`at_lambda`]) or a [`LayerAnswer`](super::collocation::LayerAnswer) with its error
 //! estimate and contact checks at given load ([`at_load`]; `None` for covers too thin for it).
 //!
@@ -39,7 +39,7 @@
 //! coefficients of G. For G = 0 this is exactly the `auto` reduction (p₀ + p₁t + ΣAⱼe^{μⱼ(t−1)}).
 //! V⁻¹\[T_m\] is computed in Chebyshev coefficients by [`volterra`]: exactly (a tridiagonal solve)
 //! for μⱼ < max(p²/4, 30), as a short polynomial plus a multiple of e^{μⱼ(t−1)} above. Fast modes
-//! are lumped and slow ones dropped by the `auto` scheme's [`reduction`](crate::contact::body::half_space::auto::reduction),
+//! are lumped and slow ones dropped by the `auto` scheme's [`reduction`](crate::contact::numerics::reduction),
 //! with its measured first-order lumping correction (the lumped modes' layers are far thinner than h′).
 //!
 //! # Convergence and error estimate (measured, the tests of [`at_lambda`])

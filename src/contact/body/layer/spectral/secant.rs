@@ -34,12 +34,12 @@
 //! the three limits, `lambda_guess`, was up to 68 % off at h′/λ ≈ 0.3 and ν = ½, which cost two
 //! coarse solves). The slope's terms are central differences of the closed forms.
 
-use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
-use crate::contact::body::half_space::auto::reduction::effective_compliance;
 use crate::contact::body::layer::collocation::lambda_guess;
 use crate::contact::body::layer::compliance::layer_factor;
 use crate::contact::error::ContactError;
 use crate::contact::load::{iterate, Keep, SafeSecant, Seen, Step, Turn, Verdict};
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::reduction::effective_compliance;
 use crate::contact::problem::CreepTerm;
 
 /// Where a loop starts.

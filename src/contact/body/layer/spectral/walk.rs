@@ -36,8 +36,8 @@ use super::at_lambda::{solve_at_lambda_triple, LaplaceRule};
 use super::degree::{
     corrected, degree_budget, degree_error, degree_for, next_degree, unscale, w_lambda, Triple,
 };
-use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
-use crate::contact::body::half_space::auto::reduction::{select, Reduction};
+use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::reduction::{select, Reduction};
 use crate::contact::problem::CreepTerm;
 
 /// Half the largest relative curvature |y″/y| in u = ln λ of the outputs carried to the root
@@ -183,10 +183,10 @@ impl<'a> Walk<'a> {
 #[cfg(test)]
 mod tests {
     use super::CARRY_CURVATURE;
-    use crate::contact::body::half_space::auto::at_lambda::LambdaSolution;
-    use crate::contact::body::half_space::modes::Modes;
     use crate::contact::body::layer::spectral::at_lambda::solve_at_lambda;
     use crate::contact::body::layer::spectral::{solve_spectral_at_load, SpectralSettings};
+    use crate::contact::numerics::at_lambda::LambdaSolution;
+    use crate::contact::numerics::modes::Modes;
     use crate::contact::problem::CreepTerm;
 
     #[test]

@@ -1,7 +1,9 @@
 //! The thesis scheme (Padyala 2009, §3.2 eq. 3.25–3.26 and Fig. 3), exactly as written: at a given
 //! contact length λ, piecewise-linear pressure Q′ on n equal intervals of [0, λ], zero at both ends,
 //! collocation of eq. 3.25 at the n nodes ξ₁ … ξₙ (eq. 3.25 holds trivially at ξ₀ = 0), unknowns the
-//! n − 1 interior nodal pressures and the offset β.
+//! n − 1 interior nodal pressures and the offset β. Shared: the half-space's thesis scheme is
+//! [`solve_at_lambda`] on the kernel of [`super::kernel`]; the bonded layer's hat scheme assembles its
+//! own kernel's averages and solves them with `solve_hat_system`.
 //!
 //! Input: a [`Kernel`], λ and n; output: a [`DimensionlessSolution`] (scheme `thesis`).
 //!
@@ -61,8 +63,8 @@ pub fn solve_at_lambda(
 }
 
 /// Assemble and solve the collocation system above for the hat averages `a` of any kernel of the form
-/// K(ξ) + const (a[k + c] = A(k), c = a.len()/2 ≥ n; the bonded layer's kernel uses it too,
-/// [`crate::contact::body::layer::collocation`]); `scheme` names the result.
+/// K(ξ) + const (a[k + c] = A(k), c = a.len()/2 ≥ n; the bonded layer's hat scheme uses it
+/// too); `scheme` names the result.
 pub(crate) fn solve_hat_system(
     a: &[f64],
     n: usize,

@@ -16,8 +16,8 @@
 //!   the model g_F = 1/(2S_eff), g_N = 1/S_eff with the effective compliance at the contact time
 //!   S_eff = 1 + Σrᵢcᵢ/(1+cᵢ) was within 0.82–1.14 of the measured g on random spectra (5–35 terms,
 //!   J∞/J_g = 10…1e4); the isolated-mode value 1/(2(1+rᵢ)) overstates it up to S_eff/(1+rᵢ) ~ 1e3×.
-//!   The solver ([`super`]) therefore *measures* g once per answer (one solve with the
-//!   lumped mode of largest wᵢ kept) and adds the first-order correction g·Σwᵢ; what remains is the
+//!   The solvers (the half-space's `auto` scheme, the spectral layer) therefore *measure* g once per
+//!   answer (one solve with the lumped mode of largest wᵢ kept) and add the first-order correction g·Σwᵢ; what remains is the
 //!   second-order term, measured ≤ 0.6·|g·Σwᵢ|/c_min on those spectra (c_min: slowest lumped mode),
 //!   and estimated as 2·|g·Σwᵢ|/c_min. Selection uses the same formula with the model g (times
 //!   the measured/model ratio once known). With it a tolerance of 1e−6 lumps every mode with
@@ -45,8 +45,8 @@
 use super::at_lambda::{
     solve_at_lambda, solve_at_lambda_checked, LambdaSolution, QuadratureSettings,
 };
-use crate::contact::body::half_space::modes::Modes;
 use crate::contact::error::ContactError;
+use crate::contact::numerics::modes::Modes;
 use crate::contact::problem::CreepTerm;
 use std::f64::consts::PI;
 
@@ -116,10 +116,10 @@ fn drop_estimate(t: &CreepTerm, l: f64, s_eff: f64) -> Option<(f64, f64)> {
 }
 
 /// Largest μ = (1 + rᵢ)cᵢ of a mode the lumping calibration solves for: its front layer needs
-/// ~√(83μ) ≈ 2.9e4 Chebyshev terms (module [`crate::contact::body::half_space::chebyshev`]).
+/// ~√(83μ) ≈ 2.9e4 Chebyshev terms (module [`crate::contact::numerics::chebyshev`]).
 pub(crate) const MU_CALIBRATION_MAX: f64 = 1e7;
 
-/// The mode the lumping calibration measures with ([`super`]): the lumped mode of
+/// The mode the lumping calibration measures with (the half-space's `auto` scheme): the lumped mode of
 /// largest weight, and the c of the probe that stands in for it when its μ = (1 + rᵢ)cᵢ exceeds
 /// [`MU_CALIBRATION_MAX`] (`f64::INFINITY`: none): c_p = max(100, μ_max/(1 + rᵢ)). A mode lumped
 /// beyond the cap of [`select`] can be far too fast to solve for (c ≈ 1e15 in a random slow-end
@@ -286,7 +286,7 @@ pub(crate) fn unlump(terms: &[CreepTerm], red: &Reduction, i: usize) -> Reductio
 }
 
 /// Re-evaluate the error estimates of the dropped slow modes of a selection at another λ (the
-/// lumped modes' error comes from the measured correction, see [`super`]).
+/// lumped modes' error comes from the measured correction, see the half-space's `auto` scheme).
 pub(crate) fn slow_estimate_at(terms: &[CreepTerm], red: &Reduction, lambda: f64) -> (f64, f64) {
     let l = 0.5 * lambda;
     let mut fr = 0.0;
@@ -346,7 +346,7 @@ pub(super) fn check_series(red: &Reduction, lambda: f64) -> Result<(), ContactEr
 }
 
 /// Solve the reduced problem at λ and map back to the full problem's units.
-pub(super) fn solve_reduced(
+pub(crate) fn solve_reduced(
     red: &Reduction,
     lambda: f64,
     q: QuadratureSettings,
@@ -360,7 +360,7 @@ pub(super) fn solve_reduced(
 /// [`at_lambda`]; measured constant ≤ 1 for h = 0.4…0.8 on 1–30-term problems), so the error at
 /// step h is about e^{−π²/(2h)} times the difference to the same sum on every second node (step
 /// 2h, no extra exterior values); we take 10 times that.
-pub(super) fn solve_reduced_checked(
+pub(crate) fn solve_reduced_checked(
     red: &Reduction,
     lambda: f64,
     q: QuadratureSettings,

@@ -9,7 +9,7 @@
 //! Q′ = √(1−t²)Σₖ a_k U_k(t) and let H̃(t) = (1/π)∫√(1−s²)φ(s)/(t−s)ds = Σₙ Fₙ Tₙ(t) inside, with
 //! a_k = F_{k+1} (docs/MATH.md §3.6, §7; the bounded-at-both-ends inverse needs F₀ = 0). The derivative of
 //! eq. 3.25, π[H̃ + Σᵢ Ṽᵢ] = L(1+t) − β with Ṽᵢ(t) = dᵢ∫₀^∞e^{−cᵢσ}H̃(t+σ)dσ and Ṽᵢ′ = cᵢṼᵢ − dᵢH̃,
-//! forces (module [`crate::contact::body::half_space::modes`]) H̃(t) = p₀ + p₁t + Σⱼ Aⱼe^{μⱼ(t−1)} on the contact, where
+//! forces (module [`crate::contact::numerics::modes`]) H̃(t) = p₀ + p₁t + Σⱼ Aⱼe^{μⱼ(t−1)} on the contact, where
 //! matching the terms linear in t, in e^{μⱼ(t−1)} and in e^{−cᵢ(1−t)} gives
 //! - p₁ = L/(πS), S = 1 + Σfᵢ/bᵢ;  (L − β)/π = p₀S + p₁Σdᵢ/cᵢ²;  F₀ = p₀ + ΣⱼAⱼe^{−μⱼ}I₀(μⱼ) = 0;
 //! - for every i: ∫₀^∞e^{−cᵢσ}H̃ₑₓₜ(1+σ)dσ = (p₀+p₁)/cᵢ + p₁/cᵢ² + Σⱼ Aⱼ/(cᵢ−μⱼ),
@@ -31,8 +31,8 @@
 //! O(N·Q·√μ) part, half the time of a 30-term solve) are shared by the step-h solve and the step-2h
 //! check of `solve_at_lambda_checked`, whose difference gives the quadrature error estimate.
 
-use crate::contact::body::half_space::chebyshev::{exp_coefficients, exterior_values, theta_w};
-use crate::contact::body::half_space::modes::Modes;
+use crate::contact::numerics::chebyshev::{exp_coefficients, exterior_values, theta_w};
+use crate::contact::numerics::modes::Modes;
 use crate::special::chebyshev::sine_series_grid;
 use crate::special::equilibrated::solve_equilibrated;
 use nalgebra::{DMatrix, DVector};
