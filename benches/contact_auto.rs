@@ -13,9 +13,12 @@
 
 use std::time::Instant;
 use viscoroll::contact::{
-    one_term_at_load, solve_at_load, AutoSettings, ContactSettings, CreepTerm,
-    DimensionlessSolution, Scheme,
+    one_term_at_load, solve_at_load, AutoSettings, ContactSettings, CreepTerm, Scheme,
 };
+
+#[path = "support/auto.rs"]
+mod auto;
+use auto::solve_auto_at_load;
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
     if n == 1 {
@@ -150,19 +153,4 @@ fn main() {
             reference.error_estimate.unwrap()
         );
     }
-}
-
-/// The auto scheme at load N′ through the public entry: `contact::solve_at_load` with
-/// `Scheme::Auto` and these auto settings.
-fn solve_auto_at_load(
-    terms: &[CreepTerm],
-    load: f64,
-    auto: &AutoSettings,
-) -> Result<DimensionlessSolution, viscoroll::contact::ContactError> {
-    let settings = ContactSettings {
-        scheme: Scheme::Auto,
-        auto: *auto,
-        ..Default::default()
-    };
-    solve_at_load(terms, load, &settings)
 }

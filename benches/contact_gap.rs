@@ -6,9 +6,11 @@
 //! Run: `cargo bench --bench contact_gap` (single-threaded; prints a Markdown table).
 
 use std::time::Instant;
-use viscoroll::contact::{
-    solve_at_load, AutoSettings, ContactSettings, CreepTerm, DimensionlessSolution, Scheme,
-};
+use viscoroll::contact::{AutoSettings, CreepTerm};
+
+#[path = "support/auto.rs"]
+mod auto;
+use auto::solve_auto_at_load;
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
     if n == 1 {
@@ -61,19 +63,4 @@ fn main() {
             (t_on - t_off) * 1e3
         );
     }
-}
-
-/// The auto scheme at load N′ through the public entry: `contact::solve_at_load` with
-/// `Scheme::Auto` and these auto settings.
-fn solve_auto_at_load(
-    terms: &[CreepTerm],
-    load: f64,
-    auto: &AutoSettings,
-) -> Result<DimensionlessSolution, viscoroll::contact::ContactError> {
-    let settings = ContactSettings {
-        scheme: Scheme::Auto,
-        auto: *auto,
-        ..Default::default()
-    };
-    solve_at_load(terms, load, &settings)
 }

@@ -22,13 +22,15 @@
 
 use std::time::Instant;
 use viscoroll::contact::{
-    roll, roll_cover, solve_at_load, AutoSettings, Body, ContactSettings, CreepTerm,
-    DimensionlessSolution, Scene, Scheme,
+    roll, roll_cover, AutoSettings, Body, ContactSettings, CreepTerm, DimensionlessSolution, Scene,
 };
 use viscoroll::CreepSpectrum;
 
+#[path = "support/auto.rs"]
+mod auto;
 #[path = "support/dimless.rs"]
 mod dimless;
+use auto::solve_auto_at_load;
 use dimless::{assert_same, scene_of, LOAD};
 
 fn spectrum(n: usize, decades: f64, ratio: f64) -> Vec<CreepTerm> {
@@ -121,7 +123,7 @@ fn main() {
         ("1 term f=10 b=1", spectrum(1, 0.0, 0.0)),
         ("30 terms, 24 decades, J∞/J_g=1e3", spectrum(30, 24.0, 1e3)),
     ] {
-        let hs = solve_auto_at_load(&terms, load, 1e-10).unwrap();
+        let hs = solve_half_space(&terms, load, 1e-10).unwrap();
         for hr in [0.03, 0.1, 0.3, 1.0, 3.0, 10.0] {
             let h = hr * hs.lambda;
             let nu = 0.5;
@@ -166,7 +168,7 @@ fn main() {
                 rel(w.lambda, rl)
             );
             for tol in [1e-3, 1e-6] {
-                let (a, t) = time_it(|| solve_auto_at_load(&terms, load, tol).unwrap());
+                let (a, t) = time_it(|| solve_half_space(&terms, load, tol).unwrap());
                 println!(
                     "| {name} | {hr} | half-space auto (model error) | {tol:.0e} | {} | {} | — | {:.1e} | {:.1e} | {:.1e} |",
                     ms(t),
@@ -180,21 +182,16 @@ fn main() {
     }
 }
 
-/// The half-space by the auto scheme at load N′ and `tol`, without the gap check (public entry
-/// `contact::solve_at_load` with `Scheme::Auto`).
-fn solve_auto_at_load(
+/// The half-space by the auto scheme at load N′ and `tol`, without the gap check.
+fn solve_half_space(
     terms: &[CreepTerm],
     load: f64,
     tol: f64,
 ) -> Result<DimensionlessSolution, viscoroll::contact::ContactError> {
-    let settings = ContactSettings {
-        scheme: Scheme::Auto,
-        auto: AutoSettings {
-            tol,
-            gap_check: false,
-            ..Default::default()
-        },
+    let auto = AutoSettings {
+        tol,
+        gap_check: false,
         ..Default::default()
     };
-    solve_at_load(terms, load, &settings)
+    solve_auto_at_load(terms, load, &auto)
 }

@@ -5,7 +5,7 @@
 //! tests draw many more and run inputs at the work budget's limits.
 
 use super::pipeline_hardening::rubber_csv;
-use super::seed::{seed, Rng};
+use super::seed::{scene_with, seed, Rng};
 use super::support::{bin, data_dir, run_main, stderr, temp_dir, viscoroll};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -266,26 +266,6 @@ fn a_tampered_fit_is_refused_by_roll_and_export_and_refitted_by_run() {
     }
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&out);
-}
-
-/// A scenes TOML with one scene whose sizes are drawn around the limits.
-fn scene_with(name: &str, temps: usize, map_temps: usize, speeds: usize, cover_mm: f64) -> String {
-    let list = |n: usize, v: f64| {
-        let items: Vec<String> = (0..n).map(|k| format!("{}", v + k as f64 * 0.01)).collect();
-        format!("[{}]", items.join(", "))
-    };
-    let mut s = format!(
-        "[[scene]]\nname = \"{name}\"\nroll_radius_mm = 100.0\nload_n_per_m = 2000.0\nspeed_m_s = 1.0\ntemps_c = {}\n",
-        list(temps, 0.0)
-    );
-    if map_temps > 0 {
-        s += &format!("map_temps_c = {}\n", list(map_temps, 0.0));
-        s += &format!("map_speeds_m_s = {}\n", list(speeds, 1.0));
-    }
-    if cover_mm > 0.0 {
-        s += &format!("cover_thickness_mm = {cover_mm:e}\n");
-    }
-    s
 }
 
 #[test]

@@ -3,29 +3,9 @@
 //! key and the limit named) and CSV cells that would run as formulas. The seeded generator and the
 //! seed are those of tests/seed.rs.
 
-use crate::tests::seed::{seed, Rng};
+use crate::tests::seed::{scene_with, seed, Rng};
 use std::path::Path;
 use viscoroll::limits;
-
-/// A scenes TOML with one scene whose sizes are drawn around the limits.
-fn scene_with(name: &str, temps: usize, map_temps: usize, speeds: usize, cover_mm: f64) -> String {
-    let list = |n: usize, v: f64| {
-        let items: Vec<String> = (0..n).map(|k| format!("{}", v + k as f64 * 0.01)).collect();
-        format!("[{}]", items.join(", "))
-    };
-    let mut s = format!(
-        "[[scene]]\nname = \"{name}\"\nroll_radius_mm = 100.0\nload_n_per_m = 2000.0\nspeed_m_s = 1.0\ntemps_c = {}\n",
-        list(temps, 0.0)
-    );
-    if map_temps > 0 {
-        s += &format!("map_temps_c = {}\n", list(map_temps, 0.0));
-        s += &format!("map_speeds_m_s = {}\n", list(speeds, 1.0));
-    }
-    if cover_mm > 0.0 {
-        s += &format!("cover_thickness_mm = {cover_mm:e}\n");
-    }
-    s
-}
 
 /// Budget edges: every size at its limit is accepted, one beyond is refused with the key and the
 /// limit named (scenes TOML, Prony settings, `contact --n`, temperatures, names).
