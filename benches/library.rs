@@ -181,7 +181,6 @@ fn profile_stages(input: &Path, root: &Path, k: usize) {
                         &fit,
                         e,
                         &spec.scene(),
-                        spec.cover_thickness_mm.map(|h| h * 1e-3),
                         &spec.temps_c,
                         &bs,
                         &nominal,

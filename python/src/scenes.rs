@@ -51,20 +51,19 @@ fn source(json: &str) -> PyResult<CreepSource> {
     })
 }
 
-/// The 90 % band of `friction` at `t` on the half-space (`cover_m` `None`) or on a cover of
-/// `cover_m` bonded to a rigid carcass, with its notes, or why there is none: the band of
-/// `viscoroll roll` (src/cli/roll.rs `band_or_why`, the same library calls).
+/// The 90 % band of `friction` at `t` on the scene's body (the half-space, or its cover bonded to
+/// a rigid carcass), with its notes, or why there is none: the band of `viscoroll roll`
+/// (src/cli/roll_band.rs `band_or_why`, the same library calls).
 fn band(
     source: &CreepSource,
     scene: &Scene,
-    cover_m: Option<f64>,
     t: Option<f64>,
     friction: f64,
 ) -> (
     Result<viscoroll::results::FrictionBand, String>,
     Vec<String>,
 ) {
-    match viscoroll::pipeline::point_band(source, scene, cover_m, t, friction) {
+    match viscoroll::pipeline::point_band(source, scene, t, friction) {
         Ok((b, notes)) => (Ok(b), notes),
         Err(why) => (Err(why), vec![]),
     }
@@ -159,7 +158,7 @@ fn roll(
             let (b, notes) = if no_bands {
                 (Err("skipped (--no-bands)".to_string()), vec![])
             } else {
-                band(&source, &scene, None, t, r.roll.friction)
+                band(&source, &scene, t, r.roll.friction)
             };
             let (sol, d) = (&r.roll, &r.roll.dimensionless);
             out.push(serde_json::json!({
@@ -252,8 +251,8 @@ fn roll_covered(
     let (b, notes) = match body {
         _ if no_bands => (Err("skipped (--no-bands)".to_string()), vec![]),
         Body::Winkler { .. } => (Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()), vec![]),
-        Body::HalfSpace { .. } => band(source, scene, None, t, r.roll.friction),
-        _ => band(source, scene, cover_m, t, r.roll.friction),
+        Body::HalfSpace { .. } => band(source, scene, t, r.roll.friction),
+        _ => band(source, &Scene { body, ..*scene }, t, r.roll.friction),
     };
     let sol = &r.roll;
     Ok(serde_json::json!({

@@ -47,10 +47,11 @@ pub const COVER_BAND_TOL: f64 = 1e-3;
 /// A replicate solve: F/N of a creep spectrum at log10 a_T, or why it failed.
 pub(crate) type Solve<'a> = dyn Fn(&CreepSpectrum, f64) -> Result<f64, String> + Sync + 'a;
 
-/// The scene the bands solve: `scene`'s roll on a cover of `cover_m` (its body `auto` there, each
-/// replicate then on its own body, [`replicate_choice`]) or on the half-space (`None`).
-pub(crate) fn band_scene(scene: &Scene, cover_m: Option<f64>) -> Scene {
-    let body = match cover_m {
+/// The scene the bands solve, the one place the bands read a scene's body: `scene`'s roll on its
+/// cover (`Body::cover_m`; its body `auto` there, each replicate then on its own body,
+/// [`replicate_choice`]) or on the half-space (no cover).
+pub(crate) fn band_scene(scene: &Scene) -> Scene {
+    let body = match scene.body.cover_m() {
         Some(thickness_m) => Body::Auto { thickness_m },
         None => Body::HALF_SPACE,
     };

@@ -158,7 +158,6 @@ pub fn scene_bands_by(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
     scene: &Scene,
-    cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
     mode: CoverMode,
@@ -166,7 +165,7 @@ pub fn scene_bands_by(
     let job = SceneJob {
         fit,
         ensemble,
-        scene: band_scene(scene, cover_m),
+        scene: band_scene(scene),
         temps_c,
         settings,
     };
@@ -178,27 +177,21 @@ pub fn scene_bands_by(
     bands_with(&job, given)
 }
 
-/// `scene_ratios_on` with the model-error terms it drew in and the failures it met (module doc,
-/// eqs. 15.6, 15.6b, 15.6c, 15.8, 15.9). Each term enters each replicate as a factor e^(s·u_b), u_b
+/// The replicate ratios of `fit`'s `ensemble` in `scene` at `temps_c`, with the model-error terms
+/// drawn in and the failures met (module doc, eqs. 15.6, 15.6b, 15.6c, 15.8, 15.9). The body is the
+/// scene's: on a cover (`scene.body.cover_m()`) the replicates are solved as the main job solves a
+/// covered scene (`auto` on the cover, each replicate on the body the fit's solve chose), else on the
+/// half-space (`band_scene`). Each term enters each replicate as a factor e^(s·u_b), u_b
 /// standard normal, one draw per replicate, term and side (below, above the measured range): the
 /// alternative's change is taken as one standard deviation, so the 90 % band spans ±1.645 of it.
 pub fn scene_bands_on(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
     scene: &Scene,
-    cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
 ) -> SceneRatios {
-    scene_bands_by(
-        fit,
-        ensemble,
-        scene,
-        cover_m,
-        temps_c,
-        settings,
-        CoverMode::Carried,
-    )
+    scene_bands_by(fit, ensemble, scene, temps_c, settings, CoverMode::Carried)
 }
 
 /// [`scene_bands_on`] with what the main job has already solved: `nominal[i]` = (F/N, contact
@@ -211,24 +204,23 @@ pub fn scene_bands_on(
 /// of this scene, else solved here). Without a cover, or with a band tolerance looser than
 /// `COVER_BAND_TOL`, `nominal` is not used (the half-space's ratios are over the fit solved at
 /// the band tolerance, not the report's).
-#[allow(clippy::too_many_arguments)]
 pub fn scene_bands_given(
     fit: &CompoundFit,
     ensemble: &BandEnsemble,
     scene: &Scene,
-    cover_m: Option<f64>,
     temps_c: &[f64],
     settings: &BandSettings,
     nominal: &[CoverSolve],
     half_space: Option<&HalfSpaceRatios>,
 ) -> SceneRatios {
-    let usable = cover_m.is_some()
+    let scene = band_scene(scene);
+    let usable = scene.body.cover_m().is_some()
         && settings.contact_tol <= COVER_BAND_TOL
         && nominal.len() == temps_c.len();
     let job = SceneJob {
         fit,
         ensemble,
-        scene: band_scene(scene, cover_m),
+        scene,
         temps_c,
         settings,
     };

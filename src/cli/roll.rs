@@ -13,7 +13,7 @@
 //! crate::bands::ensemble_from_fit, which its notes name; a bare creep spectrum has none: null, with
 //! the reason in `bands_note`), and the band's notes in `bands_notes`.
 //! With a cover (`--cover-mm`) the band is solved on the covered body as in the main job
-//! (crate::bands::scene_ratios_on, docs/MATH.md eq. 15.6); `--model winkler` (the conveyor tools'
+//! (crate::bands::scene_bands_on, docs/MATH.md eq. 15.6); `--model winkler` (the conveyor tools'
 //! model, not the one the bands solve) has none.
 
 pub use super::roll_args::Args;
@@ -90,7 +90,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     };
     let r = roll_source_at(&source, args.temp_c, &scene, &settings)
         .with_context(|| format!("{}", args.spectrum.display()))?;
-    let band = band(&args, &source, &scene, None, r.roll.friction);
+    let band = band(&args, &source, &scene, r.roll.friction);
     print_answer(&args, &r, &band);
     Ok(())
 }

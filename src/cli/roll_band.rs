@@ -58,31 +58,24 @@ impl From<Result<crate::results::FrictionBand, String>> for RollBand {
     }
 }
 
-/// The 90 % band of the friction `friction` of `scene` at `--temp-c` (crate::bands), on a cover of
-/// `cover_m` bonded to a rigid carcass (solved as the main job solves a covered scene, eq. 15.6) or
-/// on the half-space (`None`), with its notes, or why there is none.
-pub(super) fn band(
-    args: &Args,
-    source: &CreepSource,
-    scene: &Scene,
-    cover_m: Option<f64>,
-    friction: f64,
-) -> RollBand {
-    band_or_why(args, source, scene, cover_m, friction).unwrap_or_else(|why| Err(why).into())
+/// The 90 % band of the friction `friction` of `scene` at `--temp-c` (crate::bands), on the scene's
+/// body: on its cover bonded to a rigid carcass (solved as the main job solves a covered scene,
+/// eq. 15.6) or on the half-space, with its notes, or why there is none.
+pub(super) fn band(args: &Args, source: &CreepSource, scene: &Scene, friction: f64) -> RollBand {
+    band_or_why(args, source, scene, friction).unwrap_or_else(|why| Err(why).into())
 }
 
 fn band_or_why(
     args: &Args,
     source: &CreepSource,
     scene: &Scene,
-    cover_m: Option<f64>,
     friction: f64,
 ) -> Result<RollBand, String> {
     if args.no_bands {
         return Err("skipped (--no-bands)".into());
     }
     Ok(
-        match crate::pipeline::point_band(source, scene, cover_m, args.temp_c, friction) {
+        match crate::pipeline::point_band(source, scene, args.temp_c, friction) {
             Ok((b, notes)) => RollBand { band: Ok(b), notes },
             Err(why) => Err(why).into(),
         },

@@ -51,8 +51,8 @@ pub fn run(
     // or on the half-space when one was asked for; the uniaxial Winkler model has none.
     let band = match body {
         Body::Winkler { .. } => Err("--model winkler: the bands are solved on the body `auto` chooses (the layer or a body within tol of it), not on the uniaxial Winkler model".to_string()).into(),
-        Body::HalfSpace { .. } => band(args, source, scene, None, r.roll.friction),
-        _ => band(args, source, scene, cover_m, r.roll.friction),
+        Body::HalfSpace { .. } => band(args, source, scene, r.roll.friction),
+        _ => band(args, source, &on_body, r.roll.friction),
     };
     let json_extra = serde_json::json!({
         "cover_mm": args.cover_mm,

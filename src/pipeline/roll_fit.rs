@@ -156,14 +156,14 @@ pub fn roll_source_at(
     })
 }
 
-/// The 90 % band of the friction `friction` of `scene` at `temp_c` (crate::bands), on a cover of
-/// `cover_m` bonded to a rigid carcass (solved as the main job solves a covered scene, eq. 15.6) or
-/// on the half-space (`None`), with the band's notes (as in friction.csv's note column), or why
-/// there is none. Shared by `viscoroll roll` and the Python package, so both say the same.
+/// The 90 % band of the friction `friction` of `scene` at `temp_c` (crate::bands), on the scene's
+/// body: on its cover (`scene.body.cover_m()`) bonded to a rigid carcass, solved as the main job
+/// solves a covered scene (eq. 15.6), else on the half-space; with the band's notes (as in
+/// friction.csv's note column), or why there is none. Shared by `viscoroll roll` and the Python
+/// package, so both say the same.
 pub fn point_band(
     source: &CreepSource,
     scene: &Scene,
-    cover_m: Option<f64>,
     temp_c: Option<f64>,
     friction: f64,
 ) -> Result<(crate::results::FrictionBand, Vec<String>), String> {
@@ -183,7 +183,7 @@ pub fn point_band(
             &made
         }
     };
-    let on = bands::scene_bands_on(fit, ensemble, scene, cover_m, &[t], &settings);
+    let on = bands::scene_bands_on(fit, ensemble, scene, &[t], &settings);
     let (band, mut notes) = on.point_band(0, friction);
     // The between-specimen term as `run` adds it (docs/MATH.md §16): a fit file does not carry its
     // specimens' own frictions, so the default spread of one specimen applies, and the note says so.

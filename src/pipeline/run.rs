@@ -259,11 +259,8 @@ impl Fitted {
     }
 }
 
-/// (scene, its temperatures, cover) → the friction ratios of each replicate.
-type SolvedRatios = (
-    (crate::contact::Scene, Vec<f64>, Option<f64>),
-    crate::bands::SceneRatios,
-);
+/// (scene with its body, its temperatures) → the friction ratios of each replicate.
+type SolvedRatios = ((crate::contact::Scene, Vec<f64>), crate::bands::SceneRatios);
 
 /// Fit (or reuse the fit of) a compound measured in isotherms, with its bands when asked.
 fn fit_measured(c: &CompoundInput, opts: &RunOptions) -> Result<Fitted, PipelineError> {
@@ -421,19 +418,13 @@ fn scene_bands(
     half_space: &mut Vec<crate::bands::HalfSpaceRatios>,
 ) -> Vec<Vec<f64>> {
     let scene = spec.scene();
-    let cover_m = scene.body.cover_m();
-    // the bands take the roll and the cover apart (crate::bands::scene_bands_given)
-    let roll_only = crate::contact::Scene {
-        body: crate::contact::Body::HALF_SPACE,
-        ..scene
-    };
-    let key = (roll_only, spec.temps_c.clone(), cover_m);
+    let key = (scene, spec.temps_c.clone());
     let r = match solved.iter().find(|(k, _)| *k == key) {
         Some((_, r)) => r.clone(),
         None => {
             let hs_scene = crate::contact::Scene {
                 body: crate::contact::Body::HALF_SPACE,
-                ..key.0
+                ..scene
             };
             if !half_space
                 .iter()
@@ -454,9 +445,8 @@ fn scene_bands(
                 .zip(bodies)
                 .map(|(p, &body)| (p.friction, p.contact_length_mm * 1e-3, body))
                 .collect();
-            let r = crate::bands::scene_bands_given(
-                fit, ensemble, &key.0, cover_m, &key.1, bs, &nominal, hs,
-            );
+            let r =
+                crate::bands::scene_bands_given(fit, ensemble, &scene, &key.1, bs, &nominal, hs);
             solved.push((key, r.clone()));
             r
         }

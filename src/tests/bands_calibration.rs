@@ -7,7 +7,7 @@
 //! The band comes from the pipeline's own path: the export written as CSV and read back, the fit
 //! (`pipeline::fit_measurement_master`), the bootstrap ensemble
 //! (`bands::build_ensemble`, the main job's settings), the friction (`friction_vs_temperature`, the
-//! main job's contact settings) and its band (`bands::scene_ratios_on`, on the scene's cover, + `band_of`). The true friction
+//! main job's contact settings) and its band (`bands::scene_bands_on` on the scene's body, + `band_of`). The true friction
 //! comes from the true spectrum, converted exactly to creep and shifted by the true WLF law, through
 //! the contact solver (the body of the scene); nothing of the fit or the ensemble enters it. That
 //! truth is itself checked against an independent contact path in tests/known_truth.rs.
@@ -205,11 +205,10 @@ fn points_of_case(case: &Case) -> Vec<Point> {
         let got = friction_vs_temperature(&fit, &spec, &settings).unwrap();
         let on_true_law =
             friction_vs_temperature(&with_true_law(&fit, compound), &spec, &settings).unwrap();
-        let cover_m = spec.cover_thickness_mm.map(|h| h * 1e-3);
-        let bands = scene_bands_on(&fit, ensemble, &scene, cover_m, &spec.temps_c, &bs);
+        let bands = scene_bands_on(&fit, ensemble, &scene, &spec.temps_c, &bs);
         let bands_before = before
             .as_ref()
-            .map(|e| scene_bands_on(&fit, e, &scene, cover_m, &spec.temps_c, &bs_before));
+            .map(|e| scene_bands_on(&fit, e, &scene, &spec.temps_c, &bs_before));
         for (i, (p, r)) in got.iter().zip(&bands.ratios).enumerate() {
             let true_at_t = shifted(&true_creep, compound.law.log10_a_t(p.temp_c));
             let truth = match spec.cover_thickness_mm {

@@ -75,7 +75,6 @@ fn banded(lowest_c: f64, tag: &str) -> (Vec<FrictionPoint>, SceneRatios, Vec<f64
         &fit,
         fit.bands.as_ref().unwrap(),
         &spec.scene(),
-        None,
         &spec.temps_c,
         &bs,
     );
@@ -215,7 +214,6 @@ fn the_window_term_has_no_step_at_the_edge_of_the_window() {
         &fit,
         fit.bands.as_ref().unwrap(),
         &spec.scene(),
-        None,
         &fine,
         &BandSettings::default(),
     );
@@ -309,7 +307,6 @@ fn a_cover_reads_its_rolling_frequency_from_its_own_shorter_contact() {
         &fit,
         fit.bands.as_ref().unwrap(),
         &cover.scene(),
-        Some(0.5e-3),
         &temps,
         &BandSettings::default(),
     );
