@@ -8,9 +8,10 @@
 //! Layout: the ground, importing nothing else of contact: `problem` (the dimensionless problem and
 //! solution common to every body), `settings` (every scheme's settings), `error`; `load` (the
 //! load loop) on it; `numerics` (what several bodies share: the half-space kernel and its hat
-//! collocation, modes, Chebyshev pieces, the solve at λ, the mode reduction) on the ground; `body`
-//! (the seam: one enum, one dispatch; `body::half_space` holds the three schemes on the half-space,
-//! `body::layer` the cover and the Winkler foundations) over them; `scene` (to and from the dimensionless problem, [`roll`]), `cover` (the
+//! collocation, modes, Chebyshev pieces, the solve at λ, the mode reduction, the closed-form Winkler
+//! foundation) on the ground and `load`; `body` (the seam: one enum, one dispatch; a folder per body:
+//! `body::half_space` the three schemes on the half-space, `body::layer` the bonded cover,
+//! `body::winkler` the Winkler foundations) over them; `scene` (to and from the dimensionless problem, [`roll`]), `cover` (the
 //! choice of body for a cover) and `maps` (friction maps of a spectrum from one reduced variable)
 //! over the dispatch.
 //!

@@ -7,7 +7,7 @@
 //!
 //! One enum, [`Body`], names the body, its model and, for a cover, the choice of model: the
 //! viscoelastic half-space of the thesis ([`half_space`]: the three schemes that solve eq. 3.25 on
-//! the kernel of eq. 3.19), the bonded layer and the Winkler foundations ([`layer`]), and `auto` (the
+//! the kernel of eq. 3.19), the bonded layer ([`layer`]), the Winkler foundations ([`winkler`]), and `auto` (the
 //! cheapest of them accurate enough, [`Body::auto_choice`]; its reasons and estimates are
 //! `contact::cover`'s). The dispatch below resolves `auto` and calls the body's folder.
 //!
@@ -41,8 +41,10 @@ pub(crate) mod half_space;
 pub(crate) mod layer;
 #[cfg(test)]
 pub(crate) mod on_springs;
+pub(crate) mod winkler;
 
 use super::error::ContactError;
+use super::numerics::winkler::WinklerColumns;
 use super::problem::{BodyAnswer, CreepTerm, DimensionlessScene, DimensionlessSolution};
 use super::settings::ContactSettings;
 use serde::{Deserialize, Serialize};
@@ -77,7 +79,7 @@ pub enum Body {
         thickness_m: f64,
     },
     /// A Winkler foundation of uniaxial columns of height `height_m` (conveyor design tools;
-    /// `layer::winkler`, closed form).
+    /// `winkler`, closed form).
     Winkler {
         /// Column height in m (> 0).
         height_m: f64,
@@ -405,15 +407,8 @@ pub fn answer_at_load(
         )
         .map(solved),
         Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => {
-            layer::winkler_at_load(
-                terms,
-                load,
-                winkler_columns(body),
-                height_m / problem.length_scale_m,
-                nu,
-                &settings.load,
-            )
-            .map(solved)
+            winkler::answer_at_load(problem, winkler_columns(body), height_m, &settings.load)
+                .map(solved)
         }
         #[cfg(test)]
         Body::OnSprings {
@@ -478,9 +473,7 @@ pub fn answer_at_lambda(
             layer::collocation::answer_at_lambda(&k, lambda, settings.n).map(solved)
         }
         Body::Winkler { height_m } | Body::WinklerConstrained { height_m } => {
-            let h = height_m / problem.length_scale_m;
-            let w = layer::Winkler::new(terms, winkler_columns(body), h, nu)?;
-            Ok(solved(w.at_lambda(lambda)?.into_body_answer()))
+            winkler::answer_at_lambda(problem, winkler_columns(body), height_m, lambda).map(solved)
         }
         #[cfg(test)]
         Body::OnSprings {
@@ -521,10 +514,10 @@ fn auto_at(
 }
 
 /// The columns of a Winkler body.
-fn winkler_columns(body: &Body) -> layer::WinklerColumns {
+fn winkler_columns(body: &Body) -> WinklerColumns {
     match body {
-        Body::WinklerConstrained { .. } => layer::WinklerColumns::Constrained,
-        _ => layer::WinklerColumns::Uniaxial,
+        Body::WinklerConstrained { .. } => WinklerColumns::Constrained,
+        _ => WinklerColumns::Uniaxial,
     }
 }
 
@@ -537,12 +530,10 @@ mod tests {
     //! `layer_at_load` floors only its hat fallback), at given λ the layer uses `settings.n` intervals,
     //! and the two Winkler bodies keep their columns apart. The same inputs give bit-identical results, so equality is exact.
 
-    use super::layer::{
-        collocation, layer_at_load, winkler_at_load, LayerKernel, LayerSettings, Winkler,
-        WinklerColumns,
-    };
+    use super::layer::{collocation, layer_at_load, LayerKernel, LayerSettings};
     use super::{solve_at_lambda, solve_at_load, Body};
     use crate::contact::load::LoadSettings;
+    use crate::contact::numerics::winkler::{winkler_coefficient, Winkler, WinklerColumns};
     use crate::contact::{ContactSettings, CreepTerm, DimensionlessScene};
 
     const LENGTH_SCALE_M: f64 = 2.5e-3;
@@ -618,12 +609,15 @@ mod tests {
             ),
         ] {
             let got = solve_at_load(&body, &p, &settings).unwrap();
-            let want = winkler_at_load(&p.terms, p.load, columns, h, 0.3, &LoadSettings::default())
-                .unwrap();
+            let foundation =
+                Winkler::with_coefficient(&p.terms, winkler_coefficient(columns, h, 0.3).unwrap());
+            let want = foundation
+                .at_load(p.load, &LoadSettings::default())
+                .unwrap()
+                .into_body_answer();
             assert_eq!(got, want.solution, "{body:?}");
             let at = solve_at_lambda(&body, &p, 0.7, &settings).unwrap();
-            let want_at = Winkler::new(&p.terms, columns, h, 0.3)
-                .unwrap()
+            let want_at = foundation
                 .at_lambda(0.7)
                 .unwrap()
                 .into_body_answer()

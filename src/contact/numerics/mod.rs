@@ -1,12 +1,14 @@
 //! The numerics several bodies share, below the bodies: the kernel of the viscoelastic half-space and
 //! its hat collocation, the retardation modes, the Chebyshev pieces and the N×N solve at λ of the
-//! error-controlled schemes, and the mode reduction.
+//! error-controlled schemes, the mode reduction, and the closed-form Winkler foundation.
 //!
 //! Input: creep terms ([`CreepTerm`](crate::contact::problem::CreepTerm)), λ, n or the quadrature
 //! settings; output: kernels, modes, reductions and solutions at λ for a body's solver to use. This
-//! folder imports only the ground of `contact` (`problem`, `error`) and `special`, never `body/`;
-//! the half-space (`body/half_space/`) and the bonded layer and Winkler foundations (`body/layer/`)
-//! both stand on it and import nothing of each other.
+//! folder imports only the ground of `contact` (`problem`, `error`), the load loop (`load`, for the
+//! Winkler foundation at given load) and `special`, never `body/`; the half-space
+//! (`body/half_space/`), the bonded layer (`body/layer/`), the Winkler foundations
+//! (`body/winkler/`) and the test-only cover on springs (`body/on_springs/`) stand on it and import
+//! nothing of each other.
 //! - [`kernel`]: the kernel K(ξ) of eq. 3.19 and its hat averages (docs/MATH.md §2); the layer's
 //!   kernel is this one minus a smooth correction;
 //! - [`hat`]: the piecewise-linear (hat) collocation of eq. 3.25–3.26, the thesis scheme on the
@@ -14,7 +16,9 @@
 //! - [`modes`]: the roots κⱼ (docs/MATH.md §7);
 //! - [`chebyshev`]: the exponentials' Chebyshev coefficients and the exterior transform (§7, §10);
 //! - [`at_lambda`]: the N×N solve at given λ (§7) and its [`at_lambda::LambdaSolution`];
-//! - [`reduction`]: the mode selection, lumping and dropping (§8).
+//! - [`reduction`]: the mode selection, lumping and dropping (§8);
+//! - [`winkler`]: the viscoelastic Winkler foundation of any coefficient c_W in closed form, and the
+//!   coefficients of uniaxial and constrained columns (the bonded layer's thin compressible limit).
 //!
 //! Not here, because one body alone uses them: the half-space `auto` scheme's lumping correction
 //! (`body/half_space/auto/correction.rs`; the spectral layer measures its own gains at two degrees)
@@ -26,3 +30,4 @@ pub mod hat;
 pub mod kernel;
 pub mod modes;
 pub mod reduction;
+pub mod winkler;

@@ -1,13 +1,27 @@
-//! A viscoelastic Winkler foundation in steady rolling, in closed form for any creep spectrum.
+//! A viscoelastic Winkler foundation in steady rolling, in closed form for any creep spectrum and any
+//! coefficient c_W, and the coefficients of its two kinds of columns: shared below the bodies by the
+//! Winkler body (`body/winkler/`), the bonded layer (its thin compressible limit, `body/layer/`) and
+//! the test-only cover on springs (`body/on_springs/`).
 //!
-//! Input: creep terms (fᵢ, bᵢ), the coefficient c_W of ρ·v = c_W·Q′ ([`super::compliance`]: columns in
-//! uniaxial stress, the conveyor tools' model, or constrained ones, the thin compressible layer), and
-//! λ or N′; output: a [`DimensionlessSolution`] (scheme `winkler`) with its contact checks.
+//! Input: creep terms (fᵢ, bᵢ), the coefficient c_W of ρ·v = c_W·Q′ (any c_W > 0, or
+//! [`winkler_coefficient`] of columns in uniaxial stress, the conveyor tools' model, or constrained
+//! ones, the thin compressible layer), and λ or N′; output: a [`DimensionlessSolution`] (scheme
+//! `winkler`) with its contact checks ([`WinklerAnswer`]).
+//!
+//! # The coefficient of the columns
+//! In the thesis' units (§3.2: lengths in V·T, Q′ = (R/VT)·C·q/π with C = (1−ν)/μ₀) the half-space's
+//! scaled deflection ρ·v has the Fourier multiplier π/|k| (the transform of −log|ξ|). A Winkler
+//! foundation of columns of height h′ = h/(VT) and modulus M_c, ρ·v = c_W·Q′, has c_W = π·h′/(M_c·C):
+//! c_W = π·h′(1−2ν)/(2(1−ν)²) for columns in constrained compression (M = 2μ(1−ν)/(1−2ν), the
+//! thin-layer limit of the bonded layer for ν < ½, `body/layer/compliance.rs`) and
+//! c_W = π·h′/(2(1−ν²)) for the uniaxial columns of conveyor design tools (E = 2μ(1+ν); Jonkers 1980;
+//! Rudolphi & Reicks 2006).
 //!
 //! # Derivation
 //! Each column creeps under its own pressure only: by thesis eq. 3.6 (memory of the material that
 //! passed under the load earlier, at ξ + ζ) ρv(ξ) = c_W[Q′(ξ) + Σᵢfᵢ∫₀^∞e^{−bᵢζ}Q′(ξ+ζ)dζ], i.e. the
-//! multiplier c_W·Φ(k) with Φ = 1 + Σfᵢ/(bᵢ − ik) of [`super::kernel`]. Its inverse (the relaxation
+//! multiplier c_W·Φ(k) with Φ = 1 + Σfᵢ/(bᵢ − ik) (the factor of the bonded layer's kernel,
+//! `body/layer/kernel.rs`). Its inverse (the relaxation
 //! form) is 1/Φ = 1 + Σⱼ rⱼ/(κⱼ − ik) with κⱼ the zeros of Φ (the roots of 1 + Σfᵢ/(bᵢ − κ) = 0,
 //! `modes`) and the residues rⱼ = −1/Σᵢfᵢ/(bᵢ − κⱼ)² < 0, so
 //!
@@ -40,12 +54,34 @@
 //! i.e. ρv(−d) ≥ w_roll(−d) = [(λ−β)² − (d+β)²]/2; ahead of the front the roll is above the undeformed
 //! surface whenever β < λ.
 
-use super::compliance::{winkler_coefficient, WinklerColumns};
+use super::modes::Modes;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
-use crate::contact::numerics::modes::Modes;
 use crate::contact::problem::{BodyAnswer, CreepTerm, DimensionlessSolution};
 use crate::special::gauss_legendre::gauss_legendre;
+
+/// Which columns a Winkler foundation is made of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WinklerColumns {
+    /// Laterally constrained columns, modulus M = 2μ(1−ν)/(1−2ν): the thin-layer limit of the bonded
+    /// layer for ν < ½ (infinitely stiff at ν = ½).
+    Constrained,
+    /// Free uniaxial columns, modulus E = 2μ(1+ν): the conveyor design tools' model.
+    Uniaxial,
+}
+
+/// c_W of ρ·v = c_W·Q′ (thesis units, module doc) for a foundation of dimensionless height `h`;
+/// `None` for constrained columns at ν = ½ (rigid).
+pub(crate) fn winkler_coefficient(columns: WinklerColumns, h: f64, nu: f64) -> Option<f64> {
+    let pi = std::f64::consts::PI;
+    match columns {
+        WinklerColumns::Uniaxial => Some(pi * h / (2.0 * (1.0 - nu * nu))),
+        WinklerColumns::Constrained => {
+            let c = pi * h * (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu) * (1.0 - nu));
+            (c > 0.0).then_some(c)
+        }
+    }
+}
 
 /// A Winkler foundation with its relaxation modes.
 #[derive(Debug, Clone)]
@@ -85,26 +121,7 @@ impl WinklerAnswer {
 }
 
 impl Winkler {
-    /// Columns of kind `columns`, dimensionless height `thickness` = h/(VT), Poisson's ratio `nu`.
-    pub fn new(
-        terms: &[CreepTerm],
-        columns: WinklerColumns,
-        thickness: f64,
-        nu: f64,
-    ) -> Result<Self, ContactError> {
-        positive("foundation height h/(VT)", thickness)?;
-        // Validates the terms (fᵢ ≥ 0, bᵢ > 0).
-        crate::contact::numerics::kernel::Kernel::new(terms)?;
-        let c_w = winkler_coefficient(columns, thickness, nu).ok_or_else(|| {
-            ContactError::Unsupported(
-                "a Winkler foundation of constrained columns is rigid at Poisson's ratio 0.5"
-                    .into(),
-            )
-        })?;
-        Ok(Self::with_coefficient(terms, c_w))
-    }
-
-    /// A foundation with a given c_W > 0.
+    /// A foundation with a given c_W > 0 (the terms are not checked here: a body validates them).
     pub(crate) fn with_coefficient(terms: &[CreepTerm], c_w: f64) -> Self {
         let modes = Modes::new(terms);
         let relax = (0..modes.len())
@@ -340,5 +357,35 @@ mod tests {
         assert!((s.beta - 0.65).abs() < 1e-14);
         assert!((s.load / (1.3f64.powi(3) / (6.0 * 0.7)) - 1.0).abs() < 1e-13);
         assert!(s.friction_rho.abs() < 1e-13);
+    }
+
+    #[test]
+    fn uniaxial_winkler_standard_linear_solid_closed_form() {
+        // One term: 1/Φ = 1 − f/(b + f − ik); for a load at given λ the pressure is
+        // c_W Q′ = w(s) − f·∫₀^s e^{−(b+f)(s−σ)} w(σ)dσ. Independent check: integrate that by
+        // adaptive quadrature at a few s and compare; and the rear-edge condition Q′(0) = 0.
+        let t = [CreepTerm { f: 3.0, b: 2.0 }];
+        let c_w = winkler_coefficient(WinklerColumns::Uniaxial, 0.4, 0.5).unwrap();
+        let w = Winkler::with_coefficient(&t, c_w);
+        let a = w.at_lambda(1.5).unwrap();
+        let s = &a.solution;
+        let (lam, aa) = (1.5, 1.5 - s.beta);
+        let wf = |sg: f64| aa * sg - 0.5 * sg * sg;
+        let mut integ = crate::special::gauss_legendre::Integrator::new(20);
+        for (&x, &q) in s.xi.iter().zip(&s.pressure).step_by(37) {
+            let sd = lam - x;
+            let conv = integ.integrate(
+                |sg| (-(5.0) * (sd - sg)).exp() * wf(sg),
+                &[0.0, sd.max(1e-300)],
+                1e-14,
+            );
+            let want = (wf(sd) - 3.0 * conv) / c_w;
+            // Both are exact to rounding; 1e−12 of the peak pressure.
+            assert!((q - want).abs() < 1e-12 * 0.5, "{x}: {q} vs {want}");
+        }
+        assert!(
+            s.friction_rho > 0.0 && a.min_pressure_ratio >= -1e-12 && a.min_gap_ratio > -1e-9,
+            "{a:?}"
+        );
     }
 }

@@ -132,7 +132,7 @@ pub fn solve_at_lambda(
 /// smaller, the thin-layer width (glassy constrained Winkler λ = (6c_W N′)^{1/3}, or the h³ law
 /// λ = 2(15πh′³N′/2)^{1/5} at ν = ½, whichever is larger).
 pub(crate) fn lambda_guess(load: f64, thickness: f64, nu: f64) -> f64 {
-    use super::compliance::{winkler_coefficient, WinklerColumns};
+    use crate::contact::numerics::winkler::{winkler_coefficient, WinklerColumns};
     let hs = 2.0 * load.sqrt();
     let h3 = 2.0 * (7.5 * std::f64::consts::PI * thickness.powi(3) * load).powf(0.2);
     let w = winkler_coefficient(WinklerColumns::Constrained, thickness, nu)

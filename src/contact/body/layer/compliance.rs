@@ -1,8 +1,9 @@
 //! Surface compliance of an elastic layer of thickness h bonded to a rigid base (plane strain), in
-//! Fourier space, and the Winkler foundations it tends to when the layer is thin.
+//! Fourier space; the Winkler foundation it tends to when the layer is thin is
+//! `contact::numerics::winkler`.
 //!
 //! Input: the dimensionless wave number t = |k|h and Poisson's ratio ν; output: the factor F(t) by
-//! which the layer's compliance differs from the half-space's, and the Winkler constants.
+//! which the layer's compliance differs from the half-space's.
 //!
 //! # The bonded layer (derivation)
 //! Layer 0 ≤ z ≤ h (z into the body), rigid base at z = h (u_x = u_z = 0), surface z = 0 free of shear
@@ -43,10 +44,9 @@
 //! # Units of the rolling problem
 //! In the thesis' units (§3.2: lengths in V·T, Q′ = (R/VT)·C·q/π with C = (1−ν)/μ₀) the half-space's
 //! scaled deflection ρ·v has the Fourier multiplier π/|k| (the transform of −log|ξ|); the layer's is
-//! π·F(|k|h′)/|k| with h′ = h/(VT). A Winkler foundation ρ·v = c_W·Q′ has
-//! c_W = π·h′/(M·C) = π·h′(1−2ν)/(2(1−ν)²) for columns in constrained compression and
-//! c_W = π·h′/(E·C) = π·h′/(2(1−ν²)) for the uniaxial columns of conveyor design tools
-//! (E = 2μ(1+ν); Jonkers 1980; Rudolphi & Reicks 2006).
+//! π·F(|k|h′)/|k| with h′ = h/(VT). Its thin compressible limit, the Winkler foundation
+//! ρ·v = c_W·Q′ of constrained columns, has c_W = π·h′/(M·C) = π·h′(1−2ν)/(2(1−ν)²)
+//! (`numerics::winkler::winkler_coefficient`, with the uniaxial columns of conveyor design tools).
 
 /// κ = 3 − 4ν (plane strain Kolosov constant).
 pub(crate) fn kolosov(nu: f64) -> f64 {
@@ -72,29 +72,6 @@ pub fn layer_defect(t: f64, nu: f64) -> f64 {
         (k * e4 + (poly + 2.0 * t) * e2) / (0.5 * k * (1.0 + e4) + poly * e2)
     } else {
         (k * (-2.0 * t).exp() + poly + 2.0 * t) / (k * (2.0 * t).cosh() + poly)
-    }
-}
-
-/// Which columns a Winkler foundation is made of.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum WinklerColumns {
-    /// Laterally constrained columns, modulus M = 2μ(1−ν)/(1−2ν): the thin-layer limit of the bonded
-    /// layer for ν < ½ (infinitely stiff at ν = ½).
-    Constrained,
-    /// Free uniaxial columns, modulus E = 2μ(1+ν): the conveyor design tools' model.
-    Uniaxial,
-}
-
-/// c_W of ρ·v = c_W·Q′ (thesis units, module doc) for a foundation of dimensionless height `h`;
-/// `None` for constrained columns at ν = ½ (rigid).
-pub(crate) fn winkler_coefficient(columns: WinklerColumns, h: f64, nu: f64) -> Option<f64> {
-    let pi = std::f64::consts::PI;
-    match columns {
-        WinklerColumns::Uniaxial => Some(pi * h / (2.0 * (1.0 - nu * nu))),
-        WinklerColumns::Constrained => {
-            let c = pi * h * (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu) * (1.0 - nu));
-            (c > 0.0).then_some(c)
-        }
     }
 }
 

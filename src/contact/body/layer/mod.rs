@@ -1,5 +1,6 @@
-//! Bodies beyond the half-space: a viscoelastic cover of thickness h bonded to a rigid carcass (plane
-//! strain, 0 ≤ ν ≤ ½) and the Winkler foundations it is compared with (issue 14).
+//! The bonded layer: a viscoelastic cover of thickness h bonded to a rigid carcass (plane strain,
+//! 0 ≤ ν ≤ ½; issue 14). Its thin compressible limit, the constrained Winkler foundation, is
+//! `contact::numerics::winkler` (the Winkler body is `body/winkler/`).
 //!
 //! Input: the dimensionless creep terms (fᵢ, bᵢ) of thesis eq. 3.7, the load N′ (eq. 3.24), the
 //! dimensionless cover thickness h′ = h/(VT) and ν; output: [`BodyAnswer`] (λ, β, pressure, ρF/N,
@@ -10,23 +11,17 @@
 //! - [`spectral`]: the spectrally convergent solver (default; the `auto` reduction with the layer
 //!   term as a polynomial right-hand side);
 //! - [`collocation`]: the thesis' collocation scheme with that kernel, load loop, error estimate
-//!   (the fallback for covers too thin for the spectral solver);
-//! - [`winkler`]: Winkler foundations (uniaxial columns of conveyor tools, constrained columns of the
-//!   thin compressible layer) in closed form for any spectrum.
+//!   (the fallback for covers too thin for the spectral solver).
 
 pub(crate) mod collocation;
 pub(crate) mod compliance;
 pub(crate) mod kernel;
 pub(crate) mod spectral;
-pub(crate) mod winkler;
 
 pub use collocation::LayerSettings;
-pub use compliance::WinklerColumns;
 pub use kernel::LayerKernel;
-pub use winkler::Winkler;
 
 use crate::contact::error::ContactError;
-use crate::contact::load::LoadSettings;
 pub use crate::contact::problem::BodyAnswer;
 use crate::contact::problem::CreepTerm;
 
@@ -99,20 +94,6 @@ fn package_layer(a: collocation::LayerAnswer, mut warnings: Vec<String>) -> Body
         min_gap_ratio: a.min_gap_ratio,
         warnings,
     }
-}
-
-/// Solve a Winkler foundation of `columns` of dimensionless height `thickness` at load N′.
-pub fn winkler_at_load(
-    terms: &[CreepTerm],
-    load: f64,
-    columns: WinklerColumns,
-    thickness: f64,
-    poisson: f64,
-    settings: &LoadSettings,
-) -> Result<BodyAnswer, ContactError> {
-    Ok(Winkler::new(terms, columns, thickness, poisson)?
-        .at_load(load, settings)?
-        .into_body_answer())
 }
 
 #[cfg(test)]

@@ -9,11 +9,11 @@
 //! [`BodyAnswer`] at given load, a [`DimensionlessSolution`] at given λ.
 //!
 //! Model: the cover is taken in its local (Winkler-type) form, laterally constrained columns of
-//! oedometric modulus M (the thin compressible bonded layer's limit, `layer::compliance`), and the
+//! oedometric modulus M (the thin compressible bonded layer's limit, `numerics::winkler`), and the
 //! springs sit in series under each column. A column's deflection under its own pressure is then
 //! ρv = c_W·[Q′ + Σfᵢ∫₀^∞e^{−bᵢζ}Q′(ξ+ζ)dζ] + c_k·Q′ = (c_W + c_k)·[Q′ + Σf̃ᵢ∫…], with
 //! f̃ᵢ = fᵢ·c_W/(c_W + c_k): a Winkler foundation of coefficient c_W + c_k and creep terms f̃ᵢ, solved in
-//! closed form by `layer::Winkler`. Why this model: it is exact for what it states (no discretisation
+//! closed form by `numerics::winkler::Winkler`. Why this model: it is exact for what it states (no discretisation
 //! of its own, so a test sees the seam, not a solver), its limit k → ∞ (c_k → 0) is the bonded cover
 //! on a rigid carcass in the same local form (`Body::WinklerConstrained`, which the bonded layer
 //! approaches to O(h/l) on thin covers, tests/body_seam.rs), and elastically it has a closed form,
@@ -21,10 +21,9 @@
 //! layer's full elastic kernel) would need a kernel and a solver of its own; not needed to test the
 //! seam. Constrained columns are rigid at ν = ½ (c_W = 0): refused, as for the Winkler body.
 
-use crate::contact::body::layer::compliance::{winkler_coefficient, WinklerColumns};
-use crate::contact::body::layer::Winkler;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::LoadSettings;
+use crate::contact::numerics::winkler::{winkler_coefficient, Winkler, WinklerColumns};
 use crate::contact::problem::{BodyAnswer, CreepTerm, DimensionlessScene, DimensionlessSolution};
 
 /// The springs' compliance c_k = π/(C·k·VT) for a stiffness `stiffness_pa_per_m` (Pa/m) in the
