@@ -17,15 +17,19 @@
 //! - [`chebyshev`]: the exponentials' Chebyshev coefficients and the exterior transform (§7, §10);
 //! - [`at_lambda`]: the N×N solve at given λ (§7) and its [`at_lambda::LambdaSolution`];
 //! - [`reduction`]: the mode selection, lumping and dropping (§8);
+//! - [`correction`]: the lumping correction's shared pieces (§8): the lumped weight W, the
+//!   calibration solve's terms, the measured gains, the gains applied;
 //! - [`winkler`]: the viscoelastic Winkler foundation of any coefficient c_W in closed form, and the
 //!   coefficients of uniaxial and constrained columns (the bonded layer's thin compressible limit).
 //!
-//! Not here, because one body alone uses them: the half-space `auto` scheme's lumping correction
-//! (`body/half_space/auto/correction.rs`; the spectral layer measures its own gains at two degrees)
-//! and the layer's Volterra memory terms (`body/layer/spectral/volterra.rs`).
+//! Not here, because one body alone uses them: how each scheme calibrates and bounds its lumping
+//! correction (`body/half_space/auto/correction.rs`; the spectral layer measures its gains at two
+//! degrees, `body/layer/spectral/at_load.rs`; [`correction`] says what differs) and the layer's
+//! Volterra memory terms (`body/layer/spectral/volterra.rs`).
 
 pub mod at_lambda;
 pub mod chebyshev;
+pub mod correction;
 pub mod hat;
 pub mod kernel;
 pub mod modes;

@@ -1,23 +1,20 @@
 //! The first-order correction for the lumped fast modes ([`crate::contact::numerics::reduction`] module doc): the
 //! model gains, their measurement by one extra solve (calibration), applying them, and the error
-//! that remains (second order, plus the round-off floor of the corrected friction).
+//! that remains (second order, plus the round-off floor of the corrected friction). The pieces the
+//! spectral layer shares (the weight W, the calibration's terms, the gains measured and applied)
+//! are `contact::numerics::correction`; the calibration's single solve at the solution's degree,
+//! the remaining error and the floor are this scheme's own.
 //!
 //! Input: the creep terms, the [`Reduction`] and a reduced [`LambdaSolution`]; output: a
 //! [`Correction`] and error estimates.
 
 use crate::contact::numerics::at_lambda::{LambdaSolution, QuadratureSettings};
+pub(super) use crate::contact::numerics::correction::lumped_weight_times_lambda;
+use crate::contact::numerics::correction::{apply_gains, calibration, measured_gains};
 use crate::contact::numerics::reduction::{
-    calibration_mode, lump_weight, lumped_residual, model_gains, solve_reduced, unlump, Reduction,
+    lumped_residual, model_gains, solve_reduced, unlump, Reduction,
 };
 use crate::contact::problem::CreepTerm;
-
-/// Σ wᵢ·λ over the lumped modes (wᵢ ∝ 1/λ, so this is independent of λ).
-pub(super) fn lumped_weight_times_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
-    red.lumped
-        .iter()
-        .map(|&i| lump_weight(&terms[i], 1.0))
-        .sum()
-}
 
 /// The measured first-order correction for the lumped modes ([`reduction`] module doc).
 #[derive(Debug, Clone, Copy)]
@@ -41,17 +38,7 @@ impl Correction {
     /// Apply at the solution's λ: ρF/N += λ·g_F·W, N′ ×= 1 + g_N·W, β += g_β·W (W = Σwᵢ); the
     /// pressure is scaled with N′ (the layer correction itself is not added to the profile).
     pub(super) fn apply(&self, terms: &[CreepTerm], red: &Reduction, sol: &mut LambdaSolution) {
-        let w = lumped_weight_times_lambda(terms, red) / sol.lambda;
-        if w == 0.0 {
-            return;
-        }
-        sol.friction_rho += sol.lambda * self.gains.0 * w;
-        let f = 1.0 + self.gains.1 * w;
-        sol.load *= f;
-        for c in sol.coefficients.iter_mut() {
-            *c *= f;
-        }
-        sol.beta += self.gains.2 * w;
+        apply_gains(sol, lumped_weight_times_lambda(terms, red), self.gains);
     }
 }
 
@@ -68,39 +55,19 @@ pub(super) fn calibrate(
 ) -> Correction {
     let lambda = sol.lambda;
     let model = Correction::model(terms, lambda);
-    let Some((star, c_probe)) = calibration_mode(terms, &red.lumped, lambda) else {
+    let Some(cal) = calibration(terms, &red.lumped, lambda) else {
         return model;
     };
     let weight = lumped_weight_times_lambda(terms, red) / lambda;
-    let probe_terms;
-    let terms = if c_probe.is_finite() {
-        let l = 0.5 * lambda;
-        let r = terms[star].f / terms[star].b;
-        let mut p = terms.to_vec();
-        p[star] = CreepTerm {
-            f: r * c_probe / l,
-            b: c_probe / l,
-        };
-        probe_terms = p;
-        &probe_terms[..]
-    } else {
-        terms
-    };
-    let w_star = lump_weight(&terms[star], lambda);
-    let Ok(with) = solve_reduced(&unlump(terms, red, star), lambda, q) else {
+    let Ok(with) = solve_reduced(&unlump(&cal.terms, red, cal.star), lambda, q) else {
         return model;
     };
-    let g = (
-        (with.friction_rho - sol.friction_rho) / lambda / w_star,
-        (with.load - sol.load) / sol.load / w_star,
-        (with.beta - sol.beta) / w_star,
-    );
-    if !(g.0.is_finite() && g.1.is_finite() && g.2.is_finite()) {
+    let Some(g) = measured_gains(&with, sol, lambda, cal.w_star) else {
         return model;
-    }
+    };
     Correction {
         gains: g,
-        amplification: weight / w_star,
+        amplification: weight / cal.w_star,
     }
 }
 

@@ -9,9 +9,7 @@
 //! to the hat scheme and says so).
 
 use super::at_lambda::{solve_at_lambda_pair, solve_at_lambda_rule, LaplaceRule};
-use super::degree::{
-    corrected, degree_budget, degree_error, degree_for, next_degree, unscale, w_lambda,
-};
+use super::degree::{corrected, degree_budget, degree_error, degree_for, next_degree, unscale};
 use super::secant::{bracket as secant_bracket, secant_loop, secant_until, start_guess, Start};
 use super::walk::{Walk, CARRY_CURVATURE};
 use crate::contact::body::layer::collocation::{contact_checks, lambda_guess, LayerAnswer};
@@ -19,9 +17,11 @@ use crate::contact::body::layer::LayerKernel;
 use crate::contact::error::{positive, ContactError};
 use crate::contact::load::{solve_at_load as load_loop, LoadSettings};
 use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::correction::{
+    calibration, lumped_weight_times_lambda, measured_gains,
+};
 use crate::contact::numerics::reduction::{
-    calibration_mode, lump_weight, lumped_residual, model_gains, select, slow_estimate_at, unlump,
-    Reduction,
+    lump_weight, lumped_residual, model_gains, select, slow_estimate_at, unlump, Reduction,
 };
 use crate::contact::problem::{CreepTerm, DimensionlessSolution};
 use crate::special::chebyshev::sine_series;
@@ -213,7 +213,7 @@ fn calibrate(
         half: (gf, gn, 0.0),
         amp: 0.0,
     };
-    let Some((star, c_probe)) = calibration_mode(terms, &red.lumped, lambda) else {
+    let Some(cal) = calibration(terms, &red.lumped, lambda) else {
         return model;
     };
     let weight: f64 = red
@@ -221,39 +221,18 @@ fn calibrate(
         .iter()
         .map(|&i| lump_weight(&terms[i], lambda))
         .sum();
-    let probe;
-    let terms = if c_probe.is_finite() {
-        let l = 0.5 * lambda;
-        let r = terms[star].f / terms[star].b;
-        let mut q = terms.to_vec();
-        q[star] = CreepTerm {
-            f: r * c_probe / l,
-            b: c_probe / l,
-        };
-        probe = q;
-        &probe[..]
-    } else {
-        terms
-    };
-    let w_star = lump_weight(&terms[star], lambda);
-    let (with, with_half) = solve_reduced_pair(&unlump(terms, red, star), lambda, h, nu, p, rule);
-    let gains_of = |with: &LambdaSolution, sol: &LambdaSolution| {
-        (
-            (with.friction_rho - sol.friction_rho) / lambda / w_star,
-            (with.load - sol.load) / sol.load / w_star,
-            (with.beta - sol.beta) / w_star,
-        )
-    };
-    let (g, g_half) = (gains_of(&with, sol), gains_of(&with_half, sol_half));
-    let finite = |g: (f64, f64, f64)| g.0.is_finite() && g.1.is_finite() && g.2.is_finite();
-    if finite(g) && finite(g_half) {
-        Calibration {
+    let (with, with_half) =
+        solve_reduced_pair(&unlump(&cal.terms, red, cal.star), lambda, h, nu, p, rule);
+    match (
+        measured_gains(&with, sol, lambda, cal.w_star),
+        measured_gains(&with_half, sol_half, lambda, cal.w_star),
+    ) {
+        (Some(g), Some(g_half)) => Calibration {
             gains: g,
             half: g_half,
-            amp: weight / w_star,
-        }
-    } else {
-        model
+            amp: weight / cal.w_star,
+        },
+        _ => model,
     }
 }
 
@@ -349,7 +328,7 @@ impl LoadProblem<'_> {
         near: Option<f64>,
         ls: &LoadSettings,
     ) -> Result<(LambdaSolution, usize), ContactError> {
-        let wl = w_lambda(self.terms, red);
+        let wl = lumped_weight_times_lambda(self.terms, red);
         let (start, sfb) = match near {
             Some(l) => (0.998 * l, 1.004f64.powi(2) - 1.0),
             None => (
@@ -384,7 +363,7 @@ impl LoadProblem<'_> {
         start: Start,
         slope: &mut f64,
     ) -> Result<(LambdaSolution, usize), ContactError> {
-        let wl = w_lambda(self.terms, red);
+        let wl = lumped_weight_times_lambda(self.terms, red);
         let near = match &start {
             Start::Guess(l, _) => *l,
             Start::Solved(s, _) => s.lambda,

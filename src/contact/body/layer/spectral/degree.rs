@@ -9,6 +9,7 @@
 //! other.
 
 use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::correction::apply_gains;
 use crate::contact::numerics::reduction::{calibration_mode, lump_weight, Reduction};
 use crate::contact::problem::CreepTerm;
 
@@ -64,20 +65,14 @@ pub(crate) fn amplification(terms: &[CreepTerm], red: &Reduction, lambda: f64) -
     }
 }
 
-/// A reduced solution at λ with the lumping correction of gains `g` applied (W = Σwᵢ at λ).
+/// A reduced solution at λ with the lumping correction of gains `g` applied (W = Σwᵢ at λ;
+/// `numerics::correction::apply_gains`).
 pub(crate) fn corrected(
     mut s: LambdaSolution,
     w_lambda: f64,
     g: (f64, f64, f64),
 ) -> LambdaSolution {
-    let w = w_lambda / s.lambda;
-    s.friction_rho += s.lambda * g.0 * w;
-    let f = 1.0 + g.1 * w;
-    s.load *= f;
-    for c in s.coefficients.iter_mut() {
-        *c *= f;
-    }
-    s.beta += g.2 * w;
+    apply_gains(&mut s, w_lambda, g);
     s
 }
 
@@ -117,12 +112,4 @@ pub(crate) fn rel(a: f64, b: f64) -> f64 {
     } else {
         (a - b).abs() / a.abs().max(b.abs())
     }
-}
-
-/// W = Σwᵢ of the lumped modes at λ = 1 (their weight at λ is this over λ).
-pub(crate) fn w_lambda(terms: &[CreepTerm], red: &Reduction) -> f64 {
-    red.lumped
-        .iter()
-        .map(|&i| lump_weight(&terms[i], 1.0))
-        .sum()
 }

@@ -34,9 +34,10 @@
 
 use super::at_lambda::{solve_at_lambda_triple, LaplaceRule};
 use super::degree::{
-    corrected, degree_budget, degree_error, degree_for, next_degree, unscale, w_lambda, Triple,
+    corrected, degree_budget, degree_error, degree_for, next_degree, unscale, Triple,
 };
 use crate::contact::numerics::at_lambda::LambdaSolution;
+use crate::contact::numerics::correction::lumped_weight_times_lambda;
 use crate::contact::numerics::reduction::{select, Reduction};
 use crate::contact::problem::CreepTerm;
 
@@ -134,7 +135,7 @@ impl<'a> Walk<'a> {
         }) && self.seen.last().is_some_and(|v| v.p == p);
         if !same {
             self.generation += 1;
-            self.wl = w_lambda(terms, &red);
+            self.wl = lumped_weight_times_lambda(terms, &red);
             self.red = Some(red);
         }
         self.p = p;
