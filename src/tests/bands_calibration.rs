@@ -46,7 +46,7 @@
 use std::path::PathBuf;
 use viscoroll::bands::{band_of, build_ensemble, scene_bands_on, BandSettings};
 use viscoroll::contact::roll_cover;
-use viscoroll::contact::{roll, Body, Scene};
+use viscoroll::contact::{roll, Body, ContactSettings, Scene};
 use viscoroll::creep::relaxation_to_creep;
 use viscoroll::dma::{read_files, IngestOptions};
 use viscoroll::pipeline::fit_measurement_master;
@@ -211,24 +211,7 @@ fn points_of_case(case: &Case) -> Vec<Point> {
             .map(|e| scene_bands_on(&fit, e, &scene, &spec.temps_c, &bs_before));
         for (i, (p, r)) in got.iter().zip(&bands.ratios).enumerate() {
             let true_at_t = shifted(&true_creep, compound.law.log10_a_t(p.temp_c));
-            let truth = match spec.cover_thickness_mm {
-                Some(h_mm) => {
-                    roll_cover(
-                        &Scene {
-                            body: Body::Auto {
-                                thickness_m: h_mm * 1e-3,
-                            },
-                            ..scene
-                        },
-                        &true_at_t,
-                        settings.auto.tol.max(COVER_TOL),
-                    )
-                    .unwrap()
-                    .roll
-                    .friction
-                }
-                None => roll(&scene, &true_at_t, &settings).unwrap().friction,
-            };
+            let truth = true_friction(&scene, spec.cover_thickness_mm, &true_at_t, &settings);
             // A refused band (more than a quarter of the replicates' solves failed, or the
             // friction itself) is a point not covered: p05 = p95 = NaN, counted in the tables.
             let refused = viscoroll::results::FrictionBand {
@@ -264,6 +247,34 @@ fn points_of_case(case: &Case) -> Vec<Point> {
     }
     let _ = std::fs::remove_dir_all(&dir);
     out
+}
+
+/// The true friction of one point: the true creep spectrum at the point's shift, rolled as the main
+/// job rolls the scene (on its cover at the main job's tolerance, or on the half-space).
+fn true_friction(
+    scene: &Scene,
+    cover_mm: Option<f64>,
+    true_at_t: &CreepSpectrum,
+    settings: &ContactSettings,
+) -> f64 {
+    match cover_mm {
+        Some(h_mm) => {
+            roll_cover(
+                &Scene {
+                    body: Body::Auto {
+                        thickness_m: h_mm * 1e-3,
+                    },
+                    ..*scene
+                },
+                true_at_t,
+                settings.auto.tol.max(COVER_TOL),
+            )
+            .unwrap()
+            .roll
+            .friction
+        }
+        None => roll(scene, true_at_t, settings).unwrap().friction,
+    }
 }
 
 /// `fit` with the compound's true shift law, referred to the fit's own reference temperature
@@ -349,10 +360,32 @@ fn calibrate(seeds: &[u64], lowest_c: f64) -> Vec<Point> {
 /// half-width and the misses above and below), per scene, per class of [`class`], the misses;
 /// returns the points.
 fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
+    let compounds = compound_names(&all);
+    coverage_tables(&all, &compounds);
+    class_widths(&all);
+    misses_and_budget(&all);
+    claims_table(&all, &compounds);
+    accuracy_table(&all);
+    let all: Vec<Point> = all.into_iter().map(|(_, p)| p).collect();
+    println!("total: {}", pct(coverage_of(all.iter())));
+    println!(
+        "claimed: {}",
+        pct(coverage_of(all.iter().filter(|p| p.claimed)))
+    );
+    all
+}
+
+/// The compounds of `all`, sorted, once each.
+fn compound_names(all: &[(u64, Point)]) -> Vec<String> {
     let mut compounds: Vec<String> = all.iter().map(|(_, p)| p.compound.clone()).collect();
     compounds.dedup();
     compounds.sort();
     compounds.dedup();
+    compounds
+}
+
+/// Coverage per compound, over all, per class of [`class`] (with the bands before this wave), and per scene.
+fn coverage_tables(all: &[(u64, Point)], compounds: &[String]) {
     println!(
         "| compound | covered | median half-width | median log half-width | missed above / below \
          | before: covered | before: median half-width |"
@@ -384,7 +417,7 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
             refused(&|p| p.before.map_or(0.0, |b| b.0))
         );
     };
-    for c in &compounds {
+    for c in compounds {
         let of: Vec<&Point> = all
             .iter()
             .map(|(_, p)| p)
@@ -412,6 +445,11 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
         let c = coverage_of(all.iter().map(|(_, p)| p).filter(|p| &p.scene == s));
         println!("scene {s}: {}", pct(c));
     }
+}
+
+/// Per class of [`class`]: coverage, median log half-width, the window's reach and the misses; then
+/// the median relative half-width and |error| / half-width.
+fn class_widths(all: &[(u64, Point)]) {
     for k in [
         "inside the window, no term",
         "inside the window's last half decade (ramp, eq. 15.9c)",
@@ -453,6 +491,10 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
         100.0 * width[width.len() / 2],
         err[err.len() / 2]
     );
+}
+
+/// The first 40 misses, the error budget inside the window and the other readings of the replicates.
+fn misses_and_budget(all: &[(u64, Point)]) {
     for (seed, p) in all.iter().filter(|(_, p)| !covered(p)).take(40) {
         println!(
             "missed: seed {seed} {} {} {} °C ({}): true {:.4e}, F/N {:.4e}, band {:.4e} … {:.4e}; \
@@ -502,6 +544,10 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
         100.0 * centred as f64 / n,
         100.0 * basic as f64 / n
     );
+}
+
+/// What the main job claims (trusted fit, determined point) and how often the claims cover.
+fn claims_table(all: &[(u64, Point)], compounds: &[String]) {
     println!(
         "\nThe claims (trusted fit, determined point; what the main job prints as a band):\n\
          | compound | claimed | covered | median half-width | not claimed | not claimed, missed |"
@@ -521,7 +567,7 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
             open.iter().filter(|p| !covered(p)).count()
         );
     };
-    for c in &compounds {
+    for c in compounds {
         claim_row(
             c,
             all.iter()
@@ -531,14 +577,6 @@ fn report(all: Vec<(u64, Point)>) -> Vec<Point> {
         );
     }
     claim_row("all", all.iter().map(|(_, p)| p).collect());
-    accuracy_table(&all);
-    let all: Vec<Point> = all.into_iter().map(|(_, p)| p).collect();
-    println!("total: {}", pct(coverage_of(all.iter())));
-    println!(
-        "claimed: {}",
-        pct(coverage_of(all.iter().filter(|p| p.claimed)))
-    );
-    all
 }
 
 /// The point estimate's error |F/N − true|/true (issue 32, item 4), per compound: median and worst

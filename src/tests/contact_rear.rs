@@ -221,6 +221,21 @@ fn coarse_one_term_plane_never_penetrates() {
 #[ignore = "full scan (≈ 1–2 min release); run with --ignored --nocapture to print the counts"]
 fn scan() {
     let t0 = std::time::Instant::now();
+    let plane = scan_plane(t0);
+    // The run's seed (tests/seed.rs; the scan's figures in docs/DEVLOG.md are from the former 4242).
+    let mut rng = Rng(crate::tests::seed::seed("contact_rear::scan"));
+    let spectra = scan_spectra(t0, &mut rng);
+    let scenes = scan_scenes(t0, &mut rng);
+    let real = scan_measured(t0);
+    // genuine penetration (still there at tol 1e−10) anywhere: none found
+    assert_eq!(
+        plane.persisting + spectra.persisting + scenes.persisting + real.persisting,
+        0
+    );
+}
+
+/// `scan` part 1: the one-term plane.
+fn scan_plane(t0: std::time::Instant) -> Tally {
     // 1. one-term plane (r, c), 61 × 61, log-uniform
     let mut plane = Tally::new();
     for i in 0..61 {
@@ -238,16 +253,20 @@ fn scan() {
         "one-term plane: {plane:?} ({:.1} s)",
         t0.elapsed().as_secs_f64()
     );
+    plane
+}
+
+/// `scan` part 2: random realistic spectra at λ = 1.
+fn scan_spectra(t0: std::time::Instant, rng: &mut Rng) -> Tally {
     // 2. random realistic spectra at λ = 1: 20–40 terms over 20–24 decades, J∞/J_g 1e2…1e4,
     // times centred on the contact time so that the transition crosses it
     // The run's seed (tests/seed.rs; the scan's figures in docs/DEVLOG.md are from the former 4242).
-    let mut rng = Rng(crate::tests::seed::seed("contact_rear::scan"));
     let mut spectra = Tally::new();
     for k in 0..300 {
         let n = 20 + (rng.next() * 21.0) as usize;
         let decades = 20.0 + 4.0 * rng.next();
         let ratio = 10f64.powf(2.0 + 2.0 * rng.next());
-        let terms = random_terms(&mut rng, n, decades, ratio);
+        let terms = random_terms(rng, n, decades, ratio);
         // shift the whole spectrum by up to ±6 decades (moves the transition past the contact)
         let shift = 10f64.powf(12.0 * (rng.next() - 0.5));
         let terms: Vec<CreepTerm> = terms
@@ -268,13 +287,18 @@ fn scan() {
         "random spectra: {spectra:?} ({:.1} s)",
         t0.elapsed().as_secs_f64()
     );
+    spectra
+}
+
+/// `scan` part 3: dimensional scenes with random spectra.
+fn scan_scenes(t0: std::time::Instant, rng: &mut Rng) -> Tally {
     // 3. dimensional scenes: V 1e−6…1e3 m/s, N 1…1e6 N/m, R 0.01…1 m, random realistic spectra
     // with times over 24 decades (1e−12…1e12 s)
     let mut scenes = Tally::new();
     for k in 0..40 {
         let n = 20 + (rng.next() * 21.0) as usize;
         let ratio = 10f64.powf(2.0 + 2.0 * rng.next());
-        let spec = random_spectrum(&mut rng, n, 24.0, ratio);
+        let spec = random_spectrum(rng, n, 24.0, ratio);
         for v in [1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0, 100.0, 1e3] {
             let scene = Scene {
                 radius_m: 10f64.powf(-2.0 + 2.0 * rng.next()),
@@ -295,6 +319,11 @@ fn scan() {
         }
     }
     eprintln!("scenes: {scenes:?} ({:.1} s)", t0.elapsed().as_secs_f64());
+    scenes
+}
+
+/// `scan` part 4: two measured compounds.
+fn scan_measured(t0: std::time::Instant) -> Tally {
     // 4. two measured compounds (fits of data/pyvisco-ems-ca and data/trios-aresg2-lims by
     // `viscoroll fit`, creep part): 65 terms over 32 decades (J∞/J_g 51) and 32 terms over 15
     // decades (J∞/J_g 7.6e4), on a grid of the range
@@ -328,11 +357,7 @@ fn scan() {
         "measured compounds: {real:?} ({:.1} s)",
         t0.elapsed().as_secs_f64()
     );
-    // genuine penetration (still there at tol 1e−10) anywhere: none found
-    assert_eq!(
-        plane.persisting + spectra.persisting + scenes.persisting + real.persisting,
-        0
-    );
+    real
 }
 
 /// A case found by `scan`: with many slow modes (c = bλ/2 from 3e−11 to 5e−5) kept separately, the

@@ -24,7 +24,7 @@ fn ok(name: &str, text: &str, opts: &IngestOptions) -> Measurement {
 const GOOD: &str = "f,E',E'',T\nHz,MPa,MPa,°C\n1,10,1,20\n10,11,1.1,20\n1,5,2,30\n10,6,2.1,30\n";
 
 #[test]
-fn each_bad_input_class_has_its_own_message() {
+fn unit_errors_name_the_column_and_the_fix() {
     let d = IngestOptions::default();
     ok("good.csv", GOOD, &d);
 
@@ -55,7 +55,11 @@ fn each_bad_input_class_has_its_own_message() {
         s.starts_with("conflict.csv: line 1: column `E'` is in `MPa` but --modulus-unit"),
         "{s}"
     );
+}
 
+#[test]
+fn missing_columns_and_bad_cells_are_named() {
+    let d = IngestOptions::default();
     let (e, s) = err("nomod.csv", "f,X,T\nHz,MPa,°C\n1,10,20\n10,11,20\n", &d);
     assert!(matches!(e, DmaError::MissingColumn { .. }));
     assert!(
@@ -91,7 +95,11 @@ fn each_bad_input_class_has_its_own_message() {
 
     let (_, s) = err("empty.csv", "", &d);
     assert_eq!(s, "empty.csv: no data rows (the file is empty)");
+}
 
+#[test]
+fn tensile_or_shear_is_never_guessed() {
+    let d = IngestOptions::default();
     let amb = "f,Storage modulus,Loss modulus,T\nHz,MPa,MPa,°C\n1,10,1,20\n10,11,1,20\n";
     let (e, s) = err("amb.csv", amb, &d);
     assert!(matches!(e, DmaError::AmbiguousMode { .. }));
@@ -113,7 +121,11 @@ fn each_bad_input_class_has_its_own_message() {
         e.to_string(),
         "b.csv: holds shear moduli but tensile was expected (a.csv holds tensile moduli)"
     );
+}
 
+#[test]
+fn temperature_comes_from_the_file_or_is_refused() {
+    let d = IngestOptions::default();
     let (e, s) = err("sweep.csv", "f,E',E''\nHz,MPa,MPa\n1,10,1\n10,11,1\n", &d);
     assert!(matches!(e, DmaError::NoTemperature { .. }));
     assert_eq!(s, "sweep.csv: line 3: no temperature: the file has no temperature column and no set temperature");
@@ -121,7 +133,11 @@ fn each_bad_input_class_has_its_own_message() {
     let m = ok("T25.csv", "f,E',E''\nHz,MPa,MPa\n1,10,1\n10,11,1\n", &d);
     assert_eq!(m.isotherms[0].temp_nominal_c, 25.0);
     assert!(m.warnings[0].contains("using 25 °C from the file name"));
+}
 
+#[test]
+fn broken_instrument_files_say_what_is_wrong() {
+    let d = IngestOptions::default();
     let (e, s) = err(
         "a.txt",
         "[Version]\nTA Instruments LIMS export format version\t0\n",
@@ -160,7 +176,11 @@ fn each_bad_input_class_has_its_own_message() {
             .starts_with("cut.xls: cannot read the Excel workbook: "),
         "{e}"
     );
+}
 
+#[test]
+fn missing_files_and_bad_settings_are_refused() {
+    let d = IngestOptions::default();
     let e = dma::read_files(&["no/such/file.csv"], &d).unwrap_err();
     assert!(
         e.to_string()

@@ -11,7 +11,9 @@
 
 use std::f64::consts::PI;
 use viscoroll::dma::{self, IngestOptions};
-use viscoroll::prony::{fit_prony, relaxation_times_s, MasterPoint, PronySettings, WeightRule};
+use viscoroll::prony::{
+    fit_prony, relaxation_times_s, LambdaCandidate, MasterPoint, PronySettings, WeightRule,
+};
 use viscoroll::tts::{build_master_curve, MasterSettings, ShiftCriterion};
 use viscoroll::ModulusKind;
 
@@ -117,25 +119,7 @@ fn prony_weight_search_reports_the_norms_of_its_solutions() {
             r2.sqrt()
         );
         // ‖Lx‖ from the spectrum, the kept terms placed back on the grid (dropped ones are 0).
-        let f_min = points[0].reduced_freq_hz;
-        let f_max = points[60].reduced_freq_hz;
-        let grid = relaxation_times_s(f_min, f_max, &settings);
-        assert_eq!(grid.len(), info.n_terms_grid);
-        let scale = points.iter().map(|p| p.storage_pa).fold(0.0, f64::max);
-        let x: Vec<f64> = grid
-            .iter()
-            .map(|&tau| {
-                terms
-                    .iter()
-                    .find(|&&(_, t)| (t / tau - 1.0).abs() < 1e-12)
-                    .map_or(0.0, |&(e, _)| e / scale)
-            })
-            .collect();
-        let seminorm = x
-            .windows(3)
-            .map(|w| (w[0] - 2.0 * w[1] + w[2]).powi(2))
-            .sum::<f64>()
-            .sqrt();
+        let seminorm = seminorm_on_grid(&points, &terms, &settings, info.n_terms_grid);
         // A dropped term has x·(its largest relative effect) < 1e-7; its effect is ≳ 1e-3 for grid
         // times inside the data's window ± 0.5 decade, so each moves ‖Lx‖ by ≲ 2.5e-4 (the second
         // difference weights 1, 2, 1) against ‖Lx‖ ≈ 0.01–1 here: 5 % covers it, while the constant
@@ -146,25 +130,7 @@ fn prony_weight_search_reports_the_norms_of_its_solutions() {
             chosen.seminorm
         );
         assert!(chosen.residual_norm > 0.0 && chosen.seminorm > 0.0);
-        // The trade-off along the search (solver tolerance ~1e-8 on the scaled problem: 1e-6
-        // relative slack).
-        for w in info.lambda_search.windows(2) {
-            assert!(w[1].lambda > w[0].lambda);
-            assert!(
-                w[1].residual_norm >= w[0].residual_norm * (1.0 - 1e-6),
-                "{rule:?}: ‖r‖ fell from {:e} to {:e} as λ rose to {:e}",
-                w[0].residual_norm,
-                w[1].residual_norm,
-                w[1].lambda
-            );
-            assert!(
-                w[1].seminorm <= w[0].seminorm * (1.0 + 1e-6),
-                "{rule:?}: ‖Lx‖ rose from {:e} to {:e} as λ rose to {:e}",
-                w[0].seminorm,
-                w[1].seminorm,
-                w[1].lambda
-            );
-        }
+        assert_trade_off(rule, &info.lambda_search);
         // The search spans the trade-off: ‖r‖ grows by more than the solver's noise over it.
         let (first, last) = (
             info.lambda_search.first().unwrap(),
@@ -172,6 +138,57 @@ fn prony_weight_search_reports_the_norms_of_its_solutions() {
         );
         assert!(last.residual_norm > 1.01 * first.residual_norm);
         assert!(last.seminorm < 0.99 * first.seminorm);
+    }
+}
+
+/// ‖Lx‖ of the fitted terms placed back on the grid of `settings` over the data (dropped terms
+/// are 0), the moduli scaled by the largest E′ datum.
+fn seminorm_on_grid(
+    points: &[MasterPoint],
+    terms: &[(f64, f64)],
+    settings: &PronySettings,
+    n_grid: usize,
+) -> f64 {
+    let f_min = points[0].reduced_freq_hz;
+    let f_max = points[60].reduced_freq_hz;
+    let grid = relaxation_times_s(f_min, f_max, settings);
+    assert_eq!(grid.len(), n_grid);
+    let scale = points.iter().map(|p| p.storage_pa).fold(0.0, f64::max);
+    let x: Vec<f64> = grid
+        .iter()
+        .map(|&tau| {
+            terms
+                .iter()
+                .find(|&&(_, t)| (t / tau - 1.0).abs() < 1e-12)
+                .map_or(0.0, |&(e, _)| e / scale)
+        })
+        .collect();
+    x.windows(3)
+        .map(|w| (w[0] - 2.0 * w[1] + w[2]).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
+
+/// Along the weight search ‖r‖ must not fall and ‖Lx‖ must not rise as λ grows.
+fn assert_trade_off(rule: WeightRule, search: &[LambdaCandidate]) {
+    // The trade-off along the search (solver tolerance ~1e-8 on the scaled problem: 1e-6
+    // relative slack).
+    for w in search.windows(2) {
+        assert!(w[1].lambda > w[0].lambda);
+        assert!(
+            w[1].residual_norm >= w[0].residual_norm * (1.0 - 1e-6),
+            "{rule:?}: ‖r‖ fell from {:e} to {:e} as λ rose to {:e}",
+            w[0].residual_norm,
+            w[1].residual_norm,
+            w[1].lambda
+        );
+        assert!(
+            w[1].seminorm <= w[0].seminorm * (1.0 + 1e-6),
+            "{rule:?}: ‖Lx‖ rose from {:e} to {:e} as λ rose to {:e}",
+            w[0].seminorm,
+            w[1].seminorm,
+            w[1].lambda
+        );
     }
 }
 

@@ -55,32 +55,38 @@ fn rel(a: f64, b: f64) -> f64 {
     }
 }
 
+/// One random case of [`run`]: m terms, J∞/J_g, the creep terms, h/λ of the half-space, ν.
+fn random_case(rng: &mut Rng) -> (usize, f64, Vec<CreepTerm>, f64, f64) {
+    let m = 1 + (rng.next() * 30.0) as usize;
+    let ratio = rng.log_uniform(1.5, 1e3);
+    let weights: Vec<f64> = (0..m).map(|_| rng.next() + 0.05).collect();
+    let wsum: f64 = weights.iter().sum();
+    let terms: Vec<CreepTerm> = weights
+        .iter()
+        .map(|w| {
+            let b = rng.log_uniform(1e-12, 1e12);
+            CreepTerm {
+                f: (ratio - 1.0) * w / wsum * b,
+                b,
+            }
+        })
+        .collect();
+    let hr = rng.log_uniform(1e-3, 1e3);
+    let nu = if rng.next() < 0.25 {
+        0.5
+    } else {
+        0.5 * rng.next()
+    };
+    (m, ratio, terms, hr, nu)
+}
+
 /// (checked, unchecked) counts over `cases` random cases.
 fn run(seed: u64, cases: usize) -> (usize, usize) {
     let mut rng = Rng(seed);
     let load = 0.25;
     let (mut checked, mut unchecked) = (0, 0);
     for case in 0..cases {
-        let m = 1 + (rng.next() * 30.0) as usize;
-        let ratio = rng.log_uniform(1.5, 1e3);
-        let weights: Vec<f64> = (0..m).map(|_| rng.next() + 0.05).collect();
-        let wsum: f64 = weights.iter().sum();
-        let terms: Vec<CreepTerm> = weights
-            .iter()
-            .map(|w| {
-                let b = rng.log_uniform(1e-12, 1e12);
-                CreepTerm {
-                    f: (ratio - 1.0) * w / wsum * b,
-                    b,
-                }
-            })
-            .collect();
-        let hr = rng.log_uniform(1e-3, 1e3);
-        let nu = if rng.next() < 0.25 {
-            0.5
-        } else {
-            0.5 * rng.next()
-        };
+        let (m, ratio, terms, hr, nu) = random_case(&mut rng);
         let hs = solve_auto_at_load(
             &terms,
             load,

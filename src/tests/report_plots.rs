@@ -10,6 +10,7 @@ use viscoroll::prony::{fit_prony, PronySettings};
 use viscoroll::report::plots::{
     plot_isotherms, plot_master_fit, plot_shift_factors, plot_spectrum, PlotError,
 };
+use viscoroll::prony::RelaxationSpectrum;
 use viscoroll::{ModulusKind, ShiftLaw};
 
 /// (T in °C, log10 a_T) from pyvisco's shift-factor table (a name row, then a unit row).
@@ -98,6 +99,48 @@ fn check_legible(p: &Path) {
     assert!(n >= 4, "{p:?}: {n} tick labels");
 }
 
+/// Isotherms 0.1–100 Hz regenerated from a fit: E*(a_T f) at each tabulated temperature of
+/// `shifts` (°C, log10 a_T).
+fn regenerated(spectrum: &RelaxationSpectrum, shifts: &[(f64, f64)]) -> Measurement {
+    let isotherms = shifts
+        .iter()
+        .map(|&(t, log_at)| Isotherm {
+            temp_nominal_c: t,
+            temp_mean_c: t,
+            source: 0,
+            nominal_source: String::new(),
+            sheet: None,
+            label: None,
+            points: (0..10)
+                .map(|i| {
+                    let f = 0.1 * 10f64.powf(i as f64 / 3.0);
+                    let (s, l) = dynamic_moduli_pa(
+                        spectrum,
+                        2.0 * std::f64::consts::PI * f * 10f64.powf(log_at),
+                    );
+                    DataPoint {
+                        freq_hz: f,
+                        storage_pa: s,
+                        loss_pa: l,
+                        temp_c: None,
+                        line: i + 1,
+                        flags: vec![],
+                    }
+                })
+                .collect(),
+        })
+        .collect();
+    Measurement {
+        sources: vec![],
+        kind: ModulusKind::Tensile,
+        poisson: 0.5,
+        isotherms,
+        warnings: vec![],
+        issues: vec![],
+        summary: Default::default(),
+    }
+}
+
 #[test]
 fn ems_ca_plots_are_written_as_png_and_svg() {
     let dir = out_dir();
@@ -131,44 +174,7 @@ fn ems_ca_plots_are_written_as_png_and_svg() {
         t_ref_c: -5.0,
         activation_energy_j_per_mol: ea,
     };
-    // Isotherms 0.1–100 Hz regenerated from the fit: E*(a_T f) at each tabulated temperature.
-    let isotherms = shifts
-        .iter()
-        .map(|&(t, log_at)| Isotherm {
-            temp_nominal_c: t,
-            temp_mean_c: t,
-            source: 0,
-            nominal_source: String::new(),
-            sheet: None,
-            label: None,
-            points: (0..10)
-                .map(|i| {
-                    let f = 0.1 * 10f64.powf(i as f64 / 3.0);
-                    let (s, l) = dynamic_moduli_pa(
-                        &fit.spectrum,
-                        2.0 * std::f64::consts::PI * f * 10f64.powf(log_at),
-                    );
-                    DataPoint {
-                        freq_hz: f,
-                        storage_pa: s,
-                        loss_pa: l,
-                        temp_c: None,
-                        line: i + 1,
-                        flags: vec![],
-                    }
-                })
-                .collect(),
-        })
-        .collect();
-    let m = Measurement {
-        sources: vec![],
-        kind: ModulusKind::Tensile,
-        poisson: 0.5,
-        isotherms,
-        warnings: vec![],
-        issues: vec![],
-        summary: Default::default(),
-    };
+    let m = regenerated(&fit.spectrum, &shifts);
     for ext in ["png", "svg"] {
         let p = |name: &str| dir.join(format!("ems_ca_{name}.{ext}"));
         plot_master_fit(&pts, &fit.spectrum, &p("master_fit")).unwrap();
