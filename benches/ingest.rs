@@ -3,10 +3,11 @@
 //! The shift-factor list inside an Eplexor master export was read on its own here before issue 30;
 //! its reader is crate-internal now, so `all_shared_files` reads that export whole (`read_files`,
 //! as the `eplexor_master_xls` row) and the user's shift-factor CSV (`read_shift_factors`, public).
-//! Run: `cargo bench --bench ingest`.
+//! Run: `cargo bench --bench ingest` (prints a table: median and fastest call).
 
-use criterion::{criterion_group, criterion_main, Criterion};
-use std::hint::black_box;
+#[path = "support/timing.rs"]
+mod timing;
+
 use std::path::PathBuf;
 use viscoroll::dma::{self, IngestOptions};
 
@@ -44,27 +45,18 @@ fn sets() -> Vec<(&'static str, Vec<PathBuf>)> {
     ]
 }
 
-fn bench(c: &mut Criterion) {
+fn main() {
     let opts = IngestOptions::default();
     let sets = sets();
-    let mut g = c.benchmark_group("ingest");
-    g.sample_size(20);
+    timing::header("ingest: dma::read_files on the shipped exports");
     for (name, paths) in &sets {
-        g.bench_function(*name, |b| {
-            b.iter(|| black_box(dma::read_files(paths, &opts).unwrap()))
-        });
+        timing::row(name, || dma::read_files(paths, &opts).unwrap());
     }
-    g.bench_function("all_shared_files", |b| {
-        b.iter(|| {
-            for (_, paths) in &sets {
-                black_box(dma::read_files(paths, &opts).unwrap());
-            }
-            let shift = data("pyvisco-ems-ca/freq_user_master__shift_factors.csv");
-            black_box(dma::read_shift_factors(&shift).unwrap());
-        })
+    timing::row("all_shared_files", || {
+        for (_, paths) in &sets {
+            std::hint::black_box(dma::read_files(paths, &opts).unwrap());
+        }
+        let shift = data("pyvisco-ems-ca/freq_user_master__shift_factors.csv");
+        dma::read_shift_factors(&shift).unwrap()
     });
-    g.finish();
 }
-
-criterion_group!(benches, bench);
-criterion_main!(benches);

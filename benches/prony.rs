@@ -4,9 +4,11 @@
 //! QR, λ search, term dropping and error figures. Target (issue 7): master curve + Prony fit + creep
 //! conversion ≤ 100 ms for EMS-CA.
 //!
-//! Run: `cargo bench --bench prony`.
+//! Run: `cargo bench --bench prony` (prints a table: median and fastest call).
 
-use criterion::{criterion_group, criterion_main, Criterion};
+#[path = "support/timing.rs"]
+mod timing;
+
 use std::hint::black_box;
 use viscoroll::prony::{fit_prony, MasterPoint, PronySettings};
 use viscoroll::ModulusKind;
@@ -30,21 +32,16 @@ fn ems_ca_master() -> Vec<MasterPoint> {
         .collect()
 }
 
-fn bench_prony(c: &mut Criterion) {
+fn main() {
     let pts = ems_ca_master();
-    let mut g = c.benchmark_group("prony_fit_ems_ca");
-    g.sample_size(20);
+    timing::header("prony: fit_prony on the EMS-CA master curve");
     for per_decade in [2.0, 0.6] {
         let s = PronySettings {
             terms_per_decade: per_decade,
             ..PronySettings::default()
         };
-        g.bench_function(format!("per_decade_{per_decade}"), |b| {
-            b.iter(|| fit_prony(black_box(&pts), ModulusKind::Tensile, 0.5, black_box(&s)).unwrap())
+        timing::row(&format!("per_decade_{per_decade}"), || {
+            fit_prony(black_box(&pts), ModulusKind::Tensile, 0.5, black_box(&s)).unwrap()
         });
     }
-    g.finish();
 }
-
-criterion_group!(benches, bench_prony);
-criterion_main!(benches);

@@ -284,7 +284,7 @@ fn fit(
                         f.bands = Some(e);
                         None
                     }
-                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+                    Err(e) => Some(e.not_computed_warning()),
                 },
             };
             Ok((f, why))
@@ -323,7 +323,7 @@ fn fit_pyvisco(
                         f.bands = Some(e);
                         None
                     }
-                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+                    Err(e) => Some(e.not_computed_warning()),
                 },
             };
             Ok((f, why))

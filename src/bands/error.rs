@@ -23,3 +23,16 @@ pub enum BandError {
     #[error("band settings: {0}")]
     Settings(String),
 }
+
+impl BandError {
+    /// The warning a fit carries when its bands could not be made, as every front end prints it
+    /// (the main job, `viscoroll fit`, the Python package): one line, capped in length.
+    pub fn not_computed_warning(&self) -> String {
+        not_computed(self)
+    }
+}
+
+/// "uncertainty bands not computed: `why`", capped to one line of `results::cap_line`'s length.
+pub(crate) fn not_computed(why: &dyn std::fmt::Display) -> String {
+    crate::results::cap_line(&format!("uncertainty bands not computed: {why}"))
+}

@@ -72,6 +72,7 @@ pub use compare::comparisons;
 pub(crate) use compare::prob_text;
 pub(crate) use ensemble::FROM_FIT_FILE_NOTE;
 pub use ensemble::{build_ensemble, ensemble_from_fit};
+pub(crate) use error::not_computed;
 pub use error::BandError;
 pub(crate) use friction::{band_of, mean_band, CoverSolve};
 pub(crate) use scene::{half_space_ratios, HalfSpaceRatios, SceneRatios};

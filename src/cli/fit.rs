@@ -140,7 +140,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                             .with_context(|| args.output.display().to_string())?;
                         None
                     }
-                    Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+                    Err(e) => Some(e.not_computed_warning()),
                 },
             };
             (fit, action, why)
@@ -174,7 +174,7 @@ fn time_fit_written(
             fit.bands = Some(e);
             None
         }
-        Err(e) => Some(format!("uncertainty bands not computed: {e}")),
+        Err(e) => Some(e.not_computed_warning()),
     });
     fit.write(&args.output, args.force)
         .with_context(|| args.output.display().to_string())?;

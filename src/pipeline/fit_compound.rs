@@ -388,9 +388,7 @@ pub fn fit_or_reuse_with_bands(
             }
             Err(e) => {
                 fit.bands = None;
-                Some(crate::results::cap_line(&format!(
-                    "uncertainty bands not computed: {e}"
-                )))
+                Some(e.not_computed_warning())
             }
         }
     };

@@ -252,7 +252,7 @@ impl Fitted {
             no_bands: opts
                 .bands
                 .as_ref()
-                .map(|_| format!("uncertainty bands not computed: {why}")),
+                .map(|_| crate::bands::not_computed(&why)),
             specimen_fits: Vec::new(),
             specimens: Vec::new(),
         }

@@ -6,11 +6,11 @@ use crate::tests::shipped::ems_ca_master;
 use std::path::{Path, PathBuf};
 use viscoroll::dma::{DataPoint, Isotherm, Measurement};
 use viscoroll::prony::kernel::dynamic_moduli_pa;
+use viscoroll::prony::RelaxationSpectrum;
 use viscoroll::prony::{fit_prony, PronySettings};
 use viscoroll::report::plots::{
     plot_isotherms, plot_master_fit, plot_shift_factors, plot_spectrum, PlotError,
 };
-use viscoroll::prony::RelaxationSpectrum;
 use viscoroll::{ModulusKind, ShiftLaw};
 
 /// (T in °C, log10 a_T) from pyvisco's shift-factor table (a name row, then a unit row).
