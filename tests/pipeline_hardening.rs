@@ -91,7 +91,7 @@ fn bad_files_fail_alone_and_the_good_compound_still_gets_its_report() {
     long.push('\n');
     std::fs::write(dir.join("long.csv"), long).unwrap();
 
-    let o = run_main(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &["--no-bands"]);
     let err = text(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(out.join("reports/good/datasheet.html").is_file(), "{err}");
@@ -175,7 +175,7 @@ fn compounds_toml_maps_the_columns_of_an_unknown_export() {
         )
     };
     std::fs::write(dir.join("compounds.toml"), listing("")).unwrap();
-    let o = run_main(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &["--no-bands"]);
     let err = text(&o.stderr);
     assert_eq!(o.status.code(), Some(1), "{err}");
     assert!(
@@ -190,7 +190,7 @@ fn compounds_toml_maps_the_columns_of_an_unknown_export() {
         r#"columns = "temp=T,freq=Frq,storage=Mod1,loss=Mod2""#,
     ] {
         std::fs::write(dir.join("compounds.toml"), listing(columns)).unwrap();
-        let o = run_main(&dir, &out, &["--force"]);
+        let o = run_main(&dir, &out, &["--force", "--no-bands"]);
         assert!(o.status.success(), "{columns}: {}", text(&o.stderr));
         // Same numbers, so the friction tables agree past their first column header lines.
         let (a, b) = (friction("odd"), friction("plain"));
@@ -204,7 +204,7 @@ fn compounds_toml_maps_the_columns_of_an_unknown_export() {
         listing(r#"columns = { frq = "Frq" }"#),
     )
     .unwrap();
-    let o = run_main(&dir, &out, &["--force"]);
+    let o = run_main(&dir, &out, &["--force", "--no-bands"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(
         text(&o.stderr).contains("unknown key `frq`"),
@@ -410,7 +410,7 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
     let dir = temp_dir("hard-thin-in");
     let out = temp_dir("hard-thin-out");
     std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 40.0], 3000)).unwrap();
-    let o = run_main(&dir, &out, &[]);
+    let o = run_main(&dir, &out, &["--no-bands"]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     let fit: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
@@ -449,7 +449,7 @@ fn a_large_isotherm_is_thinned_and_the_fit_says_so() {
     }
     // A small export (20 points per isotherm) is untouched.
     std::fs::write(dir.join("dense.csv"), rubber_csv(&[0.0, 20.0, 40.0], 20)).unwrap();
-    let o = run_main(&dir, &out, &["--force"]);
+    let o = run_main(&dir, &out, &["--force", "--no-bands"]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     let fit: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("fits/dense.json")).unwrap())
