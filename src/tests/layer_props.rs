@@ -179,26 +179,7 @@ fn spectral_run(seed: u64, cases: usize, tol: f64) -> (usize, usize) {
     let load = 0.25;
     let (mut checked, mut declined) = (0, 0);
     for case in 0..cases {
-        let m = 1 + (rng.next() * 30.0) as usize;
-        let ratio = rng.log_uniform(1.5, 1e3);
-        let weights: Vec<f64> = (0..m).map(|_| rng.next() + 0.05).collect();
-        let wsum: f64 = weights.iter().sum();
-        let terms: Vec<CreepTerm> = weights
-            .iter()
-            .map(|w| {
-                let b = rng.log_uniform(1e-12, 1e12);
-                CreepTerm {
-                    f: (ratio - 1.0) * w / wsum * b,
-                    b,
-                }
-            })
-            .collect();
-        let hr = rng.log_uniform(1e-3, 1e3);
-        let nu = if rng.next() < 0.25 {
-            0.5
-        } else {
-            0.5 * rng.next()
-        };
+        let (m, ratio, terms, hr, nu) = random_case(&mut rng);
         let hs = solve_auto_at_load(&terms, load, &AutoSettings::default()).unwrap();
         let h = hr * hs.lambda;
         let label =
